@@ -1,0 +1,82 @@
+#include "mesh/mesh.h"
+
+namespace deltri {
+
+TriangleId Mesh::add_triangle(VertexId a, VertexId b, VertexId c) {
+  TriangleId t;
+  if (!free_triangles.empty()) {
+    t = free_triangles.back();
+    free_triangles.pop_back();
+  } else {
+    t = triangle_slots();
+    corner.resize(corner.size() + 3);
+    link.resize(link.size() + 3);
+    if (!subseg.empty()) subseg.resize(subseg.size() + 3);
+    if (num_triangle_attributes > 0)
+      triangle_attributes.resize(triangle_attributes.size() + num_triangle_attributes);
+    if (!area_bound.empty()) area_bound.resize(area_bound.size() + 1);
+  }
+  const EdgeRef e = 3 * t;
+  corner[e] = a;
+  corner[e + 1] = b;
+  corner[e + 2] = c;
+  link[e] = link[e + 1] = link[e + 2] = kNone;
+  if (!subseg.empty()) subseg[e] = subseg[e + 1] = subseg[e + 2] = kNone;
+  return t;
+}
+
+void Mesh::kill_triangle(TriangleId t) {
+  for (unsigned i = 0; i < 3; ++i) {
+    const EdgeRef e = 3 * t + i;
+    if (link[e] != kNone) link[link[e]] = kNone;
+    link[e] = kNone;
+    corner[e] = kNone;
+  }
+  free_triangles.push_back(t);
+}
+
+VertexId Mesh::add_vertex(const Point& p, VertexKind k) {
+  const VertexId v = vertex_count();
+  points.push_back(p);
+  kind.push_back(k);
+  if (!marker.empty()) marker.push_back(0);
+  if (num_attributes > 0) attributes.resize(attributes.size() + num_attributes, 0.0);
+  return v;
+}
+
+void Mesh::enable_subsegments() {
+  if (subseg.size() != corner.size()) subseg.assign(corner.size(), kNone);
+}
+
+void Mesh::compact_triangles() {
+  if (free_triangles.empty()) return;
+  TriangleId last = triangle_slots();
+  const int na = num_triangle_attributes;
+  // Fill each dead slot below the end with the last live triangle.
+  TriangleId write = 0;
+  while (true) {
+    while (write < last && is_live(write)) ++write;
+    while (last > write && !is_live(last - 1)) --last;
+    if (write >= last) break;
+    const TriangleId from = last - 1;
+    for (unsigned i = 0; i < 3; ++i) {
+      const EdgeRef src = 3 * from + i, dst = 3 * write + i;
+      corner[dst] = corner[src];
+      link[dst] = link[src];
+      if (link[dst] != kNone) link[link[dst]] = dst;
+      if (!subseg.empty()) subseg[dst] = subseg[src];
+      corner[src] = kNone;
+    }
+    for (int k = 0; k < na; ++k) triangle_attributes[write * na + k] = triangle_attributes[from * na + k];
+    if (!area_bound.empty()) area_bound[write] = area_bound[from];
+    --last;
+  }
+  corner.resize(3 * static_cast<std::size_t>(last));
+  link.resize(corner.size());
+  if (!subseg.empty()) subseg.resize(corner.size());
+  if (na > 0) triangle_attributes.resize(static_cast<std::size_t>(last) * na);
+  if (!area_bound.empty()) area_bound.resize(last);
+  free_triangles.clear();
+}
+
+}  // namespace deltri

@@ -1,0 +1,117 @@
+// The triangulation: flat arrays indexed by 32-bit ids, no per-triangle objects.
+//
+// Each triangle t owns three consecutive slots 3t, 3t+1, 3t+2, one per corner and one per edge.
+// Slot e = 3t+i names corner i and the oriented edge from corner i to corner i+1; the triangle lies
+// on the left of each of its edges, so the corners are counter-clockwise.
+//
+//                      apex = corner[lprev(e)]
+//                          /\
+//            lprev(e)     /  \     lnext(e)
+//                        /    \
+//                       /  t   \
+//                      /________\
+//         org = corner[e]   e    dest = corner[lnext(e)]
+//                      ----------
+//                        sym(e) = link[e]   (the same edge, reversed, in the neighbour)
+//
+//   corner[e]  the vertex at the origin of edge e (so corner[3t..3t+2] are t's vertices)
+//   link[e]    the oriented edge of the neighbouring triangle that shares edge e, running the other
+//              way, or kNone where e is on the boundary of the mesh
+//   subseg[e]  the subsegment lying on edge e, or kNone (the array is empty until segments exist)
+//
+// Guibas-Stolfi navigation follows from these two arrays alone:
+//   org(e) = corner[e], dest(e) = corner[lnext(e)], apex(e) = corner[lprev(e)], sym(e) = link[e],
+//   onext(e) = sym(lprev(e))   the next edge counter-clockwise around org(e)
+//   oprev(e) = lnext(sym(e))   the next edge clockwise around org(e)
+// and .neigh's "neighbour opposite corner i" is the triangle of link[3t + (i+1)%3].
+//
+// Invariants (checked by quality/check_mesh):
+//   * every live triangle has three distinct vertices in strictly counter-clockwise order;
+//   * link is an involution: link[link[e]] == e, and the two edges have swapped endpoints;
+//   * subseg[e] == subseg[link[e]] whenever both edges exist;
+//   * a dead triangle has corner[3t] == kNone and sits on the free list.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/point.h"
+#include "mesh/ids.h"
+
+namespace deltri {
+
+// Why a vertex exists; decides what refinement may do with it and what the output says.
+enum class VertexKind : std::uint8_t {
+  Input,      // from the input file
+  Duplicate,  // an input vertex at the same place as an earlier one; used by no triangle
+  Segment,    // inserted on a segment (crossing point or refinement split)
+  Free,       // inserted in the interior by refinement
+  Dead,       // deleted; used by no triangle
+};
+
+struct Subsegment {
+  VertexId a = kNone, b = kNone;  // endpoints
+  int marker = 0;                 // boundary marker of the input segment it belongs to
+  std::uint32_t segment = kNone;  // index of the input segment it is part of
+};
+
+struct Mesh {
+  // Vertices.
+  std::vector<Point> points;
+  std::vector<VertexKind> kind;
+  std::vector<int> marker;          // empty when nothing carries markers
+  int num_attributes = 0;
+  std::vector<double> attributes;   // num_attributes per vertex
+
+  // Triangles.
+  std::vector<VertexId> corner;
+  std::vector<EdgeRef> link;
+  std::vector<SubsegmentId> subseg;
+  std::vector<TriangleId> free_triangles;
+  int num_triangle_attributes = 0;
+  std::vector<double> triangle_attributes;  // num_triangle_attributes per triangle
+  std::vector<double> area_bound;           // empty, or one per triangle (<= 0: no bound)
+
+  std::vector<Subsegment> subsegments;
+
+  // --- navigation ---
+  VertexId org(EdgeRef e) const { return corner[e]; }
+  VertexId dest(EdgeRef e) const { return corner[lnext(e)]; }
+  VertexId apex(EdgeRef e) const { return corner[lprev(e)]; }
+  EdgeRef sym(EdgeRef e) const { return link[e]; }
+  EdgeRef onext(EdgeRef e) const { return link[lprev(e)]; }
+  EdgeRef oprev(EdgeRef e) const { return link[e] == kNone ? kNone : lnext(link[e]); }
+  const Point& point(VertexId v) const { return points[v]; }
+
+  std::uint32_t triangle_slots() const { return static_cast<std::uint32_t>(corner.size() / 3); }
+  bool is_live(TriangleId t) const { return corner[3 * t] != kNone; }
+  std::uint32_t live_triangles() const {
+    return triangle_slots() - static_cast<std::uint32_t>(free_triangles.size());
+  }
+  std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(points.size()); }
+  bool has_subsegments() const { return !subseg.empty(); }
+
+  // --- storage primitives (topology-free) ---
+  // A new triangle a, b, c (counter-clockwise) with no links, reusing a dead slot if there is one.
+  TriangleId add_triangle(VertexId a, VertexId b, VertexId c);
+  // Marks t dead and unlinks its neighbours from it.
+  void kill_triangle(TriangleId t);
+  // Makes e and f twins.
+  void bond(EdgeRef e, EdgeRef f) {
+    link[e] = f;
+    link[f] = e;
+  }
+  // Adds a vertex and returns its id; attributes are zero and the marker 0.
+  VertexId add_vertex(const Point& p, VertexKind k);
+  // Ensures the subsegment array exists (all kNone) so edges can carry segments.
+  void enable_subsegments();
+  // Attaches subsegment s to edge e and its twin.
+  void set_subsegment(EdgeRef e, SubsegmentId s) {
+    subseg[e] = s;
+    if (link[e] != kNone) subseg[link[e]] = s;
+  }
+  // Moves live triangles over dead slots so that every slot is live (ids change).
+  void compact_triangles();
+};
+
+}  // namespace deltri

@@ -1,0 +1,40 @@
+// A planar straight line graph as read from the input: plain data, no mesh. Indices are 0-based
+// here whatever the file used; first_index remembers the file's numbering for the output.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geometry/point.h"
+
+namespace deltri {
+
+struct Pslg {
+  struct Segment {
+    std::uint32_t a = 0, b = 0;
+    int marker = 0;
+  };
+  struct Region {
+    Point at;
+    double attribute = 0.0;
+    double max_area = -1.0;  // <= 0: no bound
+  };
+
+  std::vector<Point> points;
+  int num_attributes = 0;
+  std::vector<double> attributes;  // num_attributes per point
+  bool has_markers = false;
+  std::vector<int> markers;        // one per point when has_markers
+  int first_index = 1;             // 0 or 1, from the first vertex line of the file
+
+  bool has_segment_markers = false;
+  std::vector<Segment> segments;
+  std::vector<Point> holes;
+  std::vector<Region> regions;
+  bool has_segment_section = false;  // true when read from a .poly
+
+  std::string source_name;  // file the vertices came from, for messages
+};
+
+}  // namespace deltri
