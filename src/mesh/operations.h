@@ -1,0 +1,61 @@
+// Primitive operations on a Mesh. They keep every invariant listed in mesh.h; none of them reads
+// switches or prints. Geometry decisions use exact predicates only.
+#pragma once
+
+#include <vector>
+
+#include "geometry/predicates.h"
+#include "mesh/mesh.h"
+
+namespace deltri {
+
+// Where a point lies relative to the mesh.
+enum class LocateStatus {
+  InTriangle,  // strictly inside triangle_of(edge)
+  OnEdge,      // in the relative interior of edge
+  OnVertex,    // at org(edge)
+  Outside,     // outside the mesh; edge is a boundary edge the point is strictly right of
+};
+struct Location {
+  LocateStatus status = LocateStatus::Outside;
+  EdgeRef edge = kNone;
+};
+
+// Walks from the live triangle of `hint` towards p (visibility walk, exact orient2d). Never
+// leaves the mesh and never loops: a walk that would cycle falls back to a scan.
+Location locate(const Mesh& mesh, Predicates& pred, const Point& p, EdgeRef hint);
+
+// Flips the edge e shared by two triangles (the quadrilateral must be strictly convex and the edge
+// must not carry a subsegment). Returns the new edge, oriented from the old apex of e to the old
+// apex of sym(e).
+EdgeRef flip(Mesh& mesh, EdgeRef e);
+
+// Splits triangle_of(e) into three around the new vertex v (which must lie strictly inside).
+// Returns an edge leaving v.
+EdgeRef split_triangle(Mesh& mesh, EdgeRef e, VertexId v);
+
+// Splits edge e (and its twin, if any) at the new vertex v, which must lie on e's relative interior.
+// A subsegment on e is split into two subsegments. Returns an edge leaving v.
+EdgeRef split_edge(Mesh& mesh, EdgeRef e, VertexId v);
+
+enum class InsertStatus {
+  Inserted,     // v is now a vertex of the mesh, Delaunay restored by Lawson flips
+  Duplicate,    // a vertex already sits at that point; edge.org is it, nothing changed
+  OnSubsegment, // v lies on a subsegment and splitting segments was not allowed; nothing changed
+  Outside,      // v lies outside the mesh; nothing changed
+};
+struct InsertResult {
+  InsertStatus status = InsertStatus::Outside;
+  EdgeRef edge = kNone;  // Inserted: an edge leaving v; Duplicate: an edge leaving the old vertex;
+                         // OnSubsegment: that subsegment's edge
+};
+
+// Inserts existing vertex v (already in mesh.points) by locating it from `hint`, splitting the
+// triangle or edge it falls in, and restoring the (constrained) Delaunay property with Lawson
+// flips that never flip an edge carrying a subsegment. `split_subsegments` allows a vertex on a
+// subsegment to split it. When `flipped` is given, every flip is appended to it as the new edge,
+// so a caller can undo the insertion (see undo_insertion).
+InsertResult insert_vertex(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint,
+                           bool split_subsegments = true, std::vector<EdgeRef>* flipped = nullptr);
+
+}  // namespace deltri
