@@ -1,0 +1,1 @@
+# End-to-end CLI cases: one CTest per (input file, switch string).
