@@ -1,1 +1,35 @@
-int main() { return 0; }
+// The executable: arguments in, exit status out. Everything else happens in run().
+#include <cstdio>
+#include <exception>
+#include <new>
+
+#include "cli/run.h"
+#include "cli/switches.h"
+#include "pslg/errors.h"
+
+int main(int argc, char** argv) {
+  using namespace deltri;
+  try {
+    const Switches switches = parse_switches(argc, argv);
+    if (switches.help || switches.input.empty()) {
+      std::fputs(help_text().c_str(), switches.help ? stdout : stderr);
+      return switches.help ? kExitOk : kExitUsage;
+    }
+    return run(switches);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "deltri: %s\n", e.what());
+    return kExitUsage;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return kExitInput;
+  } catch (const OutputError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return kExitOutput;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "deltri: out of memory\n");
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "deltri: internal error: %s\n", e.what());
+    return kExitInternal;
+  }
+}

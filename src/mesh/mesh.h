@@ -4,15 +4,17 @@
 // Slot e = 3t+i names corner i and the oriented edge from corner i to corner i+1; the triangle lies
 // on the left of each of its edges, so the corners are counter-clockwise.
 //
-//                      apex = corner[lprev(e)]
-//                          /\
-//            lprev(e)     /  \     lnext(e)
-//                        /    \
-//                       /  t   \
-//                      /________\
-//         org = corner[e]   e    dest = corner[lnext(e)]
-//                      ----------
-//                        sym(e) = link[e]   (the same edge, reversed, in the neighbour)
+/*
+                        apex = corner[lprev(e)]
+                            /\
+              lprev(e)     /  \     lnext(e)
+                          /    \
+                         /  t   \
+                        /________\
+           org = corner[e]   e    dest = corner[lnext(e)]
+                        ----------
+                          sym(e) = link[e]   (the same edge, reversed, in the neighbour)
+*/
 //
 //   corner[e]  the vertex at the origin of edge e (so corner[3t..3t+2] are t's vertices)
 //   link[e]    the oriented edge of the neighbouring triangle that shares edge e, running the other

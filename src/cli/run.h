@@ -1,0 +1,20 @@
+// The pipeline: read -> Delaunay -> constrained Delaunay -> carve -> (refine) -> check -> write.
+// The only place that knows every stage.
+#pragma once
+
+#include "cli/switches.h"
+
+namespace deltri {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitInput = 1;     // the input files are malformed or unreadable
+inline constexpr int kExitUsage = 2;     // the switches are wrong
+inline constexpr int kExitOutput = 4;    // an output file could not be written
+inline constexpr int kExitCheck = 5;     // -C found faults in the mesh
+inline constexpr int kExitInternal = 6;  // out of memory or a bug
+
+// Runs deltri with the given switches; prints the summary, warnings and -V report; returns the
+// exit status. Throws InputError, OutputError or UsageError.
+int run(const Switches& switches);
+
+}  // namespace deltri

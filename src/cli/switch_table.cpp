@@ -1,0 +1,98 @@
+#include "cli/switch_table.h"
+
+#include <array>
+
+#include "pslg/errors.h"
+
+namespace deltri {
+namespace {
+
+using S = Switches;
+
+void set_q(S& s, bool has, double v) {
+  s.quality = true;
+  if (has) s.min_angle = v;
+}
+void set_a(S& s, bool has, double v) {
+  if (!has) {
+    s.variable_area = true;
+    return;
+  }
+  if (!(v > 0.0)) throw UsageError("-a: the maximum area must be positive");
+  s.fixed_area = true;
+  s.max_area = v;
+}
+void set_S(S& s, bool has, double v) { s.max_steiner = has ? static_cast<long>(v) : 0; }
+void set_o(S& s, bool has, double v) {
+  if (!has || v != 2.0) throw UsageError("-o: only -o2 (six-node triangles) exists");
+  s.order = 2;
+}
+
+constexpr std::array kTable = {
+    SwitchRow{'p', ArgKind::None, "", "read a PSLG (.poly) and build its constrained Delaunay triangulation",
+              [](S& s, bool, double) { s.poly = true; }},
+    SwitchRow{'r', ArgKind::None, "", "refine a previous mesh (.node and .ele)",
+              [](S& s, bool, double) { s.refine = true; }},
+    SwitchRow{'q', ArgKind::OptionalReal, "angle", "quality mesh: no angle below `angle` degrees (default 20)", set_q},
+    SwitchRow{'a', ArgKind::OptionalReal, "area", "maximum triangle area; bare: regional or .area constraints", set_a},
+    SwitchRow{'u', ArgKind::None, "", "apply the user size test",
+              [](S& s, bool, double) { s.user_test = true; }},
+    SwitchRow{'A', ArgKind::None, "", "give each triangle the attribute of its region",
+              [](S& s, bool, double) { s.regional_attributes = true; }},
+    SwitchRow{'c', ArgKind::None, "", "keep the convex hull: enclose it with segments",
+              [](S& s, bool, double) { s.convex_hull = true; }},
+    SwitchRow{'D', ArgKind::None, "", "conforming Delaunay: every triangle truly Delaunay",
+              [](S& s, bool, double) { s.conforming_delaunay = true; }},
+    SwitchRow{'j', ArgKind::None, "", "jettison vertices no triangle uses from the output .node",
+              [](S& s, bool, double) { s.jettison = true; }},
+    SwitchRow{'e', ArgKind::None, "", "write the edges (.edge)",
+              [](S& s, bool, double) { s.edges = true; }},
+    SwitchRow{'v', ArgKind::None, "", "write the Voronoi diagram (.v.node, .v.edge)",
+              [](S& s, bool, double) { s.voronoi = true; }},
+    SwitchRow{'n', ArgKind::None, "", "write the neighbours of each triangle (.neigh)",
+              [](S& s, bool, double) { s.neighbors = true; }},
+    SwitchRow{'g', ArgKind::None, "", "write the mesh for Geomview (.off)",
+              [](S& s, bool, double) { s.geomview = true; }},
+    SwitchRow{'B', ArgKind::None, "", "no boundary markers in the output files",
+              [](S& s, bool, double) { s.no_markers = true; }},
+    SwitchRow{'P', ArgKind::None, "", "do not write the output .poly",
+              [](S& s, bool, double) { s.no_poly = true; }},
+    SwitchRow{'N', ArgKind::None, "", "do not write the output .node",
+              [](S& s, bool, double) { s.no_node = true; }},
+    SwitchRow{'E', ArgKind::None, "", "do not write the output .ele",
+              [](S& s, bool, double) { s.no_ele = true; }},
+    SwitchRow{'I', ArgKind::None, "", "no iteration numbers: write name.ele rather than name.1.ele",
+              [](S& s, bool, double) { s.no_iteration = true; }},
+    SwitchRow{'O', ArgKind::None, "", "ignore the holes of the .poly",
+              [](S& s, bool, double) { s.ignore_holes = true; }},
+    SwitchRow{'X', ArgKind::None, "", "accepted for compatibility; arithmetic stays exact",
+              [](S& s, bool, double) { s.inexact = true; }},
+    SwitchRow{'z', ArgKind::None, "", "number everything from zero",
+              [](S& s, bool, double) { s.zero_based = true; }},
+    SwitchRow{'o', ArgKind::OptionalInt, "2", "-o2: six-node (quadratic) triangles", set_o},
+    SwitchRow{'Y', ArgKind::None, "", "no Steiner points on boundary segments; -YY: on no segment",
+              [](S& s, bool, double) { ++s.no_boundary_steiner; }},
+    SwitchRow{'S', ArgKind::OptionalInt, "n", "at most n Steiner points (bare: none)", set_S},
+    SwitchRow{'i', ArgKind::None, "", "incremental Delaunay triangulation instead of divide and conquer",
+              [](S& s, bool, double) { s.algorithm = DelaunayAlgorithm::Incremental; }},
+    SwitchRow{'F', ArgKind::None, "", "sweepline requested: divide and conquer is used (notice printed)",
+              [](S& s, bool, double) { s.sweepline = true; }},
+    SwitchRow{'l', ArgKind::None, "", "divide and conquer with vertical cuts only",
+              [](S& s, bool, double) { s.algorithm = DelaunayAlgorithm::VerticalCuts; }},
+    SwitchRow{'s', ArgKind::None, "", "insert segments by splitting them (conforming)",
+              [](S& s, bool, double) { s.split_segments = true; }},
+    SwitchRow{'C', ArgKind::None, "", "check the final mesh for consistency and the Delaunay property",
+              [](S& s, bool, double) { s.check = true; }},
+    SwitchRow{'Q', ArgKind::None, "", "quiet: no summary line",
+              [](S& s, bool, double) { s.quiet = true; }},
+    SwitchRow{'V', ArgKind::None, "", "verbose: counts, timings, statistics (repeat for more)",
+              [](S& s, bool, double) { ++s.verbose; }},
+    SwitchRow{'h', ArgKind::None, "", "print this help and exit",
+              [](S& s, bool, double) { s.help = true; }},
+};
+
+}  // namespace
+
+std::span<const SwitchRow> switch_table() { return kTable; }
+
+}  // namespace deltri

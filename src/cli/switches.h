@@ -1,0 +1,63 @@
+// Every command-line option travels in one Switches value; nothing else holds settings.
+#pragma once
+
+#include <string>
+
+#include "delaunay/triangulate.h"
+
+namespace deltri {
+
+struct Switches {
+  // What to build.
+  bool poly = false;             // -p  read a PSLG, build its constrained Delaunay triangulation
+  bool refine = false;           // -r  refine a previous mesh
+  bool quality = false;          // -q  quality mesh
+  double min_angle = 20.0;       //     the -q angle in degrees
+  bool fixed_area = false;       // -a<A>
+  double max_area = -1.0;
+  bool variable_area = false;    // -a  bare: regional or per-triangle areas
+  bool user_test = false;        // -u
+  bool regional_attributes = false;  // -A
+  bool convex_hull = false;      // -c
+  bool conforming_delaunay = false;  // -D
+  bool jettison = false;         // -j
+  int no_boundary_steiner = 0;   // -Y (1), -YY (2)
+  long max_steiner = -1;         // -S<n>; -1 means unlimited
+  bool split_segments = false;   // -s
+  bool ignore_holes = false;     // -O
+  bool inexact = false;          // -X (accepted; arithmetic stays exact)
+  DelaunayAlgorithm algorithm = DelaunayAlgorithm::DivideAndConquer;  // -i, -l
+  bool sweepline = false;        // -F (divide and conquer is used instead)
+
+  // What to write.
+  bool edges = false;            // -e
+  bool voronoi = false;          // -v
+  bool neighbors = false;        // -n
+  bool geomview = false;         // -g
+  bool no_markers = false;       // -B
+  bool no_poly = false;          // -P
+  bool no_node = false;          // -N
+  bool no_ele = false;           // -E
+  bool no_iteration = false;     // -I
+  bool zero_based = false;       // -z
+  int order = 1;                 // -o2
+
+  // How to run.
+  bool check = false;            // -C
+  bool quiet = false;            // -Q
+  int verbose = 0;               // -V, -VV, ...
+  bool help = false;             // -h
+  int threads = 2;
+
+  std::string input;             // the input file as given
+};
+
+// Parses Triangle-style arguments: switch words start with '-' and hold any number of letters,
+// a letter's number follows it directly; the last other argument names the input.
+// Throws UsageError on an unknown letter or a malformed number.
+Switches parse_switches(int argc, const char* const* argv);
+
+// The -h text, made from the same table the parser uses.
+std::string help_text();
+
+}  // namespace deltri

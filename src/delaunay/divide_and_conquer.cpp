@@ -1,0 +1,494 @@
+// Divide and conquer on ghost triangles.
+//
+// Each sub-triangulation is closed by a ring of ghost triangles, one per convex-hull edge, whose
+// third corner is the vertex at infinity (kGhostVertex). The ghost over hull edge a->b (hull taken
+// counter-clockwise) is stored as corners (b, a, G):
+//
+//        side 0: b->a   twin of the real edge a->b (or of the opposite ghost on a flat hull)
+//        side 1: a->G   twin of side 2 of the ghost over the previous hull edge
+//        side 2: G->b   twin of side 1 of the ghost over the next hull edge
+//
+// With every sub-triangulation a closed surface, the merge never needs special cases: deleting an
+// edge of the left or right half that fails the empty-circle test is an ordinary flip against a
+// ghost, and adding a cross triangle turns a ghost into a real triangle by replacing its G corner.
+// A triangulation of k points (k+1 with G) has exactly 2k-2 triangles, real and ghost, and a merge
+// adds exactly two ghosts (the two bridges), so every recursive call knows in advance which slots
+// it owns; the two top halves can be built by two threads with no locking and the same result.
+//
+// Cut alternation (Dwyer): the points are sorted once along a Morton (Z-order) curve of their
+// coordinates quantised to 32 bits on a square grid. A recursive call owns a range of that order
+// whose keys share a prefix; it cuts at the first key bit where its points differ, which is a cut
+// at the midpoint of its cell, alternately along x and y, found by binary search. The two halves are
+// separated by that line, which is all the merge needs; they need not be equal in size. Points that
+// share a key (closer than 2^-32 of the extent) are kept in x order and cut vertically. A cut
+// leaving a single point on one side moves the nearest point across so that both sides have two.
+// Each axis has its own total order (x then y; y then -x) so that a cut along y is a rotation of the
+// vertical case and ties are broken the same way.
+#include "delaunay/divide_and_conquer.h"
+
+#include <algorithm>
+#include <bit>
+#include <thread>
+#include <utility>
+
+namespace deltri {
+namespace {
+
+bool less_on(int axis, const Point& a, const Point& b) {
+  return axis == 0 ? (a.x < b.x || (a.x == b.x && a.y < b.y))
+                   : (a.y < b.y || (a.y == b.y && a.x > b.x));
+}
+
+constexpr std::uint32_t kParallelThreshold = 1u << 15;
+
+// Spreads the 32 bits of v over the even bits of a 64-bit word.
+std::uint64_t spread_bits(std::uint32_t v) {
+  std::uint64_t x = v;
+  x = (x | (x << 16)) & 0x0000FFFF0000FFFFull;
+  x = (x | (x << 8)) & 0x00FF00FF00FF00FFull;
+  x = (x | (x << 4)) & 0x0F0F0F0F0F0F0F0Full;
+  x = (x | (x << 2)) & 0x3333333333333333ull;
+  x = (x | (x << 1)) & 0x5555555555555555ull;
+  return x;
+}
+
+// Quantises points onto a square 2^32 grid over their bounding box and interleaves the cell
+// coordinates (x in the odd bits, so the first cut is vertical). Monotone in each coordinate, so a
+// key bit separates points by a line.
+class MortonKey {
+ public:
+  MortonKey() = default;
+  explicit MortonKey(const std::vector<Point>& pts, const std::vector<VertexKind>& kind) {
+    bool first = true;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      if (kind[i] != VertexKind::Input) continue;
+      const Point& p = pts[i];
+      if (first) { lo_ = p; first = false; }
+      lo_.x = std::min(lo_.x, p.x), lo_.y = std::min(lo_.y, p.y);
+      hi_x_ = std::max(hi_x_, p.x), hi_y_ = std::max(hi_y_, p.y);
+    }
+    const double extent = std::max(hi_x_ - lo_.x, hi_y_ - lo_.y);
+    scale_ = extent > 0.0 ? 4294967295.0 / extent : 0.0;
+  }
+  std::uint64_t operator()(const Point& p) const {
+    return (spread_bits(cell(p.x - lo_.x)) << 1) | spread_bits(cell(p.y - lo_.y));
+  }
+
+ private:
+  std::uint32_t cell(double d) const {
+    const double c = d * scale_;
+    return c >= 4294967295.0 ? 0xFFFFFFFFu : static_cast<std::uint32_t>(c);
+  }
+  Point lo_;
+  double hi_x_ = -1e308, hi_y_ = -1e308;
+  double scale_ = 0.0;
+};
+
+struct KeyedVertex {
+  std::uint64_t key;
+  VertexId id;
+};
+
+// LSD radix sort on the key, 16 bits at a time, skipping digits all keys share.
+void radix_sort(std::vector<KeyedVertex>& items) {
+  std::vector<KeyedVertex> buffer(items.size());
+  std::vector<std::uint32_t> count(4 * 65536, 0);
+  for (const KeyedVertex& k : items)
+    for (int d = 0; d < 4; ++d) ++count[d * 65536 + ((k.key >> (16 * d)) & 0xFFFF)];
+  for (int d = 0; d < 4; ++d) {
+    std::uint32_t* c = &count[d * 65536];
+    if (std::count(c, c + 65536, 0u) == 65535) continue;  // one bucket: nothing to reorder
+    std::uint32_t sum = 0;
+    for (int i = 0; i < 65536; ++i) sum += std::exchange(c[i], sum);
+    for (const KeyedVertex& k : items) buffer[c[(k.key >> (16 * d)) & 0xFFFF]++] = k;
+    items.swap(buffer);
+  }
+}
+
+// --- the triangulation builder ---
+
+class Builder {
+ public:
+  // `key` null: vertical cuts at the median of points in x order (-l).
+  Builder(Point* pts, VertexId* order, VertexId* corner, EdgeRef* link, const MortonKey* key)
+      : p_(pts), order_(order), corner_(corner), link_(link), key_(key) {}
+
+  // Triangulates sites [lo, lo+n) into triangle slots starting at `slot` and returns a ghost
+  // triangle of the hull ring.
+  TriangleId build(std::uint32_t lo, std::uint32_t n, TriangleId slot, int threads) {
+    if (n == 2) return base_two(lo, slot);
+    if (n == 3) return base_three(lo, slot);
+    const auto [half, axis] = choose_cut(lo, n);
+    const TriangleId right_slot = slot + 2 * half - 2;
+    TriangleId left, right;
+    if (threads > 1 && n >= kParallelThreshold) {
+      Builder other(p_, order_, corner_, link_, key_);
+      std::thread worker([&] { left = other.build(lo, half, slot, threads / 2); });
+      right = build(lo + half, n - half, right_slot, threads - threads / 2);
+      worker.join();
+      pred.counters.add(other.pred.counters);
+    } else {
+      left = build(lo, half, slot, 1);
+      right = build(lo + half, n - half, right_slot, 1);
+    }
+    return merge(left, right, axis, slot + 2 * n - 4);
+  }
+
+  Predicates pred;
+
+ private:
+  Point* p_;
+  VertexId* order_;
+  VertexId* corner_;
+  EdgeRef* link_;
+  const MortonKey* key_;
+
+  struct Cut {
+    std::uint32_t half;  // size of the lower part
+    int axis;            // 0: the parts are separated along x, 1: along y
+  };
+
+  Cut choose_cut(std::uint32_t lo, std::uint32_t n) {
+    if (!key_) return {n / 2, 0};
+    const std::uint64_t differ = (*key_)(p_[lo]) ^ (*key_)(p_[lo + n - 1]);
+    if (differ == 0) return {n / 2, 0};  // one grid cell: kept in x order
+    const int bit = 63 - std::countl_zero(differ);
+    const std::uint64_t mask = std::uint64_t{1} << bit;
+    std::uint32_t first = 1, last = n - 1;  // the first point with the bit set is in [1, n-1]
+    while (first < last) {
+      const std::uint32_t mid = first + (last - first) / 2;
+      if ((*key_)(p_[lo + mid]) & mask) last = mid; else first = mid + 1;
+    }
+    const int axis = (bit & 1) ? 0 : 1;
+    if (first == 1) move_extreme(lo + 1, n - 1, axis, false, lo + 1), first = 2;
+    else if (first == n - 1) move_extreme(lo, n - 1, axis, true, lo + n - 2), first = n - 2;
+    return {first, axis};
+  }
+
+  // Moves the smallest (or largest) point of [lo, lo+n) along `axis` to position `to`, keeping the
+  // others in order, so that a side of one point can borrow its nearest neighbour across the cut.
+  void move_extreme(std::uint32_t lo, std::uint32_t n, int axis, bool largest, std::uint32_t to) {
+    std::uint32_t best = lo;
+    for (std::uint32_t i = lo + 1; i < lo + n; ++i) {
+      if (largest ? less_on(axis, p_[best], p_[i]) : less_on(axis, p_[i], p_[best])) best = i;
+    }
+    if (best < to) {
+      std::rotate(p_ + best, p_ + best + 1, p_ + to + 1);
+      std::rotate(order_ + best, order_ + best + 1, order_ + to + 1);
+    } else if (best > to) {
+      std::rotate(p_ + to, p_ + best, p_ + best + 1);
+      std::rotate(order_ + to, order_ + best, order_ + best + 1);
+    }
+  }
+
+  void bond(EdgeRef a, EdgeRef b) {
+    link_[a] = b;
+    link_[b] = a;
+  }
+  void set_corners(TriangleId t, VertexId a, VertexId b, VertexId c) {
+    corner_[3 * t] = a;
+    corner_[3 * t + 1] = b;
+    corner_[3 * t + 2] = c;
+  }
+  // Ghost over hull edge a->b.
+  void make_ghost(TriangleId g, VertexId a, VertexId b) { set_corners(g, b, a, kGhostVertex); }
+  TriangleId next_ghost(TriangleId g) const { return triangle_of(link_[3 * g + 2]); }
+  TriangleId prev_ghost(TriangleId g) const { return triangle_of(link_[3 * g + 1]); }
+  // Links ghosts g[0..k) into a ring in hull order.
+  void close_ring(const TriangleId* g, unsigned k) {
+    for (unsigned i = 0; i < k; ++i) bond(3 * g[i] + 2, 3 * g[(i + 1) % k] + 1);
+  }
+
+  TriangleId base_two(VertexId a, TriangleId slot) {
+    const TriangleId g[2] = {slot, slot + 1};
+    make_ghost(g[0], a, a + 1);
+    make_ghost(g[1], a + 1, a);
+    bond(3 * g[0], 3 * g[1]);
+    close_ring(g, 2);
+    return g[0];
+  }
+
+  TriangleId base_three(VertexId a, TriangleId slot) {
+    const VertexId b = a + 1, c = a + 2;
+    // A flat triple must be in order along its line.
+    for (VertexId i : {a, b, a})
+      if (less_on(0, p_[i + 1], p_[i])) std::swap(p_[i], p_[i + 1]), std::swap(order_[i], order_[i + 1]);
+    const double o = pred.orient2d(p_[a], p_[b], p_[c]);
+    if (o == 0.0) {  // a flat hull a->b->c->b->a
+      const TriangleId g[4] = {slot, slot + 1, slot + 2, slot + 3};
+      make_ghost(g[0], a, b);
+      make_ghost(g[1], b, c);
+      make_ghost(g[2], c, b);
+      make_ghost(g[3], b, a);
+      bond(3 * g[0], 3 * g[3]);
+      bond(3 * g[1], 3 * g[2]);
+      close_ring(g, 4);
+      return g[0];
+    }
+    const VertexId h[3] = {a, o > 0.0 ? b : c, o > 0.0 ? c : b};
+    const TriangleId t = slot;
+    set_corners(t, h[0], h[1], h[2]);
+    const TriangleId g[3] = {slot + 1, slot + 2, slot + 3};
+    for (unsigned i = 0; i < 3; ++i) {
+      make_ghost(g[i], h[i], h[(i + 1) % 3]);
+      bond(3 * g[i], 3 * t + i);
+    }
+    close_ring(g, 3);
+    return g[0];
+  }
+
+  // The ghost over the hull edge entering the extreme vertex of the ring along `axis` (largest if
+  // `largest`, else smallest), entering or leaving it as `entering` says.
+  TriangleId extreme_ghost(TriangleId start, int axis, bool largest, bool entering) const {
+    TriangleId best = start;
+    VertexId best_v = entering ? corner_[3 * start] : corner_[3 * start + 1];
+    for (TriangleId g = next_ghost(start); g != start; g = next_ghost(g)) {
+      const VertexId v = entering ? corner_[3 * g] : corner_[3 * g + 1];
+      const bool better = largest ? less_on(axis, p_[best_v], p_[v]) : less_on(axis, p_[v], p_[best_v]);
+      if (better) {
+        best = g;
+        best_v = v;
+      }
+    }
+    return best;
+  }
+
+  // Removes the edge between ghost g's side 0 and the real triangle behind it by a flip, so that the
+  // region above the merge base grows by that triangle. `left` says which half g belongs to; the
+  // return value is the ghost that now carries the base's candidate edge.
+  TriangleId delete_by_flip(TriangleId g, bool left) {
+    const EdgeRef e = 3 * g, f = link_[e];
+    const TriangleId t = triangle_of(f);
+    const EdgeRef f1 = lnext(f), f2 = lprev(f);
+    const VertexId far = corner_[f2];
+    const EdgeRef out_f1 = link_[f1], out_f2 = link_[f2];
+    const EdgeRef out_g1 = link_[e + 1], out_g2 = link_[e + 2];
+    if (left) {
+      // g = (x, l, G), t = (l, x, x2)  ->  g = (x2, l, G), t = (x, x2, G)
+      const VertexId x = corner_[e], l = corner_[e + 1];
+      set_corners(g, far, l, kGhostVertex);
+      set_corners(t, x, far, kGhostVertex);
+      link_[e + 1] = out_g1;
+      if (out_g1 != kNone) link_[out_g1] = e + 1;
+      bond(e, out_f2);
+      bond(e + 2, 3 * t + 1);
+      bond(3 * t, out_f1);
+      bond(3 * t + 2, out_g2);
+      return g;
+    }
+    // g = (r, y, G), t = (y, r, y2)  ->  g = (r, y2, G), t = (y2, y, G)
+    const VertexId r = corner_[e], y = corner_[e + 1];
+    set_corners(g, r, far, kGhostVertex);
+    set_corners(t, far, y, kGhostVertex);
+    link_[e + 2] = out_g2;
+    if (out_g2 != kNone) link_[out_g2] = e + 2;
+    bond(e, out_f1);
+    bond(e + 1, 3 * t + 2);
+    bond(3 * t, out_f2);
+    bond(3 * t + 1, out_g1);
+    return g;
+  }
+
+  TriangleId merge(TriangleId left_ring, TriangleId right_ring, int axis, TriangleId slot);
+};
+
+// Guibas-Stolfi merge. The base edge l->r starts as the lower common tangent and climbs until it
+// becomes the upper one; the region above it is bounded by ghost triangles of both halves, `gl`
+// and `gr` being those on the base's ends.
+TriangleId Builder::merge(TriangleId left_ring, TriangleId right_ring, int axis, TriangleId slot) {
+  // Lower common tangent: walk l clockwise around the left hull and r counter-clockwise around the
+  // right hull while the other end sees past the current hull edge.
+  TriangleId in_l = extreme_ghost(left_ring, axis, true, true);      // ghost over w->l
+  TriangleId out_r = extreme_ghost(right_ring, axis, false, false);  // ghost over r->s
+  while (true) {
+    const VertexId l = corner_[3 * in_l], w = corner_[3 * in_l + 1];
+    const VertexId r = corner_[3 * out_r + 1], s = corner_[3 * out_r];
+    if (pred.orient2d(p_[l], p_[w], p_[r]) > 0.0) {
+      in_l = prev_ghost(in_l);
+    } else if (pred.orient2d(p_[r], p_[s], p_[l]) < 0.0) {
+      out_r = next_ghost(out_r);
+    } else {
+      break;
+    }
+  }
+  TriangleId gl = next_ghost(in_l);   // (x, l, G): its side 0 x->l is the left candidate edge
+  TriangleId gr = prev_ghost(out_r);  // (r, y, G): its side 0 r->y is the right candidate edge
+  VertexId l = corner_[3 * in_l], r = corner_[3 * out_r + 1];
+
+  const TriangleId bottom = slot;
+  make_ghost(bottom, l, r);
+  link_[3 * gl + 1] = kNone;
+  link_[3 * gr + 2] = kNone;
+  bond(3 * bottom + 1, 3 * in_l + 2);
+  bond(3 * bottom + 2, 3 * out_r + 1);
+  EdgeRef pending = 3 * bottom;  // the edge r->l below the base, waiting for the triangle above
+
+  while (true) {
+    VertexId x = corner_[3 * gl];
+    const bool left_ok = pred.orient2d(p_[l], p_[r], p_[x]) > 0.0;
+    if (left_ok) {
+      while (true) {
+        const VertexId x2 = corner_[lprev(link_[3 * gl])];
+        if (x2 == kGhostVertex || pred.incircle(p_[l], p_[r], p_[x], p_[x2]) <= 0.0) break;
+        gl = delete_by_flip(gl, true);
+        x = x2;
+      }
+    }
+    VertexId y = corner_[3 * gr + 1];
+    const bool right_ok = pred.orient2d(p_[l], p_[r], p_[y]) > 0.0;
+    if (right_ok) {
+      while (true) {
+        const VertexId y2 = corner_[lprev(link_[3 * gr])];
+        if (y2 == kGhostVertex || pred.incircle(p_[l], p_[r], p_[y], p_[y2]) <= 0.0) break;
+        gr = delete_by_flip(gr, false);
+        y = y2;
+      }
+    }
+    if (!left_ok && !right_ok) break;
+    if (!left_ok || (right_ok && pred.incircle(p_[l], p_[r], p_[x], p_[y]) > 0.0)) {
+      // Cross triangle (r, y, l) from the right ghost; the new base is l->y.
+      const EdgeRef ring = link_[3 * gr + 1];
+      corner_[3 * gr + 2] = l;
+      bond(3 * gr + 2, pending);
+      pending = 3 * gr + 1;
+      link_[pending] = kNone;
+      gr = triangle_of(ring);
+      link_[ring] = kNone;
+      r = y;
+    } else {
+      // Cross triangle (x, l, r) from the left ghost; the new base is x->r.
+      const EdgeRef ring = link_[3 * gl + 2];
+      corner_[3 * gl + 2] = r;
+      bond(3 * gl + 1, pending);
+      pending = 3 * gl + 2;
+      link_[pending] = kNone;
+      gl = triangle_of(ring);
+      link_[ring] = kNone;
+      l = x;
+    }
+  }
+  const TriangleId top = slot + 1;
+  make_ghost(top, r, l);
+  bond(3 * top, pending);
+  bond(3 * top + 1, 3 * gr + 2);
+  bond(3 * top + 2, 3 * gl + 1);
+  return bottom;
+}
+
+// --- preparing sites and finishing the mesh ---
+
+bool lexicographic_less(const Point& a, VertexId ia, const Point& b, VertexId ib) {
+  return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && ia < ib)));
+}
+
+// The Input vertices in the order the recursion wants them: along the Morton curve with each group
+// of equal keys in x order, or (key null) in x order. Equal points end up adjacent, lowest id first.
+std::vector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key) {
+  std::vector<KeyedVertex> items;
+  items.reserve(mesh.vertex_count());
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    if (mesh.kind[v] == VertexKind::Input) items.push_back({key ? (*key)(mesh.points[v]) : 0, v});
+  if (key) radix_sort(items);
+  const auto by_point = [&](const KeyedVertex& a, const KeyedVertex& b) {
+    return lexicographic_less(mesh.points[a.id], a.id, mesh.points[b.id], b.id);
+  };
+  for (std::size_t i = 0; i < items.size();) {
+    std::size_t j = i + 1;
+    while (j < items.size() && items[j].key == items[i].key) ++j;
+    if (j - i > 1) std::sort(items.begin() + static_cast<std::ptrdiff_t>(i), items.begin() + static_cast<std::ptrdiff_t>(j), by_point);
+    i = j;
+  }
+  return items;
+}
+
+// Drops all but the first of each run of equal points and reports them.
+void remove_duplicates(const Mesh& mesh, std::vector<KeyedVertex>& items,
+                       std::vector<std::pair<VertexId, VertexId>>& duplicates) {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (kept > 0 && mesh.points[items[i].id] == mesh.points[items[kept - 1].id]) {
+      duplicates.emplace_back(items[i].id, items[kept - 1].id);
+    } else {
+      items[kept++] = items[i];
+    }
+  }
+  items.resize(kept);
+  std::sort(duplicates.begin(), duplicates.end());
+}
+
+// Moves points[k] (k < order.size()) to position order[k], in place; order is consumed.
+void scatter_in_place(std::vector<Point>& points, std::vector<VertexId>& order, std::size_t size) {
+  const std::size_t m = order.size();
+  points.resize(size);
+  order.resize(size, kNone);
+  for (std::size_t k = 0; k < m; ++k) {
+    while (order[k] != kNone && order[k] != k) {
+      const VertexId to = order[k];
+      std::swap(points[k], points[to]);
+      std::swap(order[k], order[to]);
+    }
+  }
+}
+
+// Deletes the ghost triangles and packs the live ones into the first slots.
+void remove_ghosts(Mesh& mesh) {
+  const TriangleId slots = mesh.triangle_slots();
+  for (TriangleId t = 0; t < slots; ++t) {
+    if (mesh.corner[3 * t + 2] == kGhostVertex) mesh.kill_triangle(t);
+  }
+  mesh.compact_triangles();
+}
+
+}  // namespace
+
+void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& options,
+                                 std::vector<std::pair<VertexId, VertexId>>& duplicates,
+                                 PredicateCounters& counters) {
+  const int threads = std::max(1, options.threads);
+  mesh.corner.clear();
+  mesh.link.clear();
+  mesh.subseg.clear();
+  mesh.free_triangles.clear();
+
+  const MortonKey key(mesh.points, mesh.kind);
+  const MortonKey* cut_key = options.alternate_cuts ? &key : nullptr;
+  std::vector<KeyedVertex> items = order_vertices(mesh, cut_key);
+  remove_duplicates(mesh, items, duplicates);
+  for (const auto& [dup, kept] : duplicates) mesh.kind[dup] = VertexKind::Duplicate;
+  const std::uint32_t m = static_cast<std::uint32_t>(items.size());
+  if (m < 3) return;
+
+  // Work on a copy of the coordinates in recursion order. The vertex array is released meanwhile
+  // (and rebuilt from the copy) so that peak memory stays near 68 bytes per point; the coordinates
+  // of vertices that take no part (duplicates, other kinds) are kept aside.
+  const std::size_t total = mesh.points.size();
+  std::vector<std::pair<VertexId, Point>> bystanders;
+  for (VertexId v = 0; v < total; ++v)
+    if (mesh.kind[v] != VertexKind::Input) bystanders.emplace_back(v, mesh.points[v]);
+  std::vector<Point> sorted;
+  std::vector<VertexId> order;
+  sorted.reserve(total);
+  order.reserve(total);
+  for (const KeyedVertex& k : items) {
+    sorted.push_back(mesh.points[k.id]);
+    order.push_back(k.id);
+  }
+  std::vector<KeyedVertex>().swap(items);
+  std::vector<Point>().swap(mesh.points);
+
+  const std::size_t slots = 2 * static_cast<std::size_t>(m) - 2;
+  mesh.corner.resize(3 * slots);
+  mesh.link.resize(3 * slots);
+  Builder builder(sorted.data(), order.data(), mesh.corner.data(), mesh.link.data(), cut_key);
+  builder.build(0, m, 0, threads);
+  counters.add(builder.pred.counters);
+
+  for (VertexId& c : mesh.corner)
+    if (c != kGhostVertex) c = order[c];
+  scatter_in_place(sorted, order, total);
+  for (const auto& [v, p] : bystanders) sorted[v] = p;
+  mesh.points = std::move(sorted);
+  remove_ghosts(mesh);
+}
+
+}  // namespace deltri

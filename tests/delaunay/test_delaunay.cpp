@@ -1,0 +1,223 @@
+// Delaunay triangulation tests. Every result is judged by facts computed here, independently of
+// the triangulator: orientation and empty circles by exact predicates, the triangle count from
+// Euler's formula with a convex hull computed in this file, and agreement between algorithms.
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <array>
+
+#include "delaunay/triangulate.h"
+#include "harness/check.h"
+
+using namespace deltri;
+
+namespace {
+
+Mesh mesh_of(const std::vector<Point>& pts) {
+  Mesh m;
+  m.points = pts;
+  m.kind.assign(pts.size(), VertexKind::Input);
+  return m;
+}
+
+std::vector<Point> uniform(std::size_t n, unsigned seed, double scale = 1.0, double offset = 0.0) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point> p(n);
+  for (auto& q : p) q = {offset + scale * u(rng), offset + scale * u(rng)};
+  return p;
+}
+
+// Number of distinct points on the convex hull boundary (corners and points on hull edges).
+std::size_t hull_boundary_points(std::vector<Point> pts) {
+  Predicates pred;
+  std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+  });
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  std::vector<Point> hull;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t start = hull.size();
+    for (const Point& p : pts) {
+      while (hull.size() >= start + 2 && pred.orient2d(hull[hull.size() - 2], hull.back(), p) <= 0) hull.pop_back();
+      hull.push_back(p);
+    }
+    hull.pop_back();
+    std::reverse(pts.begin(), pts.end());
+  }
+  std::size_t count = 0;
+  for (const Point& p : pts) {
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      const Point& a = hull[i];
+      const Point& b = hull[(i + 1) % hull.size()];
+      if (pred.orient2d(a, b, p) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+          std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y)) {
+        ++count;
+        break;
+      }
+    }
+  }
+  return count;
+}
+
+// Checks the triangulation of distinct points `pts` and returns the number of faults found.
+int faults(const Mesh& m, bool expect_triangles = true) {
+  Predicates pred;
+  int bad = 0;
+  const std::uint32_t nt = m.triangle_slots();
+  if (expect_triangles && nt == 0) ++bad;
+  std::vector<char> used(m.vertex_count(), 0);
+  for (TriangleId t = 0; t < nt; ++t) {
+    if (!m.is_live(t)) { ++bad; continue; }
+    for (unsigned i = 0; i < 3; ++i) {
+      const EdgeRef e = 3 * t + i;
+      if (m.corner[e] >= m.vertex_count()) { ++bad; continue; }
+      used[m.corner[e]] = 1;
+      const EdgeRef f = m.link[e];
+      if (f == kNone) continue;
+      if (m.link[f] != e || m.org(f) != m.dest(e) || m.dest(f) != m.org(e)) ++bad;
+      if (pred.incircle(m.point(m.org(e)), m.point(m.dest(e)), m.point(m.apex(e)), m.point(m.apex(f))) > 0) ++bad;
+    }
+    if (pred.orient2d(m.point(m.corner[3 * t]), m.point(m.corner[3 * t + 1]), m.point(m.corner[3 * t + 2])) <= 0) ++bad;
+  }
+  for (VertexId v = 0; v < m.vertex_count(); ++v)
+    if (expect_triangles && (m.kind[v] == VertexKind::Input) != (used[v] != 0)) ++bad;
+  return bad;
+}
+
+void check_point_set(const std::vector<Point>& pts, DelaunayAlgorithm alg, int threads = 1) {
+  Mesh m = mesh_of(pts);
+  const DelaunayReport r = delaunay_triangulate(m, alg, threads);
+  const std::size_t distinct = pts.size() - r.duplicates.size();
+  const std::size_t h = hull_boundary_points(pts);
+  CHECK_EQ(faults(m), 0);
+  CHECK_EQ(static_cast<std::size_t>(m.live_triangles()), 2 * distinct - 2 - h);
+}
+
+std::vector<std::array<VertexId, 3>> triangle_set(const Mesh& m) {
+  std::vector<std::array<VertexId, 3>> s;
+  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+    std::array<VertexId, 3> a{m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]};
+    std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
+    s.push_back(a);
+  }
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+}  // namespace
+
+TEST(uniform_small_sizes) {
+  for (std::size_t n = 3; n <= 40; ++n)
+    for (unsigned seed = 0; seed < 20; ++seed) check_point_set(uniform(n, seed * 100 + n), DelaunayAlgorithm::DivideAndConquer);
+}
+
+TEST(uniform_large_alternating_and_vertical) {
+  check_point_set(uniform(200000, 7), DelaunayAlgorithm::DivideAndConquer, 1);
+  check_point_set(uniform(50000, 8), DelaunayAlgorithm::VerticalCuts, 1);
+}
+
+TEST(two_threads_give_identical_mesh) {
+  const auto pts = uniform(150000, 9);
+  Mesh a = mesh_of(pts), b = mesh_of(pts);
+  delaunay_triangulate(a, DelaunayAlgorithm::DivideAndConquer, 1);
+  delaunay_triangulate(b, DelaunayAlgorithm::DivideAndConquer, 2);
+  CHECK(a.corner == b.corner);
+  CHECK(a.link == b.link);
+  CHECK_EQ(faults(b), 0);
+}
+
+TEST(grid_every_quad_cocircular) {
+  std::vector<Point> pts;
+  for (int i = 0; i < 120; ++i)
+    for (int j = 0; j < 90; ++j) pts.push_back({i * 0.1, j * 0.1});
+  std::shuffle(pts.begin(), pts.end(), std::mt19937(3));
+  check_point_set(pts, DelaunayAlgorithm::DivideAndConquer);
+  check_point_set(pts, DelaunayAlgorithm::VerticalCuts);
+  Mesh m = mesh_of(pts);
+  delaunay_triangulate(m, DelaunayAlgorithm::DivideAndConquer, 2);
+  CHECK_EQ(m.live_triangles(), 2u * 119u * 89u);
+}
+
+TEST(small_grids_and_lines) {
+  for (int w = 1; w <= 7; ++w)
+    for (int h = 1; h <= 7; ++h) {
+      std::vector<Point> pts;
+      for (int i = 0; i < w; ++i)
+        for (int j = 0; j < h; ++j) pts.push_back({double(i), double(j)});
+      if (pts.size() < 3) continue;
+      Mesh m = mesh_of(pts);
+      delaunay_triangulate(m, DelaunayAlgorithm::DivideAndConquer, 1);
+      const bool flat = w == 1 || h == 1;
+      CHECK_EQ(faults(m, !flat), 0);
+      CHECK_EQ(m.live_triangles(), flat ? 0u : 2u * (w - 1) * (h - 1));
+    }
+}
+
+TEST(all_collinear_gives_no_triangles) {
+  std::vector<Point> pts;
+  for (int i = 0; i < 1000; ++i) pts.push_back({i * 0.5, 3.0 + i * 0.25});
+  std::shuffle(pts.begin(), pts.end(), std::mt19937(4));
+  Mesh m = mesh_of(pts);
+  delaunay_triangulate(m, DelaunayAlgorithm::DivideAndConquer, 2);
+  CHECK_EQ(m.live_triangles(), 0u);
+  CHECK(m.points == pts);
+}
+
+TEST(duplicates_keep_the_first_and_points_survive) {
+  auto pts = uniform(5000, 11);
+  for (int i = 0; i < 300; ++i) pts.push_back(pts[i * 7]);
+  pts.push_back(pts[5]);
+  Mesh m = mesh_of(pts);
+  const DelaunayReport r = delaunay_triangulate(m, DelaunayAlgorithm::DivideAndConquer, 2);
+  CHECK_EQ(r.duplicates.size(), 301u);
+  CHECK(m.points == pts);
+  for (const auto& [dup, kept] : r.duplicates) {
+    CHECK(dup > kept);
+    CHECK(m.kind[dup] == VertexKind::Duplicate);
+    CHECK(pts[dup] == pts[kept]);
+  }
+  CHECK_EQ(faults(m), 0);
+  CHECK_EQ(static_cast<std::size_t>(m.live_triangles()), 2 * 5000 - 2 - hull_boundary_points(pts));
+}
+
+TEST(fewer_than_three_distinct_points) {
+  Mesh m = mesh_of({{1, 1}, {1, 1}, {2, 2}});
+  delaunay_triangulate(m, DelaunayAlgorithm::DivideAndConquer, 1);
+  CHECK_EQ(m.live_triangles(), 0u);
+}
+
+TEST(huge_offset_and_tiny_scale) {
+  check_point_set(uniform(20000, 12, 1.0, 1e9), DelaunayAlgorithm::DivideAndConquer);
+  check_point_set(uniform(20000, 13, 1e-9, 0.0), DelaunayAlgorithm::DivideAndConquer);
+  std::vector<Point> grid;
+  for (int i = 0; i < 60; ++i)
+    for (int j = 0; j < 60; ++j) grid.push_back({1e9 + i * 1e-7, 1e9 + j * 1e-7});
+  check_point_set(grid, DelaunayAlgorithm::DivideAndConquer);
+}
+
+TEST(clusters_and_circle) {
+  std::mt19937_64 rng(14);
+  std::normal_distribution<double> g(0.0, 1e-3);
+  std::vector<Point> pts;
+  for (int c = 0; c < 50; ++c) {
+    const double cx = c % 7, cy = c / 7;
+    for (int i = 0; i < 400; ++i) pts.push_back({cx + g(rng), cy + g(rng)});
+  }
+  check_point_set(pts, DelaunayAlgorithm::DivideAndConquer, 2);
+  std::vector<Point> circle;
+  for (int i = 0; i < 2000; ++i) circle.push_back({std::cos(i * 0.0031415), std::sin(i * 0.0031415)});
+  circle.push_back({0, 0});
+  check_point_set(circle, DelaunayAlgorithm::DivideAndConquer);
+}
+
+TEST(divide_and_conquer_agrees_with_incremental) {
+  for (unsigned seed = 0; seed < 5; ++seed) {
+    const auto pts = uniform(3000, 100 + seed);
+    Mesh a = mesh_of(pts), b = mesh_of(pts);
+    delaunay_triangulate(a, DelaunayAlgorithm::DivideAndConquer, 1);
+    delaunay_triangulate(b, DelaunayAlgorithm::Incremental, 1);
+    CHECK(triangle_set(a) == triangle_set(b));
+  }
+}
