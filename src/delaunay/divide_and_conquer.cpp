@@ -401,18 +401,35 @@ std::vector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key) 
   return items;
 }
 
+// sorted[k] = points[items[k].id], order[k] = items[k].id; the random reads are split over threads.
+void gather(const std::vector<Point>& points, const std::vector<KeyedVertex>& items,
+            std::vector<Point>& sorted, std::vector<VertexId>& order, int threads) {
+  const auto copy = [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k) {
+      sorted[k] = points[items[k].id];
+      order[k] = items[k].id;
+    }
+  };
+  const std::size_t m = items.size();
+  if (threads < 2 || m < kParallelThreshold) return copy(0, m);
+  std::thread first([&] { copy(0, m / 2); });
+  copy(m / 2, m);
+  first.join();
+}
+
 // Drops all but the first of each run of equal points and reports them.
 void remove_duplicates(const Mesh& mesh, std::vector<KeyedVertex>& items,
                        std::vector<std::pair<VertexId, VertexId>>& duplicates) {
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    if (kept > 0 && mesh.points[items[i].id] == mesh.points[items[kept - 1].id]) {
+  std::size_t kept = 1;
+  for (std::size_t i = 1; i < items.size(); ++i) {
+    const KeyedVertex& last = items[kept - 1];
+    if (items[i].key == last.key && mesh.points[items[i].id] == mesh.points[last.id]) {
       duplicates.emplace_back(items[i].id, items[kept - 1].id);
     } else {
       items[kept++] = items[i];
     }
   }
-  items.resize(kept);
+  items.resize(std::min(kept, items.size()));
   std::sort(duplicates.begin(), duplicates.end());
 }
 
@@ -469,10 +486,9 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   std::vector<VertexId> order;
   sorted.reserve(total);
   order.reserve(total);
-  for (const KeyedVertex& k : items) {
-    sorted.push_back(mesh.points[k.id]);
-    order.push_back(k.id);
-  }
+  sorted.resize(m);
+  order.resize(m);
+  gather(mesh.points, items, sorted, order, threads);
   std::vector<KeyedVertex>().swap(items);
   std::vector<Point>().swap(mesh.points);
 
