@@ -7,6 +7,12 @@
 // differences were exact), and if that is still not conclusive, to full precision (the exact stage).
 // The sign returned is always the sign of the exact determinant of the given doubles.
 //
+// Limitation: exactness needs every intermediate product and its roundoff to stay clear of overflow
+// and underflow. That is guaranteed when each coordinate is zero or has magnitude in
+// [2^-400, 2^500] (about 4e-121 to 3e150) for orient2d, and in [2^-170, 2^250] (about 7e-52 to
+// 2e75) for incircle. Outside those ranges the answer is still almost always right, but not
+// provably. Build without -ffast-math and without -ffp-contract=fast (see expansion.h).
+//
 // There is no global state: a Predicates object carries its own counters, so each thread owns one
 // and the CLI sums them for -V.
 #pragma once
@@ -52,18 +58,11 @@ class Predicates {
     const double left = (a.x - c.x) * (b.y - c.y);
     const double right = (a.y - c.y) * (b.x - c.x);
     const double det = left - right;
-    double detsum;
-    if (left > 0.0) {
-      if (right <= 0.0) return det;
-      detsum = left + right;
-    } else if (left < 0.0) {
-      if (right >= 0.0) return det;
-      detsum = -left - right;
-    } else {
-      return det;
-    }
-    const double bound = bounds::kOrientA * detsum;
-    if (det >= bound || -det >= bound) return det;
+    // Branch-free form of the paper's sign cases: when left and right differ in sign (or one is
+    // zero) |det| is exactly the rounded detsum and always passes, so only the same-sign case can
+    // reach the adaptive stage. Random signs would otherwise cost branch mispredictions.
+    const double detsum = std::fabs(left) + std::fabs(right);
+    if (std::fabs(det) >= bounds::kOrientA * detsum) return det;
     return orient2d_adapt(a, b, c, detsum);
   }
 
@@ -84,7 +83,7 @@ class Predicates {
                              (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
                              (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
     const double bound = bounds::kIncircleA * permanent;
-    if (det > bound || -det > bound) return det;
+    if (std::fabs(det) > bound) return det;
     return incircle_adapt(a, b, c, d, permanent);
   }
 

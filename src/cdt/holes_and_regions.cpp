@@ -1,0 +1,144 @@
+#include "cdt/holes_and_regions.h"
+
+#include "cdt/flood.h"
+#include "cdt/subsegment_table.h"
+#include "cdt/walk.h"
+
+namespace deltri {
+
+namespace {
+
+bool constrained(const Mesh& mesh, EdgeRef e) {
+  return mesh.has_subsegments() && mesh.subseg[e] != kNone;
+}
+
+// Whether any edge around org(from) carries a subsegment: then the vertex sits on a segment and
+// which side a point there belongs to is ambiguous.
+bool touches_subsegment(const Mesh& mesh, EdgeRef from) {
+  EdgeRef e = from;
+  do {
+    if (constrained(mesh, e) || constrained(mesh, lprev(e))) return true;
+    e = mesh.onext(e);
+  } while (e != kNone && e != from);
+  for (e = from; mesh.link[e] != kNone && (e = lnext(mesh.link[e])) != from;)
+    if (constrained(mesh, e) || constrained(mesh, lprev(e))) return true;
+  return false;
+}
+
+// The triangle a hole point infects, or kNone (the point is then reported).
+TriangleId hole_triangle(const Mesh& mesh, const PointLocation& at) {
+  switch (at.kind) {
+    case PointLocation::Kind::InTriangle:
+      return triangle_of(at.edge);
+    case PointLocation::Kind::OnEdge:
+      return constrained(mesh, at.edge) ? kNone : triangle_of(at.edge);
+    case PointLocation::Kind::OnVertex:
+      return touches_subsegment(mesh, at.edge) ? kNone : triangle_of(at.edge);
+    case PointLocation::Kind::Outside:
+      break;
+  }
+  return kNone;
+}
+
+std::vector<TriangleId> hull_seeds(const Mesh& mesh) {
+  std::vector<TriangleId> seeds;
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+    if (mesh.corner[e] != kNone && mesh.link[e] == kNone && !constrained(mesh, e))
+      seeds.push_back(triangle_of(e));
+  return seeds;
+}
+
+// Deletes subsegment records no live edge carries any more.
+std::size_t drop_orphan_subsegments(Mesh& mesh) {
+  if (!mesh.has_subsegments()) return 0;
+  std::vector<char> used(mesh.subsegments.size(), 0);
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+    if (mesh.corner[e] != kNone && mesh.subseg[e] != kNone) used[mesh.subseg[e]] = 1;
+  std::size_t dropped = 0;
+  for (SubsegmentId s = 0; s < used.size(); ++s)
+    if (!used[s] && mesh.subsegments[s].a != kNone) {
+      mesh.subsegments[s].a = kNone;
+      ++dropped;
+    }
+  // kill_triangle leaves subseg entries in dead slots; clear them before renumbering.
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+    if (mesh.corner[e] == kNone) mesh.subseg[e] = kNone;
+  drop_dead_subsegments(mesh);
+  return dropped;
+}
+
+}  // namespace
+
+HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& holes,
+                       bool keep_convex_hull) {
+  HoleReport report;
+  std::vector<TriangleId> seeds;
+  if (!keep_convex_hull) seeds = hull_seeds(mesh);
+  // Locate every hole before anything is deleted: the mesh is still convex, so a blocked straight
+  // walk proves the point outside.
+  EdgeRef hint = kNone;
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    const PointLocation at = locate_point(mesh, pred, holes[i], hint);
+    if (at.kind != PointLocation::Kind::Outside) hint = at.edge;
+    if (at.kind == PointLocation::Kind::Outside) {
+      report.outside.push_back(i);
+      continue;
+    }
+    const TriangleId t = hole_triangle(mesh, at);
+    if (t == kNone) report.on_segment.push_back(i);
+    else seeds.push_back(t);
+  }
+  std::vector<std::uint32_t> infected(mesh.triangle_slots(), 0);
+  for (const TriangleId t : flood(mesh, std::move(seeds), infected, 1)) {
+    mesh.kill_triangle(t);
+    ++report.triangles_removed;
+  }
+  report.subsegments_removed = drop_orphan_subsegments(mesh);
+  mesh.compact_triangles();
+  return report;
+}
+
+namespace {
+
+void add_region_attribute(Mesh& mesh) {
+  const int old = mesh.num_triangle_attributes;
+  const std::size_t n = mesh.triangle_slots();
+  std::vector<double> widened(n * (old + 1), 0.0);
+  for (std::size_t t = 0; t < n; ++t)
+    for (int k = 0; k < old; ++k) widened[t * (old + 1) + k] = mesh.triangle_attributes[t * old + k];
+  mesh.triangle_attributes = std::move(widened);
+  mesh.num_triangle_attributes = old + 1;
+}
+
+TriangleId region_triangle(const Mesh& mesh, Predicates& pred, const Point& at, EdgeRef hint) {
+  const PointLocation where = locate_point(mesh, pred, at, hint);
+  return where.kind == PointLocation::Kind::Outside ? kNone : triangle_of(where.edge);
+}
+
+}  // namespace
+
+void spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Region>& regions,
+                    bool attributes, bool area_bounds) {
+  if (attributes) add_region_attribute(mesh);
+  if (area_bounds && mesh.area_bound.size() != mesh.triangle_slots())
+    mesh.area_bound.assign(mesh.triangle_slots(), -1.0);
+  if (!attributes && !area_bounds) return;
+  // Find all seeds first: locating is read-only, flooding writes only attributes.
+  std::vector<TriangleId> starts;
+  EdgeRef hint = kNone;
+  for (const Pslg::Region& r : regions) {
+    starts.push_back(region_triangle(mesh, pred, r.at, hint));
+    if (starts.back() != kNone) hint = 3 * starts.back();
+  }
+  std::vector<std::uint32_t> visited(mesh.triangle_slots(), 0);
+  const int stride = mesh.num_triangle_attributes;
+  for (std::uint32_t i = 0; i < regions.size(); ++i) {
+    if (starts[i] == kNone) continue;
+    for (const TriangleId t : flood(mesh, {starts[i]}, visited, i + 1)) {
+      if (attributes) mesh.triangle_attributes[t * stride + stride - 1] = regions[i].attribute;
+      if (area_bounds) mesh.area_bound[t] = regions[i].max_area;
+    }
+  }
+}
+
+}  // namespace deltri

@@ -1,0 +1,78 @@
+#include "cdt/insert_segments.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <unordered_map>
+
+#include "cdt/repeated_segments.h"
+#include "cdt/segment_inserter.h"
+#include "cdt/subsegment_table.h"
+
+namespace deltri {
+
+namespace {
+
+// A repeated segment's non-zero marker reaches the earlier segment's pieces whose marker is 0,
+// the same rule as for pieces shared by overlapping segments.
+void pass_markers(Mesh& mesh, const std::vector<std::pair<std::uint32_t, int>>& markers) {
+  if (markers.empty()) return;
+  std::unordered_map<std::uint32_t, int> by_segment;
+  for (const auto& [segment, marker] : markers) by_segment.emplace(segment, marker);
+  for (Subsegment& s : mesh.subsegments) {
+    if (s.marker != 0) continue;
+    const auto it = by_segment.find(s.segment);
+    if (it != by_segment.end()) s.marker = it->second;
+  }
+}
+
+}  // namespace
+
+SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Segment>& segments,
+                              const std::vector<std::pair<VertexId, VertexId>>& duplicates) {
+  SegmentReport report;
+  mesh.enable_subsegments();
+  std::vector<VertexId> kept(mesh.vertex_count());
+  for (VertexId v = 0; v < kept.size(); ++v) kept[v] = v;
+  for (const auto& [dup, original] : duplicates) kept[dup] = original;
+
+  // Clean every segment first: ends remapped, kNone marking the ignored ones.
+  std::vector<std::pair<VertexId, VertexId>> ends(segments.size(), {kNone, kNone});
+  for (std::uint32_t i = 0; i < segments.size(); ++i) {
+    const Pslg::Segment& s = segments[i];
+    if (s.a >= kept.size() || s.b >= kept.size()) {
+      ++report.invalid_endpoints;
+      continue;
+    }
+    const VertexId a = kept[s.a], b = kept[s.b];
+    report.duplicates_remapped += (a != s.a) + (b != s.b);
+    if (a == b) ++report.zero_length;
+    else ends[i] = {a, b};
+  }
+  const std::vector<std::uint32_t> repeat_of = find_repeats(ends, mesh.vertex_count());
+
+  mesh.subsegments.reserve(mesh.subsegments.size() + segments.size());
+  SegmentInserter inserter(mesh, pred);
+  std::vector<std::pair<std::uint32_t, int>> repeated_markers;
+  for (std::uint32_t i = 0; i < segments.size(); ++i) {
+    if (ends[i].first == kNone) continue;
+    const int marker = segments[i].marker;
+    if (repeat_of[i] != kNone) {
+      ++report.repeated;
+      if (segments[repeat_of[i]].marker == 0 && marker != 0) repeated_markers.emplace_back(repeat_of[i], marker);
+      continue;
+    }
+    inserter.insert({ends[i].first, ends[i].second, marker, i});
+  }
+  pass_markers(mesh, repeated_markers);
+  drop_dead_subsegments(mesh);
+
+  const InsertionCounts& counts = inserter.counts();
+  report.split_at_vertices = counts.split_at_vertices;
+  report.overlaps_merged = counts.overlaps_merged;
+  report.crossings = counts.crossings;
+  report.unrecovered = counts.unrecovered;
+  report.subsegments = mesh.subsegments.size();
+  return report;
+}
+
+}  // namespace deltri

@@ -1,0 +1,93 @@
+#include "cdt/recover_edge.h"
+
+namespace deltri {
+
+EdgeRef find_edge(const Mesh& mesh, EdgeRef from_u, VertexId v) {
+  EdgeRef e = from_u;
+  while (true) {
+    if (mesh.dest(e) == v) return e;
+    if (mesh.apex(e) == v) return lprev(e);
+    const EdgeRef n = mesh.onext(e);
+    if (n == kNone || n == from_u) break;
+    e = n;
+  }
+  for (e = from_u; mesh.link[e] != kNone;) {
+    e = lnext(mesh.link[e]);
+    if (e == from_u) break;
+    if (mesh.dest(e) == v) return e;
+  }
+  return kNone;
+}
+
+bool EdgeRecovery::crosses(EdgeRef e, VertexId u, VertexId v) {
+  const Mesh& mesh = ed_.mesh;
+  const VertexId a = mesh.org(e), b = mesh.dest(e);
+  if (a == u || a == v || b == u || b == v) return false;
+  // Inside the cavity a line crossing can only be a crossing of the open segment (the cavity
+  // meets the line exactly in that segment), so the signs of the endpoints decide.
+  const double sa = ed_.pred.orient2d(mesh.point(u), mesh.point(v), mesh.point(a));
+  const double sb = ed_.pred.orient2d(mesh.point(u), mesh.point(v), mesh.point(b));
+  return (sa > 0.0 && sb < 0.0) || (sa < 0.0 && sb > 0.0);
+}
+
+void EdgeRecovery::remove_crossings(VertexId u, VertexId v, const std::vector<EdgeRef>& crossed) {
+  // Sloan's order: a crossing edge that cannot be flipped yet, or whose flip still crosses, goes
+  // to the back of a FIFO holding each crossing edge once. Edges are named by their ends because
+  // flips move edges between slots; the vertex map finds them again.
+  Mesh& mesh = ed_.mesh;
+  queue_.clear();
+  for (const EdgeRef g : crossed) queue_.push_back({mesh.org(g), mesh.dest(g)});
+  while (!queue_.empty()) {
+    const auto [a, b] = queue_.front();
+    queue_.pop_front();
+    const EdgeRef e = find_edge(mesh, ed_.vertex_edge[a], b);
+    if (!ed_.flippable(e)) {
+      queue_.push_back({a, b});
+      continue;
+    }
+    ed_.flip(e);
+    const EdgeRef diagonal = lnext(e);
+    if (crosses(diagonal, u, v)) queue_.push_back({mesh.org(diagonal), mesh.dest(diagonal)});
+  }
+}
+
+void EdgeRecovery::restore_delaunay() {
+  Mesh& mesh = ed_.mesh;
+  stack_.clear();
+  for (const TriangleId t : cavity_)
+    for (unsigned i = 0; i < 3; ++i) stack_.push_back(3 * t + i);
+  while (!stack_.empty()) {
+    const EdgeRef e = stack_.back();
+    stack_.pop_back();
+    const EdgeRef f = mesh.link[e];
+    if (f == kNone || mesh.subseg[e] != kNone || !in_cavity(triangle_of(f))) continue;
+    if (!in_cavity(triangle_of(e)) || !ed_.violates_delaunay(e)) continue;
+    ed_.flip(e);
+    for (const EdgeRef outer : {e, lprev(e), f, lprev(f)}) stack_.push_back(outer);
+  }
+}
+
+EdgeRef EdgeRecovery::recover(VertexId u, VertexId v, const std::vector<EdgeRef>& crossed,
+                              SubsegmentId id) {
+  Mesh& mesh = ed_.mesh;
+  if (++round_ == 0) {  // the stamps wrapped: forget them all
+    stamp_.assign(stamp_.size(), 0);
+    round_ = 1;
+  }
+  if (stamp_.size() < mesh.triangle_slots()) stamp_.resize(mesh.triangle_slots(), 0);
+  cavity_.clear();
+  for (const EdgeRef g : crossed)
+    for (const TriangleId t : {triangle_of(g), triangle_of(mesh.link[g])})
+      if (stamp_[t] != round_) {
+        stamp_[t] = round_;
+        cavity_.push_back(t);
+      }
+  remove_crossings(u, v, crossed);
+  const EdgeRef uv = find_edge(mesh, ed_.vertex_edge[u], v);
+  // Constrained before the Lawson pass, so it is never flipped away.
+  if (uv != kNone) mesh.set_subsegment(uv, id);
+  restore_delaunay();
+  return uv == kNone ? kNone : find_edge(mesh, ed_.vertex_edge[u], v);
+}
+
+}  // namespace deltri

@@ -1,0 +1,48 @@
+// Makes a segment u-v an edge of a constrained Delaunay triangulation when nothing but unconstrained
+// edges separates u from v.
+//
+// Method (Sloan 1993, "A fast algorithm for generating constrained Delaunay triangulations"):
+// flip crossed edges whose quadrilateral is strictly convex until none crosses u-v (one always
+// is convex while any crosses, so this terminates), then Lawson-flip the edges inside the cavity
+// (the triangles that were crossed; flips reuse their slots, so the set stays put) until each is
+// locally Delaunay. Triangles outside the cavity stay constrained Delaunay when a constraint is
+// added, so the result is the constrained Delaunay triangulation. Flips cope with cavities that
+// touch themselves at a vertex, which recursive polygon retriangulation handles only with care.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <utility>
+#include <vector>
+
+#include "cdt/edit.h"
+
+namespace deltri {
+
+class EdgeRecovery {
+ public:
+  explicit EdgeRecovery(CdtEditor& editor) : ed_(editor) {}
+
+  // `crossed` lists every edge crossing the open segment u-v (none carrying a subsegment, no
+  // vertex on the open segment). Makes u-v an edge carrying subsegment `id` and returns it (either
+  // direction), or kNone if the mesh was not what the contract says.
+  EdgeRef recover(VertexId u, VertexId v, const std::vector<EdgeRef>& crossed, SubsegmentId id);
+
+ private:
+  bool crosses(EdgeRef e, VertexId u, VertexId v);
+  void remove_crossings(VertexId u, VertexId v, const std::vector<EdgeRef>& crossed);
+  void restore_delaunay();
+  bool in_cavity(TriangleId t) const { return t < stamp_.size() && stamp_[t] == round_; }
+
+  CdtEditor& ed_;
+  std::vector<std::uint32_t> stamp_;  // stamp_[t] == round_: t is in the current cavity
+  std::uint32_t round_ = 0;
+  std::vector<TriangleId> cavity_;
+  std::deque<std::pair<VertexId, VertexId>> queue_;
+  std::vector<EdgeRef> stack_;
+};
+
+// An edge joining org(from_u) and v, or kNone.
+EdgeRef find_edge(const Mesh& mesh, EdgeRef from_u, VertexId v);
+
+}  // namespace deltri

@@ -1,0 +1,151 @@
+#include "cdt/segment_inserter.h"
+
+#include "cdt/walk.h"
+#include "geometry/constructions.h"
+
+namespace deltri {
+
+void SegmentInserter::insert(const Piece& segment) {
+  pending_.push_back(segment);
+  while (!pending_.empty()) {
+    const Piece piece = pending_.back();
+    pending_.pop_back();
+    if (piece.u != piece.v) process(piece);
+  }
+}
+
+SubsegmentId SegmentInserter::new_record(const Piece& piece) {
+  Mesh& mesh = ed_.mesh;
+  mesh.subsegments.push_back({piece.u, piece.v, piece.marker, piece.segment});
+  return static_cast<SubsegmentId>(mesh.subsegments.size() - 1);
+}
+
+void SegmentInserter::record(EdgeRef e, const Piece& piece) {
+  Mesh& mesh = ed_.mesh;
+  const SubsegmentId old = mesh.subseg[e];
+  if (old == kNone) {
+    mesh.set_subsegment(e, new_record(piece));
+    return;
+  }
+  // Collinear overlap with an earlier segment (or a chain piece recovered twice).
+  Subsegment& s = mesh.subsegments[old];
+  if (s.marker == 0) s.marker = piece.marker;
+  if (last_overlap_ != piece.segment && s.segment != piece.segment) {
+    ++counts_.overlaps_merged;
+    last_overlap_ = piece.segment;
+  }
+}
+
+void SegmentInserter::process(const Piece& piece) {
+  Mesh& mesh = ed_.mesh;
+  Predicates& pred = ed_.pred;
+  const EdgeRef from_u = ed_.vertex_edge[piece.u];
+  if (from_u == kNone || ed_.vertex_edge[piece.v] == kNone) {
+    ++counts_.unrecovered;
+    return;
+  }
+  const Point& pu = mesh.point(piece.u);
+  const Point& pv = mesh.point(piece.v);
+  const RayStart start = first_step(mesh, pred, from_u, pv);
+  if (start.kind == RayStart::Kind::Blocked) {
+    ++counts_.unrecovered;  // impossible in a valid triangulation of the convex hull
+    return;
+  }
+  if (start.kind == RayStart::Kind::Vertex) {
+    record(start.edge, {piece.u, start.vertex, piece.marker, piece.segment});
+    if (start.vertex != piece.v) {
+      ++counts_.split_at_vertices;
+      pending_.push_back({start.vertex, piece.v, piece.marker, piece.segment});
+    }
+    return;
+  }
+  crossed_.clear();
+  EdgeRef g = start.edge;
+  while (true) {
+    if (mesh.subseg[g] != kNone) return split_crossing(piece, g);
+    crossed_.push_back(g);
+    const RayStep step = next_step(mesh, pred, g, pu, pv);
+    if (step.kind == RayStep::Kind::Boundary) {
+      ++counts_.unrecovered;
+      return;
+    }
+    if (step.kind == RayStep::Kind::Cross) {
+      g = step.edge;
+      continue;
+    }
+    const VertexId w = step.vertex;
+    if (w != piece.v) {
+      ++counts_.split_at_vertices;
+      pending_.push_back({w, piece.v, piece.marker, piece.segment});
+    }
+    const Piece first{piece.u, w, piece.marker, piece.segment};
+    const SubsegmentId id = new_record(first);
+    if (recovery_.recover(piece.u, w, crossed_, id) == kNone) {
+      mesh.subsegments[id].a = kNone;  // cannot happen in a valid mesh; leave a dead record
+      ++counts_.unrecovered;
+    }
+    return;
+  }
+}
+
+void SegmentInserter::release(EdgeRef e, VertexId w) {
+  Mesh& mesh = ed_.mesh;
+  const SubsegmentId id = mesh.subseg[e];
+  Subsegment s = mesh.subsegments[id];
+  mesh.subsegments[id].a = kNone;
+  mesh.set_subsegment(e, kNone);
+  pending_.push_back({w, s.b, s.marker, s.segment});
+  pending_.push_back({s.a, w, s.marker, s.segment});
+}
+
+VertexId SegmentInserter::place_crossing(const Piece& piece, const Subsegment& old, const Point& p) {
+  Mesh& mesh = ed_.mesh;
+  const PointLocation at = walk_to_point(mesh, ed_.pred, ed_.vertex_edge[old.a], p);
+  switch (at.kind) {
+    case PointLocation::Kind::OnVertex:
+      return mesh.org(at.edge);
+    case PointLocation::Kind::InTriangle: {
+      const VertexId w = mesh.add_vertex(p, VertexKind::Segment);
+      ed_.insert_in_triangle(at.edge, w);
+      return w;
+    }
+    case PointLocation::Kind::OnEdge: {
+      const VertexId w = mesh.add_vertex(p, VertexKind::Segment);
+      // A third segment through the very same point: it is split there too.
+      if (mesh.subseg[at.edge] != kNone) release(at.edge, w);
+      ed_.insert_on_edge(at.edge, w);
+      return w;
+    }
+    case PointLocation::Kind::Outside:
+      break;
+  }
+  // Rounding pushed the crossing out of the mesh (only possible next to the hull): use the
+  // nearest of the four endpoints, a displacement of the order of that rounding.
+  const VertexId candidates[4] = {piece.u, piece.v, old.a, old.b};
+  VertexId best = candidates[0];
+  for (const VertexId c : candidates)
+    if (squared_distance(mesh.point(c), p) < squared_distance(mesh.point(best), p)) best = c;
+  return best;
+}
+
+void SegmentInserter::split_crossing(const Piece& piece, EdgeRef g) {
+  Mesh& mesh = ed_.mesh;
+  ++counts_.crossings;
+  const Point p = segment_intersection(mesh.point(piece.u), mesh.point(piece.v),
+                                       mesh.point(mesh.org(g)), mesh.point(mesh.dest(g)));
+  // Unconstrain g first so that the new vertex may flip it away (its halves are queued below),
+  // and make the triangulation Delaunay without it: the new vertex may well miss g, and vertex
+  // insertion restores the Delaunay property only if it held before.
+  const SubsegmentId id = mesh.subseg[g];
+  const Subsegment old = mesh.subsegments[id];
+  mesh.subsegments[id].a = kNone;
+  mesh.set_subsegment(g, kNone);
+  ed_.legalize_from(g);
+  const VertexId w = place_crossing(piece, old, p);
+  pending_.push_back({w, piece.v, piece.marker, piece.segment});
+  pending_.push_back({piece.u, w, piece.marker, piece.segment});
+  pending_.push_back({w, old.b, old.marker, old.segment});
+  pending_.push_back({old.a, w, old.marker, old.segment});
+}
+
+}  // namespace deltri

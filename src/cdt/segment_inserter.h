@@ -1,0 +1,54 @@
+// Recovers one cleaned input segment as a chain of constrained edges: splits it at vertices lying
+// exactly on it, turns crossings with earlier segments into vertices, and recovers what is left
+// with EdgeRecovery. Pieces wait on an explicit stack, so nothing recurses.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "cdt/edit.h"
+#include "cdt/recover_edge.h"
+
+namespace deltri {
+
+struct Piece {
+  VertexId u = kNone, v = kNone;
+  int marker = 0;
+  std::uint32_t segment = kNone;
+};
+
+struct InsertionCounts {
+  std::size_t split_at_vertices = 0;
+  std::size_t overlaps_merged = 0;
+  std::size_t crossings = 0;
+  std::size_t unrecovered = 0;
+};
+
+class SegmentInserter {
+ public:
+  SegmentInserter(Mesh& mesh, Predicates& pred) : ed_(mesh, pred), recovery_(ed_) {}
+
+  void insert(const Piece& segment);
+  const InsertionCounts& counts() const { return counts_; }
+
+ private:
+  void process(const Piece& piece);
+  // Records piece on the existing edge e, merging with a subsegment already there.
+  void record(EdgeRef e, const Piece& piece);
+  SubsegmentId new_record(const Piece& piece);
+  // The walk from u found constrained edge g crossing the piece: split both at the crossing.
+  void split_crossing(const Piece& piece, EdgeRef g);
+  // Removes the subsegment of e and queues the two halves of it around vertex w.
+  void release(EdgeRef e, VertexId w);
+  VertexId place_crossing(const Piece& piece, const Subsegment& old, const Point& p);
+
+  CdtEditor ed_;
+  EdgeRecovery recovery_;
+  InsertionCounts counts_;
+  std::vector<Piece> pending_;
+  std::vector<EdgeRef> crossed_;
+  std::uint32_t last_overlap_ = kNone;  // segment last counted in overlaps_merged
+};
+
+}  // namespace deltri

@@ -1,0 +1,105 @@
+#include "cli/report.h"
+
+#include <cstdio>
+
+#include "quality/statistics.h"
+
+namespace deltri {
+namespace {
+
+std::string plural(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+}  // namespace
+
+std::vector<const char*> unsupported_switches(const Switches& sw) {
+  std::vector<const char*> list;
+  if (sw.quality) list.push_back("-q (quality refinement)");
+  if (sw.fixed_area || sw.variable_area) {
+    if (!sw.regional_attributes || sw.fixed_area) list.push_back("-a (area refinement)");
+  }
+  if (sw.user_test) list.push_back("-u");
+  if (sw.conforming_delaunay) list.push_back("-D");
+  if (sw.voronoi) list.push_back("-v");
+  if (sw.geomview) list.push_back("-g");
+  if (sw.order == 2) list.push_back("-o2");
+  if (sw.split_segments) list.push_back("-s");
+  return list;
+}
+
+void Messages::notice(const std::string& text) const {
+  if (!sw_.quiet) std::fprintf(stderr, "deltri: %s\n", text.c_str());
+}
+
+void Messages::check_failed(const CheckReport& check) const {
+  std::fprintf(stderr, "deltri: -C: the mesh is not consistent; no files written\n%s", check.summary().c_str());
+}
+
+void Messages::warn_about_input(const Mesh& mesh, const RunReport& r) const {
+  const auto warn = [&](const std::string& text) {
+    std::fprintf(stderr, "deltri: warning: %s: %s\n", r.input_name.c_str(), text.c_str());
+  };
+  if (r.duplicates > 0) warn(plural(r.duplicates, "duplicate vertex", "duplicate vertices") + " ignored (kept the first of each)");
+  if (const auto& s = r.segments) {
+    if (s->duplicates_remapped) warn(plural(s->duplicates_remapped, "segment endpoint", "segment endpoints") + " moved from a duplicate vertex to the vertex it duplicates");
+    if (s->zero_length) warn(plural(s->zero_length, "zero-length segment", "zero-length segments") + " ignored");
+    if (s->repeated) warn(plural(s->repeated, "repeated segment", "repeated segments") + " ignored");
+    if (s->split_at_vertices) warn(plural(s->split_at_vertices, "segment split", "segment splits") + " where segments pass exactly through vertices");
+    if (s->overlaps_merged) warn(plural(s->overlaps_merged, "collinear overlap", "collinear overlaps") + " between segments merged");
+    if (s->crossings) warn(plural(s->crossings, "segment crossing", "segment crossings") + " split at a new vertex");
+    if (s->invalid_endpoints) warn(plural(s->invalid_endpoints, "segment", "segments") + " with a missing endpoint ignored");
+    if (s->unrecovered) warn(plural(s->unrecovered, "segment", "segments") + " outside every triangle ignored");
+  }
+  if (const auto& h = r.holes) {
+    if (!h->outside.empty()) warn(plural(h->outside.size(), "hole point", "hole points") + " outside the triangulation ignored");
+    if (!h->on_segment.empty()) warn(plural(h->on_segment.size(), "hole point", "hole points") + " lying exactly on a segment ignored");
+  }
+  if (mesh.live_triangles() == 0) {
+    if (r.pslg && r.pslg->has_segment_section && mesh.vertex_count() >= 3 && r.holes && r.holes->triangles_removed > 0)
+      warn("every triangle lies outside the segments or in a hole: the mesh is empty (try -c or -O)");
+    else
+      warn("the vertices are all collinear or fewer than three distinct: no triangles");
+  }
+}
+
+void Messages::finished(const Mesh& mesh, const RunReport& r) const {
+  warn_about_input(mesh, r);
+  if (sw_.quiet) return;
+  std::string files;
+  for (const auto& w : r.written) files += " " + w;
+  std::size_t used = 0;
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    used += mesh.kind[v] != VertexKind::Duplicate && mesh.kind[v] != VertexKind::Dead;
+  std::string input = plural(r.pslg->points.size(), "vertex", "vertices");
+  if (r.pslg->has_segment_section) {
+    input += ", " + plural(r.pslg->segments.size(), "segment", "segments");
+    input += ", " + plural(r.pslg->holes.size(), "hole", "holes");
+  }
+  std::printf("%s: %s -> %s, %s; wrote%s (%.3f s)\n", r.input_name.c_str(), input.c_str(),
+              plural(used, "vertex", "vertices").c_str(),
+              plural(mesh.live_triangles(), "triangle", "triangles").c_str(),
+              files.empty() ? " nothing" : files.c_str(), r.total_seconds);
+  if (sw_.verbose > 0) verbose_report(mesh, r);
+}
+
+void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
+  std::printf("Stage timings:\n");
+  for (const auto& s : r.stages) std::printf("  %-20s %10.4f s\n", s.name, s.seconds);
+  std::printf("  %-20s %10.4f s\n", "total", r.total_seconds);
+  std::printf("Input: %zu vertices (%zu duplicates)", r.pslg->points.size(), r.duplicates);
+  if (r.pslg->has_segment_section)
+    std::printf(", %zu segments, %zu holes, %zu regions", r.pslg->segments.size(), r.pslg->holes.size(), r.pslg->regions.size());
+  std::printf("\n");
+  const MeshStatistics stats = compute_statistics(mesh);
+  std::printf("%s", format_statistics(stats).c_str());
+  const PredicateCounters& c = r.counters;
+  std::printf("Predicates (calls / past the filter / fully exact):\n");
+  std::printf("  orient2d   %12llu %12llu %12llu\n", static_cast<unsigned long long>(c.orient_calls),
+              static_cast<unsigned long long>(c.orient_adaptive), static_cast<unsigned long long>(c.orient_exact));
+  std::printf("  incircle   %12llu %12llu %12llu\n", static_cast<unsigned long long>(c.incircle_calls),
+              static_cast<unsigned long long>(c.incircle_adaptive), static_cast<unsigned long long>(c.incircle_exact));
+  if (r.check) std::printf("Consistency check (-C): %s", r.check->summary().c_str());
+}
+
+}  // namespace deltri

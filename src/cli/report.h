@@ -1,0 +1,55 @@
+// What a run did, and the lines it prints: the summary (unless -Q), warnings about repaired input,
+// notices, and the -V report. Messages go to standard error except the summary and -V report,
+// which go to standard output.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cdt/holes_and_regions.h"
+#include "cdt/insert_segments.h"
+#include "cli/switches.h"
+#include "geometry/predicates.h"
+#include "mesh/mesh.h"
+#include "pslg/pslg.h"
+#include "quality/check_mesh.h"
+
+namespace deltri {
+
+struct RunReport {
+  struct Stage {
+    const char* name;
+    double seconds;
+  };
+  const Switches* switches = nullptr;
+  const Pslg* pslg = nullptr;
+  std::string input_name;
+  std::vector<Stage> stages;
+  std::size_t duplicates = 0;
+  std::optional<SegmentReport> segments;
+  std::optional<HoleReport> holes;
+  std::optional<CheckReport> check;
+  PredicateCounters counters;
+  std::vector<std::string> written;
+  double total_seconds = 0.0;
+};
+
+// Switches that are parsed but whose work belongs to later stages of the project.
+std::vector<const char*> unsupported_switches(const Switches& sw);
+
+class Messages {
+ public:
+  explicit Messages(const Switches& sw) : sw_(sw) {}
+  void notice(const std::string& text) const;
+  void check_failed(const CheckReport& check) const;
+  // Warnings about the input, then the summary line, then (with -V) the report.
+  void finished(const Mesh& mesh, const RunReport& report) const;
+
+ private:
+  void warn_about_input(const Mesh& mesh, const RunReport& report) const;
+  void verbose_report(const Mesh& mesh, const RunReport& report) const;
+  const Switches& sw_;
+};
+
+}  // namespace deltri

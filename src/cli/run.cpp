@@ -1,0 +1,197 @@
+#include "cli/run.h"
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cdt/convex_hull.h"
+#include "cdt/holes_and_regions.h"
+#include "cdt/insert_segments.h"
+#include "cdt/markers.h"
+#include "cli/report.h"
+#include "delaunay/triangulate.h"
+#include "io/edge_file.h"
+#include "io/ele_file.h"
+#include "io/neigh_file.h"
+#include "io/node_file.h"
+#include "io/output_names.h"
+#include "io/output_set.h"
+#include "io/poly_file.h"
+#include "pslg/errors.h"
+#include "quality/check_mesh.h"
+
+namespace deltri {
+namespace {
+
+class StageTimer {
+ public:
+  explicit StageTimer(RunReport& report) : report_(report), last_(std::chrono::steady_clock::now()) {}
+  void stage(const char* name) {
+    const auto now = std::chrono::steady_clock::now();
+    report_.stages.push_back({name, std::chrono::duration<double>(now - last_).count()});
+    last_ = now;
+  }
+
+ private:
+  RunReport& report_;
+  std::chrono::steady_clock::time_point last_;
+};
+
+struct InputFiles {
+  std::string base;       // name without extension, for output names
+  std::string path;       // the file to read
+  bool is_poly = false;   // a .poly (segments, holes, regions) rather than a .node
+};
+
+// Which file to read: an explicit extension decides; otherwise -p means name.poly, else name.node.
+InputFiles input_files(const Switches& sw) {
+  InputFiles in;
+  std::string extension;
+  in.base = input_base(sw.input, &extension);
+  if (extension == "ele" || extension == "area")
+    throw UsageError(sw.input + ": refining a previous mesh (-r) is not available yet");
+  in.is_poly = extension == "poly" || (extension.empty() && sw.poly);
+  in.path = extension.empty() ? in.base + (in.is_poly ? ".poly" : ".node") : sw.input;
+  return in;
+}
+
+Mesh mesh_from_pslg(const Pslg& pslg) {
+  Mesh mesh;
+  mesh.points = pslg.points;
+  mesh.kind.assign(pslg.points.size(), VertexKind::Input);
+  mesh.num_attributes = pslg.num_attributes;
+  mesh.attributes = pslg.attributes;
+  if (pslg.has_markers) mesh.marker = pslg.markers;
+  return mesh;
+}
+
+// Builds the constrained Delaunay triangulation of a .poly's segments and carves the domain.
+void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Switches& sw,
+               RunReport& report) {
+  Predicates pred;
+  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates);
+  if (sw.convex_hull) enclose_convex_hull(mesh);
+  static const std::vector<Point> no_holes;
+  report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull);
+  const bool region_areas = sw.variable_area && !pslg.regions.empty();
+  if (sw.regional_attributes || region_areas)
+    spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas);
+  report.counters.add(pred.counters);
+}
+
+// Output numbers of the vertices: every vertex but deleted ones, or with -j only those a
+// triangle uses. Empty when every vertex is written in id order.
+std::vector<std::uint32_t> vertex_numbering(const Mesh& mesh, bool jettison) {
+  std::vector<char> keep(mesh.vertex_count(), 1);
+  if (jettison) {
+    keep.assign(mesh.vertex_count(), 0);
+    for (VertexId v : mesh.corner)
+      if (v != kNone) keep[v] = 1;
+  }
+  bool all = true;
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+    if (mesh.kind[v] == VertexKind::Dead) keep[v] = 0;
+    all = all && keep[v];
+  }
+  std::vector<std::uint32_t> numbering;
+  if (all) return numbering;
+  numbering.assign(mesh.vertex_count(), kNone);
+  std::uint32_t next = 0;
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    if (keep[v]) numbering[v] = next++;
+  return numbering;
+}
+
+void schedule_outputs(OutputSet& outputs, const Mesh& mesh, const Pslg& pslg, const InputFiles& in,
+                      const Switches& sw, const std::vector<std::uint32_t>* numbering,
+                      RunReport& report) {
+  const std::string out = output_base(in.base, sw.no_iteration);
+  const int first = sw.zero_based ? 0 : pslg.first_index;
+  const bool markers = !sw.no_markers;
+  const auto add = [&](const std::string& name, std::function<void(ByteSink&)> produce) {
+    report.written.push_back(name);
+    outputs.add_stream(name, std::move(produce));
+  };
+  // With -I the .node and .poly would overwrite the input; Triangle still writes the .node when the
+  // vertices came from a .poly.
+  if (!sw.no_node && !(sw.no_iteration && !in.is_poly)) {
+    const NodeWriteOptions opt{first, markers, numbering};
+    add(out + ".node", [&mesh, opt](ByteSink& s) { write_node_file(s, mesh, opt); });
+  }
+  if (!sw.no_ele) {
+    const EleWriteOptions opt{first, numbering, nullptr};
+    add(out + ".ele", [&mesh, opt](ByteSink& s) { write_ele_file(s, mesh, opt); });
+  }
+  const bool poly_output = in.is_poly || sw.convex_hull;
+  if (poly_output && !sw.no_poly && !sw.no_iteration) {
+    PolyWriteOptions opt;
+    opt.first_index = first;
+    opt.markers = markers;
+    opt.numbering = numbering;
+    const std::vector<Point> holes = sw.ignore_holes ? std::vector<Point>{} : pslg.holes;
+    add(out + ".poly", [&mesh, opt, holes, &pslg](ByteSink& s) { write_poly_file(s, mesh, opt, holes, pslg.regions); });
+  }
+  if (sw.edges) {
+    const EdgeWriteOptions opt{first, markers, numbering};
+    add(out + ".edge", [&mesh, opt](ByteSink& s) { write_edge_file(s, mesh, opt); });
+  }
+  if (sw.neighbors) add(out + ".neigh", [&mesh, first](ByteSink& s) { write_neigh_file(s, mesh, first); });
+}
+
+}  // namespace
+
+int run(const Switches& sw) {
+  RunReport report;
+  report.switches = &sw;
+  StageTimer timer(report);
+  const auto start = std::chrono::steady_clock::now();
+  Messages messages(sw);
+  if (sw.refine) throw UsageError("-r: refining a previous mesh is not available yet");
+  if (sw.sweepline) messages.notice("-F: the sweepline algorithm is not provided; divide and conquer is used");
+  for (const char* unsupported : unsupported_switches(sw))
+    messages.notice(std::string(unsupported) + " is not available yet and is ignored");
+
+  const InputFiles in = input_files(sw);
+  report.input_name = in.path;
+  const Pslg pslg = in.is_poly ? read_poly_file(in.path) : read_node_file(in.path);
+  report.pslg = &pslg;
+  timer.stage("read");
+
+  Mesh mesh = mesh_from_pslg(pslg);
+  const DelaunayReport dt = delaunay_triangulate(mesh, sw.algorithm, sw.threads);
+  report.duplicates = dt.duplicates.size();
+  report.counters.add(dt.counters);
+  timer.stage("Delaunay");
+
+  if (in.is_poly) {
+    constrain(mesh, pslg, dt, sw, report);
+    timer.stage("segments and holes");
+  } else if (sw.convex_hull) {
+    enclose_convex_hull(mesh);
+  }
+  assign_boundary_markers(mesh, pslg.has_markers);
+
+  if (sw.check) {
+    CheckOptions opt;
+    opt.conforming = sw.conforming_delaunay;
+    opt.convex_hull_expected = !in.is_poly;
+    report.check = check_mesh(mesh, opt);
+    timer.stage("check");
+    if (!report.check->ok()) {
+      messages.check_failed(*report.check);
+      return kExitCheck;
+    }
+  }
+
+  const std::vector<std::uint32_t> numbering = vertex_numbering(mesh, sw.jettison);
+  OutputSet outputs;
+  schedule_outputs(outputs, mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering, report);
+  outputs.commit();
+  timer.stage("write");
+  report.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  messages.finished(mesh, report);
+  return kExitOk;
+}
+
+}  // namespace deltri

@@ -1,0 +1,165 @@
+// Randomised incremental construction. The outside of the hull is covered by ghost triangles
+// (apex kGhostVertex) so that insert_vertex treats a point beyond the hull like any other: its
+// Lawson flips, with a ghost's circle taken as the open half-plane beyond its edge, widen the hull
+// exactly. A big enclosing triangle would instead leave its own edges in the hull.
+#include "delaunay/incremental.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+
+#include "mesh/operations.h"
+
+namespace deltri {
+namespace {
+
+// Input vertices without repeats (lowest id kept), in increasing id order.
+std::vector<VertexId> distinct_inputs(Mesh& mesh,
+                                      std::vector<std::pair<VertexId, VertexId>>& duplicates) {
+  std::vector<VertexId> ids;
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    if (mesh.kind[v] == VertexKind::Input) ids.push_back(v);
+  const auto& p = mesh.points;
+  std::sort(ids.begin(), ids.end(), [&p](VertexId a, VertexId b) {
+    if (p[a].x != p[b].x) return p[a].x < p[b].x;
+    if (p[a].y != p[b].y) return p[a].y < p[b].y;
+    return a < b;
+  });
+  std::vector<std::pair<VertexId, VertexId>> found;
+  std::vector<VertexId> kept;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    if (!kept.empty() && p[ids[i]] == p[kept.back()]) {
+      found.emplace_back(ids[i], kept.back());
+      mesh.kind[ids[i]] = VertexKind::Duplicate;
+    } else {
+      kept.push_back(ids[i]);
+    }
+  }
+  std::sort(found.begin(), found.end());
+  duplicates.insert(duplicates.end(), found.begin(), found.end());
+  std::sort(kept.begin(), kept.end());
+  return kept;
+}
+
+// Fisher-Yates with a fixed-seed generator and no library distribution, whose algorithms differ
+// between standard libraries: the same input gives the same mesh everywhere.
+void shuffle(std::vector<VertexId>& order) {
+  std::mt19937 rng(20240601u);
+  for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng() % i]);
+}
+
+// Position along a Hilbert curve over a 2^16 x 2^16 grid.
+std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
+  std::uint32_t d = 0;
+  for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
+    const std::uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
+    d += s * s * ((3 * rx) ^ ry);
+    if (ry == 0) {  // turn the lower-order quadrant so the curve stays continuous
+      if (rx == 1) {
+        x = ~x & 0xFFFFu;
+        y = ~y & 0xFFFFu;
+      }
+      std::swap(x, y);
+    }
+  }
+  return d;
+}
+
+std::vector<std::uint32_t> hilbert_keys(const Mesh& mesh, const std::vector<VertexId>& ids) {
+  double lo_x = 0, hi_x = 0, lo_y = 0, hi_y = 0;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    const Point& p = mesh.point(ids[i]);
+    lo_x = i == 0 ? p.x : std::min(lo_x, p.x);
+    hi_x = i == 0 ? p.x : std::max(hi_x, p.x);
+    lo_y = i == 0 ? p.y : std::min(lo_y, p.y);
+    hi_y = i == 0 ? p.y : std::max(hi_y, p.y);
+  }
+  const double span = std::max(hi_x - lo_x, hi_y - lo_y);
+  const double scale = span > 0 ? 65535.0 / span : 0.0;
+  std::vector<std::uint32_t> keys(mesh.vertex_count(), 0);
+  for (VertexId v : ids) {
+    const Point& p = mesh.point(v);
+    const auto cell = [scale](double d) {
+      return static_cast<std::uint32_t>(std::min(65535.0, d * scale));
+    };
+    keys[v] = hilbert_index(cell(p.x - lo_x), cell(p.y - lo_y));
+  }
+  return keys;
+}
+
+// A biased randomised insertion order (Amenta, Choi and Rote): a random order cut into rounds of
+// doubling size, each round sorted along a Hilbert curve. The randomness keeps the expected amount
+// of flipping linear; the sorting makes each walk from the previous vertex short.
+std::vector<VertexId> insertion_order(const Mesh& mesh, std::vector<VertexId> ids) {
+  const std::vector<std::uint32_t> keys = hilbert_keys(mesh, ids);
+  shuffle(ids);
+  for (std::size_t end = ids.size(); end > 64; end /= 2)
+    std::sort(ids.begin() + end / 2, ids.begin() + end, [&keys](VertexId a, VertexId b) {
+      return keys[a] != keys[b] ? keys[a] < keys[b] : a < b;
+    });
+  return ids;
+}
+
+// Moves three non-collinear vertices to the front of `order`; false if there are none. The first
+// two are distinct because duplicates are gone, so any third point off their line will do.
+bool front_triangle(const Mesh& mesh, Predicates& pred, std::vector<VertexId>& order) {
+  if (order.size() < 3) return false;
+  const Point& a = mesh.point(order[0]);
+  const Point& b = mesh.point(order[1]);
+  for (std::size_t k = 2; k < order.size(); ++k)
+    if (pred.orient2d(a, b, mesh.point(order[k])) != 0) {
+      std::rotate(order.begin() + 2, order.begin() + k, order.begin() + k + 1);
+      return true;
+    }
+  return false;
+}
+
+// The counter-clockwise triangle a, b, c and one ghost beyond each of its edges.
+void seed_triangle(Mesh& mesh, VertexId a, VertexId b, VertexId c) {
+  const TriangleId t = mesh.add_triangle(a, b, c);
+  TriangleId ghost[3];
+  for (unsigned i = 0; i < 3; ++i) {
+    const EdgeRef e = 3 * t + i;
+    ghost[i] = mesh.add_triangle(mesh.dest(e), mesh.org(e), kGhostVertex);
+    mesh.bond(e, 3 * ghost[i]);
+  }
+  // Ghost i ends (side 2, ghost -> corner i+1) where ghost i+1 begins (side 1, corner i+1 ->
+  // ghost).
+  for (unsigned i = 0; i < 3; ++i) mesh.bond(3 * ghost[i] + 2, 3 * ghost[(i + 1) % 3] + 1);
+}
+
+void remove_ghosts(Mesh& mesh) {
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    const EdgeRef e = 3 * t;
+    if (mesh.corner[e] == kGhostVertex || mesh.corner[e + 1] == kGhostVertex ||
+        mesh.corner[e + 2] == kGhostVertex)
+      mesh.kill_triangle(t);
+  }
+  mesh.compact_triangles();
+}
+
+}  // namespace
+
+void incremental_delaunay(Mesh& mesh, Predicates& pred,
+                          std::vector<std::pair<VertexId, VertexId>>& duplicates) {
+  mesh.corner.clear();
+  mesh.link.clear();
+  mesh.subseg.clear();
+  mesh.free_triangles.clear();
+  mesh.triangle_attributes.clear();
+  mesh.area_bound.clear();
+  std::vector<VertexId> order = insertion_order(mesh, distinct_inputs(mesh, duplicates));
+  if (!front_triangle(mesh, pred, order)) return;
+  if (pred.orient2d(mesh.point(order[0]), mesh.point(order[1]), mesh.point(order[2])) < 0)
+    std::swap(order[0], order[1]);
+  seed_triangle(mesh, order[0], order[1], order[2]);
+  EdgeRef hint = 0;
+  for (std::size_t k = 3; k < order.size(); ++k) {
+    const InsertResult r = insert_vertex(mesh, pred, order[k], hint);
+    if (r.status == InsertStatus::Inserted) hint = r.edge;
+  }
+  remove_ghosts(mesh);
+}
+
+}  // namespace deltri

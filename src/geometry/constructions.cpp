@@ -1,0 +1,131 @@
+#include "geometry/constructions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geometry/exact_determinants.h"
+#include "geometry/expansion.h"
+
+namespace deltri {
+namespace {
+
+// (b - a) x (c - a) to nearly full relative accuracy. The floating-point value is kept when the
+// subtraction cancelled fewer than about 10 bits (relative error then below 1e-12); a thinner
+// triangle gets the exact determinant, because the circumcentre of a thin triangle is only as good
+// as this denominator.
+double accurate_cross(const Point& a, const Point& b, const Point& c) {
+  const double left = (b.x - a.x) * (c.y - a.y);
+  const double right = (b.y - a.y) * (c.x - a.x);
+  const double cross = left - right;
+  if (std::fabs(cross) >= 0x1p-10 * (std::fabs(left) + std::fabs(right))) return cross;
+  return exact::orient2d_value(a, b, c);
+}
+
+struct ShortestEdge {
+  Point p, q, opposite;
+};
+
+ShortestEdge shortest_edge(const Point& a, const Point& b, const Point& c) {
+  const double ab = squared_distance(a, b), bc = squared_distance(b, c), ca = squared_distance(c, a);
+  if (ab <= bc && ab <= ca) return {a, b, c};
+  if (bc <= ca) return {b, c, a};
+  return {c, a, b};
+}
+
+// Clamping to the overlap of the two ranges cannot move a correct answer and keeps a rounded one
+// from leaving either segment.
+double clamp_to_both(double value, double a, double b, double c, double d) {
+  const double lo = std::max(std::min(a, b), std::min(c, d));
+  const double hi = std::min(std::max(a, b), std::max(c, d));
+  return lo <= hi ? std::clamp(value, lo, hi) : value;
+}
+
+// (o1 * v_b - o2 * v_a) / (o1 - o2) with the numerator and denominator exact until the division:
+// the coordinate of the point where orient2d(c, d, .), affine along ab, vanishes.
+double crossing_coordinate(const double* o1, int n1, const double* o2, int n2, double v_a,
+                           double v_b, double denominator) {
+  double first[2 * exact::kOrientMax], second[2 * exact::kOrientMax];
+  double numerator[4 * exact::kOrientMax];
+  const int first_len = expansion::scale(o1, n1, v_b, first);
+  const int second_len = expansion::scale(o2, n2, v_a, second);
+  expansion::negate(second, second_len);
+  const int len = expansion::sum(first, first_len, second, second_len, numerator);
+  return expansion::estimate(numerator, len) / denominator;
+}
+
+}  // namespace
+
+Point circumcenter(const Point& a, const Point& b, const Point& c) {
+  // Working relative to a keeps the squared lengths small when the triangle is far from the origin.
+  const double bx = b.x - a.x, by = b.y - a.y;
+  const double cx = c.x - a.x, cy = c.y - a.y;
+  const double b_len2 = bx * bx + by * by;
+  const double c_len2 = cx * cx + cy * cy;
+  const double inverse = 0.5 / accurate_cross(a, b, c);
+  return {a.x + (cy * b_len2 - by * c_len2) * inverse, a.y + (bx * c_len2 - cx * b_len2) * inverse};
+}
+
+double radius_edge_ratio_squared(const Point& a, const Point& b, const Point& c) {
+  // R = |ab| |bc| |ca| / (2 |cross|), so (R / shortest)^2 is the product of the two longer squared
+  // edges over 4 cross^2.
+  double edges[3] = {squared_distance(a, b), squared_distance(b, c), squared_distance(c, a)};
+  std::sort(edges, edges + 3);
+  const double cross = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  if (cross == 0.0) return std::numeric_limits<double>::infinity();
+  return edges[1] * edges[2] / (4.0 * cross * cross);
+}
+
+double radius_edge_ratio(const Point& a, const Point& b, const Point& c) {
+  return std::sqrt(radius_edge_ratio_squared(a, b, c));
+}
+
+Point off_center(const Point& a, const Point& b, const Point& c, double beta) {
+  // Let pq (length l, midpoint m) be the shortest edge. A point x on pq's bisector at distance h
+  // from m forms an isosceles triangle pqx; its apex angle t is its smallest angle when h is large,
+  // and its radius-edge ratio is 1 / (2 sin t). Asking for ratio beta gives sin t = 1 / (2 beta)
+  // and h = (l / 2) cot(t / 2) = l (beta + sqrt(beta^2 - 1/4)). The circumcentre lies on the same
+  // bisector, on the side of the third vertex r (the angle at r is the smallest, below 90 degrees);
+  // if it is no farther from m than h it is the better choice, otherwise the off-centre is the point
+  // at distance h toward it. Then x = m + k n with n = pq rotated a quarter turn toward r, |n| = l
+  // and k = beta + sqrt(beta^2 - 1/4).
+  const Point centre = circumcenter(a, b, c);
+  if (!(beta > 0.5)) return centre;
+  const ShortestEdge e = shortest_edge(a, b, c);
+  const double ex = e.q.x - e.p.x, ey = e.q.y - e.p.y;
+  const Point mid{e.p.x + 0.5 * ex, e.p.y + 0.5 * ey};
+  const double k = beta + std::sqrt(beta * beta - 0.25);
+  if (squared_distance(mid, centre) <= k * k * (ex * ex + ey * ey)) return centre;
+  const double toward_r = ex * (e.opposite.y - e.p.y) - ey * (e.opposite.x - e.p.x);
+  const double side = toward_r < 0.0 ? -1.0 : 1.0;
+  return {mid.x - side * k * ey, mid.y + side * k * ex};
+}
+
+Point segment_intersection(const Point& a, const Point& b, const Point& c, const Point& d) {
+  // orient2d(c, d, .) is affine along ab, with exact values o1 at a and o2 at b, so the crossing is
+  // (o1 b - o2 a) / (o1 - o2). Evaluating numerator and denominator exactly leaves only the final
+  // rounding and division: a few ulps, however long or far from the origin the segments are.
+  // The numerator has degree three in the coordinates, so they must stay below about 1e100.
+  double o1[exact::kOrientMax], o2[exact::kOrientMax], difference[2 * exact::kOrientMax];
+  const int n1 = exact::orient2d(c, d, a, o1);
+  int n2 = exact::orient2d(c, d, b, o2);
+  expansion::negate(o2, n2);
+  const int dn = expansion::sum(o1, n1, o2, n2, difference);
+  expansion::negate(o2, n2);
+  if (expansion::sign(difference, dn) == 0) return a;
+  const double denominator = expansion::estimate(difference, dn);
+  const double x = crossing_coordinate(o1, n1, o2, n2, a.x, b.x, denominator);
+  const double y = crossing_coordinate(o1, n1, o2, n2, a.y, b.y, denominator);
+  return {clamp_to_both(x, a.x, b.x, c.x, d.x), clamp_to_both(y, a.y, b.y, c.y, d.y)};
+}
+
+double triangle_area(const Point& a, const Point& b, const Point& c) {
+  return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+}
+
+double squared_distance(const Point& a, const Point& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return dx * dx + dy * dy;
+}
+
+}  // namespace deltri

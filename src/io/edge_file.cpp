@@ -1,0 +1,57 @@
+#include "io/edge_file.h"
+
+#include "io/output_numbering.h"
+
+namespace deltri {
+namespace {
+
+// The twin lies in another triangle, so comparing edge refs compares triangle slots.
+bool written_here(const Mesh& mesh, EdgeRef e) { return mesh.link[e] == kNone || mesh.link[e] > e; }
+
+std::uint32_t count_edges(const Mesh& mesh) {
+  std::uint32_t count = 0;
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+    if (mesh.is_live(t))
+      for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) count += written_here(mesh, e);
+  return count;
+}
+
+int edge_marker(const Mesh& mesh, EdgeRef e) {
+  if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
+    const int marker = mesh.subsegments[mesh.subseg[e]].marker;
+    if (marker != 0) return marker;
+  }
+  return mesh.link[e] == kNone ? 1 : 0;
+}
+
+}  // namespace
+
+void write_edge_file(ByteSink& sink, const Mesh& mesh, const EdgeWriteOptions& options) {
+  const VertexNumbering number{options.numbering, options.first_index};
+  const std::uint32_t count = count_edges(mesh);
+  sink.expect(static_cast<std::size_t>(count) * 32);
+  TextWriter out(sink);
+  out.integer(count);
+  out.next_integer(options.markers ? 1 : 0);
+  out.end_line();
+  long long index = options.first_index;
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
+      if (!written_here(mesh, e)) continue;
+      out.integer(index++);
+      out.next_integer(number(mesh.org(e)));
+      out.next_integer(number(mesh.dest(e)));
+      if (options.markers) out.next_integer(edge_marker(mesh, e));
+      out.end_line();
+    }
+  }
+  out.finish();
+}
+
+void write_edge_file(std::string& out, const Mesh& mesh, const EdgeWriteOptions& options) {
+  StringSink sink(out);
+  write_edge_file(sink, mesh, options);
+}
+
+}  // namespace deltri

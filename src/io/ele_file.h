@@ -1,0 +1,41 @@
+// The .ele format: triangles as corner numbers, counter-clockwise, with optional attributes.
+//   <#triangles> [<nodes per triangle 3|6> [<#attributes>]]
+//   <index> <n1> <n2> <n3> [<n4> <n5> <n6>] [<attribute>...]
+// With six nodes, n4/n5/n6 are the midpoints of the edges opposite n1/n2/n3 (-o2).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "io/text_writer.h"
+#include "mesh/mesh.h"
+
+namespace deltri {
+
+struct EleData {
+  std::uint32_t nodes_per_triangle = 3;
+  int num_attributes = 0;
+  std::vector<std::uint32_t> corners;  // nodes_per_triangle per triangle, 0-based vertex ids
+  std::vector<double> attributes;      // num_attributes per triangle
+  std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(corners.size() / nodes_per_triangle); }
+};
+
+// Reads a .ele for -r. `first_index` is the numbering of the matching .node; every node must be
+// one of its `vertex_count` vertices. Triangle indices must be integers but are not checked.
+EleData read_ele_file(const std::string& path, int first_index, std::uint32_t vertex_count);
+
+struct EleWriteOptions {
+  int first_index = 1;
+  // Same meaning as in NodeWriteOptions.
+  const std::vector<std::uint32_t>* numbering = nullptr;
+  // -o2: three vertex ids per triangle slot, the midpoints of the edges opposite corners 0, 1, 2.
+  const std::vector<VertexId>* midpoints = nullptr;
+};
+
+// Appends a .ele file: live triangles in slot order, numbered consecutively, with the mesh's
+// triangle attributes.
+void write_ele_file(std::string& out, const Mesh& mesh, const EleWriteOptions& options);
+void write_ele_file(ByteSink& out, const Mesh& mesh, const EleWriteOptions& options);
+
+}  // namespace deltri

@@ -1,0 +1,243 @@
+#include "io/node_file.h"
+
+#include <algorithm>
+#include <climits>
+#include <exception>
+#include <thread>
+
+#include "io/output_numbering.h"
+#include "pslg/errors.h"
+
+namespace deltri {
+namespace {
+
+constexpr long long kMaxVertices = 0xFFFFFFF0LL;  // leaves room for the mesh's reserved ids
+constexpr long long kMaxAttributes = 1 << 20;
+// Below these a second parsing thread costs more than it saves.
+constexpr std::uint32_t kParallelVertices = 100000;
+constexpr std::size_t kParallelBytes = std::size_t{2} << 20;
+// Index conventions for parse_vertices: the first line must say 0 or 1 / may say anything.
+constexpr long long kFirstFromFile = -1;
+constexpr long long kFirstAny = -2;
+
+struct NodeHeader {
+  std::uint32_t count = 0;
+  int attributes = 0;
+  bool markers = false;
+};
+
+NodeHeader read_node_header(LineReader& in, bool allow_empty) {
+  if (!in.next_line()) in.fail("unexpected end of file: the node header is missing");
+  NodeHeader h;
+  h.count = static_cast<std::uint32_t>(in.read_int({"node header", -1, "number of vertices"}, 0, kMaxVertices));
+  if (h.count < 3 && !(allow_empty && h.count == 0))
+    in.fail("a triangulation needs at least 3 vertices, the header says " + std::to_string(h.count));
+  if (in.has_field() && in.read_int({"node header", -1, "dimension"}, LLONG_MIN, LLONG_MAX) != 2)
+    in.fail("node header: dimension must be 2");
+  if (in.has_field())
+    h.attributes = static_cast<int>(in.read_int({"node header", -1, "number of attributes"}, 0, kMaxAttributes));
+  if (in.has_field()) h.markers = in.read_int({"node header", -1, "number of boundary markers"}, 0, INT_MAX) != 0;  // non-zero: markers present
+  return h;
+}
+
+// The first vertex line decides the numbering (or, for the second half of a split list, just
+// tells where it starts); every later one must follow it.
+void read_vertex_index(LineReader& in, long long& first, std::uint32_t k) {
+  if (k == 0 && first < 0) {
+    const long long index = in.read_int({"first vertex", -1, "index"}, LLONG_MIN, LLONG_MAX);
+    if (first == kFirstFromFile && index != 0 && index != 1)
+      in.fail("first vertex: index must be 0 or 1, not " + std::to_string(index));
+    first = index;
+    return;
+  }
+  const long long expected = first + static_cast<long long>(k);
+  const long long index = in.read_int({"vertex", expected, "index"}, LLONG_MIN, LLONG_MAX);
+  if (index != expected)
+    in.fail("vertex index " + std::to_string(index) + " is out of sequence: expected " + std::to_string(expected));
+}
+
+void read_vertex_fields(LineReader& in, Pslg& out, const NodeHeader& h, long long number) {
+  Point p;
+  p.x = in.read_double({"vertex", number, "x coordinate"});
+  p.y = in.read_double({"vertex", number, "y coordinate"});
+  out.points.push_back(p);
+  for (int a = 0; a < h.attributes; ++a) out.attributes.push_back(in.read_double({"vertex", number, "attribute", a + 1}));
+  if (h.markers) out.markers.push_back(static_cast<int>(in.read_int({"vertex", number, "boundary marker"}, INT_MIN, INT_MAX)));
+}
+
+// Reads vertex lines into `out` until `limit` are stored or the text ends; returns how many.
+// `after` is left just behind the last vertex read.
+std::uint32_t parse_vertices(LineReader& in, Pslg& out, const NodeHeader& h, std::uint32_t limit, long long& first,
+                             LineReader::Mark& after) {
+  std::uint32_t k = 0;
+  for (; k < limit && in.next_line(); ++k) {
+    read_vertex_index(in, first, k);
+    read_vertex_fields(in, out, h, first + static_cast<long long>(k));
+    after = in.mark();
+  }
+  return k;
+}
+
+// A header may promise billions of vertices; reserve no more than the remaining text can hold
+// ("i x y\n" is at least six bytes).
+void reserve_vertices(std::size_t bytes, Pslg& out, const NodeHeader& h) {
+  const std::size_t n = std::min<std::size_t>(h.count, bytes / 6 + 1);
+  out.points.reserve(n);
+  out.attributes.reserve(n * static_cast<std::size_t>(std::min(h.attributes, 64)));
+  if (h.markers) out.markers.reserve(n);
+}
+
+void read_vertices_serially(LineReader& in, Pslg& out, const NodeHeader& h) {
+  long long first = kFirstFromFile;
+  LineReader::Mark after = in.mark();
+  const std::uint32_t found = parse_vertices(in, out, h, h.count, first, after);
+  if (found < h.count)
+    in.fail("unexpected end of file: " + std::to_string(h.count) + " vertices announced, " + std::to_string(found) +
+            " found");
+  out.first_index = static_cast<int>(first);
+}
+
+// One half of a split vertex list. Errors end the half quietly: whether they matter depends on
+// where the other half ends, and a serial re-read reports them exactly as usual.
+struct VertexRun {
+  Pslg part;
+  long long first = kFirstAny;
+  std::uint32_t count = 0;
+  LineReader::Mark after{};
+  long lines = 0;  // lines seen, when the half ran to its end
+  std::exception_ptr fatal;
+};
+
+void run_half(LineReader in, const NodeHeader& h, VertexRun& run) {
+  run.after = in.mark();
+  try {
+    run.count = parse_vertices(in, run.part, h, h.count, run.first, run.after);
+    run.lines = in.line();
+  } catch (const InputError&) {
+    run.count = static_cast<std::uint32_t>(run.part.points.size());
+  } catch (...) {
+    run.fatal = std::current_exception();
+  }
+}
+
+void append(Pslg& out, const Pslg& part, std::uint32_t count, const NodeHeader& h) {
+  out.points.insert(out.points.end(), part.points.begin(), part.points.begin() + count);
+  out.attributes.insert(out.attributes.end(), part.attributes.begin(),
+                        part.attributes.begin() + static_cast<std::ptrdiff_t>(count) * h.attributes);
+  if (h.markers) out.markers.insert(out.markers.end(), part.markers.begin(), part.markers.begin() + count);
+}
+
+// Puts `in` behind the last vertex, which lies `needed` vertex lines into the second half.
+void resume_after(LineReader& in, const LineReader& tail, const VertexRun& first, const VertexRun& second,
+                  std::uint32_t needed) {
+  if (second.count == needed) {
+    in.reset({second.after.pos, first.lines + second.after.line, true});
+    return;
+  }
+  in = tail;
+  in.reset({tail.mark().pos, first.lines, false});
+  for (std::uint32_t k = 0; k < needed; ++k) in.next_line();
+}
+
+// Parses the two halves of the text at once; false when the serial reader must decide (an error,
+// or an odd split), in which case `out` is left empty.
+bool read_vertices_in_parallel(LineReader& in, Pslg& out, const NodeHeader& h) {
+  const LineReader tail = in.tail_after(in.bytes_left() / 2);
+  LineReader head = in;
+  head.end_at(tail);
+  VertexRun first, second;
+  first.first = kFirstFromFile;
+  std::thread worker(run_half, tail, std::cref(h), std::ref(second));
+  run_half(head, h, first);
+  worker.join();
+  if (first.fatal) std::rethrow_exception(first.fatal);
+  if (second.fatal) std::rethrow_exception(second.fatal);
+  const bool first_ran_out = first.count < h.count && first.lines > 0;
+  const std::uint32_t needed = h.count - first.count;
+  if (first.count == 0 || (needed > 0 && (!first_ran_out || second.count < needed ||
+                                          second.first != first.first + static_cast<long long>(first.count))))
+    return false;
+  out.first_index = static_cast<int>(first.first);
+  reserve_vertices(SIZE_MAX, out, h);
+  append(out, first.part, first.count, h);
+  if (needed == 0) {
+    in.reset(first.after);
+    return true;
+  }
+  append(out, second.part, needed, h);
+  resume_after(in, tail, first, second, needed);
+  return true;
+}
+
+}  // namespace
+
+std::uint32_t read_node_section(LineReader& in, Pslg& out, bool allow_empty) {
+  const NodeHeader h = read_node_header(in, allow_empty);
+  if (h.count == 0) return 0;
+  out.points.clear();
+  out.attributes.clear();
+  out.markers.clear();
+  out.num_attributes = h.attributes;
+  out.has_markers = h.markers;
+  out.source_name = in.name();
+  if (h.count >= kParallelVertices && in.bytes_left() >= kParallelBytes && read_vertices_in_parallel(in, out, h))
+    return h.count;
+  reserve_vertices(in.bytes_left(), out, h);
+  read_vertices_serially(in, out, h);
+  return h.count;
+}
+
+Pslg read_node_file(const std::string& path) {
+  LineReader in = LineReader::open(path);
+  Pslg pslg;
+  read_node_section(in, pslg);
+  return pslg;
+}
+
+namespace {
+
+void write_vertex_lines(TextWriter& out, const Mesh& mesh, const NodeWriteOptions& options) {
+  const VertexNumbering number{options.numbering, options.first_index};
+  const int na = mesh.num_attributes;
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+    if (!number.written(v)) continue;
+    out.integer(number(v));
+    out.next_real(mesh.points[v].x);
+    out.next_real(mesh.points[v].y);
+    for (int a = 0; a < na; ++a) out.next_real(mesh.attributes[static_cast<std::size_t>(v) * na + a]);
+    if (options.markers) out.next_integer(mesh.marker.empty() ? 0 : mesh.marker[v]);
+    out.end_line();
+  }
+}
+
+std::uint32_t written_vertex_count(const Mesh& mesh, const NodeWriteOptions& options) {
+  if (!options.numbering) return mesh.vertex_count();
+  std::uint32_t count = 0;
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v) count += (*options.numbering)[v] != kNone;
+  return count;
+}
+
+}  // namespace
+
+void write_node_section(TextWriter& out, const Mesh& mesh, const NodeWriteOptions& options) {
+  out.integer(written_vertex_count(mesh, options));
+  out.next_integer(2);
+  out.next_integer(mesh.num_attributes);
+  out.next_integer(options.markers ? 1 : 0);
+  out.end_line();
+  write_vertex_lines(out, mesh, options);
+}
+
+void write_node_file(ByteSink& sink, const Mesh& mesh, const NodeWriteOptions& options) {
+  sink.expect(static_cast<std::size_t>(mesh.vertex_count()) * (48 + 24 * static_cast<std::size_t>(mesh.num_attributes)));
+  TextWriter out(sink);
+  write_node_section(out, mesh, options);
+  out.finish();
+}
+
+void write_node_file(std::string& out, const Mesh& mesh, const NodeWriteOptions& options) {
+  StringSink sink(out);
+  write_node_file(sink, mesh, options);
+}
+
+}  // namespace deltri

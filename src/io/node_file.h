@@ -1,0 +1,42 @@
+// The .node format: vertices with optional attributes and boundary markers.
+//   <#vertices> [<dimension = 2> [<#attributes> [<#markers 0|1>]]]
+//   <index> <x> <y> [<attribute>...] [<marker>]
+// The first vertex's index (0 or 1) sets the numbering of the whole input; later indices must
+// follow it consecutively. Fields after the ones the header announces are ignored, as Triangle
+// does; so is anything after the last vertex.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "io/line_reader.h"
+#include "io/text_writer.h"
+#include "mesh/mesh.h"
+#include "pslg/pslg.h"
+
+namespace deltri {
+
+// Reads a .node file; at least three vertices are required.
+Pslg read_node_file(const std::string& path);
+
+// Reads a node section (header and vertex lines) into `out`, replacing its vertices; returns the
+// header's vertex count, which must be at least 3. With `allow_empty` a count of 0 is accepted
+// too: nothing is read and `out` is unchanged (a .poly then takes its vertices from the .node).
+std::uint32_t read_node_section(LineReader& in, Pslg& out, bool allow_empty = false);
+
+struct NodeWriteOptions {
+  int first_index = 1;
+  bool markers = true;  // false: -B, no marker column
+  // nullptr: every vertex in id order. Otherwise numbering[v] is v's output number minus
+  // first_index, or kNone to leave v out (-j). Vertices are still written in id order.
+  const std::vector<std::uint32_t>* numbering = nullptr;
+};
+
+// Appends a .node file of the mesh's vertices; markers come from mesh.marker (0 when empty).
+void write_node_file(std::string& out, const Mesh& mesh, const NodeWriteOptions& options);
+void write_node_file(ByteSink& out, const Mesh& mesh, const NodeWriteOptions& options);
+// The header and vertex lines, for writers that embed a node section.
+void write_node_section(TextWriter& out, const Mesh& mesh, const NodeWriteOptions& options);
+
+}  // namespace deltri

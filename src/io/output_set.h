@@ -1,0 +1,39 @@
+// All-or-nothing output: a run either leaves every output file in place or changes nothing.
+// Each file is first written in full to a temporary name in its own directory, so the final
+// renames (atomic on POSIX) happen only once every byte is safely written and closed.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/text_writer.h"
+
+namespace deltri {
+
+class OutputSet {
+ public:
+  // A file whose text is already in memory.
+  void add(std::string final_path, std::string contents);
+  // A file produced during commit(): `produce` writes into a sink that goes straight to the
+  // temporary file, so a large .ele never has to exist as one string.
+  void add_stream(std::string final_path, std::function<void(ByteSink&)> produce);
+
+  // Writes every file, then renames them into place. Throws OutputError("path: reason") if any
+  // write, flush or close fails; then every temporary is removed and existing files are
+  // untouched. (Should a rename itself fail after others succeeded, those stay renamed: the
+  // remaining renames are within the same directories and in practice cannot fail.)
+  void commit();
+
+  std::size_t size() const { return files_.size(); }
+
+ private:
+  struct File {
+    std::string final_path;
+    std::string contents;
+    std::function<void(ByteSink&)> produce;  // empty: use contents
+  };
+  std::vector<File> files_;
+};
+
+}  // namespace deltri

@@ -1,0 +1,202 @@
+#include "io/poly_file.h"
+
+#include <algorithm>
+#include <climits>
+
+#include "io/line_reader.h"
+#include "io/node_file.h"
+#include "io/output_numbering.h"
+#include "pslg/errors.h"
+
+namespace deltri {
+namespace {
+
+constexpr long long kMaxItems = 0xFFFFFFF0LL;
+
+std::string node_path_for(const std::string& poly_path) {
+  const std::string ext = ".poly";
+  if (poly_path.size() > ext.size() && poly_path.ends_with(ext))
+    return poly_path.substr(0, poly_path.size() - ext.size()) + ".node";
+  return poly_path + ".node";
+}
+
+void load_separate_vertices(const LineReader& in, Pslg& out) {
+  if (in.name() == "-") in.fail("the vertices are in a separate .node file, which standard input cannot name");
+  out = read_node_file(node_path_for(in.name()));
+}
+
+// Reads a section header's count; the section must be there.
+std::uint32_t read_count(LineReader& in, const char* section) {
+  if (!in.next_line()) in.fail(std::string("unexpected end of file: the ") + section + " header is missing");
+  return static_cast<std::uint32_t>(in.read_int({section, -1, "count"}, 0, kMaxItems));
+}
+
+std::uint32_t read_endpoint(LineReader& in, const Pslg& pslg, long long number, const char* which) {
+  const long long first = pslg.first_index;
+  const long long last = first + static_cast<long long>(pslg.points.size()) - 1;
+  const long long v = in.read_int({"segment", number, which}, LLONG_MIN, LLONG_MAX);
+  if (v < first || v > last)
+    in.fail("segment " + std::to_string(number) + ": " + which + " " + std::to_string(v) +
+            " is not a vertex (vertices are numbered " + std::to_string(first) + " to " + std::to_string(last) + ")");
+  return static_cast<std::uint32_t>(v - first);
+}
+
+void read_segment(LineReader& in, Pslg& pslg, long long number) {
+  in.read_int({"segment", number, "index"}, LLONG_MIN, LLONG_MAX);
+  Pslg::Segment s;
+  s.a = read_endpoint(in, pslg, number, "first endpoint");
+  s.b = read_endpoint(in, pslg, number, "second endpoint");
+  // A zero-length segment is legal input: the constrained Delaunay stage ignores it and says so.
+  if (pslg.has_segment_markers) s.marker = static_cast<int>(in.read_int({"segment", number, "boundary marker"}, INT_MIN, INT_MAX));
+  pslg.segments.push_back(s);
+}
+
+void read_segments(LineReader& in, Pslg& pslg) {
+  const std::uint32_t count = read_count(in, "segment header");
+  if (in.has_field()) pslg.has_segment_markers = in.read_int({"segment header", -1, "number of boundary markers"}, 0, INT_MAX) != 0;  // any non-zero count means "markers present", as Triangle reads it
+  pslg.segments.reserve(std::min<std::size_t>(count, in.bytes_left() / 6 + 1));
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const long long number = pslg.first_index + static_cast<long long>(k);
+    if (!in.next_line()) in.fail("unexpected end of file: " + std::to_string(count) + " segments announced, " + std::to_string(k) + " found");
+    read_segment(in, pslg, number);
+  }
+}
+
+void read_holes(LineReader& in, Pslg& pslg) {
+  const std::uint32_t count = read_count(in, "hole header");
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const long long number = pslg.first_index + static_cast<long long>(k);
+    if (!in.next_line()) in.fail("unexpected end of file: " + std::to_string(count) + " holes announced, " + std::to_string(k) + " found");
+    in.read_int({"hole", number, "index"}, LLONG_MIN, LLONG_MAX);
+    Point p;
+    p.x = in.read_double({"hole", number, "x coordinate"});
+    p.y = in.read_double({"hole", number, "y coordinate"});
+    pslg.holes.push_back(p);
+  }
+}
+
+void read_regions(LineReader& in, Pslg& pslg) {
+  if (!in.next_line()) return;  // the region section is optional
+  const std::uint32_t count = static_cast<std::uint32_t>(in.read_int({"region header", -1, "count"}, 0, kMaxItems));
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const long long number = pslg.first_index + static_cast<long long>(k);
+    if (!in.next_line()) in.fail("unexpected end of file: " + std::to_string(count) + " regions announced, " + std::to_string(k) + " found");
+    in.read_int({"region", number, "index"}, LLONG_MIN, LLONG_MAX);
+    Pslg::Region r;
+    r.at.x = in.read_double({"region", number, "x coordinate"});
+    r.at.y = in.read_double({"region", number, "y coordinate"});
+    r.attribute = in.read_double({"region", number, "attribute"});
+    r.max_area = in.has_field() ? in.read_double({"region", number, "maximum area"}) : r.attribute;
+    pslg.regions.push_back(r);
+  }
+}
+
+// For each subsegment id, the first live edge carrying it (kNone: gone from the mesh) and
+// whether it lies on the mesh boundary.
+struct LiveSubsegments {
+  std::vector<EdgeRef> edge;
+  std::vector<bool> boundary;
+  std::uint32_t count = 0;
+};
+
+LiveSubsegments find_live_subsegments(const Mesh& mesh) {
+  LiveSubsegments live;
+  if (!mesh.has_subsegments()) return live;
+  live.edge.assign(mesh.subsegments.size(), kNone);
+  live.boundary.assign(mesh.subsegments.size(), false);
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
+      const SubsegmentId s = mesh.subseg[e];
+      if (s == kNone || s >= live.edge.size()) continue;
+      if (live.edge[s] == kNone) {
+        live.edge[s] = e;
+        ++live.count;
+      }
+      if (mesh.link[e] == kNone) live.boundary[s] = true;
+    }
+  }
+  return live;
+}
+
+void write_segments(TextWriter& out, const Mesh& mesh, const PolyWriteOptions& options) {
+  const LiveSubsegments live = find_live_subsegments(mesh);
+  const VertexNumbering number{options.numbering, options.first_index};
+  out.integer(live.count);
+  out.next_integer(options.markers ? 1 : 0);
+  out.end_line();
+  long long index = options.first_index;
+  for (SubsegmentId s = 0; s < live.edge.size(); ++s) {
+    const EdgeRef e = live.edge[s];
+    if (e == kNone) continue;
+    out.integer(index++);
+    out.next_integer(number(mesh.org(e)));
+    out.next_integer(number(mesh.dest(e)));
+    const int marker = mesh.subsegments[s].marker;
+    if (options.markers) out.next_integer(marker != 0 ? marker : live.boundary[s] ? 1 : 0);
+    out.end_line();
+  }
+}
+
+void write_holes(TextWriter& out, const std::vector<Point>& holes, int first_index) {
+  out.integer(static_cast<long long>(holes.size()));
+  out.end_line();
+  for (std::size_t k = 0; k < holes.size(); ++k) {
+    out.integer(first_index + static_cast<long long>(k));
+    out.next_real(holes[k].x);
+    out.next_real(holes[k].y);
+    out.end_line();
+  }
+}
+
+void write_regions(TextWriter& out, const std::vector<Pslg::Region>& regions, int first_index) {
+  if (regions.empty()) return;
+  out.integer(static_cast<long long>(regions.size()));
+  out.end_line();
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    out.integer(first_index + static_cast<long long>(k));
+    out.next_real(regions[k].at.x);
+    out.next_real(regions[k].at.y);
+    out.next_real(regions[k].attribute);
+    out.next_real(regions[k].max_area);
+    out.end_line();
+  }
+}
+
+}  // namespace
+
+Pslg read_poly_file(const std::string& path) {
+  LineReader in = LineReader::open(path);
+  Pslg pslg;
+  if (read_node_section(in, pslg, true) == 0) load_separate_vertices(in, pslg);
+  read_segments(in, pslg);
+  read_holes(in, pslg);
+  read_regions(in, pslg);
+  pslg.has_segment_section = true;
+  return pslg;
+}
+
+void write_poly_file(ByteSink& sink, const Mesh& mesh, const PolyWriteOptions& options,
+                     const std::vector<Point>& holes, const std::vector<Pslg::Region>& regions) {
+  TextWriter out(sink);
+  if (options.with_vertices) {
+    write_node_section(out, mesh, {options.first_index, options.markers, options.numbering});
+  } else {
+    out.text("0 2 ");
+    out.integer(mesh.num_attributes);
+    out.next_integer(options.markers ? 1 : 0);
+    out.end_line();
+  }
+  write_segments(out, mesh, options);
+  write_holes(out, holes, options.first_index);
+  write_regions(out, regions, options.first_index);
+  out.finish();
+}
+
+void write_poly_file(std::string& out, const Mesh& mesh, const PolyWriteOptions& options,
+                     const std::vector<Point>& holes, const std::vector<Pslg::Region>& regions) {
+  StringSink sink(out);
+  write_poly_file(sink, mesh, options, holes, regions);
+}
+
+}  // namespace deltri

@@ -1,0 +1,73 @@
+// Helpers shared by the mesh operations in this directory; not part of the public API.
+#pragma once
+
+#include "mesh/mesh.h"
+
+namespace deltri::detail {
+
+// Ghost triangles carry kGhostVertex as one corner; geometry must never be asked about them.
+inline bool is_ghost(const Mesh& m, TriangleId t) {
+  return m.corner[3 * t] == kGhostVertex || m.corner[3 * t + 1] == kGhostVertex ||
+         m.corner[3 * t + 2] == kGhostVertex;
+}
+
+inline bool carries_subsegment(const Mesh& m, EdgeRef e) {
+  return !m.subseg.empty() && m.subseg[e] != kNone;
+}
+
+// What lies across an edge: the twin and the subsegment. Saved before corners are rewritten so the
+// neighbourhood can be re-attached to whichever slot ends up holding the same edge.
+struct EdgeSurround {
+  EdgeRef link = kNone;
+  SubsegmentId seg = kNone;
+};
+
+inline EdgeSurround surround_of(const Mesh& m, EdgeRef e) {
+  return {m.link[e], m.subseg.empty() ? kNone : m.subseg[e]};
+}
+
+inline void attach(Mesh& m, EdgeRef e, EdgeSurround s) {
+  m.link[e] = s.link;
+  if (s.link != kNone) m.link[s.link] = e;
+  if (!m.subseg.empty()) m.subseg[e] = s.seg;
+}
+
+// Bonds two edges that are new to each other and therefore interior to the change: no subsegment.
+inline void bond_inner(Mesh& m, EdgeRef e, EdgeRef f) {
+  m.bond(e, f);
+  if (!m.subseg.empty()) m.subseg[e] = m.subseg[f] = kNone;
+}
+
+// Children of a split triangle inherit its region attributes and area bound.
+inline void copy_triangle_data(Mesh& m, TriangleId from, TriangleId to) {
+  const int na = m.num_triangle_attributes;
+  for (int k = 0; k < na; ++k)
+    m.triangle_attributes[static_cast<std::size_t>(to) * na + k] =
+        m.triangle_attributes[static_cast<std::size_t>(from) * na + k];
+  if (!m.area_bound.empty()) m.area_bound[to] = m.area_bound[from];
+}
+
+// Frees a slot whose neighbours have already been re-attached elsewhere, so they must not be
+// unlinked by kill_triangle.
+inline void release(Mesh& m, TriangleId t) {
+  m.link[3 * t] = m.link[3 * t + 1] = m.link[3 * t + 2] = kNone;
+  m.kill_triangle(t);
+}
+
+// The side of t whose origin is v, or 3 if v is not a corner of t.
+inline unsigned corner_index(const Mesh& m, TriangleId t, VertexId v) {
+  unsigned i = 0;
+  while (i < 3 && m.corner[3 * t + i] != v) ++i;
+  return i;
+}
+
+// The exact inverse of flip(): restores both slots to their contents before the flip that
+// returned `flipped`, side for side.
+void unflip(Mesh& m, EdgeRef flipped);
+
+// The exact inverses of split_triangle and split_edge, given the slot that existed before the
+// split (it still holds the new vertex) once every later change has been undone.
+void unsplit_triangle(Mesh& m, TriangleId original);
+void unsplit_edge(Mesh& m, TriangleId original, unsigned vertex_side);
+
+}  // namespace deltri::detail

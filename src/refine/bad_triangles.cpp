@@ -1,0 +1,88 @@
+#include "refine/bad_triangles.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace deltri {
+namespace {
+
+double length2(const Point& a, const Point& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return dx * dx + dy * dy;
+}
+
+bool has_subsegment(const Mesh& mesh, EdgeRef e) {
+  return mesh.has_subsegments() && mesh.subseg[e] != kNone;
+}
+
+}  // namespace
+
+QualityRules make_quality_rules(double min_angle_deg, bool quality, double max_area,
+                                bool use_area_bounds, double max_edge_length) {
+  QualityRules rules;
+  if (quality && min_angle_deg > 0.0) {
+    const double s = std::sin(min_angle_deg * std::numbers::pi / 180.0);
+    rules.sin2_theta = s * s;
+  }
+  rules.max_area = max_area;
+  rules.use_area_bounds = use_area_bounds;
+  rules.max_edge_length = max_edge_length;
+  return rules;
+}
+
+bool angle_between_subsegments(const Mesh& mesh, EdgeRef e) {
+  return has_subsegment(mesh, lnext(e)) && has_subsegment(mesh, lprev(e));
+}
+
+TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta) {
+  TriangleShape shape;
+  double len2[3];
+  for (unsigned i = 0; i < 3; ++i) {
+    const EdgeRef e = edge_of(t, i);
+    len2[i] = length2(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e)));
+  }
+  unsigned s = 0;
+  if (len2[1] < len2[s]) s = 1;
+  if (len2[2] < len2[s]) s = 2;
+  shape.shortest = edge_of(t, s);
+  shape.shortest_length2 = len2[s];
+  const Point& a = mesh.point(mesh.corner[3 * t]);
+  const Point& b = mesh.point(mesh.corner[3 * t + 1]);
+  const Point& c = mesh.point(mesh.corner[3 * t + 2]);
+  const double twice_area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  shape.area = 0.5 * twice_area;
+  const double others = len2[(s + 1) % 3] * len2[(s + 2) % 3];
+  shape.ratio2_over_bound2 = twice_area > 0.0 ? others * sin2_theta / (twice_area * twice_area)
+                                              : HUGE_VAL;
+  return shape;
+}
+
+Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& rules) {
+  Assessment out;
+  out.shape = measure_triangle(mesh, t, rules.sin2_theta);
+  if (rules.sin2_theta > 0.0 && out.shape.ratio2_over_bound2 > 1.0) {
+    // With ties for the shortest edge, any tied smallest angle between subsegments exempts t.
+    bool exempt = false;
+    for (unsigned i = 0; i < 3 && !exempt; ++i) {
+      const EdgeRef e = edge_of(t, i);
+      const double l2 = length2(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e)));
+      exempt = l2 == out.shape.shortest_length2 && angle_between_subsegments(mesh, e);
+    }
+    out.skinny = !exempt;
+  }
+  const double area = out.shape.area;
+  if (rules.max_area > 0.0 && area > rules.max_area) out.too_large = true;
+  if (rules.use_area_bounds && !mesh.area_bound.empty() && mesh.area_bound[t] > 0.0 &&
+      area > mesh.area_bound[t])
+    out.too_large = true;
+  if (rules.max_edge_length > 0.0) {
+    const double limit2 = rules.max_edge_length * rules.max_edge_length;
+    for (unsigned i = 0; i < 3; ++i) {
+      const EdgeRef e = edge_of(t, i);
+      if (length2(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e))) > limit2) out.too_large = true;
+    }
+  }
+  return out;
+}
+
+}  // namespace deltri

@@ -1,0 +1,45 @@
+// Which triangles Delaunay refinement must split (Fig. 38 l.8, Fig. 39 l.42/l.54): those with an
+// angle below theta, unless that angle separates two subsegments (nothing can improve it), and
+// those too large for the user (delta(t)).
+#pragma once
+
+#include "mesh/mesh.h"
+
+namespace deltri {
+
+struct QualityRules {
+  double sin2_theta = 0.0;        // sin^2 of the minimum angle; 0 turns the angle test off
+  double max_area = 0.0;          // <= 0: none
+  bool use_area_bounds = false;   // also honour mesh.area_bound[t] when positive
+  double max_edge_length = 0.0;   // <= 0: none
+};
+
+QualityRules make_quality_rules(double min_angle_deg, bool quality, double max_area,
+                                bool use_area_bounds, double max_edge_length);
+
+struct TriangleShape {
+  EdgeRef shortest = kNone;  // the triangle's shortest edge
+  double shortest_length2 = 0.0;
+  // (r / B)^2 with r the circumradius-to-shortest-edge ratio and B = 1 / (2 sin theta); > 1 means
+  // the smallest angle is below theta. Equals l1^2 l2^2 sin^2(theta) / (2 area)^2 with l1, l2
+  // the two other edges, since r = l1 l2 l3 / (4 area).
+  double ratio2_over_bound2 = 0.0;
+  double area = 0.0;
+};
+
+TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta);
+
+struct Assessment {
+  bool skinny = false;     // smallest angle below theta and not between two subsegments
+  bool too_large = false;  // delta(t)
+  bool bad() const { return skinny || too_large; }
+  TriangleShape shape;
+};
+
+// Fig. 38 l.8: "delta(t) or t has an angle less than theta (but not separating two subsegments)".
+Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& rules);
+
+// True when the angle opposite edge e (at apex(e)) lies between two subsegments.
+bool angle_between_subsegments(const Mesh& mesh, EdgeRef e);
+
+}  // namespace deltri

@@ -1,0 +1,124 @@
+#include "refine/candidate_probe.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace deltri {
+
+void CavityMarks::begin(std::uint32_t slots) {
+  if (stamp_.size() < slots) stamp_.resize(slots, 0);
+  if (++now_ == 0) {  // wrapped: forget every old mark
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    now_ = 1;
+  }
+}
+
+bool CavityMarks::mark(TriangleId t) {
+  if (stamp_[t] == now_) return false;
+  stamp_[t] = now_;
+  return true;
+}
+
+namespace detail {
+namespace {
+
+double distance2(const Point& a, const Point& b) {
+  const double dx = a.x - b.x, dy = a.y - b.y;
+  return dx * dx + dy * dy;
+}
+
+// The side of T through which the ray from q towards c leaves: its origin on or right of the
+// ray, its destination strictly left, and c strictly beyond it. kNone if no side qualifies
+// (q itself outside T by rounding, or a ray grazing a vertex).
+EdgeRef exit_side(const Mesh& mesh, Predicates& pred, TriangleId t, const Point& q, const Point& c,
+                  const double (&o)[3]) {
+  for (unsigned i = 0; i < 3; ++i) {
+    if (o[i] >= 0) continue;
+    const EdgeRef e = edge_of(t, i);
+    if (pred.orient2d(q, c, mesh.point(mesh.org(e))) <= 0 &&
+        pred.orient2d(q, c, mesh.point(mesh.dest(e))) > 0)
+      return e;
+  }
+  for (unsigned i = 0; i < 3; ++i)  // visibility step: any side that c lies beyond
+    if (o[i] < 0) return edge_of(t, i);
+  return kNone;
+}
+
+}  // namespace
+
+WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const Point& c) {
+  WalkResult result;
+  const Point& a = mesh.point(mesh.corner[3 * t]);
+  const Point& b = mesh.point(mesh.corner[3 * t + 1]);
+  const Point& d = mesh.point(mesh.corner[3 * t + 2]);
+  const Point q{(a.x + b.x + d.x) / 3.0, (a.y + b.y + d.y) / 3.0};
+  const std::uint64_t limit = 2 * static_cast<std::uint64_t>(mesh.triangle_slots()) + 16;
+  for (std::uint64_t step = 0; step < limit; ++step) {
+    double o[3];
+    int zeros = 0;
+    for (unsigned i = 0; i < 3; ++i) {
+      const EdgeRef e = edge_of(t, i);
+      o[i] = pred.orient2d(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e)), c);
+      zeros += o[i] == 0;
+    }
+    if (o[0] >= 0 && o[1] >= 0 && o[2] >= 0) {
+      result.container = edge_of(t, 0);
+      result.on_vertex = zeros >= 2;
+      return result;
+    }
+    const EdgeRef exit = exit_side(mesh, pred, t, q, c, o);
+    if (mesh.link[exit] == kNone || (mesh.has_subsegments() && mesh.subseg[exit] != kNone)) {
+      result.blocker = exit;
+      return result;
+    }
+    t = triangle_of(mesh.link[exit]);
+  }
+  result.on_vertex = true;  // gave up: treat c as unusable rather than guess
+  return result;
+}
+
+void cavity_of(const Mesh& mesh, Predicates& pred, const std::vector<TriangleId>& seeds,
+               const Point& c, CavityMarks& marks, const std::vector<double>& feature, Cavity& out) {
+  marks.begin(mesh.triangle_slots());
+  out.boundary_subsegments.clear();
+  out.nearest2 = HUGE_VAL;
+  out.local_feature = HUGE_VAL;
+  std::vector<TriangleId> todo;
+  for (TriangleId s : seeds)
+    if (marks.mark(s)) todo.push_back(s);
+  while (!todo.empty()) {
+    const TriangleId t = todo.back();
+    todo.pop_back();
+    for (unsigned i = 0; i < 3; ++i) {
+      const EdgeRef e = edge_of(t, i);
+      const VertexId u = mesh.org(e);
+      const double d2 = distance2(c, mesh.point(u));
+      out.nearest2 = std::min(out.nearest2, d2);
+      if (u < feature.size()) out.local_feature = std::min(out.local_feature, feature[u] + std::sqrt(d2));
+      if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
+        out.boundary_subsegments.push_back(e);
+        continue;
+      }
+      const EdgeRef twin = mesh.link[e];
+      if (twin == kNone) continue;
+      const TriangleId n = triangle_of(twin);
+      const Point& x = mesh.point(mesh.corner[3 * n]);
+      const Point& y = mesh.point(mesh.corner[3 * n + 1]);
+      const Point& z = mesh.point(mesh.corner[3 * n + 2]);
+      if (pred.incircle(x, y, z, c) > 0 && marks.mark(n)) todo.push_back(n);
+    }
+  }
+}
+
+}  // namespace detail
+
+SplitRadius split_insertion_radius(const Mesh& mesh, Predicates& pred, EdgeRef s, const Point& c,
+                                   CavityMarks& marks, const std::vector<double>& feature) {
+  std::vector<TriangleId> seeds{triangle_of(s)};
+  if (mesh.link[s] != kNone) seeds.push_back(triangle_of(mesh.link[s]));
+  detail::Cavity cavity;
+  detail::cavity_of(mesh, pred, seeds, c, marks, feature, cavity);
+  return {std::sqrt(cavity.nearest2), cavity.local_feature};
+}
+
+}  // namespace deltri

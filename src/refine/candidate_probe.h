@@ -1,0 +1,122 @@
+// Fig. 38 l.13-14 without touching the mesh: where would a Steiner point c go, which subsegments
+// would it encroach upon, and how short would its new edges be?
+//
+// The paper suggests inserting c, looking at the edges opposite it, and undoing the flips if c is
+// rejected. Looking is enough: in a constrained Delaunay triangulation the triangles that the
+// insertion of c destroys are exactly those reachable from the triangle containing c across
+// non-subsegment edges whose circumcircles strictly contain c (the same strict incircle test
+// Lawson's flips use), and the edges opposite c afterwards are the boundary of that cavity. So a
+// rejected point leaves the mesh and both queues exactly as they were, with nothing to undo.
+//
+// Locating c walks the straight line from the centroid of the bad triangle towards c (Appendix
+// A); a subsegment blocking the walk is encroached upon, whatever the encroachment rule.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/predicates.h"
+#include "mesh/mesh.h"
+#include "refine/encroached.h"
+
+namespace deltri {
+
+enum class ProbeStatus {
+  Clear,       // c can be inserted: it lies in the mesh and encroaches upon nothing
+  Encroaches,  // c encroaches upon `encroached` (a blocking subsegment is listed alone)
+  Unusable,    // c coincides with a vertex, lies on or behind a subsegment that may not be
+               // split (blocked), or leaves the mesh through an unprotected edge
+};
+
+struct Probe {
+  ProbeStatus status = ProbeStatus::Unusable;
+  EdgeRef container = kNone;           // an edge of the triangle containing c (Clear only)
+  bool blocked = false;                // the walk stopped at a subsegment or the boundary
+  std::vector<EdgeRef> encroached;     // edges carrying the encroached subsegments
+  double insertion_radius = 0.0;       // distance from c to the nearest vertex it would join
+  double local_feature = 0.0;          // min over those vertices u of feature[u] + |cu|
+};
+
+// Reusable triangle marks for the cavity search.
+class CavityMarks {
+ public:
+  void begin(std::uint32_t slots);
+  bool mark(TriangleId t);  // false if already marked in this search
+
+ private:
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t now_ = 0;
+};
+
+// Probes point c for a bad triangle t. `splittable(e)` says whether the subsegment on edge e may
+// be split at all (-Y); encroachment of unsplittable subsegments is not reported, except that a
+// walk they block makes c Unusable.
+// `feature` holds a 1-Lipschitz feature-size estimate per vertex (see termination_guard.h).
+template <class Splittable>
+Probe probe_candidate(const Mesh& mesh, Predicates& pred, TriangleId t, const Point& c,
+                      const EncroachRule& rule, CavityMarks& marks, const std::vector<double>& feature,
+                      Splittable&& splittable);
+
+struct SplitRadius {
+  double insertion_radius = 0.0;
+  double local_feature = 0.0;
+};
+// The same for a point c on the subsegment carried by edge s (a segment split).
+SplitRadius split_insertion_radius(const Mesh& mesh, Predicates& pred, EdgeRef s, const Point& c,
+                                   CavityMarks& marks, const std::vector<double>& feature);
+
+namespace detail {
+
+struct WalkResult {
+  EdgeRef container = kNone;  // an edge of the closed triangle containing c
+  EdgeRef blocker = kNone;    // the edge the walk could not cross
+  bool on_vertex = false;
+};
+WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const Point& c);
+
+struct Cavity {
+  std::vector<EdgeRef> boundary_subsegments;  // cavity edges carrying subsegments
+  double nearest2 = 0.0;                      // squared distance to the nearest cavity vertex
+  double local_feature = 0.0;                 // min of feature[u] + |cu| over cavity vertices
+};
+void cavity_of(const Mesh& mesh, Predicates& pred, const std::vector<TriangleId>& seeds,
+               const Point& c, CavityMarks& marks, const std::vector<double>& feature, Cavity& out);
+
+}  // namespace detail
+
+template <class Splittable>
+Probe probe_candidate(const Mesh& mesh, Predicates& pred, TriangleId t, const Point& c,
+                      const EncroachRule& rule, CavityMarks& marks, const std::vector<double>& feature,
+                      Splittable&& splittable) {
+  Probe probe;
+  const detail::WalkResult walk = detail::walk_towards(mesh, pred, t, c);
+  if (walk.on_vertex) return probe;
+  if (walk.blocker != kNone) {
+    probe.blocked = true;
+    if (!mesh.has_subsegments() || mesh.subseg[walk.blocker] == kNone || !splittable(walk.blocker))
+      return probe;
+    probe.status = ProbeStatus::Encroaches;
+    probe.encroached.push_back(walk.blocker);
+    return probe;
+  }
+  detail::Cavity cavity;
+  detail::cavity_of(mesh, pred, {triangle_of(walk.container)}, c, marks, feature, cavity);
+  probe.insertion_radius = std::sqrt(cavity.nearest2);
+  probe.local_feature = cavity.local_feature;
+  for (EdgeRef e : cavity.boundary_subsegments) {
+    const Point& a = mesh.point(mesh.org(e));
+    const Point& b = mesh.point(mesh.dest(e));
+    if (splittable(e)) {
+      if (encroaches(pred, a, b, c, rule)) probe.encroached.push_back(e);
+    } else if (pred.orient2d(a, b, c) == 0) {  // on a subsegment that may not be split
+      probe.blocked = true;
+      return probe;
+    }
+  }
+  probe.container = walk.container;
+  probe.status = probe.encroached.empty() ? ProbeStatus::Clear : ProbeStatus::Encroaches;
+  return probe;
+}
+
+}  // namespace deltri

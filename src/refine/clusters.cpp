@@ -1,0 +1,84 @@
+#include "refine/clusters.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace deltri {
+namespace {
+
+constexpr double kSixtyDegrees = std::numbers::pi / 3.0 * (1.0 + 1e-12);
+
+bool has_subsegment(const Mesh& mesh, EdgeRef e) { return mesh.subseg[e] != kNone; }
+
+// The angle at org(e) of triangle_of(e), between e and the reverse of lprev(e).
+double angle_at_origin(const Mesh& mesh, EdgeRef e) {
+  const Point& o = mesh.point(mesh.org(e));
+  const Point& d = mesh.point(mesh.dest(e));
+  const Point& a = mesh.point(mesh.apex(e));
+  const double ux = d.x - o.x, uy = d.y - o.y, vx = a.x - o.x, vy = a.y - o.y;
+  return std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+}
+
+// Turns counter-clockwise (ccw) or clockwise from edge e around its origin to the next edge that
+// carries a subsegment, adding up the angle. kNone when the boundary or `stop` comes first.
+EdgeRef next_spoke(const Mesh& mesh, EdgeRef e, bool ccw, EdgeRef stop, double& angle) {
+  angle = 0.0;
+  EdgeRef f = e;
+  while (true) {
+    EdgeRef next;
+    if (ccw) {
+      angle += angle_at_origin(mesh, f);
+      next = mesh.link[lprev(f)];
+      if (next == kNone) return kNone;
+    } else {
+      const EdgeRef twin = mesh.link[f];
+      if (twin == kNone) return kNone;
+      next = lnext(twin);
+      angle += angle_at_origin(mesh, next);
+    }
+    if (next == stop || next == e) return kNone;
+    if (has_subsegment(mesh, next)) return next;
+    f = next;
+  }
+}
+
+}  // namespace
+
+SegmentApices::SegmentApices(const Mesh& mesh) : apex_(mesh.vertex_count(), false) {
+  std::vector<unsigned char> degree(mesh.vertex_count(), 0);
+  if (!mesh.has_subsegments()) return;
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+    if (mesh.corner[e] == kNone || mesh.subseg[e] == kNone) continue;
+    // Count each subsegment once: from the edge whose twin is missing or has a larger id.
+    const EdgeRef twin = mesh.link[e];
+    if (twin != kNone && twin < e) continue;
+    for (VertexId v : {mesh.org(e), mesh.dest(e)})
+      if (degree[v] < 2) ++degree[v];
+  }
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v) apex_[v] = degree[v] >= 2;
+}
+
+Cluster subsegment_cluster(const Mesh& mesh, EdgeRef from_apex) {
+  Cluster cluster;
+  cluster.members.push_back(from_apex);
+  cluster.min_separation = HUGE_VAL;
+  EdgeRef last_ccw = from_apex;
+  for (bool ccw : {true, false}) {
+    EdgeRef at = from_apex;
+    // A sweep that comes full circle stops where it began (counter-clockwise) or where the
+    // counter-clockwise sweep ended (clockwise), so no member is counted twice.
+    const EdgeRef stop = ccw ? from_apex : last_ccw;
+    while (true) {
+      double angle = 0.0;
+      const EdgeRef spoke = next_spoke(mesh, at, ccw, stop, angle);
+      if (spoke == kNone || angle > kSixtyDegrees) break;
+      cluster.members.push_back(spoke);
+      cluster.min_separation = std::min(cluster.min_separation, angle);
+      at = spoke;
+      if (ccw) last_ccw = spoke;
+    }
+  }
+  return cluster;
+}
+
+}  // namespace deltri

@@ -1,0 +1,94 @@
+#include "refine/edge_finder.h"
+
+#include <deque>
+
+namespace deltri {
+namespace {
+
+constexpr int kLocalSearchLimit = 64;
+
+bool leaves(const Mesh& mesh, EdgeRef e, VertexId v) {
+  return e != kNone && e < mesh.corner.size() && mesh.is_live(triangle_of(e)) && mesh.org(e) == v;
+}
+
+EdgeRef corner_edge(const Mesh& mesh, TriangleId t, VertexId v) {
+  for (unsigned i = 0; i < 3; ++i)
+    if (mesh.corner[3 * t + i] == v) return 3 * t + i;
+  return kNone;
+}
+
+// Breadth-first over neighbours of the slot that once held v: flips keep triangles local.
+EdgeRef search_near(const Mesh& mesh, TriangleId start, VertexId v) {
+  if (!mesh.is_live(start)) return kNone;
+  std::deque<TriangleId> todo{start};
+  std::vector<TriangleId> seen{start};
+  for (int steps = 0; !todo.empty() && steps < kLocalSearchLimit; ++steps) {
+    const TriangleId t = todo.front();
+    todo.pop_front();
+    if (const EdgeRef e = corner_edge(mesh, t, v); e != kNone) return e;
+    for (unsigned i = 0; i < 3; ++i) {
+      const EdgeRef twin = mesh.link[3 * t + i];
+      if (twin == kNone) continue;
+      const TriangleId n = triangle_of(twin);
+      bool known = false;
+      for (TriangleId s : seen) known = known || s == n;
+      if (!known) {
+        seen.push_back(n);
+        todo.push_back(n);
+      }
+    }
+  }
+  return kNone;
+}
+
+}  // namespace
+
+EdgeFinder::EdgeFinder(const Mesh& mesh) : out_(mesh.vertex_count(), kNone) {
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+    if (mesh.corner[e] != kNone) out_[mesh.corner[e]] = e;
+}
+
+void EdgeFinder::note(const Mesh& mesh, EdgeRef e) {
+  const VertexId v = mesh.org(e);
+  if (v >= out_.size()) out_.resize(v + 1, kNone);
+  out_[v] = e;
+}
+
+void EdgeFinder::note_star(const Mesh& mesh, EdgeRef out) {
+  for_each_around(mesh, out, [&](EdgeRef e) {
+    note(mesh, e);
+    note(mesh, lnext(e));
+    note(mesh, lprev(e));
+  });
+}
+
+EdgeRef EdgeFinder::leaving(const Mesh& mesh, VertexId v) {
+  if (v >= out_.size()) out_.resize(v + 1, kNone);
+  const EdgeRef hint = out_[v];
+  if (leaves(mesh, hint, v)) return hint;
+  EdgeRef found = hint != kNone && hint < mesh.corner.size() ? search_near(mesh, triangle_of(hint), v)
+                                                             : kNone;
+  for (EdgeRef e = 0; found == kNone && e < mesh.corner.size(); ++e)
+    if (mesh.corner[e] == v) found = e;
+  out_[v] = found;
+  return found;
+}
+
+EdgeRef EdgeFinder::find(const Mesh& mesh, VertexId a, VertexId b) {
+  const EdgeRef out = leaving(mesh, a);
+  if (out == kNone) return kNone;
+  EdgeRef found = kNone;
+  for_each_around(mesh, out, [&](EdgeRef e) {
+    if (mesh.dest(e) == b) found = e;
+    // The last edge of an open fan is lprev of the last triangle, reversed: check it too.
+    if (mesh.apex(e) == b && found == kNone) found = lprev(e);
+  });
+  if (found != kNone && mesh.org(found) != a) {
+    // lprev(e) runs b -> a; the caller wants a -> b, which is its twin when there is one.
+    const EdgeRef twin = mesh.link[found];
+    return twin != kNone ? twin : found;
+  }
+  return found;
+}
+
+}  // namespace deltri

@@ -1,0 +1,59 @@
+// Delaunay refinement: the Terminator of Shewchuk 2001 (Sec. 6.3-6.5, Appendix A, Figs. 38-39),
+// with diametral lenses by default, concentric-shell segment splitting, off-centres, and a
+// termination guard for angle bounds beyond the proven range.
+//
+// Input: a constrained Delaunay triangulation whose exterior triangles and holes are gone, with
+// subsegments on the segment edges (a segment-bounded domain), possibly with markers, triangle
+// attributes and area bounds. Output: a constrained Delaunay triangulation (a conforming Delaunay
+// one with conforming_delaunay) in which every triangle meets the bounds, except where the report
+// says otherwise.
+//
+// Not done: Fig. 39 l.40-43, deleting the free vertices inside a subsegment's diametral circle
+// before splitting it when lenses are used (Chew). Without it the lens variant still terminates
+// (the guard bounds every new edge) but may create somewhat shorter edges near split subsegments;
+// vertices_deleted therefore stays 0.
+#pragma once
+
+#include <cstdint>
+
+#include "geometry/point.h"
+#include "geometry/predicates.h"
+#include "mesh/mesh.h"
+
+namespace deltri {
+
+struct RefineOptions {
+  double min_angle_deg = 20.0;          // theta (-q)
+  bool quality = false;                 // apply the angle bound at all
+  double max_area = 0.0;                // <= 0: none (-a with a number)
+  bool use_triangle_area_bounds = false;  // honour mesh.area_bound (-a alone, or regions)
+  bool lenses = true;                   // false with -D: diametral circles
+  bool conforming_delaunay = false;     // -D: the result must be Delaunay, not only constrained
+  int no_steiner_on_segments = 0;       // 0, 1 = not on boundary segments (-Y), 2 = none (-YY)
+  long max_steiner = -1;                // -S; -1 unlimited
+  bool off_centers = true;              // Ungor's off-centres instead of circumcentres
+  double max_edge_length = 0.0;         // <= 0: none; the -u size test
+};
+
+struct RefineReport {
+  std::uint64_t interior_steiner = 0;     // free vertices inserted (circumcentres, off-centres)
+  std::uint64_t segment_steiner = 0;      // vertices inserted on subsegments
+  std::uint64_t vertices_deleted = 0;     // free vertices deleted before a split (Chew; Fig. 39 l.40)
+  std::uint64_t encroached_splits = 0;    // subsegment splits
+  std::uint64_t rejected_candidates = 0;  // Steiner points rejected because they encroach
+  std::uint64_t declined_splits = 0;      // rejected points whose subsegments SPLITPERMITTED kept
+  std::uint64_t guard_refusals = 0;       // insertions refused by the termination guard
+  bool stopped_by_guard = false;
+  bool stopped_by_max_steiner = false;
+  double guard_length = 0.0;              // the edge-length floor used
+  // Triangles still bad afterwards (angle below theta, not between two subsegments, or too large).
+  std::uint64_t bad_triangles_left = 0;
+  double worst_ratio = 0.0;               // circumradius / shortest edge of the worst one
+  double worst_min_angle_deg = 0.0;       // its smallest angle
+  Point worst_location;                   // its centroid
+  std::size_t peak_queue = 0;             // bad-triangle queue
+};
+
+RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& opt);
+
+}  // namespace deltri

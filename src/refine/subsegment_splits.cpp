@@ -1,0 +1,93 @@
+// The subsegment side of the Terminator: Fig. 39, SPLITENCROACHEDSUBSEGMENTS.
+#include "mesh/operations.h"
+#include "refine/concentric_shells.h"
+#include "refine/lawson.h"
+#include "refine/termination_guard.h"
+#include "refine/terminator.h"
+
+namespace deltri {
+
+std::uint64_t Terminator::split_encroached_subsegments(bool queue_triangles) {
+  std::uint64_t splits = 0;
+  while (!encroached_.empty()) {  // Fig. 39 l.36
+    const EncroachedSubsegment entry = encroached_.pop();  // Fig. 39 l.37
+    const EdgeRef s = current_edge(entry);  // Fig. 39 l.38
+    if (s == kNone) continue;
+    if (!budget_left()) {
+      encroached_.clear();
+      break;
+    }
+    if (split_subsegment(s, queue_triangles)) ++splits;
+  }
+  return splits;
+}
+
+bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
+  const VertexId a = mesh_.org(s), b = mesh_.dest(s);
+  const Point& pa = mesh_.point(a);
+  const Point& pb = mesh_.point(b);
+  const Point p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));  // l.39
+  if (p == pa || p == pb) return false;  // out of precision: the subsegment cannot be split
+  const SplitRadius radius = split_insertion_radius(mesh_, pred_, s, p, marks_, feature_);
+  if (radius.insertion_radius < guard_floor(radius.local_feature, size_floor_)) {
+    refuse_by_guard();
+    return false;
+  }
+  // Fig. 39 l.40-43 (Chew's deletion of free vertices in the diametral circle, for lenses) is
+  // not done: see refine.h.
+  const VertexId v = add_segment_vertex(p, s);
+  feature_.push_back(radius.local_feature);
+  EdgeRef out = split_edge(mesh_, s, v);  // Fig. 39 l.44
+  out = restore_delaunay_around(mesh_, pred_, v, out);
+  ++report_.segment_steiner;
+  ++report_.encroached_splits;
+  new_vertex(out, queue_triangles);  // Fig. 39 l.45
+  for_each_around(mesh_, out, [&](EdgeRef e) {  // Fig. 39 l.46-49: the halves s1 and s2
+    for (EdgeRef half : {e, lprev(e)})
+      if (mesh_.subseg[half] != kNone && is_splittable(half) && is_encroached(mesh_, pred_, half, rule_))
+        enqueue_subsegment(half);
+  });
+  return true;
+}
+
+void Terminator::enqueue_subsegment(EdgeRef e) { encroached_.push({e, mesh_.org(e), mesh_.dest(e)}); }
+
+EdgeRef Terminator::current_edge(const EncroachedSubsegment& entry) {
+  const auto is_it = [&](EdgeRef e) {
+    if (e == kNone || e >= mesh_.corner.size() || !mesh_.is_live(triangle_of(e))) return false;
+    if (mesh_.subseg[e] == kNone) return false;
+    const VertexId o = mesh_.org(e), d = mesh_.dest(e);
+    return (o == entry.a && d == entry.b) || (o == entry.b && d == entry.a);
+  };
+  if (is_it(entry.edge)) return entry.edge;
+  const EdgeRef found = finder_.find(mesh_, entry.a, entry.b);
+  return is_it(found) ? found : kNone;
+}
+
+bool Terminator::is_splittable(EdgeRef e) const {
+  if (opt_.no_steiner_on_segments >= 2) return false;
+  if (opt_.no_steiner_on_segments == 1) return mesh_.link[e] != kNone;
+  return true;
+}
+
+// A segment vertex takes the segment's marker and attributes interpolated along the subsegment.
+VertexId Terminator::add_segment_vertex(const Point& p, EdgeRef s) {
+  const VertexId a = mesh_.org(s), b = mesh_.dest(s);
+  const VertexId v = mesh_.add_vertex(p, VertexKind::Segment);
+  if (!mesh_.marker.empty()) mesh_.marker[v] = mesh_.subsegments[mesh_.subseg[s]].marker;
+  const int na = mesh_.num_attributes;
+  if (na > 0) {
+    const Point& pa = mesh_.point(a);
+    const Point& pb = mesh_.point(b);
+    const double dx = pb.x - pa.x, dy = pb.y - pa.y;
+    const double w = ((p.x - pa.x) * dx + (p.y - pa.y) * dy) / (dx * dx + dy * dy);
+    for (int k = 0; k < na; ++k) {
+      const double va = mesh_.attributes[static_cast<std::size_t>(a) * na + k];
+      const double vb = mesh_.attributes[static_cast<std::size_t>(b) * na + k];
+      mesh_.attributes[static_cast<std::size_t>(v) * na + k] = va + w * (vb - va);
+    }
+  }
+  return v;
+}
+
+}  // namespace deltri

@@ -1,0 +1,218 @@
+#include "refine/terminator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "mesh/operations.h"
+#include "refine/split_permitted.h"
+#include "refine/steiner_point.h"
+#include "refine/termination_guard.h"
+
+namespace deltri {
+namespace {
+
+// The edge length the size bounds ask for: sqrt of the smallest area bound, or the edge bound.
+double size_floor_of(const Mesh& mesh, const RefineOptions& opt) {
+  double smallest = opt.max_area > 0.0 ? opt.max_area : HUGE_VAL;
+  if (opt.use_triangle_area_bounds)
+    for (TriangleId t = 0; t < mesh.area_bound.size(); ++t)
+      if (mesh.is_live(t) && mesh.area_bound[t] > 0.0) smallest = std::min(smallest, mesh.area_bound[t]);
+  double floor = std::sqrt(smallest);
+  if (opt.max_edge_length > 0.0) floor = std::min(floor, opt.max_edge_length);
+  return std::isfinite(floor) ? floor : 0.0;
+}
+
+EncroachRule rule_for(const RefineOptions& opt) {
+  if (!opt.lenses || opt.conforming_delaunay) return diametral_circle_rule();
+  return diametral_lens_rule(opt.quality ? opt.min_angle_deg : 0.0);
+}
+
+}  // namespace
+
+Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
+    : mesh_(mesh),
+      pred_(pred),
+      opt_(opt),
+      rules_(make_quality_rules(opt.min_angle_deg, opt.quality, opt.max_area,
+                                opt.use_triangle_area_bounds, opt.max_edge_length)),
+      rule_(rule_for(opt)),
+      off_constant_(off_center_constant(opt.quality ? opt.min_angle_deg : 0.0, opt.off_centers)),
+      size_floor_(size_floor_of(mesh, opt)),
+      feature_(initial_feature_sizes(mesh)),
+      apices_(mesh),
+      finder_(mesh) {
+  const double smallest = feature_.empty() ? 0.0 : *std::min_element(feature_.begin(), feature_.end());
+  report_.guard_length = guard_floor(smallest, size_floor_);
+}
+
+void Terminator::refuse_by_guard() {
+  ++report_.guard_refusals;
+  report_.stopped_by_guard = true;
+}
+
+// Fig. 38, DELAUNAYTERMINATOR; l.1-2 (the CDT, exterior removed) are the caller's.
+RefineReport Terminator::run() {
+  if (mesh_.has_subsegments()) {
+    for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {  // Fig. 38 l.3-5
+      if (mesh_.corner[e] == kNone || mesh_.subseg[e] == kNone) continue;
+      if (mesh_.link[e] != kNone && mesh_.link[e] < e) continue;
+      if (is_splittable(e) && is_encroached(mesh_, pred_, e, rule_)) enqueue_subsegment(e);
+    }
+    split_encroached_subsegments(false);  // Fig. 38 l.6
+  }
+  for (TriangleId t = 0; t < mesh_.triangle_slots(); ++t)  // Fig. 38 l.7-9
+    if (mesh_.is_live(t)) enqueue_if_bad(t);
+  while (!bad_triangles_.empty()) {  // Fig. 38 l.10
+    const QueuedTriangle entry = *bad_triangles_.pop();  // Fig. 38 l.11
+    if (still_exists(entry)) split_bad_triangle(entry);  // Fig. 38 l.12
+  }
+  report_.peak_queue = bad_triangles_.peak_size();
+  survey_remaining();
+  return report_;
+}
+
+void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
+  const TriangleId t = entry.triangle;
+  const Assessment assessment = assess_triangle(mesh_, t, rules_);
+  if (!assessment.bad() || !budget_left()) return;
+  const double d = std::sqrt(assessment.shape.shortest_length2);
+  const double corner_feature = std::min({feature_[entry.a], feature_[entry.b], feature_[entry.c]});
+  if (d < guard_floor(corner_feature, size_floor_)) {  // at the floor: could only make shorter edges
+    refuse_by_guard();
+    return;
+  }
+  Point c = steiner_point(mesh_, assessment.shape.shortest, off_constant_);  // Fig. 38 l.13
+  const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
+  Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, feature_, splittable);  // Fig. 38 l.14
+  if (probe.status == ProbeStatus::Unusable && probe.blocked && assessment.too_large) {
+    // On or behind a subsegment that may not be split (-Y): a size bound is still owed, and
+    // the centroid always lies inside t.
+    c = centroid_of(t);
+    probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, feature_, splittable);
+  }
+  if (probe.status == ProbeStatus::Unusable) return;
+  if (probe.status == ProbeStatus::Clear) {  // Fig. 38 l.15-17
+    if (probe.insertion_radius < guard_floor(probe.local_feature, size_floor_)) {
+      refuse_by_guard();
+      return;
+    }
+    const VertexId v = add_free_vertex(c, probe.container);
+    feature_.push_back(probe.local_feature);
+    const InsertResult inserted = insert_vertex(mesh_, pred_, v, probe.container, false);  // l.16
+    if (inserted.status != InsertStatus::Inserted) {  // c sits on an unsplittable subsegment
+      drop_last_vertex();
+      return;
+    }
+    ++report_.interior_steiner;
+    new_vertex(inserted.edge, true);  // Fig. 38 l.17
+    return;
+  }
+  ++report_.rejected_candidates;  // Fig. 38 l.18-25
+  for (EdgeRef s : probe.encroached)  // Fig. 38 l.20-22, d = shortest edge of t (Sec. 6.5)
+    if (assessment.too_large || split_permitted(mesh_, apices_, s, d)) enqueue_subsegment(s);
+  if (encroached_.empty()) {  // SPLITPERMITTED declined: never try t again
+    ++report_.declined_splits;
+    return;
+  }
+  // Fig. 38 l.23-25. t goes back only if something was split, so a guard refusal cannot make
+  // the same attempt repeat forever.
+  if (split_encroached_subsegments(true) > 0 && still_exists(entry)) enqueue_if_bad(t);
+}
+
+// Fig. 39, NEWVERTEX.
+void Terminator::new_vertex(EdgeRef out, bool queue_triangles) {
+  const VertexId v = mesh_.org(out);
+  finder_.note_star(mesh_, out);
+  for_each_around(mesh_, out, [&](EdgeRef e) {  // Fig. 39 l.50
+    const EdgeRef opposite = lnext(e);           // Fig. 39 l.51
+    const bool segment = mesh_.has_subsegments() && mesh_.subseg[opposite] != kNone;
+    if (segment && is_splittable(opposite) &&
+        encroaches(pred_, mesh_.point(mesh_.org(opposite)), mesh_.point(mesh_.dest(opposite)),
+                   mesh_.point(v), rule_))
+      enqueue_subsegment(opposite);  // Fig. 39 l.52-53
+    else if (queue_triangles)
+      enqueue_if_bad(triangle_of(e));  // Fig. 39 l.54-55
+  });
+}
+
+void Terminator::enqueue_if_bad(TriangleId t) {
+  const Assessment a = assess_triangle(mesh_, t, rules_);
+  if (!a.bad()) return;
+  const unsigned bucket = a.skinny ? quality_bucket(a.shape.ratio2_over_bound2) : 0u;
+  bad_triangles_.push({t, mesh_.corner[3 * t], mesh_.corner[3 * t + 1], mesh_.corner[3 * t + 2]},
+                      bucket);
+}
+
+bool Terminator::still_exists(const QueuedTriangle& entry) const {
+  const TriangleId t = entry.triangle;
+  if (t >= mesh_.triangle_slots() || !mesh_.is_live(t)) return false;
+  for (VertexId v : {entry.a, entry.b, entry.c}) {
+    const VertexId* c = &mesh_.corner[3 * t];
+    if (c[0] != v && c[1] != v && c[2] != v) return false;
+  }
+  return true;
+}
+
+bool Terminator::budget_left() {
+  if (opt_.max_steiner < 0) return true;
+  const std::uint64_t used = report_.interior_steiner + report_.segment_steiner;
+  if (used < static_cast<std::uint64_t>(opt_.max_steiner)) return true;
+  report_.stopped_by_max_steiner = true;
+  return false;
+}
+
+// Vertex attributes are interpolated linearly over the triangle the point falls in.
+VertexId Terminator::add_free_vertex(const Point& p, EdgeRef container) {
+  const VertexId v = mesh_.add_vertex(p, VertexKind::Free);
+  const int na = mesh_.num_attributes;
+  if (na == 0) return v;
+  const TriangleId t = triangle_of(container);
+  const VertexId a = mesh_.corner[3 * t], b = mesh_.corner[3 * t + 1], c = mesh_.corner[3 * t + 2];
+  const Point &pa = mesh_.point(a), &pb = mesh_.point(b), &pc = mesh_.point(c);
+  const double area = (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
+  const double wb = ((p.x - pa.x) * (pc.y - pa.y) - (p.y - pa.y) * (pc.x - pa.x)) / area;
+  const double wc = ((pb.x - pa.x) * (p.y - pa.y) - (pb.y - pa.y) * (p.x - pa.x)) / area;
+  for (int k = 0; k < na; ++k) {
+    const auto at = [&](VertexId u) { return mesh_.attributes[static_cast<std::size_t>(u) * na + k]; };
+    mesh_.attributes[static_cast<std::size_t>(v) * na + k] =
+        at(a) + wb * (at(b) - at(a)) + wc * (at(c) - at(a));
+  }
+  return v;
+}
+
+Point Terminator::centroid_of(TriangleId t) const {
+  const Point& p = mesh_.point(mesh_.corner[3 * t]);
+  const Point& q = mesh_.point(mesh_.corner[3 * t + 1]);
+  const Point& r = mesh_.point(mesh_.corner[3 * t + 2]);
+  return Point{(p.x + q.x + r.x) / 3.0, (p.y + q.y + r.y) / 3.0};
+}
+
+// Takes back a vertex that was added to mesh.points but never made it into the triangulation.
+void Terminator::drop_last_vertex() {
+  mesh_.points.pop_back();
+  mesh_.kind.pop_back();
+  feature_.pop_back();
+  if (!mesh_.marker.empty()) mesh_.marker.pop_back();
+  if (mesh_.num_attributes > 0) mesh_.attributes.resize(mesh_.attributes.size() - mesh_.num_attributes);
+}
+
+void Terminator::survey_remaining() {
+  const double sin_theta = std::sqrt(rules_.sin2_theta);
+  for (TriangleId t = 0; t < mesh_.triangle_slots(); ++t) {
+    if (!mesh_.is_live(t)) continue;
+    const Assessment a = assess_triangle(mesh_, t, rules_);
+    if (!a.bad()) continue;
+    ++report_.bad_triangles_left;
+    // r / l = sqrt(q) B with B = 1 / (2 sin theta); size-only triangles rank by the same measure.
+    const double ratio = sin_theta > 0.0 ? std::sqrt(a.shape.ratio2_over_bound2) / (2.0 * sin_theta)
+                                         : 0.0;
+    if (ratio < report_.worst_ratio || (ratio == 0.0 && report_.bad_triangles_left > 1)) continue;
+    report_.worst_ratio = ratio;
+    report_.worst_min_angle_deg =
+        ratio > 0.0 ? std::asin(std::min(1.0, 1.0 / (2.0 * ratio))) * 180.0 / std::numbers::pi : 0.0;
+    report_.worst_location = centroid_of(t);
+  }
+}
+
+}  // namespace deltri

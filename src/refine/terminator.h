@@ -1,0 +1,67 @@
+// The Terminator's state and its three routines, named after Shewchuk 2001, Figs. 38-39:
+// run() is DELAUNAYTERMINATOR, split_encroached_subsegments() is SPLITENCROACHEDSUBSEGMENTS and
+// new_vertex() is NEWVERTEX. terminator.cpp holds the triangle side, subsegment_splits.cpp the
+// subsegment side.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/predicates.h"
+#include "mesh/mesh.h"
+#include "refine/bad_triangles.h"
+#include "refine/candidate_probe.h"
+#include "refine/clusters.h"
+#include "refine/edge_finder.h"
+#include "refine/encroached.h"
+#include "refine/encroached_queue.h"
+#include "refine/quality_queue.h"
+#include "refine/refine.h"
+
+namespace deltri {
+
+class Terminator {
+ public:
+  Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt);
+  RefineReport run();
+
+ private:
+  // Fig. 38 l.11-25: one bad triangle from Q_t.
+  void split_bad_triangle(const QueuedTriangle& entry);
+  // Fig. 39 l.36-49; returns the number of subsegments split.
+  std::uint64_t split_encroached_subsegments(bool queue_triangles);
+  // Fig. 39 l.39-45 for one subsegment; false if it was not split.
+  bool split_subsegment(EdgeRef s, bool queue_triangles);
+  // Fig. 39 l.50-55; `out` leaves the new vertex.
+  void new_vertex(EdgeRef out, bool queue_triangles);
+
+  void enqueue_if_bad(TriangleId t);
+  void enqueue_subsegment(EdgeRef e);
+  bool still_exists(const QueuedTriangle& entry) const;
+  EdgeRef current_edge(const EncroachedSubsegment& entry);
+  bool is_splittable(EdgeRef e) const;  // -Y / -YY
+  bool budget_left();                   // -S
+  VertexId add_free_vertex(const Point& p, EdgeRef container);
+  VertexId add_segment_vertex(const Point& p, EdgeRef s);
+  Point centroid_of(TriangleId t) const;
+  void drop_last_vertex();
+  void refuse_by_guard();
+  void survey_remaining();
+
+  Mesh& mesh_;
+  Predicates& pred_;
+  const RefineOptions opt_;
+  QualityRules rules_;
+  EncroachRule rule_;
+  double off_constant_ = 0.0;
+  double size_floor_ = 0.0;            // edge length the size bounds ask for (0: none)
+  std::vector<double> feature_;       // the guard's feature estimate per vertex
+  SegmentApices apices_;
+  EdgeFinder finder_;
+  CavityMarks marks_;
+  QualityQueue bad_triangles_;       // Q_t
+  EncroachedQueue encroached_;       // Q_s
+  RefineReport report_;
+};
+
+}  // namespace deltri

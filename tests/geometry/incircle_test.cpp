@@ -1,0 +1,167 @@
+// incircle against the independent exact evaluator, on nearly and exactly cocircular inputs.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "geometry/exact_reference.h"
+#include "geometry/predicates.h"
+#include "geometry/random_support.h"
+#include "harness/check.h"
+
+namespace {
+
+using deltri::Point;
+using deltri::Predicates;
+using reference::incircle_sign;
+using testing_support::nudge;
+using testing_support::Random;
+using testing_support::sign_of;
+
+// Four points rounded from a circle of the given centre and radius, the fourth nudged by up to two
+// ulps in each coordinate; returns the number of mismatches with the exact sign.
+int near_cocircular_mismatches(Predicates& pred, std::uint64_t seed, Point centre, double radius,
+                               int circles) {
+  Random rng(seed);
+  int mismatches = 0;
+  auto on_circle = [&](double angle) {
+    return Point{centre.x + radius * std::cos(angle), centre.y + radius * std::sin(angle)};
+  };
+  for (int i = 0; i < circles; ++i) {
+    const Point a = on_circle(rng.uniform(0, 2)), b = on_circle(rng.uniform(2, 4));
+    const Point c = on_circle(rng.uniform(4, 6.28));
+    const Point d0 = on_circle(rng.uniform(0, 6.28));
+    for (int dx = -2; dx <= 2; ++dx) {
+      for (int dy = -2; dy <= 2; ++dy) {
+        const Point d = nudge(d0, dx, dy);
+        if (sign_of(pred.incircle(a, b, c, d)) != incircle_sign(a, b, c, d)) ++mismatches;
+      }
+    }
+  }
+  return mismatches;
+}
+
+// Lattice points on x^2 + y^2 = 65^2 (many Pythagorean representations).
+std::vector<std::array<int, 2>> lattice_circle() {
+  std::vector<std::array<int, 2>> points;
+  for (int x = -65; x <= 65; ++x) {
+    for (int y = -65; y <= 65; ++y) {
+      if (x * x + y * y == 65 * 65) points.push_back({x, y});
+    }
+  }
+  return points;
+}
+
+int parity(const std::array<int, 4>& perm) {
+  int inversions = 0;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = i + 1; j < 4; ++j) inversions += perm[i] > perm[j];
+  }
+  return inversions % 2 ? -1 : 1;
+}
+
+}  // namespace
+
+TEST(incircle_random_points_match_exact_sign) {
+  Predicates pred;
+  Random rng(20);
+  for (int i = 0; i < 20000; ++i) {
+    const Point a = rng.point(-1, 1), b = rng.point(-1, 1), c = rng.point(-1, 1), d = rng.point(-1, 1);
+    CHECK_EQ(sign_of(pred.incircle(a, b, c, d)), incircle_sign(a, b, c, d));
+  }
+}
+
+TEST(incircle_ulps_off_a_circle) {
+  Predicates pred;
+  CHECK_EQ(near_cocircular_mismatches(pred, 21, {0.0, 0.0}, 1.0, 1000), 0);
+  CHECK_EQ(near_cocircular_mismatches(pred, 22, {0.3, -0.2}, 0.01, 1000), 0);
+  CHECK(pred.counters.incircle_adaptive > 0);
+}
+
+TEST(incircle_huge_tiny_and_offset_circles) {
+  Predicates pred;
+  CHECK_EQ(near_cocircular_mismatches(pred, 23, {0.0, 0.0}, 1e60, 300), 0);
+  CHECK_EQ(near_cocircular_mismatches(pred, 24, {3e60, -1e60}, 1e59, 300), 0);
+  CHECK_EQ(near_cocircular_mismatches(pred, 25, {0.0, 0.0}, 1e-50, 300), 0);
+  CHECK_EQ(near_cocircular_mismatches(pred, 26, {1e9 + 0.3, 1e9 - 0.7}, 1.0, 500), 0);
+  CHECK_EQ(near_cocircular_mismatches(pred, 27, {-1e9, 2e9}, 1e-3, 500), 0);
+}
+
+TEST(incircle_symmetric_points_mixed_magnitudes_reach_exact_stage) {
+  // (+-x, +-y) and (+-y, +-x) are exactly cocircular about the origin for any doubles x, y; with x
+  // and y of very different magnitudes the differences are inexact.
+  Predicates pred;
+  Random rng(31);
+  for (int i = 0; i < 3000; ++i) {
+    const double x = rng.uniform(0.5, 1) * std::pow(10.0, rng.integer(3, 9));
+    const double y = rng.uniform(-1, 1) * std::pow(10.0, rng.integer(-5, 1));
+    const Point sym[8] = {{x, y}, {-y, x}, {-x, -y}, {y, -x}, {y, x}, {-x, y}, {-y, -x}, {x, -y}};
+    auto pick = [&]() { return sym[rng.integer(0, 7)]; };
+    const Point a = pick(), b = pick(), c = pick(), d = pick();
+    CHECK_EQ(incircle_sign(a, b, c, d), 0);
+    CHECK_EQ(pred.incircle(a, b, c, d), 0.0);
+    const Point d1 = nudge(d, rng.integer(-1, 1), rng.integer(-1, 1));
+    CHECK_EQ(sign_of(pred.incircle(a, b, c, d1)), incircle_sign(a, b, c, d1));
+  }
+  CHECK(pred.counters.incircle_exact > 500);
+}
+
+TEST(incircle_exactly_cocircular_lattice_points_are_zero) {
+  Predicates pred;
+  Random rng(28);
+  const auto points = lattice_circle();
+  REQUIRE(points.size() >= 12);
+  // Offsets and scales chosen so that every coordinate below is exactly representable.
+  const double offsets[] = {0.0, 1e9, -1e9 + 0.5, 0x1p-20};
+  const int min_exp[] = {-30, -20, -20, -20}, max_exp[] = {30, 10, 10, 20};
+  for (int i = 0; i < 4000; ++i) {
+    const double scale = std::ldexp(1.0, rng.integer(min_exp[i % 4], max_exp[i % 4]));
+    const double offset = offsets[i % 4];
+    auto pick = [&]() {
+      const auto& p = points[rng.integer(0, static_cast<int>(points.size()) - 1)];
+      return Point{offset + scale * p[0], offset + scale * p[1]};
+    };
+    const Point a = pick(), b = pick(), c = pick(), d = pick();
+    CHECK_EQ(incircle_sign(a, b, c, d), 0);
+    CHECK_EQ(pred.incircle(a, b, c, d), 0.0);
+  }
+}
+
+TEST(incircle_permutations_follow_parity) {
+  Predicates pred;
+  Random rng(29);
+  for (int i = 0; i < 1500; ++i) {
+    const Point centre{1e9 * (i % 2), 0.5};
+    auto on_circle = [&]() {
+      const double angle = rng.uniform(0, 6.28);
+      return nudge(Point{centre.x + std::cos(angle), centre.y + std::sin(angle)}, rng.integer(-1, 1),
+                   rng.integer(-1, 1));
+    };
+    const std::array<Point, 4> p = {on_circle(), on_circle(), on_circle(), on_circle()};
+    const int s = sign_of(pred.incircle(p[0], p[1], p[2], p[3]));
+    CHECK_EQ(s, incircle_sign(p[0], p[1], p[2], p[3]));
+    std::array<int, 4> perm = {0, 1, 2, 3};
+    while (std::next_permutation(perm.begin(), perm.end())) {
+      CHECK_EQ(sign_of(pred.incircle(p[perm[0]], p[perm[1]], p[perm[2]], p[perm[3]])), parity(perm) * s);
+    }
+  }
+}
+
+TEST(incircle_counters) {
+  Predicates pred;
+  CHECK(pred.incircle({0, 0}, {1, 0}, {0, 1}, {0.2, 0.2}) > 0.0);
+  CHECK_EQ(pred.counters.incircle_calls, 1u);
+  CHECK_EQ(pred.counters.incircle_adaptive, 0u);
+  // Cocircular with exact differences: decided by stage B.
+  CHECK_EQ(pred.incircle({1, 0}, {0, 1}, {-1, 0}, {0, -1}), 0.0);
+  CHECK_EQ(pred.counters.incircle_adaptive, 1u);
+  CHECK_EQ(pred.counters.incircle_exact, 0u);
+  // Quarter turns of one point about the origin are exactly cocircular, and mixing magnitudes
+  // 1e9 and 0.1 makes the differences inexact, so only the exact stage can prove zero.
+  const double x = 1e9, y = 0.1;
+  const Point a{x, y}, b{-y, x}, c{-x, -y}, d{y, -x};
+  CHECK_EQ(incircle_sign(a, b, c, d), 0);
+  CHECK_EQ(pred.incircle(a, b, c, d), 0.0);
+  CHECK_EQ(pred.counters.incircle_adaptive, 2u);
+  CHECK_EQ(pred.counters.incircle_exact, 1u);
+}

@@ -1,0 +1,70 @@
+// All-or-nothing output.
+#include <filesystem>
+
+#include "harness/check.h"
+#include "io/output_set.h"
+#include "io_test_util.h"
+
+using namespace deltri;
+namespace fs = std::filesystem;
+
+namespace {
+std::size_t files_in(const fs::path& dir) {
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
+  return n;
+}
+}  // namespace
+
+TEST(output_set_writes_all_files) {
+  const fs::path dir = iotest::scratch_dir() / "out_ok";
+  fs::create_directories(dir);
+  OutputSet set;
+  set.add((dir / "a.1.node").string(), "node text\n");
+  set.add_stream((dir / "a.1.ele").string(), [](ByteSink& sink) {
+    TextWriter w(sink);
+    for (int i = 0; i < 100000; ++i) {
+      w.integer(i);
+      w.end_line();
+    }
+    w.finish();
+  });
+  set.commit();
+  CHECK_EQ(iotest::read_file((dir / "a.1.node").string()), "node text\n");
+  CHECK_EQ(iotest::read_file((dir / "a.1.ele").string()).size(), 588890u);
+  CHECK_EQ(files_in(dir), 2u);
+}
+
+TEST(output_set_failure_leaves_nothing_and_keeps_old_files) {
+  const fs::path dir = iotest::scratch_dir() / "out_fail";
+  fs::create_directories(dir);
+  const std::string old_path = (dir / "a.1.node").string();
+  iotest::write_file("out_fail/a.1.node", "old\n");
+  const std::string blocker = (dir / "not_a_dir").string();
+  iotest::write_file("out_fail/not_a_dir", "x");
+  for (const std::string& bad : {(dir / "missing" / "a.1.ele").string(), blocker + "/a.1.ele"}) {
+    OutputSet set;
+    set.add(old_path, "new\n");
+    set.add(bad, "ele\n");
+    bool threw = false;
+    try {
+      set.commit();
+    } catch (const OutputError& e) {
+      threw = true;
+      CHECK(std::string(e.what()).starts_with(bad + ": "));
+    }
+    CHECK(threw);
+    CHECK_EQ(iotest::read_file(old_path), "old\n");
+    CHECK_EQ(files_in(dir), 2u);  // no temporaries left behind
+  }
+}
+
+TEST(output_set_producer_failure_cleans_up) {
+  const fs::path dir = iotest::scratch_dir() / "out_throw";
+  fs::create_directories(dir);
+  OutputSet set;
+  set.add((dir / "x.node").string(), "x\n");
+  set.add_stream((dir / "x.ele").string(), [](ByteSink&) { throw OutputError("boom"); });
+  CHECK_THROWS(set.commit());
+  CHECK_EQ(files_in(dir), 0u);
+}

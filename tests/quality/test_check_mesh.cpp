@@ -1,0 +1,312 @@
+// The -C checker against hand-made meshes: correct ones must pass, and each injected fault must be
+// reported as exactly its own kind, with the expected count and example, and nothing else.
+#include <map>
+#include <string>
+
+#include "harness/check.h"
+#include "quality/check_mesh.h"
+#include "quality/mesh_builders.h"
+
+using namespace deltri;
+using namespace quality_test;
+
+namespace {
+
+using Expected = std::map<FaultKind, std::uint64_t>;
+
+// True when the report has exactly the expected counts (and zero for every other kind).
+bool has_exactly(const CheckReport& r, const Expected& expected) {
+  for (std::size_t k = 0; k < kFaultKinds; ++k) {
+    const auto kind = static_cast<FaultKind>(k);
+    const auto it = expected.find(kind);
+    if (r.count(kind) != (it == expected.end() ? 0 : it->second)) return false;
+  }
+  return true;
+}
+
+CheckOptions hull_mode() {
+  CheckOptions o;
+  o.convex_hull_expected = true;
+  return o;
+}
+
+std::size_t line_count(const std::string& s) {
+  std::size_t n = 0;
+  for (const char c : s) n += c == '\n';
+  return n;
+}
+
+}  // namespace
+
+TEST(delaunay_diamond_passes_every_layer) {
+  const Mesh m = diamond_short_diagonal();
+  const CheckReport r = check_mesh(m, hull_mode());
+  CHECK(r.ok());
+  CHECK_EQ(r.triangles_checked, 2u);
+  CHECK_EQ(r.edges_checked, 5u);
+  CHECK_EQ(r.boundary_loops, 1u);
+  for (std::size_t l = 0; l < kCheckLayers; ++l) CHECK(!r.skipped[l]);
+  CHECK(r.summary().find("consistent") != std::string::npos);
+  CHECK_EQ(line_count(r.summary()), 1u);
+}
+
+TEST(long_diagonal_is_not_locally_delaunay) {
+  const Mesh m = diamond_long_diagonal();
+  const CheckReport r = check_mesh(m, CheckOptions{});
+  CHECK(!r.ok());
+  CHECK(has_exactly(r, {{FaultKind::NotLocallyDelaunay, 1}}));
+  CHECK_EQ(r.example(FaultKind::NotLocallyDelaunay), 2u);  // the pair 2/3, named by its smaller edge
+  CHECK(r.summary().find(fault_name(FaultKind::NotLocallyDelaunay)) != std::string::npos);
+  CHECK_EQ(line_count(r.summary()), 2u);
+}
+
+TEST(segment_on_long_diagonal_excuses_it_unless_conforming) {
+  Mesh m = diamond_long_diagonal();
+  m.enable_subsegments();
+  m.subsegments.push_back({0, 2, 1, 0});
+  m.set_subsegment(2, 0);
+  CHECK(check_mesh(m, CheckOptions{}).ok());
+  CheckOptions conforming;
+  conforming.conforming = true;
+  CHECK(has_exactly(check_mesh(m, conforming), {{FaultKind::NotLocallyDelaunay, 1}}));
+}
+
+TEST(fan_with_cocircular_spokes_is_a_convex_delaunay_mesh) {
+  const Mesh m = square_fan();
+  const CheckReport r = check_mesh(m, hull_mode());
+  CHECK(r.ok());
+  CHECK_EQ(r.triangles_checked, 8u);
+  CHECK_EQ(r.edges_checked, 16u);
+  CHECK_EQ(r.boundary_loops, 1u);
+}
+
+TEST(fan_with_a_missing_triangle_has_one_reflex_turn) {
+  Mesh m = square_fan();
+  m.kill_triangle(7);  // (centre, (1,-1), (1,0)): the boundary now dents in at the centre
+  CHECK(check_mesh(m, CheckOptions{}).ok());
+  const CheckReport r = check_mesh(m, hull_mode());
+  CHECK(has_exactly(r, {{FaultKind::ReflexBoundaryTurn, 1}}));
+  CHECK_EQ(r.example(FaultKind::ReflexBoundaryTurn), 0u);  // the edge centre -> (1,0) turns right
+  CHECK_EQ(r.boundary_loops, 1u);
+}
+
+TEST(one_sided_link_breaks_involution_and_opens_the_boundary) {
+  Mesh m = diamond_short_diagonal();
+  m.link[5] = kNone;  // edge 1 still points at 5
+  const CheckReport r = check_mesh(m, hull_mode());
+  CHECK(has_exactly(r, {{FaultKind::LinkNotInvolution, 1}, {FaultKind::OpenBoundary, 2}}));
+  CHECK_EQ(r.example(FaultKind::LinkNotInvolution), 1u);
+  CHECK_EQ(r.example(FaultKind::OpenBoundary), 1u);  // vertex b: d->b now leaves no partner
+  CHECK(r.layer_skipped(CheckLayer::Delaunay));
+  CHECK(r.layer_skipped(CheckLayer::ConvexHull));
+  CHECK(!r.layer_skipped(CheckLayer::Orientation));
+  CHECK(r.summary().find("not checked") != std::string::npos);
+  CHECK_EQ(line_count(r.summary()), 4u);  // header, two kinds, skipped layers
+}
+
+TEST(link_to_wrong_edge_has_unswapped_endpoints) {
+  Mesh m = diamond_short_diagonal();
+  m.bond(1, 3);  // b->d with b->c; edge 5 (d->b) still points at 1
+  const CheckReport r = check_mesh(m, CheckOptions{});
+  CHECK(has_exactly(r, {{FaultKind::LinkNotInvolution, 1},
+                        {FaultKind::LinkEndpoints, 2},
+                        {FaultKind::OpenBoundary, 2}}));
+  CHECK_EQ(r.example(FaultKind::LinkNotInvolution), 5u);
+  CHECK_EQ(r.example(FaultKind::LinkEndpoints), 1u);
+}
+
+TEST(link_into_a_dead_slot) {
+  Mesh m = diamond_short_diagonal();
+  m.corner[3] = m.corner[4] = m.corner[5] = kNone;  // killed without unlinking
+  m.free_triangles.push_back(1);
+  const CheckReport r = check_mesh(m, CheckOptions{});
+  CHECK(has_exactly(r, {{FaultKind::LinkToDeadTriangle, 1}, {FaultKind::OpenBoundary, 2}}));
+  CHECK_EQ(r.example(FaultKind::LinkToDeadTriangle), 1u);
+}
+
+TEST(clockwise_triangle_is_the_only_fault) {
+  Mesh m = mesh_of({{0, 0}, {0, 1}, {1, 0}});
+  m.add_triangle(0, 1, 2);
+  const CheckReport r = check_mesh(m, hull_mode());
+  CHECK(has_exactly(r, {{FaultKind::ClockwiseTriangle, 1}}));
+  CHECK_EQ(r.example(FaultKind::ClockwiseTriangle), 0u);
+  CHECK(r.layer_skipped(CheckLayer::Delaunay));
+}
+
+TEST(flat_triangle) {
+  Mesh m = mesh_of({{0, 0}, {1, 1}, {3, 3}});
+  m.add_triangle(0, 1, 2);
+  CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::FlatTriangle, 1}}));
+}
+
+TEST(orientation_is_exact_near_collinear) {
+  // (0.5+2^-52, 0.5) is a hair to the right of the line y = x: a clockwise sliver that a
+  // tolerance or a sloppy determinant would call flat.
+  Mesh m = mesh_of({{0, 0}, {0.5 + 0x1p-52, 0.5}, {1, 1}});
+  m.add_triangle(0, 2, 1);
+  CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::ClockwiseTriangle, 1}}));
+  Mesh ccw = mesh_of({{0, 0}, {0.5 + 0x1p-52, 0.5}, {1, 1}});
+  ccw.add_triangle(0, 1, 2);
+  CHECK(check_mesh(ccw, CheckOptions{}).ok());
+}
+
+TEST(duplicate_vertex_used_by_a_triangle) {
+  Mesh m = mesh_of({{0, 0}, {1, 0}, {0, 1}});
+  const VertexId dup = m.add_vertex({0, 1}, VertexKind::Duplicate);
+  m.add_triangle(0, 1, dup);
+  const CheckReport r = check_mesh(m, hull_mode());
+  CHECK(has_exactly(r, {{FaultKind::DeadVertexUsed, 1}}));
+  CHECK_EQ(r.example(FaultKind::DeadVertexUsed), dup);
+  CHECK(r.layer_skipped(CheckLayer::ConvexHull));  // vertex 2 unused is not reported on top
+}
+
+TEST(unused_duplicate_is_fine_but_unused_input_is_not_in_hull_mode) {
+  Mesh m = mesh_of({{0, 0}, {4, 0}, {0, 4}});
+  m.add_vertex({0, 4}, VertexKind::Duplicate);
+  m.add_triangle(0, 1, 2);
+  CHECK(check_mesh(m, hull_mode()).ok());
+  const VertexId inner = m.add_vertex({1, 1}, VertexKind::Input);
+  CHECK(check_mesh(m, CheckOptions{}).ok());
+  const CheckReport r = check_mesh(m, hull_mode());
+  CHECK(has_exactly(r, {{FaultKind::UnusedVertex, 1}}));
+  CHECK_EQ(r.example(FaultKind::UnusedVertex), inner);
+}
+
+TEST(no_triangles_is_right_only_for_collinear_input) {
+  Mesh line = mesh_of({{0, 0}, {1, 1}, {2, 2}, {1, 1}});
+  CHECK(check_mesh(line, hull_mode()).ok());
+  Mesh plane = mesh_of({{0, 0}, {1, 1}, {2, 2}, {1, 0}});
+  CHECK(has_exactly(check_mesh(plane, hull_mode()), {{FaultKind::UnusedVertex, 4}}));
+  CHECK(check_mesh(Mesh{}, hull_mode()).ok());
+}
+
+TEST(two_separate_triangles_are_two_boundary_loops) {
+  Mesh m = mesh_of({{0, 0}, {1, 0}, {0, 1}, {5, 0}, {6, 0}, {5, 1}});
+  m.add_triangle(0, 1, 2);
+  m.add_triangle(3, 4, 5);
+  CHECK(check_mesh(m, CheckOptions{}).ok());
+  const CheckReport r = check_mesh(m, hull_mode());
+  CHECK(has_exactly(r, {{FaultKind::ExtraBoundaryLoop, 1}}));
+  CHECK_EQ(r.boundary_loops, 2u);
+  CHECK_EQ(r.example(FaultKind::ExtraBoundaryLoop), 3u);
+}
+
+TEST(hole_in_a_point_set_mesh_shows_as_reflex_turns) {
+  // Square ring around a triangular hole; the hole's loop runs clockwise and turns right 3 times.
+  Mesh m = mesh_of({{0, 0}, {6, 0}, {6, 6}, {0, 6}, {2, 2}, {4, 2}, {3, 4}});
+  const VertexId a = 0, b = 1, c = 2, d = 3, p = 4, q = 5, r = 6;
+  for (const auto& t : {std::array<VertexId, 3>{a, b, q}, {a, q, p}, {b, c, q}, {q, c, r},
+                        {c, d, r}, {d, p, r}, {d, a, p}})
+    m.add_triangle(t[0], t[1], t[2]);
+  bond_all(m);
+  const CheckReport plain = check_mesh(m, CheckOptions{});
+  CHECK(!plain.count(FaultKind::ClockwiseTriangle));
+  CHECK(!plain.count(FaultKind::OpenBoundary));
+  const CheckReport hull = check_mesh(m, hull_mode());
+  CHECK_EQ(hull.count(FaultKind::ReflexBoundaryTurn), 3u);
+  CHECK_EQ(hull.count(FaultKind::ExtraBoundaryLoop), 1u);
+}
+
+TEST(repeated_directed_edge) {
+  Mesh m = mesh_of({{0, 0}, {2, 0}, {1, 1}, {1, 2}});
+  m.add_triangle(0, 1, 2);
+  m.add_triangle(0, 1, 3);  // overlaps the first, both with a->b
+  const CheckReport r = check_mesh(m, CheckOptions{});
+  CHECK(has_exactly(r, {{FaultKind::DuplicateEdge, 1}}));
+  CHECK_EQ(r.example(FaultKind::DuplicateEdge), 3u);
+}
+
+TEST(subsegment_on_one_twin_only) {
+  Mesh m = diamond_short_diagonal();
+  m.enable_subsegments();
+  m.subsegments.push_back({1, 3, 1, 0});
+  m.subseg[1] = 0;
+  CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::SubsegmentMismatch, 1}}));
+  m.subseg[5] = 0;
+  CHECK(check_mesh(m, CheckOptions{}).ok());
+  m.subsegments[0] = {0, 2, 1, 0};  // a-c, but lying on b-d
+  const CheckReport r = check_mesh(m, CheckOptions{});
+  CHECK(has_exactly(r, {{FaultKind::SubsegmentEndpoints, 1}}));
+  CHECK_EQ(r.example(FaultKind::SubsegmentEndpoints), 1u);
+}
+
+TEST(storage_faults_stop_the_later_layers) {
+  Mesh m = diamond_long_diagonal();  // not Delaunay, but that must not be reached
+  m.corner[4] = 9;
+  const CheckReport r = check_mesh(m, hull_mode());
+  CHECK(has_exactly(r, {{FaultKind::CornerOutOfRange, 1}}));
+  CHECK_EQ(r.example(FaultKind::CornerOutOfRange), 1u);
+  for (std::size_t l = 1; l < kCheckLayers; ++l) CHECK(r.skipped[l]);
+  CHECK_EQ(line_count(r.summary()), 3u);
+}
+
+TEST(repeated_corner) {
+  Mesh m = diamond_short_diagonal();
+  m.corner[4] = m.corner[3];
+  CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::RepeatedCorner, 1}}));
+}
+
+TEST(free_list_faults) {
+  Mesh m = diamond_short_diagonal();
+  m.free_triangles.push_back(0);  // live
+  m.free_triangles.push_back(7);  // no such slot
+  CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::BadFreeListEntry, 2}}));
+  Mesh n = diamond_short_diagonal();
+  n.kill_triangle(1);
+  CHECK(check_mesh(n, CheckOptions{}).ok());
+  n.free_triangles.push_back(1);  // listed twice
+  CHECK(has_exactly(check_mesh(n, CheckOptions{}), {{FaultKind::BadFreeListEntry, 1}}));
+  n.free_triangles.clear();
+  const CheckReport r = check_mesh(n, CheckOptions{});
+  CHECK(has_exactly(r, {{FaultKind::UnlistedDeadSlot, 1}}));
+  CHECK_EQ(r.example(FaultKind::UnlistedDeadSlot), 1u);
+}
+
+TEST(ids_out_of_range) {
+  Mesh m = diamond_short_diagonal();
+  m.link[0] = 6;
+  m.enable_subsegments();
+  m.subseg[2] = 0;  // there are no subsegments
+  CHECK(has_exactly(check_mesh(m, CheckOptions{}),
+                    {{FaultKind::LinkOutOfRange, 1}, {FaultKind::SubsegmentOutOfRange, 1}}));
+}
+
+TEST(array_sizes) {
+  Mesh m = diamond_short_diagonal();
+  m.link.pop_back();
+  m.kind.push_back(VertexKind::Input);
+  const CheckReport r = check_mesh(m, CheckOptions{});
+  CHECK(has_exactly(r, {{FaultKind::ArraySize, 2}}));
+  CHECK_EQ(r.example(FaultKind::ArraySize), kNone);
+  CHECK_EQ(r.triangles_checked, 0u);
+}
+
+TEST(cocircular_grid_passes_in_hull_mode) {
+  const Mesh m = grid(60);
+  const CheckReport r = check_mesh(m, hull_mode());
+  CHECK(r.ok());
+  CHECK_EQ(r.triangles_checked, 2u * 60 * 60);
+  CHECK_EQ(r.edges_checked, 3u * 60 * 60 + 2 * 60);
+  CHECK_EQ(r.boundary_loops, 1u);
+}
+
+TEST(grid_with_a_pushed_vertex_loses_delaunay_edges) {
+  Mesh m = grid(4);
+  // Moving (2,2) to (1.9,1.9) takes it out of the circle of the square [2,3]^2, whose diagonal
+  // from it to (3,3) is then not Delaunay, nor by symmetry its diagonals to (1,3) and (3,1);
+  // orientation is unharmed.
+  m.points[2 * 5 + 2] = {1.9, 1.9};
+  const CheckReport r = check_mesh(m, hull_mode());
+  CHECK(r.count(FaultKind::NotLocallyDelaunay) >= 3);
+  CHECK_EQ(r.total_faults(), r.count(FaultKind::NotLocallyDelaunay));
+}
+
+TEST(fault_tables_are_complete) {
+  for (std::size_t k = 0; k < kFaultKinds; ++k) {
+    const auto kind = static_cast<FaultKind>(k);
+    CHECK(std::string(fault_name(kind)).size() > 5);
+    CHECK(static_cast<std::size_t>(fault_layer(kind)) < kCheckLayers);
+  }
+  CHECK_EQ(std::string(layer_name(CheckLayer::Delaunay)), std::string("Delaunay"));
+  CHECK_EQ(std::string(fault_subject(FaultKind::ClockwiseTriangle)), std::string("triangle"));
+}

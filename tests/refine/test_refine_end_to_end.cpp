@@ -1,0 +1,240 @@
+// refine_mesh on small domains, judged by independent facts about the result.
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "harness/check.h"
+#include "refine/refine.h"
+#include "refine_fixtures.h"
+
+using namespace deltri;
+using namespace refine_test;
+
+namespace {
+
+RefineOptions quality(double theta) {
+  RefineOptions opt;
+  opt.quality = true;
+  opt.min_angle_deg = theta;
+  return opt;
+}
+
+// The facts every refined mesh must have, whatever the bounds.
+void check_valid(const Mesh& m, double area, double perimeter) {
+  const Facts f = facts_of(m);
+  CHECK(f.all_ccw);
+  CHECK(f.links_ok);
+  CHECK(f.subsegments_symmetric);
+  CHECK(f.boundary_protected);
+  CHECK_EQ(f.non_delaunay_edges, std::size_t{0});
+  CHECK_NEAR(f.total_area, area, 1e-12 * area);
+  CHECK_NEAR(f.boundary_length, perimeter, 1e-12 * perimeter);
+}
+
+void print(const char* name, const Mesh& m, const RefineReport& r) {
+  std::printf("  %s: %u triangles, min angle %.3f, %llu interior + %llu segment Steiner, %llu rejected, "
+              "%llu declined, %llu guard refusals, %llu bad left (worst %.2f deg)\n",
+              name, m.live_triangles(), facts_of(m).min_angle,
+              static_cast<unsigned long long>(r.interior_steiner),
+              static_cast<unsigned long long>(r.segment_steiner),
+              static_cast<unsigned long long>(r.rejected_candidates),
+              static_cast<unsigned long long>(r.declined_splits),
+              static_cast<unsigned long long>(r.guard_refusals),
+              static_cast<unsigned long long>(r.bad_triangles_left), r.worst_min_angle_deg);
+}
+
+}  // namespace
+
+TEST(unit_square_q30) {
+  Mesh m = unit_square();
+  Predicates pred;
+  const RefineReport r = refine_mesh(m, pred, quality(30));
+  print("square -q30", m, r);
+  check_valid(m, 1.0, 4.0);
+  CHECK(facts_of(m).min_angle >= 30.0 - 1e-9);
+  CHECK_EQ(r.bad_triangles_left, std::uint64_t{0});
+  CHECK(!r.stopped_by_guard);
+}
+
+TEST(unit_square_q33) {
+  Mesh m = unit_square();
+  Predicates pred;
+  const RefineReport r = refine_mesh(m, pred, quality(33));
+  print("square -q33", m, r);
+  check_valid(m, 1.0, 4.0);
+  CHECK(facts_of(m).min_angle >= 33.0 - 1e-9);
+  CHECK_EQ(r.bad_triangles_left, std::uint64_t{0});
+}
+
+TEST(unit_square_q30_area) {
+  Mesh m = unit_square();
+  Predicates pred;
+  RefineOptions opt = quality(30);
+  opt.max_area = 0.0002;
+  const RefineReport r = refine_mesh(m, pred, opt);
+  print("square -q30a0.0002", m, r);
+  check_valid(m, 1.0, 4.0);
+  const Facts f = facts_of(m);
+  CHECK(f.min_angle >= 30.0 - 1e-9);
+  CHECK(f.max_area <= 0.0002);
+  CHECK(f.triangles > 4000 && f.triangles < 12000);
+  CHECK_EQ(r.bad_triangles_left, std::uint64_t{0});
+}
+
+TEST(unit_square_circles_conforming) {
+  Mesh m = unit_square();
+  Predicates pred;
+  RefineOptions opt = quality(25);
+  opt.lenses = false;
+  opt.conforming_delaunay = true;
+  const RefineReport r = refine_mesh(m, pred, opt);
+  print("square -q25D", m, r);
+  check_valid(m, 1.0, 4.0);
+  CHECK(facts_of(m).min_angle >= 25.0 - 1e-9);
+  // Conforming Delaunay: no boundary subsegment has a vertex inside its diametral circle.
+  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+    if (m.corner[e] == kNone || m.subseg[e] == kNone) continue;
+    const Point& a = m.point(m.org(e));
+    const Point& b = m.point(m.dest(e));
+    const Point& w = m.point(m.apex(e));
+    CHECK((a.x - w.x) * (b.x - w.x) + (a.y - w.y) * (b.y - w.y) > 0);
+  }
+}
+
+// A square with an interior segment from (0,0) to (1, tan 5deg): a 5 degree input angle at the
+// origin between the bottom side and the segment.
+Mesh spiked_square() {
+  const double h = std::tan(5.0 * std::numbers::pi / 180.0);
+  Mesh m = triangulated({{0, 0}, {1, 0}, {1, h}, {1, 1}, {0, 1}});
+  mark_boundary(m);
+  mark_segment(m, 0, 2, 7);
+  return m;
+}
+
+bool smallest_angle_between_subsegments(const Mesh& m, TriangleId t) {
+  const double smallest = min_angle_deg(m, t);
+  for (unsigned i = 0; i < 3; ++i) {
+    const EdgeRef e = 3 * t + i;  // the angle at org(e) lies between e and lprev(e)
+    if (angle_deg(m, e) == smallest && m.subseg[e] != kNone && m.subseg[lprev(e)] != kNone) return true;
+  }
+  return false;
+}
+
+TEST(five_degree_spike_terminates) {
+  Mesh m = spiked_square();
+  Predicates pred;
+  RefineOptions opt = quality(30);
+  opt.max_area = 0.01;  // forces refinement into the spike
+  const RefineReport r = refine_mesh(m, pred, opt);
+  print("spike -q30a0.01", m, r);
+  CHECK(facts_of(m).max_area <= 0.01);
+  check_valid(m, 1.0, 4.0);
+  // Theorem 12 with lenses: no new angle below asin((sqrt 3 / 2) sin(phi / 2)) ~ 2.17 degrees for
+  // phi = 5. Angles below theta may only remain where a triangle's Steiner point encroached upon
+  // the cluster at the spike and SPLITPERMITTED refused (or the guard stopped it): near the apex.
+  const double bound = std::asin(std::sqrt(3.0) / 2.0 * std::sin(2.5 * std::numbers::pi / 180.0)) *
+                       180.0 / std::numbers::pi;
+  for (TriangleId t : skinny_triangles(m, 30.0 - 1e-9)) {
+    if (smallest_angle_between_subsegments(m, t)) continue;  // the input angle itself
+    CHECK(min_angle_deg(m, t) >= bound - 1e-9);
+    const Point& p = m.point(m.corner[3 * t]);
+    CHECK(std::hypot(p.x, p.y) < 0.75);
+  }
+  CHECK(r.bad_triangles_left <= 40);
+  // The spike's vertices sit on the segment with its marker.
+  for (VertexId v = 5; v < m.vertex_count(); ++v)
+    if (m.kind[v] == VertexKind::Segment && std::fabs(m.point(v).y - m.point(v).x * std::tan(5.0 * std::numbers::pi / 180.0)) < 1e-12)
+      CHECK(m.point(v).x > 0.0);
+}
+
+// A fan of segments from the origin, 2 to 10 degrees apart, inside the quarter disc's hull.
+Mesh fan() {
+  const double degrees[] = {0, 2, 5, 9, 14, 20, 28, 36, 45, 55, 65, 75, 85, 90};
+  std::vector<Point> pts{{0, 0}};
+  for (double d : degrees)
+    pts.push_back({std::cos(d * std::numbers::pi / 180.0), std::sin(d * std::numbers::pi / 180.0)});
+  Mesh m = triangulated(pts);
+  mark_boundary(m);
+  for (VertexId v = 2; v + 1 < pts.size(); ++v) mark_segment(m, 0, v, 3);
+  return m;
+}
+
+double fan_area() {
+  // The hull: triangles from the origin to consecutive arc points.
+  const double degrees[] = {0, 2, 5, 9, 14, 20, 28, 36, 45, 55, 65, 75, 85, 90};
+  double a = 0;
+  for (int i = 0; i + 1 < 14; ++i) a += 0.5 * std::sin((degrees[i + 1] - degrees[i]) * std::numbers::pi / 180.0);
+  return a;
+}
+
+double fan_perimeter() {
+  const double degrees[] = {0, 2, 5, 9, 14, 20, 28, 36, 45, 55, 65, 75, 85, 90};
+  double p = 2;
+  for (int i = 0; i + 1 < 14; ++i) p += 2 * std::sin((degrees[i + 1] - degrees[i]) * std::numbers::pi / 360.0);
+  return p;
+}
+
+TEST(fan_q34_and_q40_terminate_and_report) {
+  for (double theta : {34.0, 40.0}) {
+    Mesh m = fan();
+    Predicates pred;
+    RefineOptions opt = quality(theta);
+    opt.max_area = 0.002;
+    const RefineReport r = refine_mesh(m, pred, opt);
+    print(theta == 34.0 ? "fan -q34" : "fan -q40", m, r);
+    check_valid(m, fan_area(), fan_perimeter());
+    // What is left is reported: the count matches an independent count of skinny triangles that
+    // do not have their smallest angle between two subsegments.
+    std::uint64_t left = 0;
+    for (TriangleId t : skinny_triangles(m, theta - 1e-9)) left += !smallest_angle_between_subsegments(m, t);
+    CHECK(r.bad_triangles_left + 2 >= left && r.bad_triangles_left <= left + 2);
+    if (r.bad_triangles_left > 0) CHECK(r.worst_min_angle_deg < theta);
+  }
+}
+
+TEST(max_steiner_stops) {
+  Mesh m = unit_square();
+  Predicates pred;
+  RefineOptions opt = quality(30);
+  opt.max_area = 0.001;
+  opt.max_steiner = 10;
+  const RefineReport r = refine_mesh(m, pred, opt);
+  CHECK_EQ(r.interior_steiner + r.segment_steiner, std::uint64_t{10});
+  CHECK(r.stopped_by_max_steiner);
+  CHECK_EQ(m.vertex_count(), 14u);
+  CHECK(r.bad_triangles_left > 0);
+  check_valid(m, 1.0, 4.0);
+}
+
+TEST(no_steiner_on_boundary) {
+  Mesh m = unit_square();
+  Predicates pred;
+  RefineOptions opt = quality(20);
+  opt.max_area = 0.01;
+  opt.no_steiner_on_segments = 1;
+  refine_mesh(m, pred, opt);
+  check_valid(m, 1.0, 4.0);
+  for (VertexId v = 0; v < m.vertex_count(); ++v) CHECK(m.kind[v] != VertexKind::Segment);
+  CHECK(facts_of(m).max_area <= 0.01);
+}
+
+TEST(attributes_area_bounds_and_markers_are_inherited) {
+  Mesh m = unit_square();
+  m.marker.assign(m.vertex_count(), 1);
+  m.num_triangle_attributes = 1;
+  m.triangle_attributes.assign(m.triangle_slots(), 5.0);
+  m.area_bound.assign(m.triangle_slots(), 0.005);
+  Predicates pred;
+  RefineOptions opt = quality(20);
+  opt.use_triangle_area_bounds = true;
+  refine_mesh(m, pred, opt);
+  check_valid(m, 1.0, 4.0);
+  CHECK(facts_of(m).max_area <= 0.005);
+  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+    if (!m.is_live(t)) continue;
+    CHECK_EQ(m.triangle_attributes[t], 5.0);
+    CHECK_EQ(m.area_bound[t], 0.005);
+  }
+  for (VertexId v = 4; v < m.vertex_count(); ++v)
+    CHECK_EQ(m.marker[v], m.kind[v] == VertexKind::Segment ? 1 : 0);
+}

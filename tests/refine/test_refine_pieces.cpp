@@ -1,0 +1,263 @@
+// The pieces of the Terminator, each against facts worked out by hand.
+#include <cmath>
+#include <numbers>
+
+#include "harness/check.h"
+#include "mesh/operations.h"
+#include "refine/bad_triangles.h"
+#include "refine/candidate_probe.h"
+#include "refine/clusters.h"
+#include "refine/concentric_shells.h"
+#include "refine/edge_finder.h"
+#include "refine/encroached.h"
+#include "refine/encroached_queue.h"
+#include "refine/split_permitted.h"
+#include "refine/steiner_point.h"
+#include "refine/termination_guard.h"
+#include "refine_fixtures.h"
+
+using namespace deltri;
+using namespace refine_test;
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+double rad(double deg) { return deg * kPi / 180.0; }
+}  // namespace
+
+TEST(circle_encroachment_is_exact_on_the_circle) {
+  Predicates pred;
+  const EncroachRule circle = diametral_circle_rule();
+  const Point x{0, 0}, y{2, 0};
+  CHECK(encroaches(pred, x, y, {1, 1}, circle));               // on the circle: 90 degrees
+  CHECK(encroaches(pred, x, y, {1, 0.5}, circle));             // inside
+  CHECK(!encroaches(pred, x, y, {1, std::nextafter(1.0, 2.0)}, circle));  // one ulp outside
+  // A point on the circle whose float dot product rounds: (0.1, 0.3) on the circle through
+  // (0,0) and (1,0)? Not representable; use the exactly representable (0.5, 0.5).
+  CHECK(encroaches(pred, {0, 0}, {1, 0}, {0.5, 0.5}, circle));
+  CHECK(!encroaches(pred, {0, 0}, {1, 0}, {0.5, std::nextafter(0.5, 1.0)}, circle));
+}
+
+TEST(lens_encroachment_follows_the_apex_angle) {
+  Predicates pred;
+  const EncroachRule lens = diametral_lens_rule(30.0);  // 120 degrees
+  CHECK_NEAR(lens.min_apex_angle_deg, 120.0, 1e-12);
+  const Point x{0, 0}, y{2, 0};
+  // Apex angle 2 atan(1 / h) at (1, h): 120 degrees at h = 1 / sqrt(3).
+  CHECK(encroaches(pred, x, y, {1, 0.99 / std::sqrt(3.0)}, lens));
+  CHECK(!encroaches(pred, x, y, {1, 1.01 / std::sqrt(3.0)}, lens));
+  CHECK(!encroaches(pred, x, y, {1, 0.9}, lens));               // in the circle, not the lens
+  CHECK(encroaches(pred, x, y, {1, 0.9}, diametral_circle_rule()));
+  // theta = 0: only the open subsegment itself.
+  const EncroachRule none = diametral_lens_rule(0.0);
+  CHECK(encroaches(pred, x, y, {0.5, 0}, none));
+  CHECK(!encroaches(pred, x, y, {1, 1e-9}, none));
+  CHECK(!encroaches(pred, x, y, {3, 0}, none));
+  CHECK_NEAR(diametral_lens_rule(50.0).min_apex_angle_deg, 90.0, 0.0);  // never wider than circle
+}
+
+TEST(subsegment_encroached_by_either_apex) {
+  // Square with a vertex just above the bottom side's midpoint.
+  Mesh m = triangulated({{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 0.3}});
+  mark_boundary(m);
+  Predicates pred;
+  int encroached = 0;
+  for (EdgeRef e = 0; e < m.corner.size(); ++e)
+    if (m.subseg[e] != kNone && is_encroached(m, pred, e, diametral_circle_rule())) {
+      ++encroached;
+      CHECK_EQ(m.point(m.org(e)).y + m.point(m.dest(e)).y, 0.0);  // the bottom side only
+    }
+  CHECK_EQ(encroached, 1);
+}
+
+TEST(bad_triangle_test) {
+  // Isosceles triangle with apex angle 20 degrees: skinny at 30, fine at 19.
+  const double h = 1.0 / std::tan(rad(10));
+  Mesh m = triangulated({{-1, 0}, {1, 0}, {0, h}});
+  const QualityRules q30 = make_quality_rules(30, true, 0, false, 0);
+  const QualityRules q19 = make_quality_rules(19, true, 0, false, 0);
+  CHECK(assess_triangle(m, 0, q30).skinny);
+  CHECK(!assess_triangle(m, 0, q19).skinny);
+  // (r / B)^2: r / l = 1 / (2 sin 20deg), B = 1 / (2 sin 30deg).
+  const double expected = std::pow(std::sin(rad(30)) / std::sin(rad(20)), 2);
+  CHECK_NEAR(assess_triangle(m, 0, q30).shape.ratio2_over_bound2, expected, 1e-12);
+  // Size tests.
+  CHECK(assess_triangle(m, 0, make_quality_rules(0, false, h - 0.01, false, 0)).too_large);
+  CHECK(!assess_triangle(m, 0, make_quality_rules(0, false, h + 0.01, false, 0)).too_large);
+  CHECK(assess_triangle(m, 0, make_quality_rules(0, false, 0, false, 5.0)).too_large);
+  m.area_bound.assign(1, 1.0);
+  CHECK(assess_triangle(m, 0, make_quality_rules(0, false, 0, true, 0)).too_large);
+  CHECK(!assess_triangle(m, 0, make_quality_rules(0, false, 0, false, 0)).too_large);
+}
+
+TEST(small_angle_between_two_subsegments_is_not_split) {
+  // Two triangles: the thin one's smallest angle (at the origin) lies between two subsegments.
+  Mesh m = triangulated({{0, 0}, {1, 0}, {1, 0.1}, {0, 1}});
+  mark_boundary(m);
+  CHECK(mark_segment(m, 0, 2));
+  const QualityRules q = make_quality_rules(20, true, 0, false, 0);
+  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+    const Assessment a = assess_triangle(m, t, q);
+    if (min_angle_deg(m, t) < 10) {
+      CHECK(a.shape.ratio2_over_bound2 > 1.0);
+      CHECK(!a.skinny);
+    }
+  }
+  m.subseg.assign(m.subseg.size(), kNone);  // without the subsegments it is skinny
+  bool found = false;
+  for (TriangleId t = 0; t < m.triangle_slots(); ++t) found = found || assess_triangle(m, t, q).skinny;
+  CHECK(found);
+}
+
+TEST(concentric_shells_split_points) {
+  for (double length : {0.3, 1.0, 1.5, 2.9, 3.0, 7.77, 1000.0}) {
+    const double r = shell_radius(length);
+    CHECK(r >= length / 3.0 && r < 2.0 * length / 3.0);
+    CHECK_EQ(std::exp2(std::round(std::log2(r))), r);
+  }
+  const Point a{0, 0}, b{3, 0};
+  CHECK(shell_split_point(a, b, false, false) == (Point{1.5, 0}));
+  CHECK(shell_split_point(a, b, true, false) == (Point{1, 0}));   // radius 1 from a
+  CHECK(shell_split_point(a, b, false, true) == (Point{2, 0}));   // radius 1 from b
+  CHECK(shell_split_point(a, {4, 0}, true, true) == (Point{2, 0}));  // power of two: the midpoint
+}
+
+// A fan from the origin: spokes to (1,0), (cos 20, sin 20), (cos 40, sin 40) and (0, 1) ... the
+// last 50 degrees away, so the cluster at the origin holds three subsegments.
+Mesh cluster_mesh() {
+  std::vector<Point> pts{{0, 0}};
+  for (double d : {0.0, 20.0, 40.0, 90.0}) pts.push_back({std::cos(rad(d)), std::sin(rad(d))});
+  Mesh m = triangulated(pts);
+  mark_boundary(m);
+  mark_segment(m, 0, 2);
+  mark_segment(m, 0, 3);
+  return m;
+}
+
+EdgeRef edge_between(const Mesh& m, VertexId a, VertexId b) {
+  for (EdgeRef e = 0; e < m.corner.size(); ++e)
+    if (m.corner[e] != kNone && m.org(e) == a && m.dest(e) == b) return e;
+  return kNone;
+}
+
+TEST(clusters_gather_subsegments_within_sixty_degrees) {
+  Mesh m = cluster_mesh();
+  const SegmentApices apices(m);
+  CHECK(apices.is_apex(0));
+  CHECK(apices.is_apex(1));  // end of the boundary and of nothing else, but two boundary sides
+  const EdgeRef spoke = edge_between(m, 0, 2);
+  REQUIRE(spoke != kNone);
+  const Cluster c = subsegment_cluster(m, spoke);
+  CHECK_EQ(c.members.size(), std::size_t{3});  // 0, 20 and 40 degrees; 90 is 50 away from 40?
+  CHECK_NEAR(c.min_separation, rad(20), 1e-12);
+}
+
+TEST(split_permitted_follows_figure_38) {
+  Mesh m = cluster_mesh();
+  const SegmentApices apices(m);
+  const EdgeRef spoke = edge_between(m, 0, 2);  // length 1, a power of two, in one cluster
+  // r_min = 1 * sin(10 degrees) ~ 0.1736.
+  CHECK(split_permitted(m, apices, spoke, 0.17));
+  CHECK(!split_permitted(m, apices, spoke, 0.18));
+  // A subsegment whose length is not a power of two may always be split.
+  Mesh n = cluster_mesh();
+  n.points[2] = {0.9 * std::cos(rad(20)), 0.9 * std::sin(rad(20))};
+  CHECK(split_permitted(n, SegmentApices(n), edge_between(n, 0, 2), 10.0));
+  CHECK(is_power_of_two_length(0.25 * (1 + 1e-6)));
+  CHECK(!is_power_of_two_length(0.3));
+}
+
+TEST(off_center_is_nearer_than_circumcenter_on_the_bisector) {
+  const double h = 1.0 / std::tan(rad(5));  // 10 degree apex: circumcentre at y ~ 5.67
+  Mesh m = triangulated({{-1, 0}, {1, 0}, {0, h}});
+  const TriangleShape s = measure_triangle(m, 0, 0.25);
+  const Point centre = circumcenter_of(m.point(0), m.point(1), m.point(2));
+  const Point off = steiner_point(m, s.shortest, off_center_constant(30, true));
+  CHECK_NEAR(off.x, 0.0, 1e-12);
+  CHECK_NEAR(off.y, 0.475 / std::tan(rad(15)) * 2.0, 1e-12);  // from the midpoint of the base
+  CHECK(off.y < centre.y);
+  CHECK(steiner_point(m, s.shortest, 0.0) == centre);
+  // At a 20 degree apex the off-centre (y ~ 3.55) would lie beyond the circumcentre (y ~ 2.75).
+  Mesh wide = triangulated({{-1, 0}, {1, 0}, {0, 1.0 / std::tan(rad(10))}});
+  const TriangleShape w = measure_triangle(wide, 0, 0.25);
+  CHECK(steiner_point(wide, w.shortest, off_center_constant(30, true)) ==
+        circumcenter_of(wide.point(0), wide.point(1), wide.point(2)));
+  // A triangle near the bound keeps its circumcentre.
+  Mesh fine = triangulated({{0, 0}, {1, 0}, {0.5, 0.8}});
+  const TriangleShape f = measure_triangle(fine, 0, 0.25);
+  CHECK(steiner_point(fine, f.shortest, off_center_constant(30, true)) ==
+        circumcenter_of(fine.point(0), fine.point(1), fine.point(2)));
+}
+
+TEST(probe_leaves_the_mesh_untouched_and_finds_encroachment) {
+  // A flat triangle on the bottom side: its circumcentre lies below the square.
+  Mesh m = triangulated({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 0.2}});
+  mark_boundary(m);
+  Predicates pred;
+  CavityMarks marks;
+  const std::vector<double> feature = initial_feature_sizes(m);
+  const Snapshot before(m);
+  const auto all = [](EdgeRef) { return true; };
+  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+    const Point c = circumcenter_of(m.point(m.corner[3 * t]), m.point(m.corner[3 * t + 1]),
+                                    m.point(m.corner[3 * t + 2]));
+    const Probe p = probe_candidate(m, pred, t, c, diametral_lens_rule(30), marks, feature, all);
+    if (c.y < 0) {
+      CHECK(p.status == ProbeStatus::Encroaches);
+      CHECK(p.blocked);
+      REQUIRE(p.encroached.size() == 1);
+      CHECK_EQ(m.point(m.org(p.encroached[0])).y, 0.0);
+    }
+  }
+  CHECK(Snapshot(m) == before);
+  // A point in the middle is clear; its insertion radius is its distance to the nearest vertex
+  // of its cavity.
+  const Probe p = probe_candidate(m, pred, 0, {2, 2}, diametral_lens_rule(30), marks, feature, all);
+  CHECK(p.status == ProbeStatus::Clear);
+  CHECK_NEAR(p.insertion_radius, 1.8, 1e-12);
+}
+
+TEST(encroached_queue_is_fifo) {
+  EncroachedQueue q;
+  q.push({3, 1, 2});
+  q.push({6, 4, 5});
+  CHECK_EQ(q.size(), std::size_t{2});
+  CHECK_EQ(q.pop().edge, 3u);
+  CHECK_EQ(q.pop().edge, 6u);
+  CHECK(q.empty());
+}
+
+TEST(edge_finder_survives_flips) {
+  Mesh m = triangulated({{0, 0}, {2, 0}, {2, 1}, {0, 1}, {1, 0.5}});
+  EdgeFinder finder(m);
+  // Flip every flippable interior edge once; the finder must still find each remaining edge.
+  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+    const EdgeRef f = m.link[e];
+    if (f == kNone || f < e) continue;
+    Predicates pred;
+    const Point& a = m.point(m.org(e));
+    const Point& b = m.point(m.dest(e));
+    const Point& c = m.point(m.apex(e));
+    const Point& d = m.point(m.apex(f));
+    if (pred.orient2d(c, d, b) > 0 && pred.orient2d(d, c, a) > 0) {
+      flip(m, e);
+      break;
+    }
+  }
+  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+    const EdgeRef found = finder.find(m, m.org(e), m.dest(e));
+    REQUIRE(found != kNone);
+    CHECK((m.org(found) == m.org(e) && m.dest(found) == m.dest(e)) ||
+          (m.org(found) == m.dest(e) && m.dest(found) == m.org(e)));
+  }
+  CHECK_EQ(finder.find(m, 0, 2) == kNone, edge_between(m, 0, 2) == kNone && edge_between(m, 2, 0) == kNone);
+}
+
+TEST(guard_features_and_floor) {
+  Mesh m = triangulated({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 0.5}});
+  mark_boundary(m);
+  const std::vector<double> f = initial_feature_sizes(m);
+  CHECK_NEAR(f[4], 0.5, 1e-15);  // its height over the bottom subsegment
+  CHECK_NEAR(f[2], 4.0, 1e-15);
+  CHECK_NEAR(guard_floor(1.0, 0.0), std::ldexp(1.0, -kGuardOctaves), 0.0);
+  CHECK_NEAR(guard_floor(1.0, 0.5), std::ldexp(0.5, -kGuardOctaves), 0.0);
+}
