@@ -15,12 +15,6 @@ std::string plural(std::size_t n, const char* one, const char* many) {
 
 std::vector<const char*> unsupported_switches(const Switches& sw) {
   std::vector<const char*> list;
-  if (sw.quality) list.push_back("-q (quality refinement)");
-  if (sw.fixed_area || sw.variable_area) {
-    if (!sw.regional_attributes || sw.fixed_area) list.push_back("-a (area refinement)");
-  }
-  if (sw.user_test) list.push_back("-u");
-  if (sw.conforming_delaunay) list.push_back("-D");
   if (sw.voronoi) list.push_back("-v");
   if (sw.geomview) list.push_back("-g");
   if (sw.order == 2) list.push_back("-o2");

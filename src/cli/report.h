@@ -14,6 +14,7 @@
 #include "mesh/mesh.h"
 #include "pslg/pslg.h"
 #include "quality/check_mesh.h"
+#include "refine/refine.h"
 
 namespace deltri {
 
@@ -30,6 +31,7 @@ struct RunReport {
   std::optional<SegmentReport> segments;
   std::optional<HoleReport> holes;
   std::optional<CheckReport> check;
+  std::optional<RefineReport> refine;
   PredicateCounters counters;
   std::vector<std::string> written;
   double total_seconds = 0.0;

@@ -20,6 +20,7 @@
 #include "io/poly_file.h"
 #include "pslg/errors.h"
 #include "quality/check_mesh.h"
+#include "refine/refine.h"
 
 namespace deltri {
 namespace {
@@ -139,6 +140,25 @@ void schedule_outputs(OutputSet& outputs, const Mesh& mesh, const Pslg& pslg, co
   if (sw.neighbors) add(out + ".neigh", [&mesh, first](ByteSink& s) { write_neigh_file(s, mesh, first); });
 }
 
+bool refinement_wanted(const Switches& sw) {
+  return sw.quality || sw.fixed_area || sw.variable_area || sw.user_test || sw.conforming_delaunay;
+}
+
+RefineOptions refine_options(const Switches& sw) {
+  RefineOptions opt;
+  opt.quality = sw.quality;
+  opt.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
+  opt.max_area = sw.fixed_area ? sw.max_area : 0.0;
+  opt.use_triangle_area_bounds = sw.variable_area;
+  opt.lenses = !sw.conforming_delaunay;
+  opt.conforming_delaunay = sw.conforming_delaunay;
+  opt.no_steiner_on_segments = sw.no_boundary_steiner;
+  opt.max_steiner = sw.max_steiner;
+  opt.off_centers = !sw.circumcenters_only;
+  opt.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
+  return opt;
+}
+
 }  // namespace
 
 int run(const Switches& sw) {
@@ -171,6 +191,15 @@ int run(const Switches& sw) {
     enclose_convex_hull(mesh);
   }
   assign_boundary_markers(mesh, pslg.has_markers);
+  if (refinement_wanted(sw)) {
+    if (!in.is_poly && !sw.convex_hull) enclose_convex_hull(mesh);  // a point set is bounded by its hull
+    Predicates pred;
+    report.refine = refine_mesh(mesh, pred, refine_options(sw));
+    report.counters.add(pred.counters);
+    mesh.compact_triangles();
+    assign_boundary_markers(mesh, pslg.has_markers);
+    timer.stage("refinement");
+  }
 
   if (sw.check) {
     CheckOptions opt;

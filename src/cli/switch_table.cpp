@@ -22,6 +22,11 @@ void set_a(S& s, bool has, double v) {
   s.fixed_area = true;
   s.max_area = v;
 }
+void set_u(S& s, bool has, double v) {
+  if (!has || !(v > 0.0)) throw UsageError("-u: give the maximum edge length, e.g. -u0.05");
+  s.user_test = true;
+  s.max_edge_length = v;
+}
 void set_S(S& s, bool has, double v) { s.max_steiner = has ? static_cast<long>(v) : 0; }
 void set_o(S& s, bool has, double v) {
   if (!has || v != 2.0) throw UsageError("-o: only -o2 (six-node triangles) exists");
@@ -35,8 +40,9 @@ constexpr std::array kTable = {
               [](S& s, bool, double) { s.refine = true; }},
     SwitchRow{'q', ArgKind::OptionalReal, "angle", "quality mesh: no angle below `angle` degrees (default 20)", set_q},
     SwitchRow{'a', ArgKind::OptionalReal, "area", "maximum triangle area; bare: regional or .area constraints", set_a},
-    SwitchRow{'u', ArgKind::None, "", "apply the user size test",
-              [](S& s, bool, double) { s.user_test = true; }},
+    SwitchRow{'u', ArgKind::OptionalReal, "length", "size test: no edge longer than `length`", set_u},
+    SwitchRow{'k', ArgKind::None, "", "Steiner points at circumcentres only (no off-centres)",
+              [](S& s, bool, double) { s.circumcenters_only = true; }},
     SwitchRow{'A', ArgKind::None, "", "give each triangle the attribute of its region",
               [](S& s, bool, double) { s.regional_attributes = true; }},
     SwitchRow{'c', ArgKind::None, "", "keep the convex hull: enclose it with segments",

@@ -16,7 +16,9 @@ struct Switches {
   bool fixed_area = false;       // -a<A>
   double max_area = -1.0;
   bool variable_area = false;    // -a  bare: regional or per-triangle areas
-  bool user_test = false;        // -u
+  bool user_test = false;        // -u<length>: no edge longer than length
+  double max_edge_length = -1.0;
+  bool circumcenters_only = false;  // -k: Steiner points at circumcentres, no off-centres
   bool regional_attributes = false;  // -A
   bool convex_hull = false;      // -c
   bool conforming_delaunay = false;  // -D

@@ -1,0 +1,106 @@
+// The switch parser against Triangle's syntax: letters run together, numbers glued to their
+// letter, repeated letters, and clear errors for what is not a switch.
+#include <string>
+#include <vector>
+
+#include "cli/switch_table.h"
+#include "cli/switches.h"
+#include "harness/check.h"
+#include "pslg/errors.h"
+
+using namespace deltri;
+
+namespace {
+
+Switches parse(std::vector<const char*> args) {
+  args.insert(args.begin(), "deltri");
+  return parse_switches(static_cast<int>(args.size()), args.data());
+}
+
+std::string usage_error(std::vector<const char*> args) {
+  try {
+    parse(std::move(args));
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(letters_and_numbers_run_together) {
+  const Switches s = parse({"-pq30a0.1eznQ", "box.poly"});
+  CHECK(s.poly);
+  CHECK(s.quality);
+  CHECK_EQ(s.min_angle, 30.0);
+  CHECK(s.fixed_area);
+  CHECK_EQ(s.max_area, 0.1);
+  CHECK(s.edges);
+  CHECK(s.zero_based);
+  CHECK(s.neighbors);
+  CHECK(s.quiet);
+  CHECK_EQ(s.input, std::string("box.poly"));
+}
+
+TEST(defaults_and_bare_letters) {
+  const Switches s = parse({"-q", "x"});
+  CHECK(s.quality);
+  CHECK_EQ(s.min_angle, 20.0);
+  const Switches bare_a = parse({"-pa", "x"});
+  CHECK(bare_a.variable_area);
+  CHECK(!bare_a.fixed_area);
+  const Switches both = parse({"-a0.5", "-a", "x"});
+  CHECK(both.variable_area && both.fixed_area);
+  CHECK_EQ(parse({"-S", "x"}).max_steiner, 0L);
+  CHECK_EQ(parse({"-S25", "x"}).max_steiner, 25L);
+  CHECK_EQ(parse({"x"}).max_steiner, -1L);
+}
+
+TEST(exponent_only_when_a_digit_follows) {
+  CHECK_EQ(parse({"-a1e-5", "x"}).max_area, 1e-5);
+  const Switches s = parse({"-a0.1e", "x"});
+  CHECK_EQ(s.max_area, 0.1);
+  CHECK(s.edges);
+  const Switches t = parse({"-q30e", "x"});
+  CHECK_EQ(t.min_angle, 30.0);
+  CHECK(t.edges);
+}
+
+TEST(repeated_letters_count) {
+  const Switches s = parse({"-YYVVV", "x"});
+  CHECK_EQ(s.no_boundary_steiner, 2);
+  CHECK_EQ(s.verbose, 3);
+}
+
+TEST(algorithms_and_order) {
+  CHECK(parse({"-i", "x"}).algorithm == DelaunayAlgorithm::Incremental);
+  CHECK(parse({"-l", "x"}).algorithm == DelaunayAlgorithm::VerticalCuts);
+  CHECK(parse({"x"}).algorithm == DelaunayAlgorithm::DivideAndConquer);
+  CHECK(parse({"-F", "x"}).sweepline);
+  CHECK_EQ(parse({"-o2", "x"}).order, 2);
+}
+
+TEST(last_name_wins_and_switch_words_split) {
+  const Switches s = parse({"-p", "a.poly", "-e", "b.poly"});
+  CHECK(s.poly && s.edges);
+  CHECK_EQ(s.input, std::string("b.poly"));
+}
+
+TEST(errors_name_the_switch) {
+  CHECK(usage_error({"-p2", "x"}).rfind("-2: unknown switch", 0) == 0);
+  CHECK(usage_error({"-px", "x"}).rfind("-x:", 0) == 0);
+  CHECK(usage_error({"-a0", "x"}).rfind("-a:", 0) == 0);
+  CHECK(usage_error({"-q75", "x"}).rfind("-q:", 0) == 0);
+  CHECK(usage_error({"-o3", "x"}).rfind("-o:", 0) == 0);
+  CHECK(usage_error({"-u", "x"}).rfind("-u:", 0) == 0);
+  CHECK(usage_error({"-rI", "x"}).rfind("-I:", 0) == 0);
+  CHECK(usage_error({"-p", "x"}).empty());
+}
+
+TEST(help_lists_every_switch_of_the_table) {
+  const std::string help = help_text();
+  for (const SwitchRow& row : switch_table()) {
+    CHECK(help.find(std::string("  -") + row.letter) != std::string::npos);
+    CHECK(help.find(row.help) != std::string::npos);
+  }
+}
