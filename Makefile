@@ -18,8 +18,7 @@ test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 bench: build
-	@cmake --build $(BUILD) -j $(JOBS) --target deltri_bench_gen
-	@sh tests/bench/run.sh $(BUILD)
+	@python3 tests/bench/bench.py $(BUILD) $(BENCH_FLAGS)
 
 check-sanitize:
 	@$(MAKE) --no-print-directory test BUILD=build-sanitize CMAKE_FLAGS="-DDELTRI_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo"

@@ -28,12 +28,12 @@ void move_edge(Mesh& mesh, EdgeRef from, EdgeRef to) {
 
 void CdtEditor::flip(EdgeRef e) {
   const EdgeRef f = mesh.link[e];
-  const VertexId p = mesh.org(e), q = mesh.dest(e), r = mesh.apex(e), s = mesh.apex(f);
+  const VertexId r = mesh.apex(e), s = mesh.apex(f);
   const EdgeRef qr = lnext(e), ps = lnext(f);
   // Save the two edges that change triangles before their slots are overwritten.
   const EdgeRef qr_twin = mesh.link[qr], ps_twin = mesh.link[ps];
   const SubsegmentId qr_sub = mesh.subseg[qr], ps_sub = mesh.subseg[ps];
-  // Triangle of e becomes (p, s, r) laid out as e: p->s, lnext: s->r, lprev: r->p.
+  // With e = p->q: the triangle of e becomes (p, s, r) laid out as e: p->s, lnext: s->r, lprev: r->p.
   mesh.corner[lnext(e)] = s;
   // Triangle of f becomes (q, r, s) laid out as f: q->r, lnext: r->s, lprev: s->q.
   mesh.corner[lnext(f)] = r;
@@ -45,8 +45,6 @@ void CdtEditor::flip(EdgeRef e) {
   mesh.subseg[f] = qr_sub;
   mesh.bond(lnext(e), lnext(f));
   mesh.subseg[lnext(e)] = mesh.subseg[lnext(f)] = kNone;
-  (void)p;
-  (void)q;
   touch(triangle_of(e));
   touch(triangle_of(f));
 }

@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+"""make bench: generate workloads, run deltri on them, print the figures as Markdown tables.
+
+Nothing here asserts anything: benchmarks are measurements, not tests. Each case runs REPEAT
+times and the median wall time is shown; peak memory is the child's maximum resident set size.
+Usage: bench.py BUILD_DIR [--quick] [--only SUBSTRING]
+"""
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+build = sys.argv[1] if len(sys.argv) > 1 else "build"
+quick = "--quick" in sys.argv
+only = sys.argv[sys.argv.index("--only") + 1] if "--only" in sys.argv else ""
+deltri = os.path.abspath(os.path.join(build, "deltri"))
+gen = os.path.abspath(os.path.join(build, "tests", "deltri_bench_gen"))
+work = os.path.abspath(os.path.join(build, "bench"))
+os.makedirs(work, exist_ok=True)
+REPEAT = 1 if quick else 3
+
+
+def workload(kind, size, ext):
+    path = os.path.join(work, f"{kind}{size}.{ext}")
+    if not os.path.exists(path):
+        args = [gen, kind, str(size), path] if kind not in ("square",) else [gen, kind, path]
+        subprocess.run(args, check=True)
+    return path
+
+
+def run(switches, path):
+    """One run: (wall seconds, peak RSS bytes, stage seconds dict, triangle count)."""
+    start = time.perf_counter()
+    proc = subprocess.Popen([deltri, "-" + switches.lstrip("-") + "V", os.path.basename(path)], cwd=os.path.dirname(path),
+                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    out = proc.stdout.read()
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - start
+    if status != 0:
+        raise SystemExit(f"deltri {switches} {path} failed with status {status}")
+    stages, triangles = {}, 0
+    in_stages = False
+    for line in out.splitlines():
+        if line.startswith("Stage timings"):
+            in_stages = True
+            continue
+        if in_stages and line.startswith("  ") and line.rstrip().endswith(" s"):
+            name, secs = line[:24].strip(), float(line.split()[-2])
+            stages[name] = secs
+            continue
+        in_stages = False
+        if " triangles;" in line or " triangle;" in line:
+            triangles = int(line.split(" -> ")[1].split(", ")[1].split()[0])
+    return wall, usage.ru_maxrss * 1024, stages, triangles
+
+
+def measure(switches, path):
+    runs = [run(switches, path) for _ in range(REPEAT)]
+    wall = statistics.median(r[0] for r in runs)
+    rss = max(r[1] for r in runs)
+    stage = {k: statistics.median(r[2].get(k, 0.0) for r in runs) for k in runs[0][2]}
+    return wall, rss, stage, runs[0][3]
+
+
+def mib(b):
+    return f"{b / 2**20:.0f} MiB"
+
+
+def point_sets():
+    sizes = [100_000, 1_000_000] if quick else [100_000, 1_000_000, 4_000_000]
+    print("## Delaunay triangulation of point sets (`deltri -V pts.node`, writes .node and .ele)\n")
+    print("| points | kind | triangles | triangulation s | end to end s | peak | bytes/point | bytes/triangle |")
+    print("|---|---|---|---|---|---|---|---|")
+    for size in sizes:
+        for kind in ("uniform", "gaussian", "grid", "clustered"):
+            if only and only not in kind:
+                continue
+            path = workload(kind, size, "node")
+            wall, rss, stage, tris = measure("", path)
+            print(f"| {size:,} | {kind} | {tris:,} | {stage.get('Delaunay', 0):.3f} | {wall:.3f} | {mib(rss)} "
+                  f"| {rss / size:.0f} | {rss / max(tris, 1):.0f} |", flush=True)
+    print()
+
+
+def pslgs():
+    print("## PSLGs: unit square with k x k circular holes of 64 segments (`deltri -pV`)\n")
+    print("| holes | vertices and segments | switches | triangles | end to end s | peak | bytes/triangle |")
+    print("|---|---|---|---|---|---|---|")
+    for k, switches in ((45, "-p"), (100, "-p"), (45, "-pq30")):
+        if only and only not in "holes":
+            continue
+        path = workload("holes", k, "poly")
+        wall, rss, stage, tris = measure(switches, path)
+        print(f"| {k}x{k} | {4 + 64 * k * k:,} | `{switches}` | {tris:,} | {wall:.3f} | {mib(rss)} | {rss / max(tris, 1):.0f} |", flush=True)
+    print()
+
+
+def refinement():
+    print("## Quality refinement on the unit square (`deltri -pq30a<A>V square.poly`)\n")
+    print("| switches | triangles | refinement s | end to end s | triangles/s | peak | bytes/triangle |")
+    print("|---|---|---|---|---|---|---|")
+    areas = ["0.0000016"] if quick else ["0.0000016", "0.00000032"]
+    for area in areas:
+        if only and only not in "square":
+            continue
+        path = workload("square", 0, "poly")
+        switches = f"-pq30a{area}"
+        wall, rss, stage, tris = measure(switches, path)
+        print(f"| `{switches}` | {tris:,} | {stage.get('refinement', 0):.3f} | {wall:.3f} | {tris / wall:,.0f} "
+              f"| {mib(rss)} | {rss / max(tris, 1):.0f} |", flush=True)
+    print()
+
+
+if __name__ == "__main__":
+    print(f"deltri benchmarks on {os.cpu_count()} cores; median of {REPEAT} run(s)\n")
+    point_sets()
+    pslgs()
+    refinement()
