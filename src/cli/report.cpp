@@ -65,7 +65,7 @@ void Messages::finished(const Mesh& mesh, const RunReport& r) const {
   std::size_t used = 0;
   for (VertexId v = 0; v < mesh.vertex_count(); ++v)
     used += mesh.kind[v] != VertexKind::Duplicate && mesh.kind[v] != VertexKind::Dead;
-  std::string input = plural(r.pslg->points.size(), "vertex", "vertices");
+  std::string input = plural(r.input_vertices, "vertex", "vertices");
   if (r.pslg->has_segment_section) {
     input += ", " + plural(r.pslg->segments.size(), "segment", "segments");
     input += ", " + plural(r.pslg->holes.size(), "hole", "holes");
@@ -81,7 +81,7 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
   std::printf("Stage timings:\n");
   for (const auto& s : r.stages) std::printf("  %-20s %10.4f s\n", s.name, s.seconds);
   std::printf("  %-20s %10.4f s\n", "total", r.total_seconds);
-  std::printf("Input: %zu vertices (%zu duplicates)", r.pslg->points.size(), r.duplicates);
+  std::printf("Input: %zu vertices (%zu duplicates)", r.input_vertices, r.duplicates);
   if (r.pslg->has_segment_section)
     std::printf(", %zu segments, %zu holes, %zu regions", r.pslg->segments.size(), r.pslg->holes.size(), r.pslg->regions.size());
   std::printf("\n");

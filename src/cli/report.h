@@ -26,6 +26,7 @@ struct RunReport {
   const Switches* switches = nullptr;
   const Pslg* pslg = nullptr;
   std::string input_name;
+  std::size_t input_vertices = 0;
   std::vector<Stage> stages;
   std::size_t duplicates = 0;
   std::optional<SegmentReport> segments;

@@ -57,13 +57,16 @@ InputFiles input_files(const Switches& sw) {
   return in;
 }
 
-Mesh mesh_from_pslg(const Pslg& pslg) {
+// The vertices move into the mesh (the Pslg keeps segments, holes and regions): one copy of the
+// coordinates at a time is part of the memory budget.
+Mesh mesh_from_pslg(Pslg& pslg) {
   Mesh mesh;
-  mesh.points = pslg.points;
   mesh.kind.assign(pslg.points.size(), VertexKind::Input);
+  mesh.points = std::move(pslg.points);
   mesh.num_attributes = pslg.num_attributes;
-  mesh.attributes = pslg.attributes;
-  if (pslg.has_markers) mesh.marker = pslg.markers;
+  mesh.attributes = std::move(pslg.attributes);
+  if (pslg.has_markers) mesh.marker = std::move(pslg.markers);
+  pslg.points.clear();
   return mesh;
 }
 
@@ -174,8 +177,9 @@ int run(const Switches& sw) {
 
   const InputFiles in = input_files(sw);
   report.input_name = in.path;
-  const Pslg pslg = in.is_poly ? read_poly_file(in.path) : read_node_file(in.path);
+  Pslg pslg = in.is_poly ? read_poly_file(in.path) : read_node_file(in.path);
   report.pslg = &pslg;
+  report.input_vertices = pslg.points.size();
   timer.stage("read");
 
   Mesh mesh = mesh_from_pslg(pslg);

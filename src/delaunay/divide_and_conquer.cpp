@@ -16,11 +16,11 @@
 // it owns; the two top halves can be built by two threads with no locking and the same result.
 //
 // Cut alternation (Dwyer): the points are sorted once along a Morton (Z-order) curve of their
-// coordinates quantised to 32 bits on a square grid. A recursive call owns a range of that order
+// coordinates quantised to 24 bits on a square grid. A recursive call owns a range of that order
 // whose keys share a prefix; it cuts at the first key bit where its points differ, which is a cut
 // at the midpoint of its cell, alternately along x and y, found by binary search. The two halves are
 // separated by that line, which is all the merge needs; they need not be equal in size. Points that
-// share a key (closer than 2^-32 of the extent) are kept in x order and cut vertically. A cut
+// share a key (closer than 2^-24 of the extent) are kept in x order and cut vertically. A cut
 // leaving a single point on one side moves the nearest point across so that both sides have two.
 // Each axis has its own total order (x then y; y then -x) so that a cut along y is a rotation of the
 // vertical case and ties are broken the same way.
@@ -52,11 +52,13 @@ std::uint64_t spread_bits(std::uint32_t v) {
   return x;
 }
 
-// Quantises points onto a square 2^32 grid over their bounding box and interleaves the cell
+// Quantises points onto a square 2^24 grid over their bounding box and interleaves the cell
 // coordinates (x in the odd bits, so the first cut is vertical). Monotone in each coordinate, so a
-// key bit separates points by a line.
+// key bit separates points by a line. 24 bits keep the key within 48 bits: three radix passes.
 class MortonKey {
  public:
+  static constexpr double kCells = 16777215.0;  // 2^24 - 1
+  static constexpr std::uint32_t kLastCell = 0xFFFFFFu;
   MortonKey() = default;
   explicit MortonKey(const std::vector<Point>& pts, const std::vector<VertexKind>& kind) {
     bool first = true;
@@ -68,7 +70,7 @@ class MortonKey {
       hi_x_ = std::max(hi_x_, p.x), hi_y_ = std::max(hi_y_, p.y);
     }
     const double extent = std::max(hi_x_ - lo_.x, hi_y_ - lo_.y);
-    scale_ = extent > 0.0 ? 4294967295.0 / extent : 0.0;
+    scale_ = extent > 0.0 ? kCells / extent : 0.0;
   }
   std::uint64_t operator()(const Point& p) const {
     return (spread_bits(cell(p.x - lo_.x)) << 1) | spread_bits(cell(p.y - lo_.y));
@@ -77,7 +79,7 @@ class MortonKey {
  private:
   std::uint32_t cell(double d) const {
     const double c = d * scale_;
-    return c >= 4294967295.0 ? 0xFFFFFFFFu : static_cast<std::uint32_t>(c);
+    return c >= kCells ? kLastCell : static_cast<std::uint32_t>(c);
   }
   Point lo_;
   double hi_x_ = -1e308, hi_y_ = -1e308;
@@ -89,13 +91,13 @@ struct KeyedVertex {
   VertexId id;
 };
 
-// LSD radix sort on the key, 16 bits at a time, skipping digits all keys share.
+// LSD radix sort on the 48-bit key, 16 bits at a time, skipping digits all keys share.
 void radix_sort(std::vector<KeyedVertex>& items) {
   std::vector<KeyedVertex> buffer(items.size());
-  std::vector<std::uint32_t> count(4 * 65536, 0);
+  std::vector<std::uint32_t> count(3 * 65536, 0);
   for (const KeyedVertex& k : items)
-    for (int d = 0; d < 4; ++d) ++count[d * 65536 + ((k.key >> (16 * d)) & 0xFFFF)];
-  for (int d = 0; d < 4; ++d) {
+    for (int d = 0; d < 3; ++d) ++count[d * 65536 + ((k.key >> (16 * d)) & 0xFFFF)];
+  for (int d = 0; d < 3; ++d) {
     std::uint32_t* c = &count[d * 65536];
     if (std::count(c, c + 65536, 0u) == 65535) continue;  // one bucket: nothing to reorder
     std::uint32_t sum = 0;
