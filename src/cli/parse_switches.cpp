@@ -42,6 +42,8 @@ void parse_word(std::string_view word, Switches& s) {
     double value = 0.0;
     if (row->arg != ArgKind::None) {
       const std::size_t n = number_length(word.substr(i), row->arg == ArgKind::OptionalInt);
+      if (n == 0 && row->arg == ArgKind::RequiredReal)
+        throw UsageError(std::string("-") + letter + ": a number must follow, e.g. -" + letter + "0.05");
       if (n > 0) {
         const auto res = std::from_chars(word.data() + i, word.data() + i + n, value);
         if (res.ec != std::errc() || res.ptr != word.data() + i + n)
@@ -80,7 +82,8 @@ std::string help_text() {
       "  The input is name.node (points), name.poly (with -p), or name.node + name.ele (with -r).\n\n";
   for (const SwitchRow& row : switch_table()) {
     std::string name = std::string("  -") + row.letter;
-    if (row.arg != ArgKind::None) name += std::string("[") + row.argument_name + "]";
+    if (row.arg == ArgKind::RequiredReal) name += std::string("<") + row.argument_name + ">";
+    else if (row.arg != ArgKind::None) name += std::string("[") + row.argument_name + "]";
     name.resize(std::max<std::size_t>(name.size() + 1, 14), ' ');
     out += name + row.help + "\n";
   }

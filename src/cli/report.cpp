@@ -49,6 +49,16 @@ void Messages::warn_about_input(const Mesh& mesh, const RunReport& r) const {
     if (!h->outside.empty()) warn(plural(h->outside.size(), "hole point", "hole points") + " outside the triangulation ignored");
     if (!h->on_segment.empty()) warn(plural(h->on_segment.size(), "hole point", "hole points") + " lying exactly on a segment ignored");
   }
+  if (const auto& q = r.refine) {
+    if (q->stopped_by_max_steiner) warn("refinement stopped at the -S limit of Steiner points");
+    if (q->bad_triangles_left > 0) {
+      char where[160];
+      std::snprintf(where, sizeof where, " (worst: smallest angle %.4g degrees near (%.9g, %.9g))",
+                    q->worst_min_angle_deg, q->worst_location.x, q->worst_location.y);
+      warn(plural(q->bad_triangles_left, "triangle misses", "triangles miss") + " the requested bounds" +
+           (q->stopped_by_guard ? ", where the termination guard stopped refinement" : "") + where);
+    }
+  }
   if (mesh.live_triangles() == 0) {
     if (r.pslg && r.pslg->has_segment_section && mesh.vertex_count() >= 3 && r.holes && r.holes->triangles_removed > 0)
       warn("every triangle lies outside the segments or in a hole: the mesh is empty (try -c or -O)");
@@ -83,7 +93,9 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
   std::printf("  %-20s %10.4f s\n", "total", r.total_seconds);
   std::printf("Input: %zu vertices (%zu duplicates)", r.input_vertices, r.duplicates);
   if (r.pslg->has_segment_section)
-    std::printf(", %zu segments, %zu holes, %zu regions", r.pslg->segments.size(), r.pslg->holes.size(), r.pslg->regions.size());
+    std::printf(", %s, %s, %s", plural(r.pslg->segments.size(), "segment", "segments").c_str(),
+                plural(r.pslg->holes.size(), "hole", "holes").c_str(),
+                plural(r.pslg->regions.size(), "region", "regions").c_str());
   std::printf("\n");
   const MeshStatistics stats = compute_statistics(mesh);
   std::printf("%s", format_statistics(stats).c_str());
@@ -93,6 +105,17 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
               static_cast<unsigned long long>(c.orient_adaptive), static_cast<unsigned long long>(c.orient_exact));
   std::printf("  incircle   %12llu %12llu %12llu\n", static_cast<unsigned long long>(c.incircle_calls),
               static_cast<unsigned long long>(c.incircle_adaptive), static_cast<unsigned long long>(c.incircle_exact));
+  if (const auto& q = r.refine) {
+    std::printf("Refinement:\n");
+    std::printf("  Steiner points: %llu interior, %llu on segments; %llu subsegment splits\n",
+                static_cast<unsigned long long>(q->interior_steiner), static_cast<unsigned long long>(q->segment_steiner),
+                static_cast<unsigned long long>(q->encroached_splits));
+    std::printf("  rejected Steiner points: %llu; declined splits: %llu; guard refusals: %llu (edge floor %.6g)\n",
+                static_cast<unsigned long long>(q->rejected_candidates), static_cast<unsigned long long>(q->declined_splits),
+                static_cast<unsigned long long>(q->guard_refusals), q->guard_length);
+    std::printf("  peak bad-triangle queue: %zu; triangles still bad: %llu\n", q->peak_queue,
+                static_cast<unsigned long long>(q->bad_triangles_left));
+  }
   if (r.check) std::printf("Consistency check (-C): %s", r.check->summary().c_str());
 }
 

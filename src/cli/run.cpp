@@ -118,8 +118,9 @@ void schedule_outputs(OutputSet& outputs, const Mesh& mesh, const Pslg& pslg, co
     outputs.add_stream(name, std::move(produce));
   };
   // With -I the .node and .poly would overwrite the input; Triangle still writes the .node when the
-  // vertices came from a .poly.
-  if (!sw.no_node && !(sw.no_iteration && !in.is_poly)) {
+  // vertices came from the .poly itself (not from a .node next to it).
+  const bool vertices_in_poly = in.is_poly && pslg.source_name == in.path;
+  if (!sw.no_node && !(sw.no_iteration && !vertices_in_poly)) {
     const NodeWriteOptions opt{first, markers, numbering};
     add(out + ".node", [&mesh, opt](ByteSink& s) { write_node_file(s, mesh, opt); });
   }

@@ -11,6 +11,7 @@ enum class ArgKind {
   None,           // a bare letter
   OptionalReal,   // may be followed by a decimal number (-q, -a)
   OptionalInt,    // may be followed by an integer (-S, -o)
+  RequiredReal,   // must be followed by a decimal number (-u)
 };
 
 struct SwitchRow {

@@ -27,7 +27,7 @@ void load_separate_vertices(const LineReader& in, Pslg& out) {
 
 // Reads a section header's count; the section must be there.
 std::uint32_t read_count(LineReader& in, const char* section) {
-  if (!in.next_line()) in.fail(std::string("unexpected end of file: the ") + section + " header is missing");
+  if (!in.next_line()) in.fail(std::string("unexpected end of file: the ") + section + " is missing");
   return static_cast<std::uint32_t>(in.read_int({section, -1, "count"}, 0, kMaxItems));
 }
 

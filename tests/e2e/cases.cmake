@@ -1,1 +1,100 @@
 # End-to-end CLI cases: one CTest per (input file, switch string).
+# Each runs tests/e2e/run_case.sh: deltri twice in fresh temp dirs (outputs must be byte-identical),
+# the exit status, expected warnings, and deltri_mesh_verify (tests/tools) on the mesh. Error cases
+# check exit status, a "file:line:" message and that no output file was written.
+set(E2E_RUN ${CMAKE_CURRENT_SOURCE_DIR}/e2e/run_case.sh)
+set(E2E_DATA ${CMAKE_SOURCE_DIR}/data)
+set(E2E_INPUTS ${CMAKE_CURRENT_SOURCE_DIR}/e2e/inputs)
+
+# e2e_case(NAME INPUT SWITCHES [run_case.sh options...]); INPUT is a path or gen:NAME.EXT,
+# SWITCHES one argument such as -pc, or "none".
+function(e2e_case name input switches)
+  add_test(NAME e2e.${name}
+           COMMAND sh ${E2E_RUN} $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify> ${input} ${switches} ${ARGN})
+  set_tests_properties(e2e.${name} PROPERTIES TIMEOUT 120)
+endfunction()
+
+# ---- every sample in data/ ----
+set(E2E_NODE_FILES issue44 playgrounds-1356-epsg-3857 robustness1 robustness2 robustness3 robustness4 ukraine)
+set(E2E_POLY_FILES Constrained_Sweden corner_cases crossing-edges eberly-6 guitar issue-142-double-hanging-edge
+    issue-42-hole-overlaps-bondary overlapping_constraints square_with_crack touching-holes6 water-huge water)
+foreach(name IN LISTS E2E_NODE_FILES)
+  e2e_case(${name}.default ${E2E_DATA}/${name}.node none)
+  e2e_case(${name}.p ${E2E_DATA}/${name}.node -p)
+endforeach()
+foreach(name IN LISTS E2E_POLY_FILES)
+  e2e_case(${name}.p ${E2E_DATA}/${name}.poly -p)
+  e2e_case(${name}.pc ${E2E_DATA}/${name}.poly -pc --verify --convex-hull)
+  e2e_case(${name}.pA ${E2E_DATA}/${name}.poly -pA)
+  e2e_case(${name}.pO ${E2E_DATA}/${name}.poly -pO --verify --no-holes)
+  e2e_case(${name}.pz ${E2E_DATA}/${name}.poly -pz)
+endforeach()
+e2e_case(robustness2.warning ${E2E_DATA}/robustness2.node none --warning "32 duplicate vertices ignored")
+
+# ---- output and algorithm switches on a .poly and a .node ----
+set(G ${E2E_DATA}/guitar.poly)
+e2e_case(guitar.pe ${G} -pe --files "guitar.1.node guitar.1.ele guitar.1.poly guitar.1.edge")
+e2e_case(guitar.pn ${G} -pn --files "guitar.1.node guitar.1.ele guitar.1.poly guitar.1.neigh")
+e2e_case(guitar.pen ${G} -pen --no-warning)
+e2e_case(guitar.pI ${G} -pI --files "guitar.node guitar.ele")
+e2e_case(guitar.pN ${G} -pN --no-verify --files "guitar.1.ele guitar.1.poly")
+e2e_case(guitar.pE ${G} -pE --no-verify --files "guitar.1.node guitar.1.poly")
+e2e_case(guitar.pB ${G} -pBen)
+e2e_case(guitar.pP ${G} -pP --files "guitar.1.node guitar.1.ele")
+e2e_case(guitar.pj ${G} -pj)
+e2e_case(guitar.pV ${G} -pV)
+e2e_case(guitar.pQ ${G} -pQ --no-warning)
+e2e_case(guitar.pC ${G} -pC)
+e2e_case(guitar.pi ${G} -pi)
+e2e_case(guitar.pl ${G} -pl)
+e2e_case(guitar.pF ${G} -pF --warning "sweepline")
+e2e_case(guitar.pcjen ${G} -pcjen --verify --convex-hull)
+set(U ${E2E_DATA}/ukraine.node)
+e2e_case(ukraine.e ${U} -e --files "ukraine.1.node ukraine.1.ele ukraine.1.edge")
+e2e_case(ukraine.n ${U} -n --files "ukraine.1.node ukraine.1.ele ukraine.1.neigh")
+e2e_case(ukraine.I ${U} -I --files "ukraine.ele")
+e2e_case(ukraine.N ${U} -N --no-verify --files "ukraine.1.ele")
+e2e_case(ukraine.E ${U} -E --no-verify --files "ukraine.1.node")
+e2e_case(ukraine.B ${U} -Ben)
+e2e_case(ukraine.j ${U} -j)
+e2e_case(ukraine.V ${U} -V)
+e2e_case(ukraine.Q ${U} -Q)
+e2e_case(ukraine.C ${U} -C)
+e2e_case(ukraine.i ${U} -ien)
+e2e_case(ukraine.l ${U} -len)
+e2e_case(ukraine.F ${U} -F --warning "sweepline")
+e2e_case(water.pAen ${E2E_DATA}/water.poly -pAen)
+e2e_case(water-huge.pcen ${E2E_DATA}/water-huge.poly -pcen --verify --convex-hull)
+e2e_case(touching-holes6.pen ${E2E_DATA}/touching-holes6.poly -pen)
+
+# ---- generated point sets ----
+foreach(sw none -i -l)
+  e2e_case(grid30${sw} gen:grid30.node ${sw} --verify "--expect-triangles 1682")
+  e2e_case(offset1e9${sw} gen:offset.node ${sw} --no-warning)
+  e2e_case(collinear${sw} gen:collinear.node ${sw} --warning "collinear" --verify "--expect-triangles 0")
+endforeach()
+e2e_case(two_points ${E2E_INPUTS}/two_points.node none --warning "fewer than three distinct" --verify "--expect-triangles 0")
+e2e_case(duplicates ${E2E_INPUTS}/duplicates.node none --warning "2 duplicate vertices")
+
+# ---- PSLG repairs: valid mesh and the warning ----
+e2e_case(repair.duplicate_endpoint ${E2E_INPUTS}/dup_vertex_segment.poly -pen --warning "moved from a duplicate vertex")
+e2e_case(repair.zero_length ${E2E_INPUTS}/zero_length.poly -pen --warning "zero-length")
+e2e_case(repair.repeated ${E2E_INPUTS}/repeated.poly -pen --warning "repeated segment")
+e2e_case(repair.through_vertex ${E2E_INPUTS}/through_vertex.poly -pen --warning "pass exactly through vertices")
+e2e_case(repair.overlap ${E2E_INPUTS}/overlap.poly -pen --warning "collinear overlap")
+e2e_case(repair.crossing ${E2E_INPUTS}/crossing.poly -pen --warning "crossing")
+e2e_case(repair.near_parallel ${E2E_INPUTS}/near_parallel.poly -pen --warning "crossing")
+
+# ---- bad input: exit 1, "file:line:" message, no output ----
+e2e_case(error.wrong_count ${E2E_INPUTS}/wrong_count.node none --exit 1)
+e2e_case(error.segment_range ${E2E_INPUTS}/segment_range.poly -p --exit 1)
+e2e_case(error.non_numeric ${E2E_INPUTS}/nonnumeric.node none --exit 1)
+e2e_case(error.nan ${E2E_INPUTS}/nan.node none --exit 1)
+e2e_case(error.inf ${E2E_INPUTS}/inf.node none --exit 1)
+e2e_case(error.missing_segments ${E2E_INPUTS}/missing_segments.poly -p --exit 1)
+e2e_case(error.dimension3 ${E2E_INPUTS}/dim3.poly -p --exit 1)
+e2e_case(error.binary gen:garbage.node none --exit 1)
+e2e_case(error.empty gen:empty.node none --exit 1 --error "empty.node: ")
+e2e_case(error.directory gen:dir.node none --exit 1 --error "dir.node: ")
+# ---- bad switches: exit 2 (-k is a valid switch, so -t stands for an unknown letter) ----
+e2e_case(error.switch ${G} -pt --exit 2 --error "deltri: -t: unknown switch")

@@ -1,0 +1,118 @@
+#!/bin/sh
+# One end-to-end case (called by CTest, see cases.cmake):
+#   run_case.sh DELTRI VERIFY INPUT SWITCHES [options]
+# SWITCHES is one argument such as -pc, or "none".
+# INPUT is a file (copied into a fresh temp dir) or gen:NAME.EXT (written by gen_input below).
+# deltri runs twice, in two fresh directories; the exit status must be the expected one, the output
+# files of both runs byte-identical (determinism), and stderr identical.
+# On success (exit 0) deltri_mesh_verify checks the mesh unless --no-verify.
+# On failure (exit != 0) no output file may exist and stderr's first line must start with
+# "INPUT:LINE:" (or the --error text).
+# Options:
+#   --exit N            expected exit status (default 0)
+#   --warning TEXT      stderr must contain TEXT (may repeat)
+#   --no-warning        stderr must be empty
+#   --error TEXT        expected start of stderr's first line for a failing run
+#   --verify ARGS       extra arguments for deltri_mesh_verify (e.g. "--expect-triangles 0")
+#   --no-verify         do not run deltri_mesh_verify (e.g. with -N or -E)
+#   --files "A B"       the output files that must exist (e.g. "x.1.ele x.1.poly"), and no others
+set -u
+deltri=$1 verify=$2 input=$3 switches=$4
+[ "$switches" = none ] && switches=
+shift 4
+expect_exit=0 error_text= verify_args= run_verify=1 files= no_warning=0
+warnings_file=$(mktemp) || exit 1
+while [ $# -gt 0 ]; do
+  case $1 in
+    --exit) expect_exit=$2; shift ;;
+    --warning) printf '%s\n' "$2" >>"$warnings_file"; shift ;;
+    --no-warning) no_warning=1 ;;
+    --error) error_text=$2; shift ;;
+    --verify) verify_args=$2; shift ;;
+    --no-verify) run_verify=0 ;;
+    --files) files=$2; shift ;;
+    *) echo "run_case.sh: unknown option $1" >&2; exit 2 ;;
+  esac
+  shift
+done
+
+work=$(mktemp -d) || exit 1
+trap 'rm -rf "$work" "$warnings_file"' EXIT
+failed=0
+fail() { echo "FAIL: $*"; failed=1; }
+
+# Generated inputs (POSIX sh + awk only).
+gen_input() {  # gen_input NAME.EXT DIR
+  case $1 in
+    grid30.node)  # 30 x 30 unit grid: every quad is cocircular
+      awk 'BEGIN { print 900, 2, 0, 0; n = 1; for (i = 0; i < 30; i++) for (j = 0; j < 30; j++) print n++, i, j }' >"$2/$1" ;;
+    offset.node)  # 400 pseudo-random points in [1e9, 1e9 + 1) on a 2^-10 lattice: 40 significant bits
+      awk 'BEGIN { print 400, 2, 0, 0; s = 12345
+        for (n = 1; n <= 400; n++) { s = (s * 16807) % 2147483647; x = s % 1024
+          s = (s * 16807) % 2147483647; y = s % 1024
+          printf "%d %.10f %.10f\n", n, 1000000000 + x / 1024, 1000000000 + y / 1024 } }' >"$2/$1" ;;
+    collinear.node)  # 12 points on y = 2x + 1
+      awk 'BEGIN { print 12, 2, 0, 0; for (i = 1; i <= 12; i++) print i, i * 0.5, 2 * i * 0.5 + 1 }' >"$2/$1" ;;
+    garbage.node) printf '\177ELF\002\001\001\000\000\000\377\376\000\n\003\000>\000' >"$2/$1" ;;
+    empty.node) : >"$2/$1" ;;
+    dir.node) mkdir "$2/$1" ;;
+    *) echo "run_case.sh: unknown generated input $1" >&2; exit 2 ;;
+  esac
+}
+
+run() {  # run DIR: copies the input into DIR and runs deltri there
+  mkdir "$1"
+  case $input in
+    gen:*) name=${input#gen:}; gen_input "$name" "$1" ;;
+    *) name=$(basename "$input"); cp "$input" "$1/$name" ;;
+  esac
+  (cd "$1" && "$deltri" $switches "$name" >../stdout.$2 2>../stderr.$2)
+  echo $? >"$work/status.$2"
+}
+
+run "$work/a" 1
+run "$work/b" 2
+status=$(cat "$work/status.1")
+echo "deltri $switches $name: exit $status"
+sed 's/^/  stderr: /' "$work/stderr.1"
+[ "$status" = "$expect_exit" ] || fail "exit status $status, expected $expect_exit"
+[ "$(cat "$work/status.2")" = "$status" ] || fail "second run exit status differs"
+
+# Determinism: the same files with the same bytes, the same messages.
+(cd "$work/a" && ls) >"$work/list.a"
+(cd "$work/b" && ls) >"$work/list.b"
+cmp -s "$work/list.a" "$work/list.b" || fail "the two runs wrote different files"
+for f in $(cat "$work/list.a"); do
+  [ -f "$work/a/$f" ] || continue
+  cmp -s "$work/a/$f" "$work/b/$f" || fail "$f differs between two runs (not deterministic)"
+done
+cmp -s "$work/stderr.1" "$work/stderr.2" || fail "stderr differs between two runs"
+
+# Warnings.
+while IFS= read -r text; do
+  grep -F -q -- "$text" "$work/stderr.1" || fail "stderr lacks the warning '$text'"
+done <"$warnings_file"
+if [ $no_warning = 1 ] && [ -s "$work/stderr.1" ]; then fail "unexpected messages on stderr"; fi
+
+outputs=$(grep -v -x -F -- "$name" "$work/list.a")
+if [ "$expect_exit" != 0 ]; then
+  [ -z "$outputs" ] || fail "a failing run left output files: $outputs"
+  first=$(head -n 1 "$work/stderr.1")
+  if [ -n "$error_text" ]; then
+    case $first in "$error_text"*) ;; *) fail "stderr's first line does not start with '$error_text'" ;; esac
+  else
+    printf '%s\n' "$first" | grep -q "^$name:[0-9][0-9]*: " || fail "stderr's first line is not '$name:LINE: message'"
+  fi
+  exit $failed
+fi
+
+if [ -n "$files" ]; then
+  expected=$(for f in $files; do echo "$f"; done | sort)
+  [ "$(printf '%s\n' "$outputs" | sort)" = "$expected" ] || fail "output files are [$(echo $outputs)], expected [$files]"
+fi
+
+if [ $run_verify = 1 ]; then
+  case $switches in *I*) base=${name%.*} ;; *) base=${name%.*}.1 ;; esac
+  (cd "$work/a" && "$verify" --input "$name" --mesh "$base" $verify_args) || fail "deltri_mesh_verify found faults"
+fi
+exit $failed

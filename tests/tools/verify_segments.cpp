@@ -1,0 +1,141 @@
+// Segment coverage: every input segment (minus zero-length ones) must be a chain of mesh edges
+// where it runs through the meshed domain; the parts outside it must meet no triangle.
+//
+// Tolerance (the only inexact decision in the checker): a vertex deltri created where two input
+// segments cross is the intersection rounded to doubles, so it is usually not exactly on either
+// segment. For a segment that properly crosses another input segment, a mesh vertex that is not an
+// input vertex also counts as "on" the segment when its distance from the segment's line is at most
+// kCrossUlps units in the last place of the largest coordinate involved (computed in long double).
+// A correctly rounded intersection is within 0.71 ulp; 8 leaves room for a few roundings.
+// Every other decision (collinear vertices, whether a gap between two vertices on the segment
+// meets a triangle) is exact.
+#include <algorithm>
+#include <cmath>
+
+#include "verify.h"
+
+namespace mv {
+namespace {
+
+constexpr double kCrossUlps = 8.0;
+
+bool boxes_meet(const Point& a, const Point& b, const Point& c, const Point& d) {
+  return std::max(a.x, b.x) >= std::min(c.x, d.x) && std::max(c.x, d.x) >= std::min(a.x, b.x) &&
+         std::max(a.y, b.y) >= std::min(c.y, d.y) && std::max(c.y, d.y) >= std::min(a.y, b.y);
+}
+
+// Which input segments properly cross another one (interiors meet in a single point).
+std::vector<char> crossing_segments(Context& c) {
+  const auto& segs = c.in.segments;
+  const auto& p = c.in.points;
+  std::vector<char> crosses(segs.size(), 0);
+  for (std::size_t i = 0; i < segs.size(); ++i)
+    for (std::size_t j = i + 1; j < segs.size(); ++j) {
+      const Point &a = p[segs[i].a], &b = p[segs[i].b], &d = p[segs[j].a], &e = p[segs[j].b];
+      if (!boxes_meet(a, b, d, e)) continue;
+      const double o1 = c.pred.orient2d(a, b, d), o2 = c.pred.orient2d(a, b, e);
+      const double o3 = c.pred.orient2d(d, e, a), o4 = c.pred.orient2d(d, e, b);
+      if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+        crosses[i] = crosses[j] = 1;
+    }
+  return crosses;
+}
+
+double ulp(double m) { return std::nextafter(m, INFINITY) - m; }
+
+class SegmentWalk {
+ public:
+  SegmentWalk(Context& c, const PointIndex& input, const Point& a, const Point& b, bool crosses)
+      : c_(c), input_(input), a_(a), b_(b), crosses_(crosses), t_end_(param(b)) {}
+
+  // Marks the covering mesh edges; returns the point where coverage fails, if it does.
+  std::optional<Point> walk() {
+    Point pos = a_;
+    long double t_pos = 0;
+    int cur = vertex_at(a_);
+    while (!(pos == b_)) {
+      int best = -1;
+      long double t_best = 0;
+      if (cur >= 0)
+        for (int w : c_.topo.adjacent[cur]) {
+          const long double t = param(c_.out.points[w]);
+          if (t > t_pos && t <= t_end_ && (best < 0 || t < t_best) && on_segment(c_.out.points[w])) {
+            best = w;
+            t_best = t;
+          }
+        }
+      if (best >= 0) {
+        c_.segment_edges.insert(undirected_key(cur, best));
+        cur = best;
+        pos = c_.out.points[best];
+        t_pos = t_best;
+        continue;
+      }
+      // No mesh edge continues the segment: up to the next vertex on it, it must be outside the mesh.
+      Point next = b_;
+      long double t_next = t_end_;
+      for (int v : c_.vertex_grid.query(lower(pos, b_), upper(pos, b_))) {
+        const Point& q = c_.out.points[v];
+        const long double t = param(q);
+        if (t > t_pos && t < t_next && on_segment(q)) {
+          next = q;
+          t_next = t;
+        }
+      }
+      if (c_.open_segment_meets_mesh(pos, next)) return pos;
+      pos = next;
+      t_pos = t_next;
+      cur = vertex_at(next);
+    }
+    return std::nullopt;
+  }
+
+ private:
+  static Point lower(const Point& a, const Point& b) { return {std::min(a.x, b.x), std::min(a.y, b.y)}; }
+  static Point upper(const Point& a, const Point& b) { return {std::max(a.x, b.x), std::max(a.y, b.y)}; }
+
+  long double param(const Point& p) const {
+    return (static_cast<long double>(p.x) - a_.x) * (static_cast<long double>(b_.x) - a_.x) +
+           (static_cast<long double>(p.y) - a_.y) * (static_cast<long double>(b_.y) - a_.y);
+  }
+  int vertex_at(const Point& p) const {
+    const auto it = c_.topo.used_at.find(p);
+    return it == c_.topo.used_at.end() ? -1 : it->second;
+  }
+  bool exactly_on(const Point& p) {
+    return c_.pred.orient2d(a_, b_, p) == 0 && std::min(a_.x, b_.x) <= p.x && p.x <= std::max(a_.x, b_.x) &&
+           std::min(a_.y, b_.y) <= p.y && p.y <= std::max(a_.y, b_.y);
+  }
+  bool near(const Point& p) const {
+    if (!crosses_ || input_.count(p)) return false;
+    const long double dx = static_cast<long double>(b_.x) - a_.x, dy = static_cast<long double>(b_.y) - a_.y;
+    const long double cross = dx * (static_cast<long double>(p.y) - a_.y) - dy * (static_cast<long double>(p.x) - a_.x);
+    const double m = std::max({std::fabs(a_.x), std::fabs(a_.y), std::fabs(b_.x), std::fabs(b_.y), std::fabs(p.x), std::fabs(p.y)});
+    return std::fabs(cross) <= kCrossUlps * ulp(m) * std::sqrt(dx * dx + dy * dy);
+  }
+  bool on_segment(const Point& p) { return exactly_on(p) || near(p); }
+
+  Context& c_;
+  const PointIndex& input_;
+  Point a_, b_;
+  bool crosses_;
+  long double t_end_;
+};
+
+}  // namespace
+
+void check_segments(Context& c, Failures& f) {
+  PointIndex input;
+  for (std::size_t v = 0; v < c.in.points.size(); ++v) input.emplace(c.in.points[v], static_cast<int>(v));
+  const std::vector<char> crosses = crossing_segments(c);
+  for (std::size_t s = 0; s < c.in.segments.size(); ++s) {
+    const Point a = c.in.points[c.in.segments[s].a], b = c.in.points[c.in.segments[s].b];
+    if (a == b) continue;  // zero-length: deltri ignores it
+    SegmentWalk walk(c, input, a, b, crosses[s]);
+    if (const auto stuck = walk.walk())
+      f.add("segments", "input segment " + std::to_string(s) + " " + fmt(a) + "-" + fmt(b) +
+                            " is not a chain of mesh edges after " + fmt(*stuck));
+  }
+}
+
+}  // namespace mv
