@@ -37,6 +37,20 @@ void read_triangle(LineReader& in, EleData& ele, long long number, int first_ind
   for (int a = 0; a < ele.num_attributes; ++a) ele.attributes.push_back(in.read_double({"triangle", number, "attribute", a + 1}));
 }
 
+// `Out` is a TextWriter::Line (room for the whole line checked once) or, for lines with more
+// fields than a Line may hold, the TextWriter itself.
+template <class Out>
+void write_triangle_line(Out& out, const Mesh& mesh, const VertexNumbering& number, const std::vector<VertexId>* mid,
+                         TriangleId t, long long index) {
+  const int na = mesh.num_triangle_attributes;
+  out.integer(index);
+  for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) out.next_integer(number(mesh.corner[e]));
+  if (mid)
+    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) out.next_integer(number((*mid)[e]));
+  for (int a = 0; a < na; ++a) out.next_real(mesh.triangle_attributes[static_cast<std::size_t>(t) * na + a]);
+  out.end_line();
+}
+
 }  // namespace
 
 EleData read_ele_file(const std::string& path, int first_index, std::uint32_t vertex_count) {
@@ -64,14 +78,15 @@ void write_ele_file(ByteSink& sink, const Mesh& mesh, const EleWriteOptions& opt
   out.next_integer(na);
   out.end_line();
   long long index = options.first_index;
+  const std::size_t fields = (mid ? 7 : 4) + static_cast<std::size_t>(na);
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    out.integer(index++);
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) out.next_integer(number(mesh.corner[e]));
-    if (mid)
-      for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) out.next_integer(number((*mid)[e]));
-    for (int a = 0; a < na; ++a) out.next_real(mesh.triangle_attributes[static_cast<std::size_t>(t) * na + a]);
-    out.end_line();
+    if (fields <= TextWriter::kMaxLineFields) {
+      TextWriter::Line line = out.line(fields);
+      write_triangle_line(line, mesh, number, mid, t, index++);
+    } else {
+      write_triangle_line(out, mesh, number, mid, t, index++);
+    }
   }
   out.finish();
 }

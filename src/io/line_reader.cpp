@@ -5,6 +5,7 @@
 #include <cstring>
 #include <algorithm>
 
+#include "io/decimal_parse.h"
 #include "io/file_text.h"
 #include "pslg/errors.h"
 
@@ -115,6 +116,12 @@ long long LineReader::read_int(const FieldName& name, long long lo, long long hi
   const char* p = pos_;
   if (*p == '+' && p + 1 < end_ && *(p + 1) != '-') ++p;
   long long value = 0;
+  const char* fast_end = nullptr;
+  if (decimal::parse_int(p, end_, value, &fast_end) && at_field_end(fast_end) && value >= lo && value <= hi) {
+    pos_ = fast_end;
+    return value;
+  }
+  // Everything else, errors included, as std::from_chars sees it.
   const auto [ptr, ec] = std::from_chars(p, end_, value);
   if (ec == std::errc::result_out_of_range && at_field_end(ptr)) fail(name, "is too large: '" + current_token() + "'");
   if (ec != std::errc() || !at_field_end(ptr)) fail(name, "is not an integer: '" + current_token() + "'");
@@ -130,6 +137,12 @@ double LineReader::read_double(const FieldName& name) {
   const char* p = pos_;
   if (*p == '+' && p + 1 < end_ && *(p + 1) != '-') ++p;
   double value = 0.0;
+  const char* fast_end = nullptr;
+  if (decimal::parse_double(p, end_, value, &fast_end) && at_field_end(fast_end)) {  // always finite
+    pos_ = fast_end;
+    return value;
+  }
+  // Everything else, errors included, as std::from_chars sees it.
   const auto [ptr, ec] = std::from_chars(p, end_, value, std::chars_format::general);
   if (ec == std::errc::result_out_of_range && at_field_end(ptr))
     fail(name, "is out of the range of doubles: '" + current_token() + "'");

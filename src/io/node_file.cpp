@@ -56,13 +56,15 @@ void read_vertex_index(LineReader& in, long long& first, std::uint32_t k) {
     in.fail("vertex index " + std::to_string(index) + " is out of sequence: expected " + std::to_string(expected));
 }
 
+// The point is stored last, so that after an error out.points counts the complete vertices (the
+// parallel reader relies on that; attributes and markers may then hold a few extra entries).
 void read_vertex_fields(LineReader& in, Pslg& out, const NodeHeader& h, long long number) {
   Point p;
   p.x = in.read_double({"vertex", number, "x coordinate"});
   p.y = in.read_double({"vertex", number, "y coordinate"});
-  out.points.push_back(p);
   for (int a = 0; a < h.attributes; ++a) out.attributes.push_back(in.read_double({"vertex", number, "attribute", a + 1}));
   if (h.markers) out.markers.push_back(static_cast<int>(in.read_int({"vertex", number, "boundary marker"}, INT_MIN, INT_MAX)));
+  out.points.push_back(p);
 }
 
 // Reads vertex lines into `out` until `limit` are stored or the text ends; returns how many.
@@ -100,7 +102,7 @@ void read_vertices_serially(LineReader& in, Pslg& out, const NodeHeader& h) {
 // One half of a split vertex list. Errors end the half quietly: whether they matter depends on
 // where the other half ends, and a serial re-read reports them exactly as usual.
 struct VertexRun {
-  Pslg part;
+  Pslg* part = nullptr;  // where the half's vertices go
   long long first = kFirstAny;
   std::uint32_t count = 0;
   LineReader::Mark after{};
@@ -110,11 +112,12 @@ struct VertexRun {
 
 void run_half(LineReader in, const NodeHeader& h, VertexRun& run) {
   run.after = in.mark();
+  const std::size_t before = run.part->points.size();
   try {
-    run.count = parse_vertices(in, run.part, h, h.count, run.first, run.after);
+    run.count = parse_vertices(in, *run.part, h, h.count, run.first, run.after);
     run.lines = in.line();
   } catch (const InputError&) {
-    run.count = static_cast<std::uint32_t>(run.part.points.size());
+    run.count = static_cast<std::uint32_t>(run.part->points.size() - before);
   } catch (...) {
     run.fatal = std::current_exception();
   }
@@ -125,6 +128,13 @@ void append(Pslg& out, const Pslg& part, std::uint32_t count, const NodeHeader& 
   out.attributes.insert(out.attributes.end(), part.attributes.begin(),
                         part.attributes.begin() + static_cast<std::ptrdiff_t>(count) * h.attributes);
   if (h.markers) out.markers.insert(out.markers.end(), part.markers.begin(), part.markers.begin() + count);
+}
+
+// Cuts `out` back to its first `count` vertices.
+void truncate(Pslg& out, std::uint32_t count, const NodeHeader& h) {
+  out.points.resize(count);
+  out.attributes.resize(static_cast<std::size_t>(count) * h.attributes);
+  if (h.markers) out.markers.resize(count);
 }
 
 // Puts `in` behind the last vertex, which lies `needed` vertex lines into the second half.
@@ -140,13 +150,21 @@ void resume_after(LineReader& in, const LineReader& tail, const VertexRun& first
 }
 
 // Parses the two halves of the text at once; false when the serial reader must decide (an error,
-// or an odd split), in which case `out` is left empty.
+// or an odd split), in which case `out` is left empty. The first half goes straight into `out`
+// and only the second is copied, so at most one and a half copies of the vertices exist.
 bool read_vertices_in_parallel(LineReader& in, Pslg& out, const NodeHeader& h) {
   const LineReader tail = in.tail_after(in.bytes_left() / 2);
   LineReader head = in;
   head.end_at(tail);
+  // Reserving costs address space only; pages are committed as vertices arrive. The second half's
+  // vectors are deliberately left to grow: freeing one large reserved block made glibc serve the
+  // triangulation's later allocations from its heap, which raised the peak memory by a fifth.
+  reserve_vertices(in.bytes_left(), out, h);
+  Pslg second_part;
   VertexRun first, second;
+  first.part = &out;
   first.first = kFirstFromFile;
+  second.part = &second_part;
   std::thread worker(run_half, tail, std::cref(h), std::ref(second));
   run_half(head, h, first);
   worker.join();
@@ -155,16 +173,17 @@ bool read_vertices_in_parallel(LineReader& in, Pslg& out, const NodeHeader& h) {
   const bool first_ran_out = first.count < h.count && first.lines > 0;
   const std::uint32_t needed = h.count - first.count;
   if (first.count == 0 || (needed > 0 && (!first_ran_out || second.count < needed ||
-                                          second.first != first.first + static_cast<long long>(first.count))))
+                                          second.first != first.first + static_cast<long long>(first.count)))) {
+    truncate(out, 0, h);
     return false;
+  }
   out.first_index = static_cast<int>(first.first);
-  reserve_vertices(SIZE_MAX, out, h);
-  append(out, first.part, first.count, h);
   if (needed == 0) {
+    truncate(out, h.count, h);  // the first half may hold lines beyond the announced vertices
     in.reset(first.after);
     return true;
   }
-  append(out, second.part, needed, h);
+  append(out, second_part, needed, h);
   resume_after(in, tail, first, second, needed);
   return true;
 }
@@ -196,17 +215,30 @@ Pslg read_node_file(const std::string& path) {
 
 namespace {
 
+// `Out` is a TextWriter::Line (room for the whole line checked once) or, for lines with more
+// fields than a Line may hold, the TextWriter itself.
+template <class Out>
+void write_vertex_line(Out& out, const Mesh& mesh, const NodeWriteOptions& options, VertexId v, long long number) {
+  const int na = mesh.num_attributes;
+  out.integer(number);
+  out.next_real(mesh.points[v].x);
+  out.next_real(mesh.points[v].y);
+  for (int a = 0; a < na; ++a) out.next_real(mesh.attributes[static_cast<std::size_t>(v) * na + a]);
+  if (options.markers) out.next_integer(mesh.marker.empty() ? 0 : mesh.marker[v]);
+  out.end_line();
+}
+
 void write_vertex_lines(TextWriter& out, const Mesh& mesh, const NodeWriteOptions& options) {
   const VertexNumbering number{options.numbering, options.first_index};
-  const int na = mesh.num_attributes;
+  const std::size_t fields = 4 + static_cast<std::size_t>(mesh.num_attributes);
   for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
     if (!number.written(v)) continue;
-    out.integer(number(v));
-    out.next_real(mesh.points[v].x);
-    out.next_real(mesh.points[v].y);
-    for (int a = 0; a < na; ++a) out.next_real(mesh.attributes[static_cast<std::size_t>(v) * na + a]);
-    if (options.markers) out.next_integer(mesh.marker.empty() ? 0 : mesh.marker[v]);
-    out.end_line();
+    if (fields <= TextWriter::kMaxLineFields) {
+      TextWriter::Line line = out.line(fields);
+      write_vertex_line(line, mesh, options, v, number(v));
+    } else {
+      write_vertex_line(out, mesh, options, v, number(v));
+    }
   }
 }
 

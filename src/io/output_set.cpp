@@ -1,11 +1,14 @@
 #include "io/output_set.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <random>
 #include <system_error>
+#include <thread>
 
 #include "pslg/errors.h"
 
@@ -58,7 +61,8 @@ class FileSink final : public ByteSink {
 
 void remove_quietly(const std::vector<std::string>& paths) {
   std::error_code ignored;
-  for (const auto& p : paths) std::filesystem::remove(p, ignored);
+  for (const auto& p : paths)
+    if (!p.empty()) std::filesystem::remove(p, ignored);  // empty: already renamed into place
 }
 
 }  // namespace
@@ -71,25 +75,73 @@ void OutputSet::add_stream(std::string final_path, std::function<void(ByteSink&)
   files_.push_back({std::move(final_path), {}, std::move(produce)});
 }
 
-void OutputSet::commit() {
-  std::vector<std::string> temps;
-  try {
-    for (File& f : files_) {
-      temps.push_back(temporary_name(f.final_path));
-      FileSink sink(temps.back(), f.final_path);
-      if (f.produce) f.produce(sink);
-      else sink.write(f.contents.data(), f.contents.size());
-      sink.close();
+namespace {
+
+// At most this many files are handled at once: the target machine has two cores, and the large
+// outputs (.node, .ele) are each bound by one core formatting numbers.
+constexpr std::size_t kMaxWorkers = 2;
+
+// Runs task(k) for k = 0, 1, ..., count - 1 on up to kMaxWorkers threads, starting them in order
+// of k; once a task has thrown, no further task starts. Returns the exception of the lowest k that
+// threw, if any. Every task skipped after a failure comes after the failed one, so that is the
+// exception a plain loop over k would have stopped at.
+std::exception_ptr run_in_order(std::size_t count, const std::function<void(std::size_t)>& task) {
+  std::vector<std::exception_ptr> errors(count);
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  const auto work = [&] {
+    for (std::size_t k; !failed.load() && (k = next++) < count;) {
+      try {
+        task(k);
+      } catch (...) {
+        errors[k] = std::current_exception();
+        failed = true;
+      }
     }
-    for (std::size_t k = 0; k < files_.size(); ++k) {
+  };
+  {
+    std::vector<std::jthread> helpers;
+    for (std::size_t w = 1; w < std::min(kMaxWorkers, count); ++w) {
+      try {
+        helpers.emplace_back(work);
+      } catch (const std::system_error&) {
+        break;  // no thread to be had: fewer workers do the same work
+      }
+    }
+    work();
+  }  // joins the helpers
+  for (std::exception_ptr& error : errors)
+    if (error) return error;
+  return nullptr;
+}
+
+}  // namespace
+
+void OutputSet::write_temporary(File& f, const std::string& temp_path) {
+  FileSink sink(temp_path, f.final_path);
+  if (f.produce) f.produce(sink);
+  else sink.write(f.contents.data(), f.contents.size());
+  sink.close();
+}
+
+void OutputSet::commit() {
+  // Named here, in one thread: temporary_name's generator is not shared safely.
+  std::vector<std::string> temps;
+  for (const File& f : files_) temps.push_back(temporary_name(f.final_path));
+  std::exception_ptr error = run_in_order(files_.size(), [&](std::size_t k) { write_temporary(files_[k], temps[k]); });
+  // Renaming over an existing file frees the old one's blocks and cached pages, which for a large
+  // .ele takes tens of milliseconds: worth sharing between threads too.
+  if (!error) {
+    error = run_in_order(files_.size(), [&](std::size_t k) {
       std::error_code ec;
       std::filesystem::rename(temps[k], files_[k].final_path, ec);
       if (ec) fail(files_[k].final_path, "cannot be put in place: " + ec.message());
       temps[k].clear();
-    }
-  } catch (...) {
+    });
+  }
+  if (error) {
     remove_quietly(temps);
-    throw;
+    std::rethrow_exception(error);
   }
   files_.clear();
 }

@@ -19,10 +19,12 @@ class OutputSet {
   // temporary file, so a large .ele never has to exist as one string.
   void add_stream(std::string final_path, std::function<void(ByteSink&)> produce);
 
-  // Writes every file, then renames them into place. Throws OutputError("path: reason") if any
-  // write, flush or close fails; then every temporary is removed and existing files are
-  // untouched. (Should a rename itself fail after others succeeded, those stay renamed: the
-  // remaining renames are within the same directories and in practice cannot fail.)
+  // Writes every file, then renames them into place. Up to two temporaries are written at once
+  // (the producers must not modify shared state). Throws OutputError("path: reason") if any
+  // write, flush or close fails (with several failures: the one of the earliest-added file);
+  // then every temporary is removed and existing files are untouched. (Should a rename itself
+  // fail after others succeeded, those stay renamed: the remaining renames are within the same
+  // directories and in practice cannot fail.)
   void commit();
 
   std::size_t size() const { return files_.size(); }
@@ -33,6 +35,7 @@ class OutputSet {
     std::string contents;
     std::function<void(ByteSink&)> produce;  // empty: use contents
   };
+  static void write_temporary(File& f, const std::string& temp_path);
   std::vector<File> files_;
 };
 

@@ -1,7 +1,8 @@
-// Fast text output for the writers. Fields are formatted with std::to_chars into a fixed chunk
-// that is handed to a ByteSink when full, so a writer never builds per-line strings and can
-// stream a file of any size. Reals use the shortest form that reads back to the identical
-// double (Triangle uses %.17g: same values, sometimes longer text).
+// Fast text output for the writers. Fields are formatted (integers from a digit-pair table, reals
+// with std::to_chars) into a fixed chunk that is handed to a ByteSink when full, so a writer
+// never builds per-line strings and can stream a file of any size. Reals use the shortest form
+// that reads back to the identical double (Triangle uses %.17g: same values, sometimes longer
+// text).
 #pragma once
 
 #include <cstddef>
@@ -29,9 +30,16 @@ class StringSink final : public ByteSink {
   std::string& out_;
 };
 
+// Writes decimal `value` at p and returns the end. Digits are produced two at a time from a
+// table, and at most 20 digits and a sign are written.
+char* format_integer(char* p, long long value);
+
 // Fields on a line are separated by one space: Triangle's column padding carries no meaning and
 // every reader (Triangle's included) accepts any run of whitespace.
 class TextWriter {
+  static constexpr std::size_t kChunk = 1 << 16;
+  static constexpr std::size_t kLongestField = 32;  // a separator and a double (at most 24 characters)
+
  public:
   explicit TextWriter(ByteSink& sink) : sink_(sink) {}
   TextWriter(const TextWriter&) = delete;
@@ -39,26 +47,74 @@ class TextWriter {
   // Not flushed here: a destructor must not throw, and a half-written file is no use anyway.
   ~TextWriter() = default;
 
-  void integer(long long value);
-  void real(double value);
+  void integer(long long value) {
+    make_room(kLongestField);
+    cur_ = format_integer(cur_, value);
+  }
+  void real(double value) {
+    make_room(kLongestField);
+    cur_ = format_real(cur_, value);
+  }
   // A following field: a space, then the value.
-  void next_integer(long long value) { put(' '); integer(value); }
-  void next_real(double value) { put(' '); real(value); }
+  void next_integer(long long value) {
+    make_room(kLongestField);
+    *cur_++ = ' ';
+    cur_ = format_integer(cur_, value);
+  }
+  void next_real(double value) {
+    make_room(kLongestField);
+    *cur_++ = ' ';
+    cur_ = format_real(cur_, value);
+  }
   void text(std::string_view s);
-  void end_line() { put('\n'); }
+  void end_line() {
+    make_room(1);
+    *cur_++ = '\n';
+  }
   // Hands everything still buffered to the sink; call once at the end.
   void finish();
 
- private:
-  static constexpr std::size_t kChunk = 1 << 16;
-  static constexpr std::size_t kLongestField = 32;  // a double needs at most 24 characters
+  // The fast way to write the millions of lines of a mesh: one check for buffer space per line
+  // instead of one per field. `out.line(n)` makes room for up to n fields and the newline (n at
+  // most kMaxLineFields); the Line has the same field calls as the writer, and end_line() hands
+  // the line back. The position is kept in the Line, in a local, because every character stored
+  // through a char pointer could otherwise alias the writer's own position and force reloads.
+  static constexpr std::size_t kMaxLineFields = 256;
+  class Line {
+   public:
+    void integer(long long value) { cur_ = format_integer(cur_, value); }
+    void real(double value) { cur_ = format_real(cur_, value); }
+    void next_integer(long long value) {
+      *cur_++ = ' ';
+      cur_ = format_integer(cur_, value);
+    }
+    void next_real(double value) {
+      *cur_++ = ' ';
+      cur_ = format_real(cur_, value);
+    }
+    void end_line() {
+      *cur_++ = '\n';
+      writer_.cur_ = cur_;
+    }
 
+   private:
+    friend class TextWriter;
+    explicit Line(TextWriter& writer) : writer_(writer), cur_(writer.cur_) {}
+    TextWriter& writer_;
+    char* cur_;
+  };
+  Line line(std::size_t fields) {
+    make_room(fields * kLongestField + 1);
+    return Line(*this);
+  }
+
+ private:
+  static_assert(kMaxLineFields * kLongestField + 1 <= kChunk);
+
+  // Shortest text that reads back as the identical double.
+  static char* format_real(char* p, double value);
   void make_room(std::size_t bytes) {
     if (static_cast<std::size_t>(limit() - cur_) < bytes) flush();
-  }
-  void put(char c) {
-    make_room(1);
-    *cur_++ = c;
   }
   char* limit() { return buffer_ + kChunk; }
   void flush();

@@ -143,3 +143,41 @@ TEST(node_large_file_parallel_path_matches_serial) {
   const std::string short_message = node_error("big_short.node", truncated);
   CHECK(short_message.find("unexpected end of file: 200000 vertices announced, 199999 found") != std::string::npos);
 }
+
+TEST(node_parallel_path_reports_error_in_last_needed_vertex) {
+  // A bad marker on the very last announced vertex, read by the second thread: the error must be
+  // reported (not the vertex half-stored), and a good vertex beyond the count must not matter.
+  std::string text = "150000 2 1 1\n";
+  for (int i = 1; i <= 150000; ++i)
+    text += std::to_string(i) + " " + std::to_string(i) + ".5 -" + std::to_string(i) + " 0.25 " + std::to_string(i % 5) + "\n";
+  const std::string good = text + "150001 0 0 0 0\n";
+  const Pslg p = read_node_file(iotest::write_file("big_extra.node", good));
+  CHECK_EQ(p.points.size(), 150000u);
+  CHECK_EQ(p.markers.size(), 150000u);
+  CHECK_EQ(p.attributes.size(), 150000u);
+  CHECK_EQ(p.markers[149999], 0);
+  std::string bad_marker = text;
+  bad_marker.replace(bad_marker.rfind(" 0\n"), 3, " x\n");
+  const std::string message = node_error("big_bad_marker.node", bad_marker);
+  CHECK(starts_at(message, "big_bad_marker.node", 150001));
+  CHECK(message.find("vertex 150000: boundary marker is not an integer") != std::string::npos);
+  std::string bad_attribute = text;
+  bad_attribute.replace(bad_attribute.rfind(" 0.25 "), 6, " 0.2.5 ");
+  CHECK(starts_at(node_error("big_bad_attribute.node", bad_attribute), "big_bad_attribute.node", 150001));
+}
+
+TEST(node_writer_many_attributes_round_trip) {
+  // More fields than one TextWriter::Line may hold take the field-by-field path.
+  Mesh m;
+  m.num_attributes = 300;
+  for (int v = 0; v < 3; ++v) {
+    m.add_vertex({v * 0.1, -v / 3.0}, VertexKind::Input);
+    for (int a = 0; a < m.num_attributes; ++a) m.attributes[static_cast<std::size_t>(v) * 300 + a] = a * 1e-7 + v;
+  }
+  std::string text;
+  write_node_file(text, m, {1, true, nullptr});
+  const Pslg p = read_node_file(iotest::write_file("wide.node", text));
+  CHECK(p.points == m.points);
+  CHECK(p.attributes == m.attributes);
+  CHECK(p.markers == (std::vector<int>{0, 0, 0}));
+}

@@ -68,3 +68,69 @@ TEST(output_set_producer_failure_cleans_up) {
   CHECK_THROWS(set.commit());
   CHECK_EQ(files_in(dir), 0u);
 }
+
+TEST(output_set_parallel_writes_are_complete) {
+  // Several large streamed files written at once must each come out whole and in order.
+  const fs::path dir = iotest::scratch_dir() / "out_parallel";
+  fs::create_directories(dir);
+  OutputSet set;
+  for (int f = 0; f < 5; ++f) {
+    set.add_stream((dir / ("p" + std::to_string(f))).string(), [f](ByteSink& sink) {
+      TextWriter w(sink);
+      for (int i = 0; i < 200000; ++i) {
+        TextWriter::Line line = w.line(2);
+        line.integer(f);
+        line.next_integer(i);
+        line.end_line();
+      }
+      w.finish();
+    });
+  }
+  set.commit();
+  CHECK_EQ(files_in(dir), 5u);
+  for (int f = 0; f < 5; ++f) {
+    const std::string text = iotest::read_file((dir / ("p" + std::to_string(f))).string());
+    std::string expected;
+    for (int i = 0; i < 200000; ++i) expected += std::to_string(f) + " " + std::to_string(i) + "\n";
+    CHECK(text == expected);
+  }
+}
+
+TEST(output_set_earliest_failure_is_reported_and_nothing_changes) {
+  // Failures in several files, some while another file is being written: the error of the
+  // earliest-added failing file is reported, as writing one file after another would, and no
+  // final file is touched.
+  const fs::path dir = iotest::scratch_dir() / "out_first_error";
+  fs::create_directories(dir);
+  const std::string old_path = (dir / "keep.node").string();
+  iotest::write_file("out_first_error/keep.node", "old\n");
+  const auto big = [](ByteSink& sink) {
+    TextWriter w(sink);
+    for (int i = 0; i < 300000; ++i) {
+      w.integer(i);
+      w.end_line();
+    }
+    w.finish();
+  };
+  for (int round = 0; round < 20; ++round) {
+    const std::string bad1 = (dir / "missing1" / "a.ele").string();
+    const std::string bad2 = (dir / "missing2" / "a.edge").string();
+    OutputSet set;
+    set.add_stream(old_path, big);
+    set.add_stream((dir / "new.ele").string(), big);
+    if (round % 2) set.add_stream((dir / "thrower").string(), [](ByteSink&) { throw OutputError("first"); });
+    set.add(bad1, "x\n");
+    set.add_stream((dir / "late.neigh").string(), big);
+    set.add(bad2, "y\n");
+    std::string message = "no error";
+    try {
+      set.commit();
+    } catch (const OutputError& e) {
+      message = e.what();
+    }
+    if (round % 2) CHECK_EQ(message, "first");
+    else CHECK(message.starts_with(bad1 + ": "));
+    CHECK_EQ(iotest::read_file(old_path), "old\n");
+    CHECK_EQ(files_in(dir), 1u);  // only keep.node: no temporaries, no new files
+  }
+}
