@@ -124,11 +124,24 @@ void OutputSet::write_temporary(File& f, const std::string& temp_path) {
   sink.close();
 }
 
+// Throws OutputError when `path` exists but is not a regular file (a directory, say), which a
+// rename could not replace.
+void check_replaceable(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::symlink_status(path, ec);
+  if (ec || status.type() == std::filesystem::file_type::not_found) return;
+  if (status.type() != std::filesystem::file_type::regular && status.type() != std::filesystem::file_type::symlink)
+    fail(path, "cannot be replaced: it exists and is not a regular file");
+}
+
 void OutputSet::commit() {
   // Named here, in one thread: temporary_name's generator is not shared safely.
   std::vector<std::string> temps;
   for (const File& f : files_) temps.push_back(temporary_name(f.final_path));
   std::exception_ptr error = run_in_order(files_.size(), [&](std::size_t k) { write_temporary(files_[k], temps[k]); });
+  // A rename can still fail when something that is not a file stands in the way; find that before
+  // the first rename, so that a failed run leaves every old output as it was.
+  if (!error) error = run_in_order(files_.size(), [&](std::size_t k) { check_replaceable(files_[k].final_path); });
   // Renaming over an existing file frees the old one's blocks and cached pages, which for a large
   // .ele takes tens of milliseconds: worth sharing between threads too.
   if (!error) {

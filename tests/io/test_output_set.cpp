@@ -134,3 +134,23 @@ TEST(output_set_earliest_failure_is_reported_and_nothing_changes) {
     CHECK_EQ(files_in(dir), 1u);  // only keep.node: no temporaries, no new files
   }
 }
+
+TEST(output_set_directory_in_the_way_changes_nothing) {
+  const fs::path dir = iotest::scratch_dir() / "out_dir_blocks";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "a.1.poly");  // a directory where an output file must go
+  iotest::write_file("out_dir_blocks/a.1.node", "old\n");
+  OutputSet set;
+  set.add((dir / "a.1.node").string(), "new\n");
+  set.add((dir / "a.1.poly").string(), "poly\n");
+  bool threw = false;
+  try {
+    set.commit();
+  } catch (const OutputError& e) {
+    threw = true;
+    CHECK(std::string(e.what()).starts_with((dir / "a.1.poly").string() + ": "));
+  }
+  CHECK(threw);
+  CHECK_EQ(iotest::read_file((dir / "a.1.node").string()), "old\n");  // renamed only if all can be
+  CHECK_EQ(files_in(dir), 2u);
+}
