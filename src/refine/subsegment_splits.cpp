@@ -28,8 +28,9 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
   const Point& pb = mesh_.point(b);
   const Point p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));  // l.39
   if (p == pa || p == pb) return false;  // out of precision: the subsegment cannot be split
+  if (!split_keeps_orientation(s, p)) return false;  // likewise: a neighbour is flush with s
   const SplitRadius radius = split_insertion_radius(mesh_, pred_, s, p, marks_, feature_);
-  if (radius.insertion_radius < guard_floor(radius.local_feature, size_floor_)) {
+  if (radius.insertion_radius < floor_for(radius.local_feature)) {
     refuse_by_guard();
     return false;
   }
@@ -37,7 +38,11 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
   // not done: see refine.h.
   const VertexId v = add_segment_vertex(p, s);
   feature_.push_back(radius.local_feature);
+  const std::array<VertexId, 2> piece = piece_of_subsegment_[mesh_.subseg[s]];
+  piece_of_vertex_.resize(mesh_.vertex_count(), {kNone, kNone});
+  piece_of_vertex_[v] = piece;
   EdgeRef out = split_edge(mesh_, s, v);  // Fig. 39 l.44
+  piece_of_subsegment_.resize(mesh_.subsegments.size(), piece);  // the new half's record
   out = restore_delaunay_around(mesh_, pred_, v, out);
   ++report_.segment_steiner;
   ++report_.encroached_splits;
@@ -47,6 +52,21 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
       if (mesh_.subseg[half] != kNone && is_splittable(half) && is_encroached(mesh_, pred_, half, rule_))
         enqueue_subsegment(half);
   });
+  return true;
+}
+
+// split_edge joins p to the apices on both sides of s. p is rounded, so it is rarely exactly on s;
+// when an apex lies within rounding distance of s (a vertex flush with a segment, beyond what
+// doubles resolve), p can land on the far side of the line through that apex and a clockwise
+// triangle would appear. Such a split is refused, like one whose point rounds onto an endpoint.
+bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p) {
+  for (EdgeRef e : {s, mesh_.link[s]}) {
+    if (e == kNone) continue;
+    const Point& o = mesh_.point(mesh_.org(e));
+    const Point& d = mesh_.point(mesh_.dest(e));
+    const Point& c = mesh_.point(mesh_.apex(e));
+    if (pred_.orient2d(o, p, c) <= 0 || pred_.orient2d(p, d, c) <= 0) return false;
+  }
   return true;
 }
 

@@ -26,6 +26,14 @@ inline constexpr int kGuardOctaves = 5;
 // f(u) for every vertex of the initial mesh (HUGE_VAL for a vertex in no triangle).
 std::vector<double> initial_feature_sizes(const Mesh& mesh);
 
+// Edges shorter than this many units in the last place of the largest coordinate are not worth
+// making: the points that bound them are rounded by about an ulp, so the shapes of their triangles,
+// and whether a split point even lands between its endpoints, are decided by rounding error. An
+// input with vertices that close (robustness tests with points an ulp apart, a vertex an ulp from a
+// hull edge) cannot be meshed to an angle bound there anyway.
+inline constexpr int kPrecisionOctaves = 36;  // 2^-36 relative: about 2^16 ulps
+double precision_floor(const Mesh& mesh);
+
 // The edge-length floor for an insertion whose local feature estimate is `feature`; size_floor
 // (<= 0: none) is the edge length a size bound asks for.
 double guard_floor(double feature, double size_floor);

@@ -39,11 +39,23 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
       rule_(rule_for(opt)),
       off_constant_(off_center_constant(opt.quality ? opt.min_angle_deg : 0.0, opt.off_centers)),
       size_floor_(size_floor_of(mesh, opt)),
+      precision_floor_(precision_floor(mesh)),
       feature_(initial_feature_sizes(mesh)),
       apices_(mesh),
       finder_(mesh) {
-  const double smallest = feature_.empty() ? 0.0 : *std::min_element(feature_.begin(), feature_.end());
-  report_.guard_length = guard_floor(smallest, size_floor_);
+  for (const Subsegment& sub : mesh.subsegments) piece_of_subsegment_.push_back({sub.a, sub.b});
+  piece_of_vertex_.assign(mesh.vertex_count(), {kNone, kNone});
+  smallest_feature_ = feature_.empty() ? 0.0 : *std::min_element(feature_.begin(), feature_.end());
+  report_.guard_length = floor_for(smallest_feature_);
+}
+
+// The floor is the smallest initial feature estimate scaled down, not the estimate at the new
+// vertex: the Lipschitz extension f(u) + |uc| is an upper bound on lfs that grows without limit
+// away from input vertices (halfway along a strip 1000 wide and 200000 long it reads 50000), so a
+// floor taken from it refused ordinary insertions that real lfs allows. Any positive floor keeps
+// termination certain; the global one never bites where the Terminator would have stopped anyway.
+double Terminator::floor_for(double /*local_feature*/) const {
+  return std::max(guard_floor(smallest_feature_, size_floor_), precision_floor_);
 }
 
 void Terminator::refuse_by_guard() {
@@ -74,15 +86,18 @@ RefineReport Terminator::run() {
 
 void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   const TriangleId t = entry.triangle;
-  const Assessment assessment = assess_triangle(mesh_, t, rules_);
+  const Assessment assessment = assess(t);
   if (!assessment.bad() || !budget_left()) return;
   const double d = std::sqrt(assessment.shape.shortest_length2);
   const double corner_feature = std::min({feature_[entry.a], feature_[entry.b], feature_[entry.c]});
-  if (d < guard_floor(corner_feature, size_floor_)) {  // at the floor: could only make shorter edges
+  if (d < floor_for(corner_feature)) {  // at the floor: could only make shorter edges
     refuse_by_guard();
     return;
   }
   Point c = steiner_point(mesh_, assessment.shape.shortest, off_constant_);  // Fig. 38 l.13
+  // A triangle flat to rounding (its measured area 0) has no usable circumcentre: the walk
+  // towards a NaN point has no exit side.
+  if (!std::isfinite(c.x) || !std::isfinite(c.y)) return;
   const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
   Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, feature_, splittable);  // Fig. 38 l.14
   if (probe.status == ProbeStatus::Unusable && probe.blocked && assessment.too_large) {
@@ -93,7 +108,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   }
   if (probe.status == ProbeStatus::Unusable) return;
   if (probe.status == ProbeStatus::Clear) {  // Fig. 38 l.15-17
-    if (probe.insertion_radius < guard_floor(probe.local_feature, size_floor_)) {
+    if (probe.insertion_radius < floor_for(probe.local_feature)) {
       refuse_by_guard();
       return;
     }
@@ -110,7 +125,8 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   }
   ++report_.rejected_candidates;  // Fig. 38 l.18-25
   for (EdgeRef s : probe.encroached)  // Fig. 38 l.20-22, d = shortest edge of t (Sec. 6.5)
-    if (assessment.too_large || split_permitted(mesh_, apices_, s, d)) enqueue_subsegment(s);
+    if (assessment.too_large || !opt_.decline_cluster_splits || split_permitted(mesh_, apices_, s, d))
+      enqueue_subsegment(s);
   if (encroached_.empty()) {  // SPLITPERMITTED declined: never try t again
     ++report_.declined_splits;
     return;
@@ -136,8 +152,37 @@ void Terminator::new_vertex(EdgeRef out, bool queue_triangles) {
   });
 }
 
+Assessment Terminator::assess(TriangleId t) const {
+  Assessment a = assess_triangle(mesh_, t, rules_);
+  if (a.skinny && shell_exempt(a.shape.shortest)) a.skinny = false;
+  return a;
+}
+
+// Miller, Pav and Walkington's rule, which Triangle also follows: a skinny triangle whose shortest
+// edge joins split points on two segment pieces that meet at a common endpoint, at equal distances
+// from it, is left alone. Such an edge is the base of an isosceles triangle at the junction; the
+// angle there is an input angle, and splitting it only cuts both pieces down again one shell
+// further in, forever when the junction angle is small. Equal within 0.1%: split points are
+// rounded.
+bool Terminator::shell_exempt(EdgeRef shortest) const {
+  const VertexId a = mesh_.org(shortest), b = mesh_.dest(shortest);
+  if (a >= piece_of_vertex_.size() || b >= piece_of_vertex_.size()) return false;
+  const std::array<VertexId, 2>& pa = piece_of_vertex_[a];
+  const std::array<VertexId, 2>& pb = piece_of_vertex_[b];
+  if (pa[0] == kNone || pb[0] == kNone) return false;
+  if ((pa[0] == pb[0] && pa[1] == pb[1]) || (pa[0] == pb[1] && pa[1] == pb[0])) return false;
+  for (VertexId j : pa) {
+    if (j != pb[0] && j != pb[1]) continue;
+    const Point& pj = mesh_.point(j);
+    const double da = std::hypot(mesh_.point(a).x - pj.x, mesh_.point(a).y - pj.y);
+    const double db = std::hypot(mesh_.point(b).x - pj.x, mesh_.point(b).y - pj.y);
+    if (da > 0.999 * db && db > 0.999 * da) return true;
+  }
+  return false;
+}
+
 void Terminator::enqueue_if_bad(TriangleId t) {
-  const Assessment a = assess_triangle(mesh_, t, rules_);
+  const Assessment a = assess(t);
   if (!a.bad()) return;
   const unsigned bucket = a.skinny ? quality_bucket(a.shape.ratio2_over_bound2) : 0u;
   bad_triangles_.push({t, mesh_.corner[3 * t], mesh_.corner[3 * t + 1], mesh_.corner[3 * t + 2]},
@@ -201,7 +246,7 @@ void Terminator::survey_remaining() {
   const double sin_theta = std::sqrt(rules_.sin2_theta);
   for (TriangleId t = 0; t < mesh_.triangle_slots(); ++t) {
     if (!mesh_.is_live(t)) continue;
-    const Assessment a = assess_triangle(mesh_, t, rules_);
+    const Assessment a = assess(t);
     if (!a.bad()) continue;
     ++report_.bad_triangles_left;
     // r / l = sqrt(q) B with B = 1 / (2 sin theta); size-only triangles rank by the same measure.

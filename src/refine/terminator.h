@@ -4,6 +4,7 @@
 // subsegment side.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -32,9 +33,14 @@ class Terminator {
   std::uint64_t split_encroached_subsegments(bool queue_triangles);
   // Fig. 39 l.39-45 for one subsegment; false if it was not split.
   bool split_subsegment(EdgeRef s, bool queue_triangles);
+  // Would splitting s at p leave every new triangle counter-clockwise?
+  bool split_keeps_orientation(EdgeRef s, const Point& p);
   // Fig. 39 l.50-55; `out` leaves the new vertex.
   void new_vertex(EdgeRef out, bool queue_triangles);
 
+  // assess_triangle plus the equal-shell exemption (shell_exempt).
+  Assessment assess(TriangleId t) const;
+  bool shell_exempt(EdgeRef shortest) const;
   void enqueue_if_bad(TriangleId t);
   void enqueue_subsegment(EdgeRef e);
   bool still_exists(const QueuedTriangle& entry) const;
@@ -55,7 +61,15 @@ class Terminator {
   EncroachRule rule_;
   double off_constant_ = 0.0;
   double size_floor_ = 0.0;            // edge length the size bounds ask for (0: none)
+  double precision_floor_ = 0.0;       // no edge shorter than this (rounding decides below it)
+  double smallest_feature_ = 0.0;      // the smallest initial feature estimate
+  double floor_for(double feature) const;  // the guard's edge floor (see terminator.cpp)
   std::vector<double> feature_;       // the guard's feature estimate per vertex
+  // The endpoints of the segment piece (a chain of subsegments between two vertices that are not
+  // refinement splits) each subsegment record lies on, and each segment vertex added by
+  // refinement; kNone pairs for other vertices.
+  std::vector<std::array<VertexId, 2>> piece_of_subsegment_;
+  std::vector<std::array<VertexId, 2>> piece_of_vertex_;
   SegmentApices apices_;
   EdgeFinder finder_;
   CavityMarks marks_;

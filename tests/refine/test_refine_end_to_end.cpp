@@ -183,11 +183,13 @@ TEST(fan_q34_and_q40_terminate_and_report) {
     const RefineReport r = refine_mesh(m, pred, opt);
     print(theta == 34.0 ? "fan -q34" : "fan -q40", m, r);
     check_valid(m, fan_area(), fan_perimeter());
-    // What is left is reported: the count matches an independent count of skinny triangles that
-    // do not have their smallest angle between two subsegments.
+    // What is left is reported: the count is at most an independent count of skinny triangles
+    // that do not have their smallest angle between two subsegments (refinement also exempts the
+    // isosceles triangles of the shells, Miller-Pav-Walkington, which this count includes).
     std::uint64_t left = 0;
     for (TriangleId t : skinny_triangles(m, theta - 1e-9)) left += !smallest_angle_between_subsegments(m, t);
-    CHECK(r.bad_triangles_left + 2 >= left && r.bad_triangles_left <= left + 2);
+    CHECK(r.bad_triangles_left <= left + 2);
+    CHECK(r.bad_triangles_left > 0);
     if (r.bad_triangles_left > 0) CHECK(r.worst_min_angle_deg < theta);
   }
 }
