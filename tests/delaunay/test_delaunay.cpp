@@ -1,85 +1,33 @@
-// Delaunay triangulation tests. Every result is judged by facts computed here, independently of
-// the triangulator: orientation and empty circles by exact predicates, the triangle count from
-// Euler's formula with a convex hull computed in this file, and agreement between algorithms.
+// Delaunay triangulation tests. Every result is judged by facts computed independently of the
+// triangulator (tests/mesh/mesh_checks.h): orientation and empty circles by exact predicates, the
+// triangle count from Euler's formula with a monotone-chain hull, and agreement between algorithms.
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <set>
-#include <array>
 
 #include "delaunay/triangulate.h"
 #include "harness/check.h"
+#include "mesh/mesh_checks.h"
 
 using namespace deltri;
 
 namespace {
 
-Mesh mesh_of(const std::vector<Point>& pts) {
-  Mesh m;
-  m.points = pts;
-  m.kind.assign(pts.size(), VertexKind::Input);
-  return m;
-}
+using meshcheck::hull_boundary_points;
+using meshcheck::mesh_of;
+using meshcheck::triangle_set;
+using meshcheck::uniform;
 
-std::vector<Point> uniform(std::size_t n, unsigned seed, double scale = 1.0, double offset = 0.0) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Point> p(n);
-  for (auto& q : p) q = {offset + scale * u(rng), offset + scale * u(rng)};
-  return p;
-}
-
-// Number of distinct points on the convex hull boundary (corners and points on hull edges).
-std::size_t hull_boundary_points(std::vector<Point> pts) {
-  Predicates pred;
-  std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) {
-    return a.x < b.x || (a.x == b.x && a.y < b.y);
-  });
-  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-  std::vector<Point> hull;
-  for (int pass = 0; pass < 2; ++pass) {
-    const std::size_t start = hull.size();
-    for (const Point& p : pts) {
-      while (hull.size() >= start + 2 && pred.orient2d(hull[hull.size() - 2], hull.back(), p) <= 0) hull.pop_back();
-      hull.push_back(p);
-    }
-    hull.pop_back();
-    std::reverse(pts.begin(), pts.end());
-  }
-  std::size_t count = 0;
-  for (const Point& p : pts) {
-    for (std::size_t i = 0; i < hull.size(); ++i) {
-      const Point& a = hull[i];
-      const Point& b = hull[(i + 1) % hull.size()];
-      if (pred.orient2d(a, b, p) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
-          std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y)) {
-        ++count;
-        break;
-      }
-    }
-  }
-  return count;
-}
-
-// Checks the triangulation of distinct points `pts` and returns the number of faults found.
+// Faults of a finished triangulation: the shared orientation, twin and empty-circle counts, plus
+// what delaunay_triangulate promises on top: no dead slots, and exactly the Input vertices in use.
 int faults(const Mesh& m, bool expect_triangles = true) {
-  Predicates pred;
-  int bad = 0;
-  const std::uint32_t nt = m.triangle_slots();
-  if (expect_triangles && nt == 0) ++bad;
+  int bad = meshcheck::orientation_faults(m) + meshcheck::link_faults(m) + meshcheck::delaunay_faults(m);
+  if (expect_triangles && m.triangle_slots() == 0) ++bad;
   std::vector<char> used(m.vertex_count(), 0);
-  for (TriangleId t = 0; t < nt; ++t) {
+  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) { ++bad; continue; }
-    for (unsigned i = 0; i < 3; ++i) {
-      const EdgeRef e = 3 * t + i;
-      if (m.corner[e] >= m.vertex_count()) { ++bad; continue; }
-      used[m.corner[e]] = 1;
-      const EdgeRef f = m.link[e];
-      if (f == kNone) continue;
-      if (m.link[f] != e || m.org(f) != m.dest(e) || m.dest(f) != m.org(e)) ++bad;
-      if (pred.incircle(m.point(m.org(e)), m.point(m.dest(e)), m.point(m.apex(e)), m.point(m.apex(f))) > 0) ++bad;
-    }
-    if (pred.orient2d(m.point(m.corner[3 * t]), m.point(m.corner[3 * t + 1]), m.point(m.corner[3 * t + 2])) <= 0) ++bad;
+    for (unsigned i = 0; i < 3; ++i)
+      if (m.corner[3 * t + i] < m.vertex_count()) used[m.corner[3 * t + i]] = 1;
   }
   for (VertexId v = 0; v < m.vertex_count(); ++v)
     if (expect_triangles && (m.kind[v] == VertexKind::Input) != (used[v] != 0)) ++bad;
@@ -93,17 +41,6 @@ void check_point_set(const std::vector<Point>& pts, DelaunayAlgorithm alg, int t
   const std::size_t h = hull_boundary_points(pts);
   CHECK_EQ(faults(m), 0);
   CHECK_EQ(static_cast<std::size_t>(m.live_triangles()), 2 * distinct - 2 - h);
-}
-
-std::vector<std::array<VertexId, 3>> triangle_set(const Mesh& m) {
-  std::vector<std::array<VertexId, 3>> s;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
-    std::array<VertexId, 3> a{m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]};
-    std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
-    s.push_back(a);
-  }
-  std::sort(s.begin(), s.end());
-  return s;
 }
 
 }  // namespace
