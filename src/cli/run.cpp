@@ -195,16 +195,16 @@ int run(const Switches& sw) {
   } else if (sw.convex_hull) {
     enclose_convex_hull(mesh);
   }
-  assign_boundary_markers(mesh, pslg.has_markers);
   if (refinement_wanted(sw)) {
     if (!in.is_poly && !sw.convex_hull) enclose_convex_hull(mesh);  // a point set is bounded by its hull
     Predicates pred;
     report.refine = refine_mesh(mesh, pred, refine_options(sw));
     report.counters.add(pred.counters);
     mesh.compact_triangles();
-    assign_boundary_markers(mesh, pslg.has_markers);
     timer.stage("refinement");
   }
+  // Once, at the end: every marker follows from input markers, subsegments and the boundary.
+  assign_boundary_markers(mesh, pslg.has_markers);
 
   if (sw.check) {
     CheckOptions opt;

@@ -257,21 +257,20 @@ class Builder {
 
   // Removes the edge between ghost g's side 0 and the real triangle behind it by a flip, so that the
   // region above the merge base grows by that triangle. `left` says which half g belongs to; the
-  // return value is the ghost that now carries the base's candidate edge.
+  // return value is the ghost that now carries the base's candidate edge. g's side towards the base
+  // (side 1 on the left, side 2 on the right) is detached during the merge and stays so.
   TriangleId delete_by_flip(TriangleId g, bool left) {
     const EdgeRef e = 3 * g, f = link_[e];
     const TriangleId t = triangle_of(f);
     const EdgeRef f1 = lnext(f), f2 = lprev(f);
     const VertexId far = corner_[f2];
     const EdgeRef out_f1 = link_[f1], out_f2 = link_[f2];
-    const EdgeRef out_g1 = link_[e + 1], out_g2 = link_[e + 2];
     if (left) {
       // g = (x, l, G), t = (l, x, x2)  ->  g = (x2, l, G), t = (x, x2, G)
+      const EdgeRef out_g2 = link_[e + 2];
       const VertexId x = corner_[e], l = corner_[e + 1];
       set_corners(g, far, l, kGhostVertex);
       set_corners(t, x, far, kGhostVertex);
-      link_[e + 1] = out_g1;
-      if (out_g1 != kNone) link_[out_g1] = e + 1;
       bond(e, out_f2);
       bond(e + 2, 3 * t + 1);
       bond(3 * t, out_f1);
@@ -279,11 +278,10 @@ class Builder {
       return g;
     }
     // g = (r, y, G), t = (y, r, y2)  ->  g = (r, y2, G), t = (y2, y, G)
+    const EdgeRef out_g1 = link_[e + 1];
     const VertexId r = corner_[e], y = corner_[e + 1];
     set_corners(g, r, far, kGhostVertex);
     set_corners(t, far, y, kGhostVertex);
-    link_[e + 2] = out_g2;
-    if (out_g2 != kNone) link_[out_g2] = e + 2;
     bond(e, out_f1);
     bond(e + 1, 3 * t + 2);
     bond(3 * t, out_f2);
