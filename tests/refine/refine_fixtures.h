@@ -13,10 +13,19 @@
 #include "delaunay/triangulate.h"
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
+#include "refine/refine.h"
 
 namespace refine_test {
 
 using namespace deltri;
+
+// Options asking for the angle bound theta and nothing else.
+inline RefineOptions quality(double theta) {
+  RefineOptions opt;
+  opt.quality = true;
+  opt.min_angle_deg = theta;
+  return opt;
+}
 
 // The Delaunay triangulation of `points` (all Input).
 inline Mesh triangulated(const std::vector<Point>& points) {

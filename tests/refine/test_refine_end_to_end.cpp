@@ -12,13 +12,6 @@ using namespace refine_test;
 
 namespace {
 
-RefineOptions quality(double theta) {
-  RefineOptions opt;
-  opt.quality = true;
-  opt.min_angle_deg = theta;
-  return opt;
-}
-
 // The facts every refined mesh must have, whatever the bounds.
 void check_valid(const Mesh& m, double area, double perimeter) {
   const Facts f = facts_of(m);

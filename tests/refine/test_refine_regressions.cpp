@@ -13,13 +13,6 @@ using namespace refine_test;
 
 namespace {
 
-RefineOptions quality(double theta) {
-  RefineOptions opt;
-  opt.quality = true;
-  opt.min_angle_deg = theta;
-  return opt;
-}
-
 // The constrained Delaunay triangulation of a segment-bounded PSLG, exterior removed.
 Mesh pslg_mesh(const std::vector<Point>& points, const std::vector<std::pair<int, int>>& segments) {
   Mesh m = triangulated(points);
