@@ -78,11 +78,10 @@ WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const 
 }
 
 void cavity_of(const Mesh& mesh, Predicates& pred, const std::vector<TriangleId>& seeds,
-               const Point& c, CavityMarks& marks, const std::vector<double>& feature, Cavity& out) {
+               const Point& c, CavityMarks& marks, Cavity& out) {
   marks.begin(mesh.triangle_slots());
   out.boundary_subsegments.clear();
   out.nearest2 = HUGE_VAL;
-  out.local_feature = HUGE_VAL;
   std::vector<TriangleId> todo;
   for (TriangleId s : seeds)
     if (marks.mark(s)) todo.push_back(s);
@@ -94,7 +93,6 @@ void cavity_of(const Mesh& mesh, Predicates& pred, const std::vector<TriangleId>
       const VertexId u = mesh.org(e);
       const double d2 = distance2(c, mesh.point(u));
       out.nearest2 = std::min(out.nearest2, d2);
-      if (u < feature.size()) out.local_feature = std::min(out.local_feature, feature[u] + std::sqrt(d2));
       if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
         out.boundary_subsegments.push_back(e);
         continue;
@@ -112,13 +110,13 @@ void cavity_of(const Mesh& mesh, Predicates& pred, const std::vector<TriangleId>
 
 }  // namespace detail
 
-SplitRadius split_insertion_radius(const Mesh& mesh, Predicates& pred, EdgeRef s, const Point& c,
-                                   CavityMarks& marks, const std::vector<double>& feature) {
+double split_insertion_radius(const Mesh& mesh, Predicates& pred, EdgeRef s, const Point& c,
+                              CavityMarks& marks) {
   std::vector<TriangleId> seeds{triangle_of(s)};
   if (mesh.link[s] != kNone) seeds.push_back(triangle_of(mesh.link[s]));
   detail::Cavity cavity;
-  detail::cavity_of(mesh, pred, seeds, c, marks, feature, cavity);
-  return {std::sqrt(cavity.nearest2), cavity.local_feature};
+  detail::cavity_of(mesh, pred, seeds, c, marks, cavity);
+  return std::sqrt(cavity.nearest2);
 }
 
 }  // namespace deltri

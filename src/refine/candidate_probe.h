@@ -35,7 +35,6 @@ struct Probe {
   bool blocked = false;                // the walk stopped at a subsegment or the boundary
   std::vector<EdgeRef> encroached;     // edges carrying the encroached subsegments
   double insertion_radius = 0.0;       // distance from c to the nearest vertex it would join
-  double local_feature = 0.0;          // min over those vertices u of feature[u] + |cu|
 };
 
 // Reusable triangle marks for the cavity search.
@@ -52,19 +51,13 @@ class CavityMarks {
 // Probes point c for a bad triangle t. `splittable(e)` says whether the subsegment on edge e may
 // be split at all (-Y); encroachment of unsplittable subsegments is not reported, except that a
 // walk they block makes c Unusable.
-// `feature` holds a 1-Lipschitz feature-size estimate per vertex (see termination_guard.h).
 template <class Splittable>
 Probe probe_candidate(const Mesh& mesh, Predicates& pred, TriangleId t, const Point& c,
-                      const EncroachRule& rule, CavityMarks& marks, const std::vector<double>& feature,
-                      Splittable&& splittable);
+                      const EncroachRule& rule, CavityMarks& marks, Splittable&& splittable);
 
-struct SplitRadius {
-  double insertion_radius = 0.0;
-  double local_feature = 0.0;
-};
-// The same for a point c on the subsegment carried by edge s (a segment split).
-SplitRadius split_insertion_radius(const Mesh& mesh, Predicates& pred, EdgeRef s, const Point& c,
-                                   CavityMarks& marks, const std::vector<double>& feature);
+// The insertion radius of a point c on the subsegment carried by edge s (a segment split).
+double split_insertion_radius(const Mesh& mesh, Predicates& pred, EdgeRef s, const Point& c,
+                              CavityMarks& marks);
 
 namespace detail {
 
@@ -78,17 +71,15 @@ WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const 
 struct Cavity {
   std::vector<EdgeRef> boundary_subsegments;  // cavity edges carrying subsegments
   double nearest2 = 0.0;                      // squared distance to the nearest cavity vertex
-  double local_feature = 0.0;                 // min of feature[u] + |cu| over cavity vertices
 };
 void cavity_of(const Mesh& mesh, Predicates& pred, const std::vector<TriangleId>& seeds,
-               const Point& c, CavityMarks& marks, const std::vector<double>& feature, Cavity& out);
+               const Point& c, CavityMarks& marks, Cavity& out);
 
 }  // namespace detail
 
 template <class Splittable>
 Probe probe_candidate(const Mesh& mesh, Predicates& pred, TriangleId t, const Point& c,
-                      const EncroachRule& rule, CavityMarks& marks, const std::vector<double>& feature,
-                      Splittable&& splittable) {
+                      const EncroachRule& rule, CavityMarks& marks, Splittable&& splittable) {
   Probe probe;
   const detail::WalkResult walk = detail::walk_towards(mesh, pred, t, c);
   if (walk.on_vertex) return probe;
@@ -101,9 +92,8 @@ Probe probe_candidate(const Mesh& mesh, Predicates& pred, TriangleId t, const Po
     return probe;
   }
   detail::Cavity cavity;
-  detail::cavity_of(mesh, pred, {triangle_of(walk.container)}, c, marks, feature, cavity);
+  detail::cavity_of(mesh, pred, {triangle_of(walk.container)}, c, marks, cavity);
   probe.insertion_radius = std::sqrt(cavity.nearest2);
-  probe.local_feature = cavity.local_feature;
   for (EdgeRef e : cavity.boundary_subsegments) {
     const Point& a = mesh.point(mesh.org(e));
     const Point& b = mesh.point(mesh.dest(e));

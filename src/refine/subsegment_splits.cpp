@@ -29,15 +29,13 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
   const Point p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));  // l.39
   if (p == pa || p == pb) return false;  // out of precision: the subsegment cannot be split
   if (!split_keeps_orientation(s, p)) return false;  // likewise: a neighbour is flush with s
-  const SplitRadius radius = split_insertion_radius(mesh_, pred_, s, p, marks_, feature_);
-  if (radius.insertion_radius < floor_for(radius.local_feature)) {
+  if (split_insertion_radius(mesh_, pred_, s, p, marks_) < guard_floor_) {
     refuse_by_guard();
     return false;
   }
   // Fig. 39 l.40-43 (Chew's deletion of free vertices in the diametral circle, for lenses) is
   // not done: see refine.h.
   const VertexId v = add_segment_vertex(p, s);
-  feature_.push_back(radius.local_feature);
   const std::array<VertexId, 2> piece = piece_of_subsegment_[mesh_.subseg[s]];
   piece_of_vertex_.resize(mesh_.vertex_count(), {kNone, kNone});
   piece_of_vertex_[v] = piece;

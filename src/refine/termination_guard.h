@@ -2,17 +2,17 @@
 // Terminator's proven range (Sec. 6.3 guarantees termination, but bounds above about 34 degrees
 // are not proven at all and can refine forever, Sec. 7.3, Fig. 37).
 //
-// It is the "sure-fire" rule of Sec. 6.2 made local: no vertex is inserted whose insertion radius
-// (the length of the shortest edge it would create) is below 2^-kGuardOctaves times a local
-// feature size estimate f. Each input vertex u starts with f(u) = the shortest edge at u in the
-// initial triangulation, or the distance from u to a subsegment across one of its triangles if
-// that is shorter (both upper bounds on lfs(u)). A new vertex c gets f(c) = min over the vertices
-// u it is joined to of f(u) + |uc|: a 1-Lipschitz extension, like lfs itself (Lemma 2). f never
-// falls below the smallest initial value, so no edge shorter than that floor is ever created;
-// a constrained Delaunay triangulation joins each vertex to its nearest visible neighbour, so
-// vertices stay that far apart and only finitely many fit in the domain. Meshes within the proven
-// range never come near the floor; size bounds lower it (a user who asks for area A gets edges
-// down to sqrt(A) 2^-kGuardOctaves), so the guard never blocks size refinement.
+// It is the "sure-fire" rule of Sec. 6.2 with one floor for the whole run: no vertex is inserted
+// whose insertion radius (the length of the shortest edge it would create) is below
+// 2^-kGuardOctaves times the smallest feature size estimate f of the input. Each input vertex u has
+// f(u) = the shortest edge at u in the initial triangulation, or the distance from u to a
+// subsegment across one of its triangles if that is shorter (both upper bounds on lfs(u)). No edge
+// shorter than the floor is ever created; a constrained Delaunay triangulation joins each vertex to
+// its nearest visible neighbour, so vertices stay that far apart and only finitely many fit in the
+// domain. Meshes within the proven range never come near the floor; size bounds lower it (a user who
+// asks for area A gets edges down to sqrt(A) 2^-kGuardOctaves), so the guard never blocks size
+// refinement. (A per-vertex floor from the 1-Lipschitz extension of f was tried and refused
+// ordinary insertions far from the input vertices, where that extension overestimates lfs.)
 #pragma once
 
 #include <vector>
@@ -34,8 +34,8 @@ std::vector<double> initial_feature_sizes(const Mesh& mesh);
 inline constexpr int kPrecisionOctaves = 36;  // 2^-36 relative: about 2^16 ulps
 double precision_floor(const Mesh& mesh);
 
-// The edge-length floor for an insertion whose local feature estimate is `feature`; size_floor
-// (<= 0: none) is the edge length a size bound asks for.
+// The edge-length floor for a smallest feature estimate `feature`; size_floor (<= 0: none) is the
+// edge length a size bound asks for.
 double guard_floor(double feature, double size_floor);
 
 }  // namespace deltri

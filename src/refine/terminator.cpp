@@ -23,6 +23,18 @@ double size_floor_of(const Mesh& mesh, const RefineOptions& opt) {
   return std::isfinite(floor) ? floor : 0.0;
 }
 
+// The guard's edge floor, one value for the whole run: the smallest initial feature estimate scaled
+// down (and never below what rounding can resolve), not an estimate at each new vertex: the
+// Lipschitz extension f(u) + |uc| is an upper bound on lfs that grows without limit away from input
+// vertices (halfway along a strip 1000 wide and 200000 long it reads 50000), so a floor taken from
+// it refused ordinary insertions that real lfs allows. Any positive floor keeps termination
+// certain; the global one never bites where the Terminator would have stopped anyway.
+double guard_floor_of(const Mesh& mesh, const RefineOptions& opt) {
+  const std::vector<double> features = initial_feature_sizes(mesh);
+  const double smallest = features.empty() ? 0.0 : *std::min_element(features.begin(), features.end());
+  return std::max(guard_floor(smallest, size_floor_of(mesh, opt)), precision_floor(mesh));
+}
+
 EncroachRule rule_for(const RefineOptions& opt) {
   if (!opt.lenses || opt.conforming_delaunay) return diametral_circle_rule();
   return diametral_lens_rule(opt.quality ? opt.min_angle_deg : 0.0);
@@ -38,24 +50,12 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
                                 opt.use_triangle_area_bounds, opt.max_edge_length)),
       rule_(rule_for(opt)),
       off_constant_(off_center_constant(opt.quality ? opt.min_angle_deg : 0.0, opt.off_centers)),
-      size_floor_(size_floor_of(mesh, opt)),
-      precision_floor_(precision_floor(mesh)),
-      feature_(initial_feature_sizes(mesh)),
+      guard_floor_(guard_floor_of(mesh, opt)),
       apices_(mesh),
       finder_(mesh) {
   for (const Subsegment& sub : mesh.subsegments) piece_of_subsegment_.push_back({sub.a, sub.b});
   piece_of_vertex_.assign(mesh.vertex_count(), {kNone, kNone});
-  smallest_feature_ = feature_.empty() ? 0.0 : *std::min_element(feature_.begin(), feature_.end());
-  report_.guard_length = floor_for(smallest_feature_);
-}
-
-// The floor is the smallest initial feature estimate scaled down, not the estimate at the new
-// vertex: the Lipschitz extension f(u) + |uc| is an upper bound on lfs that grows without limit
-// away from input vertices (halfway along a strip 1000 wide and 200000 long it reads 50000), so a
-// floor taken from it refused ordinary insertions that real lfs allows. Any positive floor keeps
-// termination certain; the global one never bites where the Terminator would have stopped anyway.
-double Terminator::floor_for(double /*local_feature*/) const {
-  return std::max(guard_floor(smallest_feature_, size_floor_), precision_floor_);
+  report_.guard_length = guard_floor_;
 }
 
 void Terminator::refuse_by_guard() {
@@ -89,8 +89,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   const Assessment assessment = assess(t);
   if (!assessment.bad() || !budget_left()) return;
   const double d = std::sqrt(assessment.shape.shortest_length2);
-  const double corner_feature = std::min({feature_[entry.a], feature_[entry.b], feature_[entry.c]});
-  if (d < floor_for(corner_feature)) {  // at the floor: could only make shorter edges
+  if (d < guard_floor_) {  // at the floor: could only make shorter edges
     refuse_by_guard();
     return;
   }
@@ -99,21 +98,20 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   // towards a NaN point has no exit side.
   if (!std::isfinite(c.x) || !std::isfinite(c.y)) return;
   const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
-  Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, feature_, splittable);  // Fig. 38 l.14
+  Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, splittable);  // Fig. 38 l.14
   if (probe.status == ProbeStatus::Unusable && probe.blocked && assessment.too_large) {
     // On or behind a subsegment that may not be split (-Y): a size bound is still owed, and
     // the centroid always lies inside t.
     c = centroid_of(t);
-    probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, feature_, splittable);
+    probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, splittable);
   }
   if (probe.status == ProbeStatus::Unusable) return;
   if (probe.status == ProbeStatus::Clear) {  // Fig. 38 l.15-17
-    if (probe.insertion_radius < floor_for(probe.local_feature)) {
+    if (probe.insertion_radius < guard_floor_) {
       refuse_by_guard();
       return;
     }
     const VertexId v = add_free_vertex(c, probe.container);
-    feature_.push_back(probe.local_feature);
     const InsertResult inserted = insert_vertex(mesh_, pred_, v, probe.container, false);  // l.16
     if (inserted.status != InsertStatus::Inserted) {  // c sits on an unsplittable subsegment
       drop_last_vertex();
@@ -237,7 +235,6 @@ Point Terminator::centroid_of(TriangleId t) const {
 void Terminator::drop_last_vertex() {
   mesh_.points.pop_back();
   mesh_.kind.pop_back();
-  feature_.pop_back();
   if (!mesh_.marker.empty()) mesh_.marker.pop_back();
   if (mesh_.num_attributes > 0) mesh_.attributes.resize(mesh_.attributes.size() - mesh_.num_attributes);
 }

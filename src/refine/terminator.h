@@ -60,11 +60,7 @@ class Terminator {
   QualityRules rules_;
   EncroachRule rule_;
   double off_constant_ = 0.0;
-  double size_floor_ = 0.0;            // edge length the size bounds ask for (0: none)
-  double precision_floor_ = 0.0;       // no edge shorter than this (rounding decides below it)
-  double smallest_feature_ = 0.0;      // the smallest initial feature estimate
-  double floor_for(double feature) const;  // the guard's edge floor (see terminator.cpp)
-  std::vector<double> feature_;       // the guard's feature estimate per vertex
+  double guard_floor_ = 0.0;           // the termination guard's edge floor (see terminator.cpp)
   // The endpoints of the segment piece (a chain of subsegments between two vertices that are not
   // refinement splits) each subsegment record lies on, and each segment vertex added by
   // refinement; kNone pairs for other vertices.

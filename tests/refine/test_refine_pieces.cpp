@@ -194,13 +194,12 @@ TEST(probe_leaves_the_mesh_untouched_and_finds_encroachment) {
   mark_boundary(m);
   Predicates pred;
   CavityMarks marks;
-  const std::vector<double> feature = initial_feature_sizes(m);
   const Snapshot before(m);
   const auto all = [](EdgeRef) { return true; };
   for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
     const Point c = circumcenter_of(m.point(m.corner[3 * t]), m.point(m.corner[3 * t + 1]),
                                     m.point(m.corner[3 * t + 2]));
-    const Probe p = probe_candidate(m, pred, t, c, diametral_lens_rule(30), marks, feature, all);
+    const Probe p = probe_candidate(m, pred, t, c, diametral_lens_rule(30), marks, all);
     if (c.y < 0) {
       CHECK(p.status == ProbeStatus::Encroaches);
       CHECK(p.blocked);
@@ -211,7 +210,7 @@ TEST(probe_leaves_the_mesh_untouched_and_finds_encroachment) {
   CHECK(Snapshot(m) == before);
   // A point in the middle is clear; its insertion radius is its distance to the nearest vertex
   // of its cavity.
-  const Probe p = probe_candidate(m, pred, 0, {2, 2}, diametral_lens_rule(30), marks, feature, all);
+  const Probe p = probe_candidate(m, pred, 0, {2, 2}, diametral_lens_rule(30), marks, all);
   CHECK(p.status == ProbeStatus::Clear);
   CHECK_NEAR(p.insertion_radius, 1.8, 1e-12);
 }
