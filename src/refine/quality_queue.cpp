@@ -1,5 +1,6 @@
 #include "refine/quality_queue.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 
@@ -15,13 +16,40 @@ unsigned quality_bucket(double q) {
   return static_cast<unsigned>(std::min<std::uint64_t>(1 + step, QualityQueue::kBuckets - 1));
 }
 
-void QualityQueue::push(const QueuedTriangle& entry, unsigned bucket) {
-  buckets_[bucket].items.push_back(entry);
-  nonempty_ |= std::uint64_t{1} << bucket;
+unsigned edge_bucket(double shortest2, double reference2) {
+  const double ratio = reference2 / shortest2;
+  if (!std::isfinite(ratio)) return QualityQueue::kBuckets - 1;
+  if (!(ratio >= 1.0)) return 1;
+  int exponent = 0;
+  std::frexp(ratio, &exponent);  // ratio = m 2^exponent, 0.5 <= m < 1
+  const int bucket = std::clamp(exponent, 1, static_cast<int>(QualityQueue::kBuckets) - 1);
+  return static_cast<unsigned>(bucket);
+}
+
+void QualityQueue::note_push() {
   if (++size_ > peak_) peak_ = size_;
 }
 
+void QualityQueue::push(const QueuedTriangle& entry, unsigned bucket) {
+  buckets_[bucket].items.push_back(entry);
+  nonempty_ |= std::uint64_t{1} << bucket;
+  note_push();
+}
+
+void QualityQueue::push_keyed(const QueuedTriangle& entry, double key) {
+  heap_.push_back({key, next_age_--, entry});
+  std::push_heap(heap_.begin(), heap_.end());
+  note_push();
+}
+
 std::optional<QueuedTriangle> QualityQueue::pop() {
+  if (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end());
+    const QueuedTriangle entry = heap_.back().entry;
+    heap_.pop_back();
+    --size_;
+    return entry;
+  }
   if (nonempty_ == 0) return std::nullopt;
   const unsigned bucket = 63u - static_cast<unsigned>(std::countl_zero(nonempty_));
   Fifo& fifo = buckets_[bucket];

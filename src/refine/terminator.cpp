@@ -35,6 +35,18 @@ double guard_floor_of(const Mesh& mesh, const RefineOptions& opt) {
   return std::max(guard_floor(smallest, size_floor_of(mesh, opt)), precision_floor(mesh));
 }
 
+// The squared diagonal of the bounding box of the vertices.
+double squared_diameter(const Mesh& mesh) {
+  double lo_x = HUGE_VAL, lo_y = HUGE_VAL, hi_x = -HUGE_VAL, hi_y = -HUGE_VAL;
+  for (const Point& p : mesh.points) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+    lo_x = std::min(lo_x, p.x), hi_x = std::max(hi_x, p.x);
+    lo_y = std::min(lo_y, p.y), hi_y = std::max(hi_y, p.y);
+  }
+  if (!(hi_x >= lo_x)) return 1.0;
+  return (hi_x - lo_x) * (hi_x - lo_x) + (hi_y - lo_y) * (hi_y - lo_y);
+}
+
 EncroachRule rule_for(const RefineOptions& opt) {
   if (!opt.lenses || opt.conforming_delaunay) return diametral_circle_rule();
   return diametral_lens_rule(opt.quality ? opt.min_angle_deg : 0.0);
@@ -51,6 +63,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
       rule_(rule_for(opt)),
       off_constant_(off_center_constant(opt.quality ? opt.min_angle_deg : 0.0, opt.off_centers)),
       guard_floor_(guard_floor_of(mesh, opt)),
+      reference2_(squared_diameter(mesh)),
       apices_(mesh),
       finder_(mesh) {
   for (const Subsegment& sub : mesh.subsegments) piece_of_subsegment_.push_back({sub.a, sub.b});
@@ -182,9 +195,23 @@ bool Terminator::shell_exempt(EdgeRef shortest) const {
 void Terminator::enqueue_if_bad(TriangleId t) {
   const Assessment a = assess(t);
   if (!a.bad()) return;
-  const unsigned bucket = a.skinny ? quality_bucket(a.shape.ratio2_over_bound2) : 0u;
-  bad_triangles_.push({t, mesh_.corner[3 * t], mesh_.corner[3 * t + 1], mesh_.corner[3 * t + 2]},
-                      bucket);
+  const QueuedTriangle entry{t, mesh_.corner[3 * t], mesh_.corner[3 * t + 1], mesh_.corner[3 * t + 2]};
+  // Triangles that are only too large wait in bucket 0 (or at the heap's bottom): ordering
+  // well-shaped triangles does not pay (Sec. 7).
+  switch (opt_.queue_order) {
+    case QueueOrder::EdgeBuckets:
+      bad_triangles_.push(entry, a.skinny ? edge_bucket(a.shape.shortest_length2, reference2_) : 0u);
+      break;
+    case QueueOrder::RatioBuckets:
+      bad_triangles_.push(entry, a.skinny ? quality_bucket(a.shape.ratio2_over_bound2) : 0u);
+      break;
+    case QueueOrder::SingleFifo:
+      bad_triangles_.push(entry, 0u);
+      break;
+    case QueueOrder::RatioHeap:
+      bad_triangles_.push_keyed(entry, a.skinny ? a.shape.ratio2_over_bound2 : 0.0);
+      break;
+  }
 }
 
 bool Terminator::still_exists(const QueuedTriangle& entry) const {

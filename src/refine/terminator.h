@@ -61,6 +61,7 @@ class Terminator {
   EncroachRule rule_;
   double off_constant_ = 0.0;
   double guard_floor_ = 0.0;           // the termination guard's edge floor (see terminator.cpp)
+  double reference2_ = 0.0;            // squared diameter of the mesh, the edge buckets' scale
   // The endpoints of the segment piece (a chain of subsegments between two vertices that are not
   // refinement splits) each subsegment record lies on, and each segment vertex added by
   // refinement; kNone pairs for other vertices.

@@ -76,3 +76,49 @@ TEST(queue_keeps_order_across_reclaiming) {
   }
   CHECK(q.nonempty_mask() == 0);
 }
+
+TEST(edge_bucket_is_one_plus_log2_of_the_squared_length_ratio) {
+  // Checked against an integer count of halvings, not against frexp.
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<double> u(0.0, 70.0);
+  for (int i = 0; i < 100000; ++i) {
+    const double ratio = std::exp2(u(rng));
+    unsigned halvings = 0;
+    for (double r = ratio; r >= 2.0; r *= 0.5) ++halvings;
+    const unsigned expected = std::min(63u, 1u + halvings);
+    CHECK_EQ(edge_bucket(1.0 / ratio, 1.0), expected);
+    CHECK_EQ(edge_bucket(4.0, 4.0 * ratio), expected);  // only the ratio matters
+  }
+  CHECK_EQ(edge_bucket(1.0, 1.0), 1u);
+  CHECK_EQ(edge_bucket(0.5, 1.0), 2u);
+  CHECK_EQ(edge_bucket(0.499, 1.0), 2u);
+  CHECK_EQ(edge_bucket(0.25, 1.0), 3u);
+  CHECK_EQ(edge_bucket(4.0, 1.0), 1u);    // longer than the reference: the least urgent
+  CHECK_EQ(edge_bucket(0.0, 1.0), 63u);   // degenerate: the most urgent
+  CHECK_EQ(edge_bucket(1e-300, 1e300), 63u);
+}
+
+TEST(edge_bucket_ranks_shorter_edges_higher) {
+  unsigned last = 0;
+  for (double l2 = 1.0; l2 > 1e-25; l2 *= 0.97) {
+    const unsigned b = edge_bucket(l2, 1.0);
+    CHECK(b >= last);
+    last = b;
+  }
+  CHECK_EQ(last, 63u);
+}
+
+TEST(keyed_queue_serves_largest_key_first_and_oldest_among_equals) {
+  QualityQueue q;
+  const double keys[] = {3.0, 0.0, 7.5, 3.0, 1e300, 0.0, 7.5};
+  for (TriangleId t = 0; t < 7; ++t) q.push_keyed({t, 0, 0, 0}, keys[t]);
+  CHECK_EQ(q.size(), 7u);
+  const TriangleId expected[] = {4, 2, 6, 0, 3, 1, 5};
+  for (TriangleId t : expected) {
+    auto e = q.pop();
+    REQUIRE(e.has_value());
+    CHECK_EQ(e->triangle, t);
+  }
+  CHECK(q.empty());
+  CHECK(!q.pop().has_value());
+}

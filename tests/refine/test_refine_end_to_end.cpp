@@ -182,7 +182,8 @@ TEST(fan_q34_and_q40_terminate_and_report) {
     std::uint64_t left = 0;
     for (TriangleId t : skinny_triangles(m, theta - 1e-9)) left += !smallest_angle_between_subsegments(m, t);
     CHECK(r.bad_triangles_left <= left + 2);
-    CHECK(r.bad_triangles_left > 0);
+    // At 40 degrees the spokes 2 degrees apart cannot all be fixed before the guard's floor.
+    if (theta == 40.0) CHECK(r.bad_triangles_left > 0);
     if (r.bad_triangles_left > 0) CHECK(r.worst_min_angle_deg < theta);
   }
 }
