@@ -9,8 +9,10 @@
 #include "cdt/holes_and_regions.h"
 #include "cdt/insert_segments.h"
 #include "cdt/markers.h"
+#include "cdt/rebuild_mesh.h"
 #include "cli/report.h"
 #include "delaunay/triangulate.h"
+#include "io/area_file.h"
 #include "io/edge_file.h"
 #include "io/ele_file.h"
 #include "io/neigh_file.h"
@@ -43,17 +45,21 @@ struct InputFiles {
   std::string base;       // name without extension, for output names
   std::string path;       // the file to read
   bool is_poly = false;   // a .poly (segments, holes, regions) rather than a .node
+  bool refine = false;    // -r, or an .ele/.area named: rebuild base.ele and refine it
+  bool area_file = false; // -r with a bare -a, or an .area named: read base.area
 };
 
 // Which file to read: an explicit extension decides; otherwise -p means name.poly, else name.node.
+// As in Triangle, naming the .ele turns on -r and naming the .area also a bare -a.
 InputFiles input_files(const Switches& sw) {
   InputFiles in;
   std::string extension;
   in.base = input_base(sw.input, &extension);
-  if (extension == "ele" || extension == "area")
-    throw UsageError(sw.input + ": refining a previous mesh (-r) is not available yet");
-  in.is_poly = extension == "poly" || (extension.empty() && sw.poly);
-  in.path = extension.empty() ? in.base + (in.is_poly ? ".poly" : ".node") : sw.input;
+  in.refine = sw.refine || extension == "ele" || extension == "area";
+  in.area_file = in.refine && (sw.variable_area || extension == "area");
+  in.is_poly = extension == "poly" || ((extension.empty() || in.refine) && sw.poly);
+  const bool named_vertex_file = extension == "poly" || extension == "node";
+  in.path = named_vertex_file ? sw.input : in.base + (in.is_poly ? ".poly" : ".node");
   return in;
 }
 
@@ -144,16 +150,31 @@ void schedule_outputs(OutputSet& outputs, const Mesh& mesh, const Pslg& pslg, co
   if (sw.neighbors) add(out + ".neigh", [&mesh, first](ByteSink& s) { write_neigh_file(s, mesh, first); });
 }
 
-bool refinement_wanted(const Switches& sw) {
-  return sw.quality || sw.fixed_area || sw.variable_area || sw.user_test || sw.conforming_delaunay;
+bool refinement_wanted(const Switches& sw, const InputFiles& in) {
+  return sw.quality || sw.fixed_area || sw.variable_area || in.area_file || sw.user_test ||
+         sw.conforming_delaunay;
 }
 
-RefineOptions refine_options(const Switches& sw) {
+// -r: the previous mesh's triangles, its .poly segments (with -p) and its .area bounds. Holes
+// are not carved again and regions are not read, as in Triangle.
+void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, RunReport& report) {
+  Predicates pred;
+  const std::string ele_path = in.base + ".ele";
+  const EleData ele = read_ele_file(ele_path, pslg.first_index, mesh.vertex_count());
+  rebuild_mesh(mesh, pred, ele, ele_path);
+  if (in.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {});
+  protect_boundary(mesh);
+  if (in.area_file) mesh.area_bound = read_area_file(in.base + ".area", ele.triangle_count());
+  make_constrained_delaunay(mesh, pred);
+  report.counters.add(pred.counters);
+}
+
+RefineOptions refine_options(const Switches& sw, const InputFiles& in) {
   RefineOptions opt;
   opt.quality = sw.quality;
   opt.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
   opt.max_area = sw.fixed_area ? sw.max_area : 0.0;
-  opt.use_triangle_area_bounds = sw.variable_area;
+  opt.use_triangle_area_bounds = sw.variable_area || in.area_file;
   opt.lenses = !sw.conforming_delaunay;
   opt.conforming_delaunay = sw.conforming_delaunay;
   opt.no_steiner_on_segments = sw.no_boundary_steiner;
@@ -171,7 +192,6 @@ int run(const Switches& sw) {
   StageTimer timer(report);
   const auto start = std::chrono::steady_clock::now();
   Messages messages(sw);
-  if (sw.refine) throw UsageError("-r: refining a previous mesh is not available yet");
   if (sw.sweepline) messages.notice("-F: the sweepline algorithm is not provided; divide and conquer is used");
   for (const char* unsupported : unsupported_switches(sw))
     messages.notice(std::string(unsupported) + " is not available yet and is ignored");
@@ -184,21 +204,25 @@ int run(const Switches& sw) {
   timer.stage("read");
 
   Mesh mesh = mesh_from_pslg(pslg);
-  const DelaunayReport dt = delaunay_triangulate(mesh, sw.algorithm, sw.threads);
-  report.duplicates = dt.duplicates.size();
-  report.counters.add(dt.counters);
-  timer.stage("Delaunay");
-
-  if (in.is_poly) {
-    constrain(mesh, pslg, dt, sw, report);
-    timer.stage("segments and holes");
-  } else if (sw.convex_hull) {
-    enclose_convex_hull(mesh);
+  if (in.refine) {
+    rebuild(mesh, pslg, in, report);
+    timer.stage("mesh reconstruction");
+  } else {
+    const DelaunayReport dt = delaunay_triangulate(mesh, sw.algorithm, sw.threads);
+    report.duplicates = dt.duplicates.size();
+    report.counters.add(dt.counters);
+    timer.stage("Delaunay");
+    if (in.is_poly) {
+      constrain(mesh, pslg, dt, sw, report);
+      timer.stage("segments and holes");
+    } else if (sw.convex_hull) {
+      enclose_convex_hull(mesh);
+    }
   }
-  if (refinement_wanted(sw)) {
-    if (!in.is_poly && !sw.convex_hull) enclose_convex_hull(mesh);  // a point set is bounded by its hull
+  if (refinement_wanted(sw, in)) {
+    if (!in.is_poly && !sw.convex_hull && !in.refine) enclose_convex_hull(mesh);  // a point set is bounded by its hull
     Predicates pred;
-    report.refine = refine_mesh(mesh, pred, refine_options(sw));
+    report.refine = refine_mesh(mesh, pred, refine_options(sw, in));
     report.counters.add(pred.counters);
     mesh.compact_triangles();
     timer.stage("refinement");
@@ -210,7 +234,7 @@ int run(const Switches& sw) {
     CheckOptions opt;
     opt.conforming = sw.conforming_delaunay;
     // Split points on hull edges are rounded, so a refined hull is convex only up to rounding.
-    opt.convex_hull_expected = !in.is_poly && !report.refine;
+    opt.convex_hull_expected = !in.is_poly && !report.refine && !in.refine;
     report.check = check_mesh(mesh, opt);
     timer.stage("check");
     if (!report.check->ok()) {

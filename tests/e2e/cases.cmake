@@ -98,3 +98,7 @@ e2e_case(error.empty gen:empty.node none --exit 1 --error "empty.node: ")
 e2e_case(error.directory gen:dir.node none --exit 1 --error "dir.node: ")
 # ---- bad switches: exit 2 (-k is a valid switch, so -t stands for an unknown letter) ----
 e2e_case(error.switch ${G} -pt --exit 2 --error "deltri: -t: unknown switch")
+
+# ---- -r: refine a previous mesh (round trip, refinement of a refined mesh, a bad .ele) ----
+add_test(NAME e2e.refine_chain.guitar
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/refine_chain.sh $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify> ${E2E_DATA}/guitar.poly)
