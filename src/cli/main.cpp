@@ -11,6 +11,10 @@ int main(int argc, char** argv) {
   using namespace deltri;
   try {
     const Switches switches = parse_switches(argc, argv);
+    if (switches.man) {
+      std::fputs(man_page().c_str(), stdout);
+      return kExitOk;
+    }
     if (switches.help || switches.input.empty()) {
       std::fputs(help_text().c_str(), switches.help ? stdout : stderr);
       return switches.help ? kExitOk : kExitUsage;

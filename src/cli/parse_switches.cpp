@@ -56,13 +56,81 @@ void parse_word(std::string_view word, Switches& s) {
   }
 }
 
+void parse_long_option(std::string_view word, Switches& s) {
+  const std::string_view body = word.substr(2);
+  const std::size_t eq = body.find('=');
+  const std::string_view name = body.substr(0, eq);
+  for (const LongOption& option : long_option_table()) {
+    if (name != option.name) continue;
+    if (eq == std::string_view::npos) {
+      if (*option.argument && !option.value_optional)
+        throw UsageError(std::string("--") + option.name + ": give a value, e.g. --" + option.name + "=" + option.argument);
+      option.apply(s, nullptr);
+    } else {
+      if (!*option.argument) throw UsageError(std::string("--") + option.name + ": takes no value");
+      const std::string value(body.substr(eq + 1));
+      option.apply(s, &value);
+    }
+    return;
+  }
+  throw UsageError("--" + std::string(name) + ": unknown option (see deltri -h)");
+}
+
+// The name an option's text follows in -h and the man page, e.g. "--msh[=FILE]".
+std::string long_option_label(const LongOption& option) {
+  std::string label = std::string("--") + option.name;
+  if (*option.argument) label += option.value_optional ? std::string("[=") + option.argument + "]" : std::string("=") + option.argument;
+  return label;
+}
+
+std::string switch_label(const SwitchRow& row) {
+  std::string name = std::string("-") + row.letter;
+  if (row.arg == ArgKind::RequiredReal) name += std::string("<") + row.argument_name + ">";
+  else if (row.arg != ArgKind::None) name += std::string("[") + row.argument_name + "]";
+  return name;
+}
+
+constexpr const char* kSummary = "two-dimensional quality mesh generation and Delaunay triangulation";
+
+// Shared by -h and the man page so that they cannot disagree.
+constexpr const char* kExitStatus[][2] = {
+    {"0", "success"},
+    {"1", "bad input file (one line: file:line: what is wrong)"},
+    {"2", "bad switches"},
+    {"3", "with --strict: some triangles miss the -q/-a/-u bounds (the files are written)"},
+    {"4", "an output file could not be written"},
+    {"5", "-C found faults in the mesh"},
+    {"6", "out of memory or an internal error"},
+};
+
+// roff text: backslashes and dashes escaped, no line may start with a control character.
+std::string roff(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '\\') out += "\\e";
+    else if (c == '-') out += "\\-";
+    else out += c;
+  }
+  if (!out.empty() && (out[0] == '.' || out[0] == '\'')) out.insert(0, "\\&");
+  return out;
+}
+
 }  // namespace
+
+bool uses_standard_output(const Switches& s) {
+  for (const Switches::FileRequest* r : {&s.msh, &s.vtu, &s.svg, &s.json})
+    if (r->wanted && r->path == "-") return true;
+  return false;
+}
 
 Switches parse_switches(int argc, const char* const* argv) {
   Switches s;
+  for (int k = 0; k < argc; ++k) s.command_line += (k ? " " : "") + std::string(argv[k]);
   for (int k = 1; k < argc; ++k) {
     const std::string_view word = argv[k];
-    if (word.size() > 1 && word[0] == '-') {
+    if (word.size() > 2 && word[0] == '-' && word[1] == '-') {
+      parse_long_option(word, s);
+    } else if (word.size() > 1 && word[0] == '-') {
       parse_word(word, s);
     } else {
       s.input = std::string(word);
@@ -71,23 +139,72 @@ Switches parse_switches(int argc, const char* const* argv) {
   if (s.quality && !(s.min_angle >= 0.0 && s.min_angle < 60.0))
     throw UsageError("-q: the minimum angle must be at least 0 and below 60 degrees");
   if (s.refine && s.no_iteration) throw UsageError("-I: cannot be combined with -r (the output would overwrite the input)");
+  int to_stdout = 0;
+  for (const Switches::FileRequest* r : {&s.msh, &s.vtu, &s.svg, &s.json}) to_stdout += r->wanted && r->path == "-";
+  if (to_stdout > 1) throw UsageError("-: only one of --msh=-, --vtu=-, --svg=-, --json=- can go to standard output");
   return s;
 }
 
 std::string help_text() {
-  std::string out =
-      "deltri: two-dimensional quality mesh generation and Delaunay triangulation\n"
-      "usage: deltri [-switches] inputfile\n"
+  std::string out = std::string("deltri: ") + kSummary + "\n" +
+      "usage: deltri [-switches] [--options] inputfile\n"
       "  Switches are letters run together after one '-', e.g. deltri -pq30a0.1 box.poly\n"
-      "  The input is name.node (points), name.poly (with -p), or name.node + name.ele (with -r).\n\n";
+      "  The input is name.node (points), name.poly (with -p), or name.node + name.ele (with -r);\n"
+      "  - reads standard input (a .poly with -p, else a .node).\n\n";
   for (const SwitchRow& row : switch_table()) {
-    std::string name = std::string("  -") + row.letter;
-    if (row.arg == ArgKind::RequiredReal) name += std::string("<") + row.argument_name + ">";
-    else if (row.arg != ArgKind::None) name += std::string("[") + row.argument_name + "]";
+    std::string name = "  " + switch_label(row);
     name.resize(std::max<std::size_t>(name.size() + 1, 14), ' ');
     out += name + row.help + "\n";
   }
-  out += "\nExit status: 0 success, 1 bad input, 2 bad switches, 4 output not written, 5 -C found faults.\n";
+  out += "\n";
+  for (const LongOption& option : long_option_table()) {
+    std::string name = "  " + long_option_label(option);
+    name.resize(std::max<std::size_t>(name.size() + 1, 18), ' ');
+    out += name + option.help + "\n";
+  }
+  out += "\nExit status:";
+  for (const auto& [code, meaning] : kExitStatus) out += std::string(" ") + code + " " + meaning + ";";
+  out.back() = '.';
+  out += "\n";
+  return out;
+}
+
+std::string man_page() {
+  std::string out =
+      ".\\\" Generated by deltri --man from the switch table (src/cli/switch_table.cpp); do not edit.\n"
+      ".TH DELTRI 1 \"\" \"deltri\" \"User Commands\"\n"
+      ".SH NAME\n"
+      "deltri \\- " + roff(kSummary) + "\n"
+      ".SH SYNOPSIS\n"
+      ".B deltri\n"
+      "[\\fB\\-\\fIswitches\\fR] [\\fB\\-\\-\\fIoption\\fR[=\\fIFILE\\fR]] ... \\fIinputfile\\fR\n"
+      ".SH DESCRIPTION\n"
+      "deltri builds Delaunay triangulations, constrained Delaunay triangulations of planar straight-line graphs\n"
+      "and quality meshes. It takes the switches of Shewchuk's Triangle and reads and writes the same files.\n"
+      ".PP\n"
+      "The input is \\fIname\\fR.node (a point set), \\fIname\\fR.poly (with \\fB\\-p\\fR), or \\fB\\-\\fR for standard\n"
+      "input (read as a .poly with \\fB\\-p\\fR, else as a .node; the output files are then named stdin.1.*).\n"
+      "Output files are written next to the input as \\fIname\\fR.1.node, \\fIname\\fR.1.ele, ... and appear\n"
+      "all together or not at all.\n"
+      ".SH SWITCHES\n"
+      "Switches are letters run together after one dash, numbers written directly after their letter,\n"
+      "e.g. \\fB\\-pq30a0.1\\fR.\n";
+  for (const SwitchRow& row : switch_table()) out += ".TP\n.B " + roff(switch_label(row)) + "\n" + roff(row.help) + "\n";
+  out += ".SH OPTIONS\n"
+         "Formats beyond Triangle's are asked for with long options. Without =\\fIFILE\\fR the file is named like the\n"
+         "others (\\fIname\\fR.1.msh, .vtu, .svg, .json). With =\\fB\\-\\fR it goes to standard output, after every\n"
+         "other file is in place; every message then goes to standard error, and the .node, .ele and .poly files\n"
+         "are not written (as with \\fB\\-NEP\\fR).\n";
+  for (const LongOption& option : long_option_table())
+    out += ".TP\n.B " + roff(long_option_label(option)) + "\n" + roff(option.help) + "\n";
+  out += ".SH EXIT STATUS\n";
+  for (const auto& [code, meaning] : kExitStatus) out += ".TP\n.B " + std::string(code) + "\n" + roff(meaning) + "\n";
+  out += ".SH EXAMPLES\n"
+         ".TP\n.B deltri \\-pq30a0.1 box.poly\nquality mesh of box.poly: box.1.node, box.1.ele, box.1.poly\n"
+         ".TP\n.B cat box.poly | deltri \\-pq30 \\-\\-msh=\\- \\- > box.msh\nfrom a pipe to a Gmsh file\n"
+         ".TP\n.B deltri \\-pq30 \\-\\-svg \\-\\-json box.poly\nalso box.1.svg (a picture) and box.1.json (a report)\n"
+         ".SH SEE ALSO\n"
+         "docs/manual.md and docs/formats.md in the deltri sources.\n";
   return out;
 }
 

@@ -15,9 +15,6 @@ std::string plural(std::size_t n, const char* one, const char* many) {
 
 std::vector<const char*> unsupported_switches(const Switches& sw) {
   std::vector<const char*> list;
-  if (sw.voronoi) list.push_back("-v");
-  if (sw.geomview) list.push_back("-g");
-  if (sw.order == 2) list.push_back("-o2");
   if (sw.split_segments) list.push_back("-s");
   return list;
 }
@@ -30,10 +27,9 @@ void Messages::check_failed(const CheckReport& check) const {
   std::fprintf(stderr, "deltri: -C: the mesh is not consistent; no files written\n%s", check.summary().c_str());
 }
 
-void Messages::warn_about_input(const Mesh& mesh, const RunReport& r) const {
-  const auto warn = [&](const std::string& text) {
-    std::fprintf(stderr, "deltri: warning: %s: %s\n", r.input_name.c_str(), text.c_str());
-  };
+std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
+  std::vector<std::string> lines;
+  const auto warn = [&](const std::string& text) { lines.push_back(text); };
   if (r.duplicates > 0) warn(plural(r.duplicates, "duplicate vertex", "duplicate vertices") + " ignored (kept the first of each)");
   if (const auto& s = r.segments) {
     if (s->duplicates_remapped) warn(plural(s->duplicates_remapped, "segment endpoint", "segment endpoints") + " moved from a duplicate vertex to the vertex it duplicates");
@@ -65,6 +61,12 @@ void Messages::warn_about_input(const Mesh& mesh, const RunReport& r) const {
     else
       warn("the vertices are all collinear or fewer than three distinct: no triangles");
   }
+  return lines;
+}
+
+void Messages::warn_about_input(const Mesh& mesh, const RunReport& r) const {
+  for (const std::string& text : run_warnings(mesh, r))
+    std::fprintf(stderr, "deltri: warning: %s: %s\n", r.input_name.c_str(), text.c_str());
 }
 
 void Messages::finished(const Mesh& mesh, const RunReport& r) const {
@@ -80,7 +82,7 @@ void Messages::finished(const Mesh& mesh, const RunReport& r) const {
     input += ", " + plural(r.pslg->segments.size(), "segment", "segments");
     input += ", " + plural(r.pslg->holes.size(), "hole", "holes");
   }
-  std::printf("%s: %s -> %s, %s; wrote%s (%.3f s)\n", r.input_name.c_str(), input.c_str(),
+  std::fprintf(out_, "%s: %s -> %s, %s; wrote%s (%.3f s)\n", r.input_name.c_str(), input.c_str(),
               plural(used, "vertex", "vertices").c_str(),
               plural(mesh.live_triangles(), "triangle", "triangles").c_str(),
               files.empty() ? " nothing" : files.c_str(), r.total_seconds);
@@ -88,35 +90,35 @@ void Messages::finished(const Mesh& mesh, const RunReport& r) const {
 }
 
 void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
-  std::printf("Stage timings:\n");
-  for (const auto& s : r.stages) std::printf("  %-20s %10.4f s\n", s.name, s.seconds);
-  std::printf("  %-20s %10.4f s\n", "total", r.total_seconds);
-  std::printf("Input: %zu vertices (%zu duplicates)", r.input_vertices, r.duplicates);
+  std::fprintf(out_, "Stage timings:\n");
+  for (const auto& s : r.stages) std::fprintf(out_, "  %-20s %10.4f s\n", s.name, s.seconds);
+  std::fprintf(out_, "  %-20s %10.4f s\n", "total", r.total_seconds);
+  std::fprintf(out_, "Input: %zu vertices (%zu duplicates)", r.input_vertices, r.duplicates);
   if (r.pslg->has_segment_section)
-    std::printf(", %s, %s, %s", plural(r.pslg->segments.size(), "segment", "segments").c_str(),
+    std::fprintf(out_, ", %s, %s, %s", plural(r.pslg->segments.size(), "segment", "segments").c_str(),
                 plural(r.pslg->holes.size(), "hole", "holes").c_str(),
                 plural(r.pslg->regions.size(), "region", "regions").c_str());
-  std::printf("\n");
+  std::fprintf(out_, "\n");
   const MeshStatistics stats = compute_statistics(mesh);
-  std::printf("%s", format_statistics(stats).c_str());
+  std::fprintf(out_, "%s", format_statistics(stats).c_str());
   const PredicateCounters& c = r.counters;
-  std::printf("Predicates (calls / past the filter / fully exact):\n");
-  std::printf("  orient2d   %12llu %12llu %12llu\n", static_cast<unsigned long long>(c.orient_calls),
+  std::fprintf(out_, "Predicates (calls / past the filter / fully exact):\n");
+  std::fprintf(out_, "  orient2d   %12llu %12llu %12llu\n", static_cast<unsigned long long>(c.orient_calls),
               static_cast<unsigned long long>(c.orient_adaptive), static_cast<unsigned long long>(c.orient_exact));
-  std::printf("  incircle   %12llu %12llu %12llu\n", static_cast<unsigned long long>(c.incircle_calls),
+  std::fprintf(out_, "  incircle   %12llu %12llu %12llu\n", static_cast<unsigned long long>(c.incircle_calls),
               static_cast<unsigned long long>(c.incircle_adaptive), static_cast<unsigned long long>(c.incircle_exact));
   if (const auto& q = r.refine) {
-    std::printf("Refinement:\n");
-    std::printf("  Steiner points: %llu interior, %llu on segments; %llu subsegment splits\n",
+    std::fprintf(out_, "Refinement:\n");
+    std::fprintf(out_, "  Steiner points: %llu interior, %llu on segments; %llu subsegment splits\n",
                 static_cast<unsigned long long>(q->interior_steiner), static_cast<unsigned long long>(q->segment_steiner),
                 static_cast<unsigned long long>(q->encroached_splits));
-    std::printf("  rejected Steiner points: %llu; declined splits: %llu; guard refusals: %llu (edge floor %.6g)\n",
+    std::fprintf(out_, "  rejected Steiner points: %llu; declined splits: %llu; guard refusals: %llu (edge floor %.6g)\n",
                 static_cast<unsigned long long>(q->rejected_candidates), static_cast<unsigned long long>(q->declined_splits),
                 static_cast<unsigned long long>(q->guard_refusals), q->guard_length);
-    std::printf("  peak bad-triangle queue: %zu; triangles still bad: %llu\n", q->peak_queue,
+    std::fprintf(out_, "  peak bad-triangle queue: %zu; triangles still bad: %llu\n", q->peak_queue,
                 static_cast<unsigned long long>(q->bad_triangles_left));
   }
-  if (r.check) std::printf("Consistency check (-C): %s", r.check->summary().c_str());
+  if (r.check) std::fprintf(out_, "Consistency check (-C): %s", r.check->summary().c_str());
 }
 
 }  // namespace deltri

@@ -3,6 +3,7 @@
 // which go to standard output.
 #pragma once
 
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,9 +42,14 @@ struct RunReport {
 // Switches that are parsed but whose work belongs to later stages of the project.
 std::vector<const char*> unsupported_switches(const Switches& sw);
 
+// The warnings about the input and the result, one line each, without the "deltri: warning:"
+// prefix (the JSON report lists the same lines).
+std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& report);
+
 class Messages {
  public:
-  explicit Messages(const Switches& sw) : sw_(sw) {}
+  // The summary and -V report go to standard output, unless a file goes there.
+  explicit Messages(const Switches& sw) : sw_(sw), out_(uses_standard_output(sw) ? stderr : stdout) {}
   void notice(const std::string& text) const;
   void check_failed(const CheckReport& check) const;
   // Warnings about the input, then the summary line, then (with -V) the report.
@@ -53,6 +59,7 @@ class Messages {
   void warn_about_input(const Mesh& mesh, const RunReport& report) const;
   void verbose_report(const Mesh& mesh, const RunReport& report) const;
   const Switches& sw_;
+  std::FILE* out_;
 };
 
 }  // namespace deltri

@@ -10,16 +10,24 @@
 #include "cdt/insert_segments.h"
 #include "cdt/markers.h"
 #include "cdt/rebuild_mesh.h"
+#include "cli/json_report.h"
 #include "cli/report.h"
 #include "delaunay/triangulate.h"
 #include "io/area_file.h"
 #include "io/edge_file.h"
 #include "io/ele_file.h"
+#include "io/file_text.h"
+#include "io/midpoints.h"
+#include "io/msh_file.h"
 #include "io/neigh_file.h"
 #include "io/node_file.h"
+#include "io/off_file.h"
 #include "io/output_names.h"
 #include "io/output_set.h"
 #include "io/poly_file.h"
+#include "io/svg_file.h"
+#include "io/voronoi_file.h"
+#include "io/vtu_file.h"
 #include "pslg/errors.h"
 #include "quality/check_mesh.h"
 #include "refine/refine.h"
@@ -51,8 +59,10 @@ struct InputFiles {
 
 // Which file to read: an explicit extension decides; otherwise -p means name.poly, else name.node.
 // As in Triangle, naming the .ele turns on -r and naming the .area also a bare -a.
+// Standard input ("-") is a .poly with -p, else a .node; its outputs are named stdin.1.*.
 InputFiles input_files(const Switches& sw) {
   InputFiles in;
+  if (sw.input == "-") return {"stdin", "-", sw.poly};
   std::string extension;
   in.base = input_base(sw.input, &extension);
   in.refine = sw.refine || extension == "ele" || extension == "area";
@@ -91,12 +101,15 @@ void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Swi
 }
 
 // Output numbers of the vertices: every vertex but deleted ones, or with -j only those a
-// triangle uses. Empty when every vertex is written in id order.
-std::vector<std::uint32_t> vertex_numbering(const Mesh& mesh, bool jettison) {
+// triangle uses (its corners and, with -o2, its midpoints). Empty when every vertex is written in
+// id order.
+std::vector<std::uint32_t> vertex_numbering(const Mesh& mesh, bool jettison, const std::vector<VertexId>& midpoints) {
   std::vector<char> keep(mesh.vertex_count(), 1);
   if (jettison) {
     keep.assign(mesh.vertex_count(), 0);
     for (VertexId v : mesh.corner)
+      if (v != kNone) keep[v] = 1;
+    for (VertexId v : midpoints)
       if (v != kNone) keep[v] = 1;
   }
   bool all = true;
@@ -113,41 +126,82 @@ std::vector<std::uint32_t> vertex_numbering(const Mesh& mesh, bool jettison) {
   return numbering;
 }
 
-void schedule_outputs(OutputSet& outputs, const Mesh& mesh, const Pslg& pslg, const InputFiles& in,
-                      const Switches& sw, const std::vector<std::uint32_t>* numbering,
-                      RunReport& report) {
-  const std::string out = output_base(in.base, sw.no_iteration);
+// Where a long-option file goes: <output base>.<extension>, the name given, or standard output.
+std::string requested_path(const Switches::FileRequest& r, const std::string& out, const char* extension) {
+  if (r.path.empty()) return out + "." + extension;
+  return r.path == "-" ? std::string(OutputSet::kStandardOutput) : r.path;
+}
+
+struct OutputContext {
+  const Mesh& mesh;
+  const Pslg& pslg;
+  const InputFiles& in;
+  const Switches& sw;
+  const std::vector<std::uint32_t>* numbering;
+  const std::vector<VertexId>* midpoints;  // -o2, else nullptr
+  RunReport& report;
+  int exit_status;
+};
+
+void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
+  const Mesh& mesh = c.mesh;
+  const Pslg& pslg = c.pslg;
+  const Switches& sw = c.sw;
+  const std::vector<std::uint32_t>* numbering = c.numbering;
+  const std::string out = output_base(c.in.base, sw.no_iteration);
   const int first = sw.zero_based ? 0 : pslg.first_index;
   const bool markers = !sw.no_markers;
   const auto add = [&](const std::string& name, std::function<void(ByteSink&)> produce) {
-    report.written.push_back(name);
+    c.report.written.push_back(name == OutputSet::kStandardOutput ? "standard output" : name);
     outputs.add_stream(name, std::move(produce));
   };
+  // A file on standard output is the result: the .node, .ele and .poly are then not written.
+  const bool piped = uses_standard_output(sw);
   // With -I the .node and .poly would overwrite the input; Triangle still writes the .node when the
   // vertices came from the .poly itself (not from a .node next to it).
-  const bool vertices_in_poly = in.is_poly && pslg.source_name == in.path;
-  if (!sw.no_node && !(sw.no_iteration && !vertices_in_poly)) {
+  const bool vertices_in_poly = c.in.is_poly && (pslg.source_name == c.in.path || c.in.path == "-");
+  if (!piped && !sw.no_node && !(sw.no_iteration && !vertices_in_poly)) {
     const NodeWriteOptions opt{first, markers, numbering};
     add(out + ".node", [&mesh, opt](ByteSink& s) { write_node_file(s, mesh, opt); });
   }
-  if (!sw.no_ele) {
-    const EleWriteOptions opt{first, numbering, nullptr};
+  if (!piped && !sw.no_ele) {
+    const EleWriteOptions opt{first, numbering, c.midpoints};
     add(out + ".ele", [&mesh, opt](ByteSink& s) { write_ele_file(s, mesh, opt); });
   }
-  const bool poly_output = in.is_poly || sw.convex_hull;
-  if (poly_output && !sw.no_poly && !sw.no_iteration) {
+  const bool poly_output = c.in.is_poly || sw.convex_hull;
+  const std::vector<Point> holes = sw.ignore_holes ? std::vector<Point>{} : pslg.holes;
+  if (!piped && poly_output && !sw.no_poly && !sw.no_iteration) {
     PolyWriteOptions opt;
     opt.first_index = first;
     opt.markers = markers;
     opt.numbering = numbering;
-    const std::vector<Point> holes = sw.ignore_holes ? std::vector<Point>{} : pslg.holes;
     add(out + ".poly", [&mesh, opt, holes, &pslg](ByteSink& s) { write_poly_file(s, mesh, opt, holes, pslg.regions); });
   }
   if (sw.edges) {
     const EdgeWriteOptions opt{first, markers, numbering};
     add(out + ".edge", [&mesh, opt](ByteSink& s) { write_edge_file(s, mesh, opt); });
   }
+  if (sw.voronoi) {
+    add(out + ".v.node", [&mesh, first](ByteSink& s) { write_voronoi_node_file(s, mesh, first); });
+    add(out + ".v.edge", [&mesh, first](ByteSink& s) { write_voronoi_edge_file(s, mesh, first); });
+  }
   if (sw.neighbors) add(out + ".neigh", [&mesh, first](ByteSink& s) { write_neigh_file(s, mesh, first); });
+  if (sw.geomview) add(out + ".off", [&mesh, numbering](ByteSink& s) { write_off_file(s, mesh, numbering); });
+  const ExportOptions exp{numbering, c.midpoints, markers};
+  if (sw.msh.wanted) add(requested_path(sw.msh, out, "msh"), [&mesh, exp](ByteSink& s) { write_msh_file(s, mesh, exp); });
+  if (sw.vtu.wanted) add(requested_path(sw.vtu, out, "vtu"), [&mesh, exp](ByteSink& s) { write_vtu_file(s, mesh, exp); });
+  if (sw.svg.wanted) {
+    const SvgOptions opt{exp, first, sw.svg_numbers, holes};
+    add(requested_path(sw.svg, out, "svg"), [&mesh, opt](ByteSink& s) { write_svg_file(s, mesh, opt); });
+  }
+  if (sw.json.wanted) {
+    const RunReport& report = c.report;
+    const int status = c.exit_status;
+    add(requested_path(sw.json, out, "json"), [&mesh, &report, status](ByteSink& s) {
+      const std::string text = json_report(mesh, report, status);
+      s.write(text.data(), text.size());
+    });
+  }
 }
 
 bool refinement_wanted(const Switches& sw, const InputFiles& in) {
@@ -197,7 +251,7 @@ int run(const Switches& sw) {
     messages.notice(std::string(unsupported) + " is not available yet and is ignored");
 
   const InputFiles in = input_files(sw);
-  report.input_name = in.path;
+  report.input_name = in.path == "-" ? kStandardInputName : in.path;
   Pslg pslg = in.is_poly ? read_poly_file(in.path) : read_node_file(in.path);
   report.pslg = &pslg;
   report.input_vertices = pslg.points.size();
@@ -243,14 +297,19 @@ int run(const Switches& sw) {
     }
   }
 
-  const std::vector<std::uint32_t> numbering = vertex_numbering(mesh, sw.jettison);
+  std::vector<VertexId> midpoints;
+  if (sw.order == 2) midpoints = add_edge_midpoints(mesh);
+  const std::vector<std::uint32_t> numbering = vertex_numbering(mesh, sw.jettison, midpoints);
+  const bool bounds_missed = report.refine && report.refine->bad_triangles_left > 0;
+  const int status = sw.strict && bounds_missed ? kExitBounds : kExitOk;
   OutputSet outputs;
-  schedule_outputs(outputs, mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering, report);
+  schedule_outputs(outputs, {mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering,
+                             sw.order == 2 ? &midpoints : nullptr, report, status});
   outputs.commit();
   timer.stage("write");
   report.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   messages.finished(mesh, report);
-  return kExitOk;
+  return status;
 }
 
 }  // namespace deltri

@@ -9,6 +9,7 @@ namespace deltri {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitInput = 1;     // the input files are malformed or unreadable
 inline constexpr int kExitUsage = 2;     // the switches are wrong
+inline constexpr int kExitBounds = 3;    // --strict: some triangles miss the bounds (files written)
 inline constexpr int kExitOutput = 4;    // an output file could not be written
 inline constexpr int kExitCheck = 5;     // -C found faults in the mesh
 inline constexpr int kExitInternal = 6;  // out of memory or a bug

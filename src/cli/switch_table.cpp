@@ -97,8 +97,34 @@ constexpr std::array kTable = {
               [](S& s, bool, double) { s.help = true; }},
 };
 
+void request(Switches::FileRequest& r, const std::string* value, const char* option) {
+  if (value && value->empty()) throw UsageError(std::string("--") + option + "=: give a file name, or - for standard output");
+  r.wanted = true;
+  r.path = value ? *value : std::string();
+}
+
+constexpr std::array kLongOptions = {
+    LongOption{"msh", "FILE", true, "also write the mesh as Gmsh MSH 4.1 (ASCII); FILE - is standard output",
+               [](S& s, const std::string* v) { request(s.msh, v, "msh"); }},
+    LongOption{"vtu", "FILE", true, "also write the mesh as VTK XML unstructured grid (.vtu); FILE - is standard output",
+               [](S& s, const std::string* v) { request(s.vtu, v, "vtu"); }},
+    LongOption{"svg", "FILE", true, "also draw the mesh as SVG, triangles shaded by smallest angle; FILE - is standard output",
+               [](S& s, const std::string* v) { request(s.svg, v, "svg"); }},
+    LongOption{"svg-numbers", "", false, "number the vertices in the SVG picture",
+               [](S& s, const std::string*) { s.svg_numbers = true; }},
+    LongOption{"json", "FILE", true, "also write a JSON report of the run; FILE - is standard output",
+               [](S& s, const std::string* v) { request(s.json, v, "json"); }},
+    LongOption{"strict", "", false, "exit with status 3 when some triangles miss the -q/-a/-u bounds (files are still written)",
+               [](S& s, const std::string*) { s.strict = true; }},
+    LongOption{"man", "", false, "print the manual page (roff) and exit",
+               [](S& s, const std::string*) { s.man = true; }},
+    LongOption{"help", "", false, "print this help and exit (as -h)",
+               [](S& s, const std::string*) { s.help = true; }},
+};
+
 }  // namespace
 
 std::span<const SwitchRow> switch_table() { return kTable; }
+std::span<const LongOption> long_option_table() { return kLongOptions; }
 
 }  // namespace deltri

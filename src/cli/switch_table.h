@@ -25,4 +25,16 @@ struct SwitchRow {
 
 std::span<const SwitchRow> switch_table();
 
+// Options beyond Triangle's letters, written --name or --name=value.
+struct LongOption {
+  const char* name;      // without the dashes
+  const char* argument;  // for -h, e.g. "FILE"; "" when the option takes no value
+  bool value_optional;   // --name alone is allowed too
+  const char* help;      // one line
+  // `value` is null when no '=' followed the name.
+  void (*apply)(Switches& s, const std::string* value);
+};
+
+std::span<const LongOption> long_option_table();
+
 }  // namespace deltri

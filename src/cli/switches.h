@@ -44,6 +44,16 @@ struct Switches {
   bool zero_based = false;       // -z
   int order = 1;                 // -o2
 
+  // Formats beyond Triangle's, asked for by long options (--msh, --vtu, --svg, --json).
+  struct FileRequest {
+    bool wanted = false;
+    std::string path;  // empty: <output base>.<extension>; "-": standard output
+  };
+  FileRequest msh, vtu, svg, json;
+  bool svg_numbers = false;      // --svg-numbers: vertex numbers in the picture
+  bool strict = false;           // --strict: exit status 3 when triangles miss the bounds
+  bool man = false;              // --man: print the manual page (roff) and exit
+
   // How to run.
   bool check = false;            // -C
   bool quiet = false;            // -Q
@@ -52,6 +62,7 @@ struct Switches {
   int threads = 2;
 
   std::string input;             // the input file as given
+  std::string command_line;      // every argument, space-separated (for the JSON report)
 };
 
 // Parses Triangle-style arguments: switch words start with '-' and hold any number of letters,
@@ -59,7 +70,11 @@ struct Switches {
 // Throws UsageError on an unknown letter or a malformed number.
 Switches parse_switches(int argc, const char* const* argv);
 
-// The -h text, made from the same table the parser uses.
+// The -h text and the man page (docs/deltri.1), made from the same tables the parser uses.
 std::string help_text();
+std::string man_page();
+
+// Whether some output goes to standard output (then every message goes to standard error).
+bool uses_standard_output(const Switches& s);
 
 }  // namespace deltri

@@ -3,28 +3,14 @@
 #include "io/output_numbering.h"
 
 namespace deltri {
-namespace {
-
-// The twin lies in another triangle, so comparing edge refs compares triangle slots.
-bool written_here(const Mesh& mesh, EdgeRef e) { return mesh.link[e] == kNone || mesh.link[e] > e; }
 
 std::uint32_t count_edges(const Mesh& mesh) {
   std::uint32_t count = 0;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
     if (mesh.is_live(t))
-      for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) count += written_here(mesh, e);
+      for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) count += edge_written_here(mesh, e);
   return count;
 }
-
-int edge_marker(const Mesh& mesh, EdgeRef e) {
-  if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
-    const int marker = mesh.subsegments[mesh.subseg[e]].marker;
-    if (marker != 0) return marker;
-  }
-  return mesh.link[e] == kNone ? 1 : 0;
-}
-
-}  // namespace
 
 void write_edge_file(ByteSink& sink, const Mesh& mesh, const EdgeWriteOptions& options) {
   const VertexNumbering number{options.numbering, options.first_index};
@@ -38,7 +24,7 @@ void write_edge_file(ByteSink& sink, const Mesh& mesh, const EdgeWriteOptions& o
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
-      if (!written_here(mesh, e)) continue;
+      if (!edge_written_here(mesh, e)) continue;
       out.integer(index++);
       out.next_integer(number(mesh.org(e)));
       out.next_integer(number(mesh.dest(e)));

@@ -19,6 +19,9 @@ struct EdgeWriteOptions {
   const std::vector<std::uint32_t>* numbering = nullptr;
 };
 
+// The number of edges of the mesh (each once).
+std::uint32_t count_edges(const Mesh& mesh);
+
 // Appends a .edge file. Live triangles are visited in slot order, sides 0, 1, 2; an edge is
 // written from the triangle with the smaller slot (as Triangle writes it from the triangle with
 // the smaller pool position), or from its only triangle on the boundary, running org -> dest of

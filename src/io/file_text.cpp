@@ -89,7 +89,7 @@ FileText read_sized(FileHandle f, const std::string& path, std::size_t size) {
 }  // namespace
 
 FileText read_file_text(const std::string& path) {
-  if (path == "-") return read_stream(stdin, "standard input");
+  if (path == "-") return read_stream(stdin, kStandardInputName);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a file");
   FileHandle f = open_or_throw(path);

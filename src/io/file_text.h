@@ -15,6 +15,9 @@ struct FileText {
   std::size_t size = 0;
 };
 
+// How messages name standard input (the path "-").
+inline constexpr const char* kStandardInputName = "standard input";
+
 // The bytes of `path`, or of standard input when `path` is "-". Throws InputError(path, 0, ...)
 // when the file cannot be read (missing, a directory, a read error).
 FileText read_file_text(const std::string& path);

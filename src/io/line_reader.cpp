@@ -69,7 +69,9 @@ LineReader LineReader::tail_after(std::size_t bytes) const {
   return tail;
 }
 
-LineReader LineReader::open(const std::string& path) { return LineReader(path, read_file_text(path)); }
+LineReader LineReader::open(const std::string& path) {
+  return LineReader(path == "-" ? kStandardInputName : path, read_file_text(path));
+}
 
 void LineReader::skip_separators() {
   while (pos_ < end_ && is_separator(*pos_)) ++pos_;

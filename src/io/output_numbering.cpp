@@ -12,4 +12,23 @@ std::vector<std::uint32_t> number_live_triangles(const Mesh& mesh) {
   return numbers;
 }
 
+std::vector<EdgeRef> boundary_and_segment_edges(const Mesh& mesh) {
+  std::vector<EdgeRef> edges;
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e)
+      if (edge_written_here(mesh, e) && (mesh.link[e] == kNone || (mesh.has_subsegments() && mesh.subseg[e] != kNone)))
+        edges.push_back(e);
+  }
+  return edges;
+}
+
+int edge_marker(const Mesh& mesh, EdgeRef e) {
+  if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
+    const int marker = mesh.subsegments[mesh.subseg[e]].marker;
+    if (marker != 0) return marker;
+  }
+  return mesh.link[e] == kNone ? 1 : 0;
+}
+
 }  // namespace deltri

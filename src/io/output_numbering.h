@@ -25,6 +25,25 @@ struct VertexNumbering {
 // Empty result means "slot t is number t" (no dead slots), to save the array in the common case.
 std::vector<std::uint32_t> number_live_triangles(const Mesh& mesh);
 
+// An edge shared by two triangles is written once, from the triangle with the smaller slot (its
+// twin lies in another triangle, so comparing edge refs compares slots); a boundary edge always.
+inline bool edge_written_here(const Mesh& mesh, EdgeRef e) { return mesh.link[e] == kNone || mesh.link[e] > e; }
+
+// The marker every output gives an edge: its subsegment's marker when non-zero, else 1 on the mesh
+// boundary, else 0 (Triangle's rule, shared by .edge, -o2 midpoints, .msh and .vtu).
+int edge_marker(const Mesh& mesh, EdgeRef e);
+
+// The edges single-file formats write as line elements: those on the mesh boundary or on a
+// segment, each once, in .edge order.
+std::vector<EdgeRef> boundary_and_segment_edges(const Mesh& mesh);
+
+// What the single-file formats (.msh, .vtu, .svg) are given besides the mesh.
+struct ExportOptions {
+  const std::vector<std::uint32_t>* numbering = nullptr;  // as in NodeWriteOptions
+  const std::vector<VertexId>* midpoints = nullptr;        // -o2: see add_edge_midpoints
+  bool markers = true;                                      // false: -B
+};
+
 inline std::uint32_t triangle_number(const std::vector<std::uint32_t>& numbers, TriangleId t) {
   return numbers.empty() ? t : numbers[t];
 }

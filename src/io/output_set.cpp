@@ -117,7 +117,16 @@ std::exception_ptr run_in_order(std::size_t count, const std::function<void(std:
 
 }  // namespace
 
+void OutputSet::write_standard_output(File& f) {
+  if (f.produce) {
+    StringSink sink(f.contents);
+    f.produce(sink);
+    f.produce = nullptr;
+  }
+}
+
 void OutputSet::write_temporary(File& f, const std::string& temp_path) {
+  if (f.final_path == kStandardOutput) return write_standard_output(f);
   FileSink sink(temp_path, f.final_path);
   if (f.produce) f.produce(sink);
   else sink.write(f.contents.data(), f.contents.size());
@@ -137,15 +146,19 @@ void check_replaceable(const std::string& path) {
 void OutputSet::commit() {
   // Named here, in one thread: temporary_name's generator is not shared safely.
   std::vector<std::string> temps;
-  for (const File& f : files_) temps.push_back(temporary_name(f.final_path));
+  for (const File& f : files_) temps.push_back(f.final_path == kStandardOutput ? std::string() : temporary_name(f.final_path));
   std::exception_ptr error = run_in_order(files_.size(), [&](std::size_t k) { write_temporary(files_[k], temps[k]); });
   // A rename can still fail when something that is not a file stands in the way; find that before
   // the first rename, so that a failed run leaves every old output as it was.
-  if (!error) error = run_in_order(files_.size(), [&](std::size_t k) { check_replaceable(files_[k].final_path); });
+  if (!error)
+    error = run_in_order(files_.size(), [&](std::size_t k) {
+      if (!temps[k].empty()) check_replaceable(files_[k].final_path);
+    });
   // Renaming over an existing file frees the old one's blocks and cached pages, which for a large
   // .ele takes tens of milliseconds: worth sharing between threads too.
   if (!error) {
     error = run_in_order(files_.size(), [&](std::size_t k) {
+      if (temps[k].empty()) return;
       std::error_code ec;
       std::filesystem::rename(temps[k], files_[k].final_path, ec);
       if (ec) fail(files_[k].final_path, "cannot be put in place: " + ec.message());
@@ -155,6 +168,12 @@ void OutputSet::commit() {
   if (error) {
     remove_quietly(temps);
     std::rethrow_exception(error);
+  }
+  for (const File& f : files_) {
+    if (f.final_path != kStandardOutput) continue;
+    errno = 0;
+    if (std::fwrite(f.contents.data(), 1, f.contents.size(), stdout) != f.contents.size() || std::fflush(stdout) != 0)
+      fail("standard output", errno_text(errno));
   }
   files_.clear();
 }

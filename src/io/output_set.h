@@ -19,6 +19,10 @@ class OutputSet {
   // temporary file, so a large .ele never has to exist as one string.
   void add_stream(std::string final_path, std::function<void(ByteSink&)> produce);
 
+  // The name that stands for standard output: such a file is produced in memory with the others
+  // and written out only after every real file is in place, so a failed run prints nothing.
+  static constexpr const char* kStandardOutput = "-";
+
   // Writes every file, then renames them into place. Up to two temporaries are written at once
   // (the producers must not modify shared state). Throws OutputError("path: reason") if any
   // write, flush or close fails (with several failures: the one of the earliest-added file);
@@ -36,6 +40,7 @@ class OutputSet {
     std::function<void(ByteSink&)> produce;  // empty: use contents
   };
   static void write_temporary(File& f, const std::string& temp_path);
+  static void write_standard_output(File& f);
   std::vector<File> files_;
 };
 

@@ -21,7 +21,7 @@ std::string node_path_for(const std::string& poly_path) {
 }
 
 void load_separate_vertices(const LineReader& in, Pslg& out) {
-  if (in.name() == "-") in.fail("the vertices are in a separate .node file, which standard input cannot name");
+  if (in.name() == kStandardInputName) in.fail("the vertices are in a separate .node file, which standard input cannot name");
   out = read_node_file(node_path_for(in.name()));
 }
 

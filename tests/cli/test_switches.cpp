@@ -104,3 +104,40 @@ TEST(help_lists_every_switch_of_the_table) {
     CHECK(help.find(row.help) != std::string::npos);
   }
 }
+
+TEST(long_options_with_and_without_a_file) {
+  const Switches s = parse({"-pq30", "--msh", "--vtu=out.vtu", "--svg=-", "--svg-numbers", "--json", "--strict", "-", "x"});
+  CHECK(s.msh.wanted && s.msh.path.empty());
+  CHECK(s.vtu.wanted && s.vtu.path == "out.vtu");
+  CHECK(s.svg.wanted && s.svg.path == "-");
+  CHECK(s.svg_numbers && s.strict);
+  CHECK(s.json.wanted && s.json.path.empty());
+  CHECK(uses_standard_output(s));
+  CHECK(!uses_standard_output(parse({"--msh=a.msh", "x"})));
+  CHECK(!parse({"x"}).msh.wanted);
+  // "-" alone is the input (standard input), not a switch word.
+  CHECK_EQ(parse({"-p", "-"}).input, std::string("-"));
+  CHECK(parse({"--man"}).man);
+  CHECK(parse({"--help"}).help);
+}
+
+TEST(long_option_errors) {
+  CHECK_EQ(usage_error({"--mesh", "x"}), std::string("--mesh: unknown option (see deltri -h)"));
+  CHECK_EQ(usage_error({"--strict=1", "x"}), std::string("--strict: takes no value"));
+  CHECK(usage_error({"--msh=", "x"}).rfind("--msh=:", 0) == 0);
+  CHECK(usage_error({"--msh=-", "--json=-", "x"}).find("only one of") != std::string::npos);
+}
+
+TEST(help_and_man_page_list_every_long_option) {
+  const std::string help = help_text(), man = man_page();
+  for (const LongOption& option : long_option_table()) {
+    CHECK(help.find(std::string("  --") + option.name) != std::string::npos);
+    CHECK(help.find(option.help) != std::string::npos);
+    std::string escaped;  // roff writes every dash as \-
+    for (const char* c = option.name; *c; ++c) escaped += *c == '-' ? std::string("\\-") : std::string(1, *c);
+    CHECK(man.find(".B \\-\\-" + escaped) != std::string::npos);
+  }
+  for (const SwitchRow& row : switch_table()) CHECK(man.find(std::string(".B \\-") + row.letter) != std::string::npos);
+  CHECK(man.rfind(".\\\"", 0) == 0);
+  CHECK(man.find("\n.TH DELTRI 1") != std::string::npos);
+}

@@ -1,6 +1,7 @@
 // deltri_mesh_verify --input IN.poly|IN.node --mesh OUTBASE [--convex-hull] [--expect-triangles N]
 //                    [--no-holes] [--rounded-splits]
-// Checks deltri's output OUTBASE.node/.ele (and .edge/.neigh/.poly when present) against the input.
+// Checks deltri's output OUTBASE.node/.ele (and .edge/.neigh/.poly/.v.node/.v.edge/.off when
+// present) against the input.
 // Prints one line per failed check and exits 1; exits 0 when everything holds, 2 on bad usage or
 // an unreadable input. See verify.h and the check functions for what is verified.
 #include <cstdio>
@@ -73,6 +74,9 @@ int main(int argc, char** argv) {
   mv::check_constrained_delaunay(c, f);
   mv::check_point_set_cover(c, f);
   mv::check_side_files(c, f);
+  mv::check_midpoints(c, f);
+  mv::check_voronoi(c, f);
+  mv::check_off(c, f);
   if (!f.empty()) {
     f.print();
     return 1;

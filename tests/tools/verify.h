@@ -61,6 +61,18 @@ struct OutputMesh {
   std::optional<std::vector<EdgeLine>> edges;
   std::optional<std::vector<std::array<int, 3>>> neighbors;  // zero-based, -1 for none
   std::optional<std::vector<EdgeLine>> poly_segments;
+  // -o2: nodes 4, 5, 6 of each .ele line (zero-based), the midpoints opposite corners 1, 2, 3.
+  std::vector<std::array<int, 3>> midpoints;
+  // -v: OUTBASE.v.node and OUTBASE.v.edge.
+  struct VoronoiEdge {
+    int a = 0, b = -1;  // zero-based Voronoi vertices; b == -1 for a ray
+    double dx = 0, dy = 0;
+  };
+  std::optional<std::vector<Point>> voronoi_points;
+  std::vector<VoronoiEdge> voronoi_edges;
+  // -g: OUTBASE.off.
+  std::optional<std::vector<Point>> off_points;
+  std::vector<std::array<int, 3>> off_faces;
 };
 
 // Both return false (after adding failures of kind "parse") when the files cannot be used.
@@ -139,6 +151,10 @@ void check_holes(Context& c, Failures& f);
 void check_constrained_delaunay(Context& c, Failures& f);
 void check_point_set_cover(Context& c, Failures& f);
 void check_side_files(Context& c, Failures& f);
+// verify_dual.cpp: -o2 midpoints, the -v Voronoi files, the -g .off file.
+void check_midpoints(Context& c, Failures& f);
+void check_voronoi(Context& c, Failures& f);
+void check_off(Context& c, Failures& f);
 
 // Convex hull of the distinct points, counter-clockwise, without collinear points (verify_checks.cpp).
 std::vector<Point> convex_hull(std::vector<Point> points, deltri::Predicates& pred);

@@ -198,26 +198,27 @@ bool read_output(const std::string& base, OutputMesh& out, Failures& f) {
   long count = 0, corners = 0, attrs = 0;
   if (!ele.need(t, 2, "header") || !ele.count(t[0], count) || !ele.integer(t[1], corners)) return false;
   if (t.size() > 2 && !ele.count(t[2], attrs, 1000)) return false;
-  if (corners != 3) return ele.fail("not 3 corners per triangle");
+  if (corners != 3 && corners != 6) return ele.fail("not 3 or 6 nodes per triangle");
   const long n = static_cast<long>(out.points.size());
   for (long k = 0; k < count; ++k) {
-    if (!ele.need(t, 4 + attrs, "triangle line")) return false;
-    if (t.size() != static_cast<std::size_t>(4 + attrs)) return ele.fail("wrong number of fields in a triangle line");
+    if (!ele.need(t, 1 + corners + attrs, "triangle line")) return false;
+    if (t.size() != static_cast<std::size_t>(1 + corners + attrs)) return ele.fail("wrong number of fields in a triangle line");
     long index = 0;
-    std::array<int, 3> tri{};
+    std::array<int, 6> nodes{};
     if (!ele.integer(t[0], index)) return false;
     if (index != out.first + k) return ele.fail("triangle numbers are not consecutive from the .node's first index");
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < corners; ++i) {
       long v = 0;
       if (!ele.integer(t[1 + i], v)) return false;
       if (v < out.first || v >= out.first + n) return ele.fail("vertex number out of range: " + t[1 + i]);
-      tri[i] = static_cast<int>(v - out.first);
+      nodes[i] = static_cast<int>(v - out.first);
     }
     for (long a = 0; a < attrs; ++a) {
       double ignored = 0;
-      if (!ele.number(t[4 + a], ignored)) return false;
+      if (!ele.number(t[1 + corners + a], ignored)) return false;
     }
-    out.triangles.push_back(tri);
+    out.triangles.push_back({nodes[0], nodes[1], nodes[2]});
+    if (corners == 6) out.midpoints.push_back({nodes[3], nodes[4], nodes[5]});
   }
   if (ele.next(t)) return ele.fail("text after the last triangle");
 
@@ -249,6 +250,65 @@ bool read_output(const std::string& base, OutputMesh& out, Failures& f) {
       }
       out.neighbors->push_back(nb);
     }
+  }
+
+  Lines vnode(base + ".v.node", f);
+  if (vnode.opened()) {
+    int vfirst = out.first;
+    out.voronoi_points.emplace();
+    if (!read_nodes(vnode, *out.voronoi_points, vfirst, false, false)) return false;
+    if (vfirst != out.first) return vnode.fail("numbered from " + std::to_string(vfirst) + ", the .node from " + std::to_string(out.first));
+    Lines vedge(base + ".v.edge", f);
+    if (!vedge.opened()) return vedge.fail("cannot open (the .v.node exists)");
+    if (!vedge.need(t, 1, "header") || !vedge.count(t[0], count)) return false;
+    const long nv = static_cast<long>(out.voronoi_points->size());
+    for (long k = 0; k < count; ++k) {
+      if (!vedge.need(t, 3, "Voronoi edge line")) return false;
+      long index = 0, a = 0, b = 0;
+      if (!vedge.integer(t[0], index) || !vedge.integer(t[1], a) || !vedge.integer(t[2], b)) return false;
+      if (index != out.first + k) return vedge.fail("numbers are not consecutive");
+      OutputMesh::VoronoiEdge e;
+      if (a < out.first || a >= out.first + nv) return vedge.fail("Voronoi vertex out of range: " + t[1]);
+      e.a = static_cast<int>(a - out.first);
+      if (b == -1) {
+        if (t.size() != 5 || !vedge.number(t[3], e.dx) || !vedge.number(t[4], e.dy)) return vedge.fail("a ray needs a direction dx dy");
+      } else {
+        if (t.size() != 3) return vedge.fail("wrong number of fields in a Voronoi edge line");
+        if (b < out.first || b >= out.first + nv) return vedge.fail("Voronoi vertex out of range: " + t[2]);
+        e.b = static_cast<int>(b - out.first);
+      }
+      out.voronoi_edges.push_back(e);
+    }
+    if (vedge.next(t)) return vedge.fail("text after the last edge");
+  }
+
+  Lines off(base + ".off", f);
+  if (off.opened()) {
+    long nv = 0, nf = 0, ne = 0;
+    if (!off.need(t, 1, "OFF keyword")) return false;
+    if (t[0] != "OFF" || t.size() != 1) return off.fail("the first line is not OFF");
+    if (!off.need(t, 3, "counts") || !off.count(t[0], nv) || !off.count(t[1], nf) || !off.count(t[2], ne)) return false;
+    out.off_points.emplace();
+    for (long k = 0; k < nv; ++k) {
+      Point p;
+      double z = 0;
+      if (!off.need(t, 3, "vertex line") || !off.number(t[0], p.x) || !off.number(t[1], p.y) || !off.number(t[2], z)) return false;
+      if (t.size() != 3 || z != 0) return off.fail("a vertex line is not 'x y 0'");
+      out.off_points->push_back(p);
+    }
+    for (long k = 0; k < nf; ++k) {
+      if (!off.need(t, 4, "face line")) return false;
+      if (t.size() != 4 || t[0] != "3") return off.fail("a face line is not '3 a b c'");
+      std::array<int, 3> face{};
+      for (int i = 0; i < 3; ++i) {
+        long v = 0;
+        if (!off.integer(t[1 + i], v)) return false;
+        if (v < 0 || v >= nv) return off.fail("face vertex out of range (OFF numbers from 0): " + t[1 + i]);
+        face[i] = static_cast<int>(v);
+      }
+      out.off_faces.push_back(face);
+    }
+    if (off.next(t)) return off.fail("text after the last face");
   }
 
   Lines poly(base + ".poly", f);

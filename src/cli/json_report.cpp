@@ -1,0 +1,177 @@
+#include "cli/json_report.h"
+
+#include <charconv>
+#include <cmath>
+
+#include "quality/statistics.h"
+
+namespace deltri {
+namespace {
+
+// Builds the text with the right commas; keys are plain ASCII, values escaped.
+class Json {
+ public:
+  void open(const char* key = nullptr, char bracket = '{') {
+    field(key);
+    out_ += bracket;
+    first_ = true;
+  }
+  void close(char bracket = '}') {
+    out_ += bracket;
+    first_ = false;
+  }
+  void number(const char* key, double v) {
+    field(key);
+    if (!std::isfinite(v)) {
+      out_ += "null";  // JSON has no infinity; a flat triangle's ratio is reported as null
+      return;
+    }
+    char buffer[32];
+    out_.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, v).ptr);
+  }
+  void integer(const char* key, unsigned long long v) {
+    field(key);
+    out_ += std::to_string(v);
+  }
+  void boolean(const char* key, bool v) {
+    field(key);
+    out_ += v ? "true" : "false";
+  }
+  void null(const char* key) {
+    field(key);
+    out_ += "null";
+  }
+  void string(const char* key, const std::string& v) {
+    field(key);
+    out_ += '"';
+    for (unsigned char c : v) {
+      if (c == '"' || c == '\\') {
+        out_ += '\\';
+        out_ += static_cast<char>(c);
+      } else if (c < 0x20) {
+        char buffer[8];
+        std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+        out_ += buffer;
+      } else {
+        out_ += static_cast<char>(c);
+      }
+    }
+    out_ += '"';
+  }
+  std::string take() { return std::move(out_) + "\n"; }
+
+ private:
+  void field(const char* key) {
+    if (!first_) out_ += ',';
+    first_ = false;
+    if (key) {
+      out_ += '"';
+      out_ += key;
+      out_ += "\":";
+    }
+  }
+  std::string out_;
+  bool first_ = true;
+};
+
+}  // namespace
+
+std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
+  const Switches& sw = *r.switches;
+  const MeshStatistics stats = compute_statistics(mesh);
+  Json j;
+  j.open();
+  j.string("program", "deltri");
+  j.string("command", sw.command_line);
+  j.string("input", r.input_name);
+  j.integer("exit_status", static_cast<unsigned long long>(exit_status));
+
+  j.open("input_counts");
+  j.integer("vertices", r.input_vertices);
+  j.integer("duplicate_vertices", r.duplicates);
+  if (r.pslg && r.pslg->has_segment_section) {
+    j.integer("segments", r.pslg->segments.size());
+    j.integer("holes", r.pslg->holes.size());
+    j.integer("regions", r.pslg->regions.size());
+  }
+  j.close();
+
+  j.open("mesh");
+  j.integer("vertices", stats.vertices);
+  j.integer("vertices_in_triangles", stats.vertices_in_triangles);
+  j.integer("triangles", stats.triangles);
+  j.integer("edges", stats.edges);
+  j.integer("boundary_edges", stats.exterior_boundary_edges);
+  j.integer("subsegments", stats.subsegments);
+  j.integer("steiner_points", r.refine ? r.refine->interior_steiner + r.refine->segment_steiner : 0);
+  j.close();
+
+  j.open("quality");
+  if (sw.quality) j.number("min_angle_bound", sw.min_angle);
+  else j.null("min_angle_bound");
+  if (sw.fixed_area) j.number("max_area_bound", sw.max_area);
+  else j.null("max_area_bound");
+  if (sw.user_test) j.number("max_edge_length_bound", sw.max_edge_length);
+  else j.null("max_edge_length_bound");
+  j.number("smallest_angle", stats.smallest_angle);
+  j.number("largest_angle", stats.largest_angle);
+  j.number("smallest_area", stats.smallest_area);
+  j.number("largest_area", stats.largest_area);
+  j.number("shortest_edge", stats.shortest_edge);
+  j.number("longest_edge", stats.longest_edge);
+  j.number("largest_aspect_ratio", stats.largest_aspect_ratio);
+  const auto& q = r.refine;
+  j.integer("triangles_missing_bounds", q ? q->bad_triangles_left : 0);
+  j.open("why_missed", '[');
+  if (q && q->stopped_by_guard) j.string(nullptr, "termination guard: points that would have made edges far below the local feature size were refused");
+  if (q && q->stopped_by_max_steiner) j.string(nullptr, "the -S limit of Steiner points was reached");
+  if (q && q->bad_triangles_left > 0 && sw.no_boundary_steiner > 0) j.string(nullptr, "-Y/-YY: segments were not split");
+  j.close(']');
+  if (q && q->bad_triangles_left > 0) {
+    j.open("worst_triangle");
+    j.number("smallest_angle", q->worst_min_angle_deg);
+    j.number("x", q->worst_location.x);
+    j.number("y", q->worst_location.y);
+    j.close();
+  }
+  j.close();
+
+  j.open("repairs");
+  if (const auto& s = r.segments) {
+    j.integer("endpoints_moved_from_duplicates", s->duplicates_remapped);
+    j.integer("zero_length_segments_ignored", s->zero_length);
+    j.integer("repeated_segments_ignored", s->repeated);
+    j.integer("segments_split_at_vertices", s->split_at_vertices);
+    j.integer("collinear_overlaps_merged", s->overlaps_merged);
+    j.integer("crossings_split", s->crossings);
+    j.integer("segments_with_missing_endpoint_ignored", s->invalid_endpoints);
+    j.integer("segments_outside_every_triangle_ignored", s->unrecovered);
+  }
+  if (const auto& h = r.holes) {
+    j.integer("hole_points_outside_ignored", h->outside.size());
+    j.integer("hole_points_on_segment_ignored", h->on_segment.size());
+  }
+  j.close();
+
+  j.open("warnings", '[');
+  for (const std::string& w : run_warnings(mesh, r)) j.string(nullptr, w);
+  j.close(']');
+
+  // Up to the moment the files were written: the report is one of them.
+  j.open("seconds");
+  double total = 0.0;
+  for (const auto& s : r.stages) {
+    j.number(s.name, s.seconds);
+    total += s.seconds;
+  }
+  j.number("total_before_writing", total);
+  j.close();
+
+  j.open("files", '[');
+  for (const std::string& f : r.written) j.string(nullptr, f);
+  j.close(']');
+  j.close();
+  return j.take();
+}
+
+}  // namespace deltri
