@@ -109,9 +109,9 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
               static_cast<unsigned long long>(c.incircle_adaptive), static_cast<unsigned long long>(c.incircle_exact));
   if (const auto& q = r.refine) {
     std::fprintf(out_, "Refinement:\n");
-    std::fprintf(out_, "  Steiner points: %llu interior, %llu on segments; %llu subsegment splits\n",
+    std::fprintf(out_, "  Steiner points: %llu interior, %llu on segments; %llu subsegment splits; %llu free vertices deleted\n",
                 static_cast<unsigned long long>(q->interior_steiner), static_cast<unsigned long long>(q->segment_steiner),
-                static_cast<unsigned long long>(q->encroached_splits));
+                static_cast<unsigned long long>(q->encroached_splits), static_cast<unsigned long long>(q->vertices_deleted));
     std::fprintf(out_, "  rejected Steiner points: %llu; declined splits: %llu; guard refusals: %llu (edge floor %.6g)\n",
                 static_cast<unsigned long long>(q->rejected_candidates), static_cast<unsigned long long>(q->declined_splits),
                 static_cast<unsigned long long>(q->guard_refusals), q->guard_length);

@@ -8,10 +8,8 @@
 // one with conforming_delaunay) in which every triangle meets the bounds, except where the report
 // says otherwise.
 //
-// Not done: Fig. 39 l.40-43, deleting the free vertices inside a subsegment's diametral circle
-// before splitting it when lenses are used (Chew). Without it the lens variant still terminates
-// (the guard bounds every new edge) but may create somewhat shorter edges near split subsegments;
-// vertices_deleted therefore stays 0.
+// With lenses, the free vertices inside a subsegment's diametral circle are deleted before it is
+// split (Chew; Fig. 39 l.40-43, mesh/delete_vertex.h).
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,8 @@
 // The subsegment side of the Terminator: Fig. 39, SPLITENCROACHEDSUBSEGMENTS.
+#include <algorithm>
+
+#include "geometry/encroachment.h"
+#include "mesh/delete_vertex.h"
 #include "mesh/operations.h"
 #include "refine/concentric_shells.h"
 #include "refine/lawson.h"
@@ -22,6 +26,63 @@ std::uint64_t Terminator::split_encroached_subsegments(bool queue_triangles) {
   return splits;
 }
 
+bool Terminator::uses_lenses() const { return opt_.lenses && !opt_.conforming_delaunay; }
+
+// Fig. 39 l.40-43, Chew's step: the free vertices inside the diametral circle of s that the two
+// triangles beside s can see (a search that never crosses a subsegment) are deleted before s is
+// split, so that with lenses no vertex is left closer to the new subsegments than their diametral
+// circles allow. Returns the edge that now carries s (deletions rewrite slots), or kNone.
+EdgeRef Terminator::delete_free_vertices_near(EdgeRef s, bool queue_triangles) {
+  const VertexId a = mesh_.org(s), b = mesh_.dest(s);
+  const Point& pa = mesh_.point(a);
+  const Point& pb = mesh_.point(b);
+  const auto inside = [&](VertexId w) { return in_diametral_circle(pa, pb, mesh_.point(w)); };
+  marks_.begin(mesh_.triangle_slots());
+  std::vector<TriangleId> todo{triangle_of(s)};
+  marks_.mark(todo[0]);
+  if (mesh_.link[s] != kNone && marks_.mark(triangle_of(mesh_.link[s]))) todo.push_back(triangle_of(mesh_.link[s]));
+  std::vector<VertexId> doomed;
+  for (std::size_t k = 0; k < todo.size() && k < kDeletionSearchLimit; ++k) {
+    const TriangleId t = todo[k];
+    for (unsigned i = 0; i < 3; ++i) {
+      const EdgeRef e = edge_of(t, i);
+      const VertexId w = mesh_.org(e);
+      const bool w_inside = w != a && w != b && inside(w);
+      if (w_inside && mesh_.kind[w] == VertexKind::Free &&
+          std::find(doomed.begin(), doomed.end(), w) == doomed.end())
+        doomed.push_back(w);
+      const EdgeRef twin = mesh_.link[e];
+      if (twin == kNone || mesh_.subseg[e] != kNone) continue;
+      // Go on only through edges with an end inside the circle: the circle is convex, so the
+      // triangles reached cover everything in it that the start can see.
+      const VertexId x = mesh_.dest(e);
+      if ((w_inside || (x != a && x != b && inside(x))) && marks_.mark(triangle_of(twin)))
+        todo.push_back(triangle_of(twin));
+    }
+  }
+  std::vector<TriangleId> created;
+  for (VertexId w : doomed) {
+    const EdgeRef out = finder_.leaving(mesh_, w);
+    created.clear();
+    if (out == kNone || !delete_vertex(mesh_, pred_, out, created)) continue;
+    ++report_.vertices_deleted;
+    // s moves only when w was the apex beside it, and then into one of the new triangles (a
+    // finder could miss it at a vertex where two fans touch).
+    if (!mesh_.is_live(triangle_of(s)) || mesh_.org(s) != a || mesh_.dest(s) != b) {
+      s = kNone;
+      for (TriangleId t : created)
+        for (unsigned i = 0; i < 3; ++i)
+          if (mesh_.org(edge_of(t, i)) == a && mesh_.dest(edge_of(t, i)) == b) s = edge_of(t, i);
+      if (s == kNone) return kNone;  // cannot happen: the star's link keeps its edges
+    }
+    for (TriangleId t : created) {
+      for (unsigned i = 0; i < 3; ++i) finder_.note(mesh_, edge_of(t, i));
+      if (queue_triangles) enqueue_if_bad(t);  // Fig. 39 l.41-43
+    }
+  }
+  return s;
+}
+
 bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
   const VertexId a = mesh_.org(s), b = mesh_.dest(s);
   const Point& pa = mesh_.point(a);
@@ -33,8 +94,10 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
     refuse_by_guard();
     return false;
   }
-  // Fig. 39 l.40-43 (Chew's deletion of free vertices in the diametral circle, for lenses) is
-  // not done: see refine.h.
+  if (uses_lenses()) {  // Fig. 39 l.40-43
+    s = delete_free_vertices_near(s, queue_triangles);
+    if (s == kNone || !split_keeps_orientation(s, p)) return false;
+  }
   const VertexId v = add_segment_vertex(p, s);
   const std::array<VertexId, 2> piece = piece_of_subsegment_[mesh_.subseg[s]];
   piece_of_vertex_.resize(mesh_.vertex_count(), {kNone, kNone});

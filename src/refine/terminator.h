@@ -33,6 +33,10 @@ class Terminator {
   std::uint64_t split_encroached_subsegments(bool queue_triangles);
   // Fig. 39 l.39-45 for one subsegment; false if it was not split.
   bool split_subsegment(EdgeRef s, bool queue_triangles);
+  bool uses_lenses() const;
+  // Fig. 39 l.40-43; returns the edge of the subsegment afterwards, or kNone.
+  EdgeRef delete_free_vertices_near(EdgeRef s, bool queue_triangles);
+  static constexpr std::size_t kDeletionSearchLimit = 512;  // triangles looked at per split
   // Would splitting s at p leave every new triangle counter-clockwise?
   bool split_keeps_orientation(EdgeRef s, const Point& p);
   // Fig. 39 l.50-55; `out` leaves the new vertex.

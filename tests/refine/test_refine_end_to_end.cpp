@@ -234,3 +234,27 @@ TEST(attributes_area_bounds_and_markers_are_inherited) {
   for (VertexId v = 4; v < m.vertex_count(); ++v)
     CHECK_EQ(m.marker[v], m.kind[v] == VertexKind::Segment ? 1 : 0);
 }
+
+// Fig. 39 l.40-43: with lenses, free vertices inside a subsegment's diametral circle are deleted
+// before it is split; with diametral circles (-D) no free vertex is ever inside one, so none is.
+TEST(chews_deletion_with_lenses_only) {
+  for (bool lenses : {true, false}) {
+    Mesh m = fan();
+    Predicates pred;
+    RefineOptions opt = quality(30);
+    opt.max_area = 0.0005;
+    opt.lenses = lenses;
+    opt.conforming_delaunay = !lenses;
+    const RefineReport r = refine_mesh(m, pred, opt);
+    print(lenses ? "fan -q30a0.0005 (lenses)" : "fan -q30a0.0005D (circles)", m, r);
+    check_valid(m, fan_area(), fan_perimeter());
+    std::printf("    deleted %llu\n", static_cast<unsigned long long>(r.vertices_deleted));
+    if (lenses) CHECK(r.vertices_deleted > 0);
+    else CHECK_EQ(r.vertices_deleted, std::uint64_t{0});
+    // Deleted vertices are Dead and in no triangle; every corner is alive.
+    std::size_t dead = 0;
+    for (VertexId v = 0; v < m.vertex_count(); ++v) dead += m.kind[v] == VertexKind::Dead;
+    CHECK_EQ(dead, static_cast<std::size_t>(r.vertices_deleted));
+    for (VertexId v : m.corner) CHECK(v == kNone || m.kind[v] != VertexKind::Dead);
+  }
+}
