@@ -234,6 +234,8 @@ RefineOptions refine_options(const Switches& sw, const InputFiles& in) {
   opt.no_steiner_on_segments = sw.no_boundary_steiner;
   opt.max_steiner = sw.max_steiner;
   opt.off_centers = !sw.circumcenters_only;
+  opt.queue_order = sw.queue_order;
+  opt.decline_cluster_splits = sw.decline_cluster_splits;
   opt.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
   return opt;
 }

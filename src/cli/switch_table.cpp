@@ -103,6 +103,14 @@ void request(Switches::FileRequest& r, const std::string* value, const char* opt
   r.path = value ? *value : std::string();
 }
 
+void set_queue(S& s, const std::string* v) {
+  if (*v == "edge") s.queue_order = QueueOrder::EdgeBuckets;
+  else if (*v == "ratio") s.queue_order = QueueOrder::RatioBuckets;
+  else if (*v == "fifo") s.queue_order = QueueOrder::SingleFifo;
+  else if (*v == "heap") s.queue_order = QueueOrder::RatioHeap;
+  else throw UsageError("--queue=" + *v + ": the order is edge, ratio, fifo or heap");
+}
+
 constexpr std::array kLongOptions = {
     LongOption{"msh", "FILE", true, "also write the mesh as Gmsh MSH 4.1 (ASCII); FILE - is standard output",
                [](S& s, const std::string* v) { request(s.msh, v, "msh"); }},
@@ -116,6 +124,13 @@ constexpr std::array kLongOptions = {
                [](S& s, const std::string* v) { request(s.json, v, "json"); }},
     LongOption{"strict", "", false, "exit with status 3 when some triangles miss the -q/-a/-u bounds (files are still written)",
                [](S& s, const std::string*) { s.strict = true; }},
+    LongOption{"queue", "ORDER", false,
+               "which bad triangle refinement splits first: edge (shortest edge, default), ratio (worst "
+               "radius-edge ratio, the paper's 64 buckets), fifo, or heap (exact worst ratio)",
+               set_queue},
+    LongOption{"decline-cluster-splits", "", false,
+               "let SPLITPERMITTED (Shewchuk 2001, Fig. 38) decline to split subsegment clusters",
+               [](S& s, const std::string*) { s.decline_cluster_splits = true; }},
     LongOption{"man", "", false, "print the manual page (roff) and exit",
                [](S& s, const std::string*) { s.man = true; }},
     LongOption{"help", "", false, "print this help and exit (as -h)",

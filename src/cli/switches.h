@@ -4,6 +4,7 @@
 #include <string>
 
 #include "delaunay/triangulate.h"
+#include "refine/quality_queue.h"
 
 namespace deltri {
 
@@ -19,6 +20,8 @@ struct Switches {
   bool user_test = false;        // -u<length>: no edge longer than length
   double max_edge_length = -1.0;
   bool circumcenters_only = false;  // -k: Steiner points at circumcentres, no off-centres
+  QueueOrder queue_order = QueueOrder::EdgeBuckets;  // --queue=
+  bool decline_cluster_splits = false;               // --decline-cluster-splits
   bool regional_attributes = false;  // -A
   bool convex_hull = false;      // -c
   bool conforming_delaunay = false;  // -D
