@@ -47,6 +47,9 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
   }
   if (const auto& q = r.refine) {
     if (q->stopped_by_max_steiner) warn("refinement stopped at the -S limit of Steiner points");
+    if (q->stopped_by_cap)
+      warn("refinement stopped after " + std::to_string(q->steiner_cap) +
+           " Steiner points, the termination guard's cap for this input (the angle bound is beyond what refinement can reach here)");
     if (q->bad_triangles_left > 0) {
       char where[160];
       std::snprintf(where, sizeof where, " (worst: smallest angle %.4g degrees near (%.9g, %.9g))",

@@ -51,6 +51,8 @@ struct RefineReport {
   std::uint64_t guard_refusals = 0;       // insertions refused by the termination guard
   bool stopped_by_guard = false;
   bool stopped_by_max_steiner = false;
+  bool stopped_by_cap = false;            // the guard's Steiner point cap was reached
+  std::uint64_t steiner_cap = 0;
   double guard_length = 0.0;              // the edge-length floor used
   // Triangles still bad afterwards (angle below theta, not between two subsegments, or too large).
   std::uint64_t bad_triangles_left = 0;

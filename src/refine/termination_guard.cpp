@@ -48,4 +48,24 @@ double guard_floor(double feature, double size_floor) {
   return std::ldexp(scale, -kGuardOctaves);
 }
 
+std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds) {
+  double wanted = 0.0;  // triangles the size bounds ask for
+  const double edge_area = bounds.max_edge_length > 0.0
+                               ? std::sqrt(3.0) / 4.0 * bounds.max_edge_length * bounds.max_edge_length
+                               : HUGE_VAL;
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    const Point& a = mesh.point(mesh.corner[3 * t]);
+    const Point& b = mesh.point(mesh.corner[3 * t + 1]);
+    const Point& c = mesh.point(mesh.corner[3 * t + 2]);
+    const double area = 0.5 * std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    double bound = std::min(bounds.max_area > 0.0 ? bounds.max_area : HUGE_VAL, edge_area);
+    if (bounds.triangle_bounds && t < mesh.area_bound.size() && mesh.area_bound[t] > 0.0)
+      bound = std::min(bound, mesh.area_bound[t]);
+    if (bound < HUGE_VAL) wanted += area / bound;
+  }
+  const double cap = static_cast<double>(kCapPerVertex) * mesh.vertex_count() + 4.0 * wanted;
+  return cap < 1.8e19 ? static_cast<std::uint64_t>(cap) : UINT64_MAX;
+}
+
 }  // namespace deltri

@@ -15,6 +15,7 @@
 // ordinary insertions far from the input vertices, where that extension overestimates lfs.)
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "mesh/mesh.h"
@@ -37,5 +38,21 @@ double precision_floor(const Mesh& mesh);
 // The edge-length floor for a smallest feature estimate `feature`; size_floor (<= 0: none) is the
 // edge length a size bound asks for.
 double guard_floor(double feature, double size_floor);
+
+// The last line of defence, for angle bounds far beyond the proven range (above about 34 degrees
+// refinement can cascade: each generation of vertices closer together than the last, down to the
+// floor, which is far too many vertices to reach): refinement stops and reports once it has added
+// this many Steiner points. kCapPerVertex for each vertex of the initial mesh, plus four times the
+// number of triangles the size bounds ask for (the initial triangles' areas over their area bounds,
+// or over the area of an equilateral triangle with the -u edge length). Meshes within the proven
+// range use a few dozen Steiner points per input vertex (the corpus: at most 65 at -q33).
+inline constexpr std::uint64_t kCapPerVertex = 4096;
+
+struct SizeBounds {
+  double max_area = 0.0;        // <= 0: none
+  bool triangle_bounds = false; // mesh.area_bound holds per-triangle bounds
+  double max_edge_length = 0.0; // <= 0: none
+};
+std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds);
 
 }  // namespace deltri

@@ -64,11 +64,13 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
       off_constant_(off_center_constant(opt.quality ? opt.min_angle_deg : 0.0, opt.off_centers)),
       guard_floor_(guard_floor_of(mesh, opt)),
       reference2_(squared_diameter(mesh)),
+      steiner_cap_(steiner_cap(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length})),
       apices_(mesh),
       finder_(mesh) {
   for (const Subsegment& sub : mesh.subsegments) piece_of_subsegment_.push_back({sub.a, sub.b});
   piece_of_vertex_.assign(mesh.vertex_count(), {kNone, kNone});
   report_.guard_length = guard_floor_;
+  report_.steiner_cap = steiner_cap_;
 }
 
 void Terminator::refuse_by_guard() {
@@ -225,8 +227,12 @@ bool Terminator::still_exists(const QueuedTriangle& entry) const {
 }
 
 bool Terminator::budget_left() {
-  if (opt_.max_steiner < 0) return true;
   const std::uint64_t used = report_.interior_steiner + report_.segment_steiner;
+  if (used >= steiner_cap_) {
+    report_.stopped_by_cap = true;
+    return false;
+  }
+  if (opt_.max_steiner < 0) return true;
   if (used < static_cast<std::uint64_t>(opt_.max_steiner)) return true;
   report_.stopped_by_max_steiner = true;
   return false;

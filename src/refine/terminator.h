@@ -66,6 +66,7 @@ class Terminator {
   double off_constant_ = 0.0;
   double guard_floor_ = 0.0;           // the termination guard's edge floor (see terminator.cpp)
   double reference2_ = 0.0;            // squared diameter of the mesh, the edge buckets' scale
+  std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   // The endpoints of the segment piece (a chain of subsegments between two vertices that are not
   // refinement splits) each subsegment record lies on, and each segment vertex added by
   // refinement; kNone pairs for other vertices.

@@ -135,3 +135,12 @@ e2e_case(error.switch ${G} -pt --exit 2 --error "deltri: -t: unknown switch")
 # ---- -r: refine a previous mesh (round trip, refinement of a refined mesh, a bad .ele) ----
 add_test(NAME e2e.refine_chain.guitar
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/refine_chain.sh $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify> ${E2E_DATA}/guitar.poly)
+
+# ---- small input angles: fans of spokes 1-5 degrees apart, a star of 2 degree spikes ----
+# -q34 finishes meeting the bound; -q40 is beyond what refinement can reach, and the termination
+# guard stops it with a report instead of running on (fan5 is small, so the cap comes quickly).
+foreach(name fan120 star50 fan5)
+  e2e_case(${name}.pq34 ${E2E_INPUTS}/${name}.poly -pq34 --no-warning --verify --rounded-splits)
+endforeach()
+e2e_case(fan5.pq40 ${E2E_INPUTS}/fan5.poly -pq40 --verify --rounded-splits --warning "the termination guard's cap"
+         --warning "triangles miss the requested bounds")

@@ -260,3 +260,16 @@ TEST(guard_features_and_floor) {
   CHECK_NEAR(guard_floor(1.0, 0.0), std::ldexp(1.0, -kGuardOctaves), 0.0);
   CHECK_NEAR(guard_floor(1.0, 0.5), std::ldexp(0.5, -kGuardOctaves), 0.0);
 }
+
+// The guard's Steiner cap: kCapPerVertex per vertex plus four times the triangles the size bounds
+// ask for, computed here from the square's area by hand.
+TEST(steiner_cap_counts_vertices_and_size_bounds) {
+  Mesh m = refine_test::unit_square();
+  CHECK_EQ(steiner_cap(m, {}), 4 * kCapPerVertex);
+  CHECK_EQ(steiner_cap(m, {0.01, false, 0.0}), 4 * kCapPerVertex + 400);
+  // An edge bound L asks for area / (sqrt(3)/4 L^2) triangles: 1 / (0.4330127 * 0.01) = 230.94.
+  CHECK_EQ(steiner_cap(m, {0.0, false, 0.1}), 4 * kCapPerVertex + 923);
+  m.area_bound.assign(m.triangle_slots(), 0.5);  // per-triangle bounds of 0.5 on two triangles of 0.5
+  CHECK_EQ(steiner_cap(m, {0.0, true, 0.0}), 4 * kCapPerVertex + 8);
+  CHECK_EQ(steiner_cap(m, {0.25, true, 0.0}), 4 * kCapPerVertex + 16);
+}
