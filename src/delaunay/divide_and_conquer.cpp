@@ -401,20 +401,24 @@ std::vector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key) 
   return items;
 }
 
+// Runs body(from, to) over [0, n), split in two halves on two threads if `parallel`.
+template <class Body>
+void split_in_two(std::size_t n, bool parallel, const Body& body) {
+  if (!parallel) return body(std::size_t{0}, n);
+  std::thread first([&] { body(std::size_t{0}, n / 2); });
+  body(n / 2, n);
+  first.join();
+}
+
 // sorted[k] = points[items[k].id], order[k] = items[k].id; the random reads are split over threads.
 void gather(const std::vector<Point>& points, const std::vector<KeyedVertex>& items,
             std::vector<Point>& sorted, std::vector<VertexId>& order, int threads) {
-  const auto copy = [&](std::size_t from, std::size_t to) {
+  split_in_two(items.size(), threads > 1 && items.size() >= kParallelThreshold, [&](std::size_t from, std::size_t to) {
     for (std::size_t k = from; k < to; ++k) {
       sorted[k] = points[items[k].id];
       order[k] = items[k].id;
     }
-  };
-  const std::size_t m = items.size();
-  if (threads < 2 || m < kParallelThreshold) return copy(0, m);
-  std::thread first([&] { copy(0, m / 2); });
-  copy(m / 2, m);
-  first.join();
+  });
 }
 
 // Drops all but the first of each run of equal points and reports them.
@@ -433,17 +437,38 @@ void remove_duplicates(const Mesh& mesh, std::vector<KeyedVertex>& items,
   std::sort(duplicates.begin(), duplicates.end());
 }
 
-// Moves points[k] (k < order.size()) to position order[k], in place; order is consumed.
-void scatter_in_place(std::vector<Point>& points, std::vector<VertexId>& order, std::size_t size) {
-  const std::size_t m = order.size();
-  points.resize(size);
-  order.resize(size, kNone);
-  for (std::size_t k = 0; k < m; ++k) {
-    while (order[k] != kNone && order[k] != k) {
-      const VertexId to = order[k];
-      std::swap(points[k], points[to]);
-      std::swap(order[k], order[to]);
+// Buckets of 2^14 destinations (320 KiB of points and ids) stay in a core's L2 cache.
+constexpr unsigned kBucketShift = 14;
+
+// Moves points[k] to position order[k] for every k < n, in place; order is a permutation of
+// [0, n) and is consumed. Cycles followed across the whole array miss the cache and the TLB at
+// every step, and each step waits for the one before. So a first pass (American flag sort on the
+// destination's bucket) only moves each point into its destination's bucket, writing at one
+// advancing position per bucket; then each bucket goes through a small buffer, from which every
+// point is stored at its place independently of the others.
+void permute_in_place(Point* points, VertexId* order, std::size_t n) {
+  const std::size_t buckets = (n >> kBucketShift) + 1;
+  const auto bucket_end = [&](std::size_t b) { return std::min(n, (b + 1) << kBucketShift); };
+  std::vector<std::size_t> head(buckets);
+  for (std::size_t b = 0; b < buckets; ++b) head[b] = b << kBucketShift;
+  for (std::size_t b = 0; b < buckets; ++b) {
+    for (std::size_t& i = head[b]; i < bucket_end(b);) {
+      const std::size_t d = order[i] >> kBucketShift;
+      if (d == b) {
+        ++i;
+        continue;
+      }
+      while (order[head[d]] >> kBucketShift == d) ++head[d];  // already in its bucket: leave it
+      std::swap(points[i], points[head[d]]);
+      std::swap(order[i], order[head[d]]);
+      ++head[d];
     }
+  }
+  std::vector<Point> buffer(std::min(n, std::size_t{1} << kBucketShift));
+  for (std::size_t b = 0; b < buckets; ++b) {
+    const std::size_t lo = b << kBucketShift, hi = bucket_end(b);
+    std::copy(points + lo, points + hi, buffer.begin());
+    for (std::size_t k = lo; k < hi; ++k) points[order[k]] = buffer[k - lo];
   }
 }
 
@@ -499,9 +524,16 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   builder.build(0, m, 0, threads);
   counters.add(builder.pred.counters);
 
-  for (VertexId& c : mesh.corner)
-    if (c != kGhostVertex) c = order[c];
-  scatter_in_place(sorted, order, total);
+  split_in_two(mesh.corner.size(), threads > 1 && m >= kParallelThreshold, [&](std::size_t from, std::size_t to) {
+    for (std::size_t e = from; e < to; ++e)
+      if (mesh.corner[e] != kGhostVertex) mesh.corner[e] = order[mesh.corner[e]];
+  });
+  // The bystanders' ids complete the permutation: their slots past m are empty and get the
+  // bystanders' coordinates afterwards.
+  sorted.resize(total);
+  order.resize(total);
+  for (std::size_t k = 0; k < bystanders.size(); ++k) order[m + k] = bystanders[k].first;
+  permute_in_place(sorted.data(), order.data(), total);
   for (const auto& [v, p] : bystanders) sorted[v] = p;
   mesh.points = std::move(sorted);
   remove_ghosts(mesh);
