@@ -570,10 +570,12 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   sorted.resize(total);
   order.resize(total);
   for (std::size_t k = 0; k < bystanders.size(); ++k) order[m + k] = bystanders[k].first;
-  permute_in_place(sorted.data(), order.data(), total);
+  // The vertices' order and the triangles' slots are independent: one thread each.
+  split_in_two(2, worth_two(threads, m), [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k) k == 0 ? permute_in_place(sorted.data(), order.data(), total) : remove_ghosts(mesh);
+  });
   for (const auto& [v, p] : bystanders) sorted[v] = p;
   mesh.points = std::move(sorted);
-  remove_ghosts(mesh);
 }
 
 }  // namespace deltri
