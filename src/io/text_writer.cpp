@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "io/shortest_fixed.h"
+
 namespace deltri {
 namespace {
 
@@ -93,6 +95,8 @@ char* format_integer(char* p, long long value) {
 }
 
 char* TextWriter::format_real(char* p, double value) {
+  static_assert(kShortestFixedScratch <= kLongestField - 1);  // room is made for a separator too
+  if (char* end = format_shortest_fixed(p, value)) return end;
   return std::to_chars(p, p + kLongestField, value).ptr;
 }
 
