@@ -118,6 +118,15 @@ char* put_fixed(char* p, u64 n, int fraction_digits) {
 char* format_shortest_fixed(char* p, double value) {
   const double a = std::fabs(value);
   if (!(a >= 0.01 && a < 1000.0)) return nullptr;
+  // Whole numbers (grids) are common and would need many digits dropped one at a time.
+  const auto whole = static_cast<std::uint32_t>(a);
+  if (whole == a) {
+    if (value < 0) *p++ = '-';
+    if (whole >= 100) *p++ = static_cast<char>('0' + whole / 100);
+    if (whole >= 10) *p++ = static_cast<char>('0' + whole / 10 % 10);
+    *p++ = static_cast<char>('0' + whole % 10);
+    return p;
+  }
   const u64 bits = std::bit_cast<u64>(a);
   const u64 fraction = bits & ((u64{1} << 52) - 1);
   const u64 m = fraction | (u64{1} << 52);
