@@ -41,6 +41,18 @@ bool less_on(int axis, const Point& a, const Point& b) {
 
 constexpr std::uint32_t kParallelThreshold = 1u << 15;
 
+// Runs body(from, to) over [0, n), split in two halves on two threads if `parallel`.
+template <class Body>
+void split_in_two(std::size_t n, bool parallel, const Body& body) {
+  if (!parallel) return body(std::size_t{0}, n);
+  std::thread first([&] { body(std::size_t{0}, n / 2); });
+  body(n / 2, n);
+  first.join();
+}
+
+// Splitting work in two pays only when `threads` allows it and there is enough of it.
+bool worth_two(int threads, std::size_t n) { return threads > 1 && n >= kParallelThreshold; }
+
 // Spreads the 32 bits of v over the even bits of a 64-bit word.
 std::uint64_t spread_bits(std::uint32_t v) {
   std::uint64_t x = v;
@@ -86,23 +98,45 @@ class MortonKey {
   double scale_ = 0.0;
 };
 
+// The empty constructor leaves the members uninitialised, so that large arrays of these are not
+// zero-filled by one thread before being overwritten (their pages are then first touched by the
+// threads that fill them).
 struct KeyedVertex {
+  KeyedVertex() {}  // NOLINT: deliberately not "= default", which would zero-fill
+  KeyedVertex(std::uint64_t k, VertexId v) : key(k), id(v) {}
   std::uint64_t key;
   VertexId id;
 };
 
-// LSD radix sort on the 48-bit key, 16 bits at a time, skipping digits all keys share.
-void radix_sort(std::vector<KeyedVertex>& items) {
-  std::vector<KeyedVertex> buffer(items.size());
-  std::vector<std::uint32_t> count(3 * 65536, 0);
-  for (const KeyedVertex& k : items)
-    for (int d = 0; d < 3; ++d) ++count[d * 65536 + ((k.key >> (16 * d)) & 0xFFFF)];
+constexpr std::size_t kDigits = 65536;
+unsigned digit(const KeyedVertex& k, int d) { return static_cast<unsigned>(k.key >> (16 * d)) & 0xFFFF; }
+
+// LSD radix sort on the 48-bit key, 16 bits at a time, skipping digits all keys share. With two
+// threads each pass counts and moves the two halves of the array at once; the first half's keys
+// go before the second's in every bucket, so the sort stays stable and the result is the same.
+void radix_sort(std::vector<KeyedVertex>& items, int threads) {
+  const std::size_t n = items.size();
+  const bool two = worth_two(threads, n);
+  std::vector<KeyedVertex> buffer(n);
+  std::vector<std::uint32_t> count(2 * kDigits);
   for (int d = 0; d < 3; ++d) {
-    std::uint32_t* c = &count[d * 65536];
-    if (std::count(c, c + 65536, 0u) == 65535) continue;  // one bucket: nothing to reorder
+    std::fill(count.begin(), count.end(), 0u);
+    split_in_two(n, two, [&](std::size_t from, std::size_t to) {
+      std::uint32_t* c = &count[from == 0 ? 0 : kDigits];
+      for (std::size_t k = from; k < to; ++k) ++c[digit(items[k], d)];
+    });
     std::uint32_t sum = 0;
-    for (int i = 0; i < 65536; ++i) sum += std::exchange(c[i], sum);
-    for (const KeyedVertex& k : items) buffer[c[(k.key >> (16 * d)) & 0xFFFF]++] = k;
+    bool one_bucket = false;
+    for (std::size_t i = 0; i < kDigits; ++i) {
+      one_bucket = one_bucket || count[i] + count[kDigits + i] == n;
+      sum += std::exchange(count[i], sum);
+      sum += std::exchange(count[kDigits + i], sum);
+    }
+    if (one_bucket) continue;  // nothing to reorder
+    split_in_two(n, two, [&](std::size_t from, std::size_t to) {
+      std::uint32_t* c = &count[from == 0 ? 0 : kDigits];
+      for (std::size_t k = from; k < to; ++k) buffer[c[digit(items[k], d)]++] = items[k];
+    });
     items.swap(buffer);
   }
 }
@@ -383,12 +417,22 @@ bool lexicographic_less(const Point& a, VertexId ia, const Point& b, VertexId ib
 
 // The Input vertices in the order the recursion wants them: along the Morton curve with each group
 // of equal keys in x order, or (key null) in x order. Equal points end up adjacent, lowest id first.
-std::vector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key) {
-  std::vector<KeyedVertex> items;
-  items.reserve(mesh.vertex_count());
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
-    if (mesh.kind[v] == VertexKind::Input) items.push_back({key ? (*key)(mesh.points[v]) : 0, v});
-  if (key) radix_sort(items);
+std::vector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, int threads) {
+  const std::size_t n = mesh.vertex_count();
+  const bool two = worth_two(threads, n);
+  std::size_t first_half = 0, all = 0;  // Input vertices in [0, n/2), in [0, n)
+  for (VertexId v = 0; v < n; ++v) {
+    if (v == n / 2) first_half = all;
+    all += mesh.kind[v] == VertexKind::Input;
+  }
+  if (!two) first_half = 0;
+  std::vector<KeyedVertex> items(all);
+  split_in_two(n, two, [&](std::size_t from, std::size_t to) {
+    std::size_t k = from == 0 ? 0 : first_half;
+    for (std::size_t v = from; v < to; ++v)
+      if (mesh.kind[v] == VertexKind::Input) items[k++] = {key ? (*key)(mesh.points[v]) : 0, static_cast<VertexId>(v)};
+  });
+  if (key) radix_sort(items, threads);
   const auto by_point = [&](const KeyedVertex& a, const KeyedVertex& b) {
     return lexicographic_less(mesh.points[a.id], a.id, mesh.points[b.id], b.id);
   };
@@ -404,17 +448,12 @@ std::vector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key) 
 // sorted[k] = points[items[k].id], order[k] = items[k].id; the random reads are split over threads.
 void gather(const std::vector<Point>& points, const std::vector<KeyedVertex>& items,
             std::vector<Point>& sorted, std::vector<VertexId>& order, int threads) {
-  const auto copy = [&](std::size_t from, std::size_t to) {
+  split_in_two(items.size(), worth_two(threads, items.size()), [&](std::size_t from, std::size_t to) {
     for (std::size_t k = from; k < to; ++k) {
       sorted[k] = points[items[k].id];
       order[k] = items[k].id;
     }
-  };
-  const std::size_t m = items.size();
-  if (threads < 2 || m < kParallelThreshold) return copy(0, m);
-  std::thread first([&] { copy(0, m / 2); });
-  copy(m / 2, m);
-  first.join();
+  });
 }
 
 // Drops all but the first of each run of equal points and reports them.
@@ -433,17 +472,38 @@ void remove_duplicates(const Mesh& mesh, std::vector<KeyedVertex>& items,
   std::sort(duplicates.begin(), duplicates.end());
 }
 
-// Moves points[k] (k < order.size()) to position order[k], in place; order is consumed.
-void scatter_in_place(std::vector<Point>& points, std::vector<VertexId>& order, std::size_t size) {
-  const std::size_t m = order.size();
-  points.resize(size);
-  order.resize(size, kNone);
-  for (std::size_t k = 0; k < m; ++k) {
-    while (order[k] != kNone && order[k] != k) {
-      const VertexId to = order[k];
-      std::swap(points[k], points[to]);
-      std::swap(order[k], order[to]);
+// Buckets of 2^14 destinations (320 KiB of points and ids) stay in a core's L2 cache.
+constexpr unsigned kBucketShift = 14;
+
+// Moves points[k] to position order[k] for every k < n, in place; order is a permutation of
+// [0, n) and is consumed. Cycles followed across the whole array miss the cache and the TLB at
+// every step, and each step waits for the one before. So a first pass (American flag sort on the
+// destination's bucket) only moves each point into its destination's bucket, writing at one
+// advancing position per bucket; then each bucket goes through a small buffer, from which every
+// point is stored at its place independently of the others.
+void permute_in_place(Point* points, VertexId* order, std::size_t n) {
+  const std::size_t buckets = (n >> kBucketShift) + 1;
+  const auto bucket_end = [&](std::size_t b) { return std::min(n, (b + 1) << kBucketShift); };
+  std::vector<std::size_t> head(buckets);
+  for (std::size_t b = 0; b < buckets; ++b) head[b] = b << kBucketShift;
+  for (std::size_t b = 0; b < buckets; ++b) {
+    for (std::size_t& i = head[b]; i < bucket_end(b);) {
+      const std::size_t d = order[i] >> kBucketShift;
+      if (d == b) {
+        ++i;
+        continue;
+      }
+      while (order[head[d]] >> kBucketShift == d) ++head[d];  // already in its bucket: leave it
+      std::swap(points[i], points[head[d]]);
+      std::swap(order[i], order[head[d]]);
+      ++head[d];
     }
+  }
+  std::vector<Point> buffer(std::min(n, std::size_t{1} << kBucketShift));
+  for (std::size_t b = 0; b < buckets; ++b) {
+    const std::size_t lo = b << kBucketShift, hi = bucket_end(b);
+    std::copy(points + lo, points + hi, buffer.begin());
+    for (std::size_t k = lo; k < hi; ++k) points[order[k]] = buffer[k - lo];
   }
 }
 
@@ -469,7 +529,7 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
 
   const MortonKey key(mesh.points, mesh.kind);
   const MortonKey* cut_key = options.alternate_cuts ? &key : nullptr;
-  std::vector<KeyedVertex> items = order_vertices(mesh, cut_key);
+  std::vector<KeyedVertex> items = order_vertices(mesh, cut_key, threads);
   remove_duplicates(mesh, items, duplicates);
   for (const auto& [dup, kept] : duplicates) mesh.kind[dup] = VertexKind::Duplicate;
   const std::uint32_t m = static_cast<std::uint32_t>(items.size());
@@ -493,18 +553,29 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   std::vector<Point>().swap(mesh.points);
 
   const std::size_t slots = 2 * static_cast<std::size_t>(m) - 2;
-  mesh.corner.resize(3 * slots);
-  mesh.link.resize(3 * slots);
+  // Zero-filling the two arrays (and faulting in their pages) is done by a thread each.
+  split_in_two(2, worth_two(threads, m), [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k) (k == 0 ? mesh.corner : mesh.link).resize(3 * slots);
+  });
   Builder builder(sorted.data(), order.data(), mesh.corner.data(), mesh.link.data(), cut_key);
   builder.build(0, m, 0, threads);
   counters.add(builder.pred.counters);
 
-  for (VertexId& c : mesh.corner)
-    if (c != kGhostVertex) c = order[c];
-  scatter_in_place(sorted, order, total);
+  split_in_two(mesh.corner.size(), worth_two(threads, m), [&](std::size_t from, std::size_t to) {
+    for (std::size_t e = from; e < to; ++e)
+      if (mesh.corner[e] != kGhostVertex) mesh.corner[e] = order[mesh.corner[e]];
+  });
+  // The bystanders' ids complete the permutation: their slots past m are empty and get the
+  // bystanders' coordinates afterwards.
+  sorted.resize(total);
+  order.resize(total);
+  for (std::size_t k = 0; k < bystanders.size(); ++k) order[m + k] = bystanders[k].first;
+  // The vertices' order and the triangles' slots are independent: one thread each.
+  split_in_two(2, worth_two(threads, m), [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k) k == 0 ? permute_in_place(sorted.data(), order.data(), total) : remove_ghosts(mesh);
+  });
   for (const auto& [v, p] : bystanders) sorted[v] = p;
   mesh.points = std::move(sorted);
-  remove_ghosts(mesh);
 }
 
 }  // namespace deltri

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "io/shortest_fixed.h"
+
 namespace deltri {
 namespace {
 
@@ -20,16 +22,14 @@ constexpr auto kDigitPairs = [] {
   return table;
 }();
 
-template <class Unsigned>
-int digit_count(Unsigned v) {
+int digit_count(std::uint64_t v) {
   int n = 1;
   for (; v >= 10000; v /= 10000) n += 4;
   return n + (v >= 10) + (v >= 100) + (v >= 1000);
 }
 
-// Fills the digits from the back. Mesh numbers fit in 32 bits, whose division by 100 is cheaper.
-template <class Unsigned>
-char* format_unsigned(char* p, Unsigned v) {
+// Fills the digits from the back; only for numbers beyond 32 bits, which meshes never number.
+char* format_unsigned(char* p, std::uint64_t v) {
   char* const end = p + digit_count(v);
   char* q = end;
   while (v >= 100) {
@@ -40,6 +40,45 @@ char* format_unsigned(char* p, Unsigned v) {
   if (v >= 10) std::memcpy(q - 2, kDigitPairs.text + 2 * v, 2);
   else q[-1] = static_cast<char>('0' + v);
   return end;
+}
+
+void put_pair(char* p, std::uint32_t v) { std::memcpy(p, kDigitPairs.text + 2 * v, 2); }
+void put_4(char* p, std::uint32_t v) {
+  put_pair(p, v / 100);
+  put_pair(p + 2, v % 100);
+}
+char* put_up_to_4(char* p, std::uint32_t v) {
+  if (v < 10) {
+    *p = static_cast<char>('0' + v);
+    return p + 1;
+  }
+  if (v < 100) {
+    put_pair(p, v);
+    return p + 2;
+  }
+  if (v < 1000) {
+    *p = static_cast<char>('0' + v / 100);
+    put_pair(p + 1, v % 100);
+    return p + 3;
+  }
+  put_4(p, v);
+  return p + 4;
+}
+
+// Mesh numbers: split into groups of four digits first, so that the pairs within a group do not
+// wait for each other's divisions as they do when one number is divided by 100 again and again.
+char* format_unsigned(char* p, std::uint32_t v) {
+  if (v < 10000) return put_up_to_4(p, v);
+  if (v < 100000000) {
+    p = put_up_to_4(p, v / 10000);
+    put_4(p, v % 10000);
+    return p + 4;
+  }
+  p = put_up_to_4(p, v / 100000000);
+  const std::uint32_t rest = v % 100000000;
+  put_4(p, rest / 10000);
+  put_4(p + 4, rest % 10000);
+  return p + 8;
 }
 
 }  // namespace
@@ -56,6 +95,8 @@ char* format_integer(char* p, long long value) {
 }
 
 char* TextWriter::format_real(char* p, double value) {
+  static_assert(kShortestFixedScratch <= kLongestField - 1);  // room is made for a separator too
+  if (char* end = format_shortest_fixed(p, value)) return end;
   return std::to_chars(p, p + kLongestField, value).ptr;
 }
 
