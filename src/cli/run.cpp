@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,18 @@ class StageTimer {
   RunReport& report_;
   std::chrono::steady_clock::time_point last_;
 };
+
+// Debug builds check the mesh after every stage, so that a fault is caught in the stage that made
+// it rather than at the end (or never, without -C). A fault there is a bug, not bad input.
+void check_stage([[maybe_unused]] const Mesh& mesh, [[maybe_unused]] const char* stage,
+                 [[maybe_unused]] bool conforming = false) {
+#ifndef NDEBUG
+  CheckOptions opt;
+  opt.conforming = conforming;
+  const CheckReport report = check_mesh(mesh, opt);
+  if (!report.ok()) throw std::logic_error(std::string("inconsistent mesh after ") + stage + ": " + report.summary());
+#endif
+}
 
 struct InputFiles {
   std::string base;       // name without extension, for output names
@@ -188,12 +201,15 @@ int run(const Switches& sw) {
   report.duplicates = dt.duplicates.size();
   report.counters.add(dt.counters);
   timer.stage("Delaunay");
+  check_stage(mesh, "Delaunay");
 
   if (in.is_poly) {
     constrain(mesh, pslg, dt, sw, report);
     timer.stage("segments and holes");
+    check_stage(mesh, "segments and holes");
   } else if (sw.convex_hull) {
     enclose_convex_hull(mesh);
+    check_stage(mesh, "convex hull");
   }
   if (refinement_wanted(sw)) {
     if (!in.is_poly && !sw.convex_hull) enclose_convex_hull(mesh);  // a point set is bounded by its hull
@@ -202,6 +218,7 @@ int run(const Switches& sw) {
     report.counters.add(pred.counters);
     mesh.compact_triangles();
     timer.stage("refinement");
+    check_stage(mesh, "refinement", sw.conforming_delaunay);
   }
   // Once, at the end: every marker follows from input markers, subsegments and the boundary.
   assign_boundary_markers(mesh, pslg.has_markers);
