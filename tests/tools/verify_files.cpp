@@ -21,6 +21,7 @@ class Lines {
     std::stringstream ss;
     ss << file.rdbuf();
     text_ = ss.str();
+    if (text_.starts_with("\xEF\xBB\xBF")) text_.erase(0, 3);  // a UTF-8 byte order mark
   }
   bool opened() const { return ok_; }
 
