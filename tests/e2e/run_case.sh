@@ -16,11 +16,17 @@
 #   --verify ARGS       extra arguments for deltri_mesh_verify (e.g. "--expect-triangles 0")
 #   --no-verify         do not run deltri_mesh_verify (e.g. with -N or -E)
 #   --files "A B"       the output files that must exist (e.g. "x.1.ele x.1.poly"), and no others
+#   --prior NAME        before the run, NAME holds a previous run's output; a failing run must
+#                       leave it byte for byte as it was (may repeat)
+#   --in-the-way NAME   before the run, a directory stands where the output NAME goes
+#   --fsize BLOCKS      run deltri under `ulimit -f BLOCKS` with SIGXFSZ ignored: writes past the
+#                       limit fail as on a full disk
+#   --skip-as-root      exit 77 (CTest: skipped) when run as root, for permission cases
 set -u
 deltri=$1 verify=$2 input=$3 switches=$4
 [ "$switches" = none ] && switches=
 shift 4
-expect_exit=0 error_text= verify_args= run_verify=1 files= no_warning=0
+expect_exit=0 error_text= verify_args= run_verify=1 files= no_warning=0 priors= in_the_way= fsize=
 warnings_file=$(mktemp) || exit 1
 while [ $# -gt 0 ]; do
   case $1 in
@@ -31,13 +37,17 @@ while [ $# -gt 0 ]; do
     --verify) verify_args=$2; shift ;;
     --no-verify) run_verify=0 ;;
     --files) files=$2; shift ;;
+    --prior) priors="$priors $2"; shift ;;
+    --in-the-way) in_the_way="$in_the_way $2"; shift ;;
+    --fsize) fsize=$2; shift ;;
+    --skip-as-root) [ "$(id -u)" = 0 ] && { echo "skipped: permissions do not bind root"; exit 77; } ;;
     *) echo "run_case.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift
 done
 
 work=$(mktemp -d) || exit 1
-trap 'rm -rf "$work" "$warnings_file"' EXIT
+trap 'chmod -R u+w "$work"; rm -rf "$work" "$warnings_file"' EXIT
 failed=0
 fail() { echo "FAIL: $*"; failed=1; }
 
@@ -56,6 +66,15 @@ gen_input() {  # gen_input NAME.EXT DIR
     garbage.node) printf '\177ELF\002\001\001\000\000\000\377\376\000\n\003\000>\000' >"$2/$1" ;;
     empty.node) : >"$2/$1" ;;
     dir.node) mkdir "$2/$1" ;;
+    missing.*) ;;  # no file at all
+    readonly_dir.node) printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n' >"$2/$1"; chmod 555 "$2" ;;
+    unreadable.node) printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n' >"$2/$1"; chmod 000 "$2/$1" ;;
+    crlf.node) printf '# Windows line ends\r\n3 2 0 0\r\n1 0 0\r\n2 1 0\r\n3 0 1\r\n' >"$2/$1" ;;
+    crlf.poly) printf '4 2 0 1\r\n1 0 0 1\r\n2 1 0 1\r\n3 1 1 1\r\n4 0 1 1\r\n4 1\r\n1 1 2 5\r\n2 2 3 5\r\n3 3 4 5\r\n4 4 1 5\r\n0\r\n' >"$2/$1" ;;
+    cr_only.node) printf '3 2 0 0\r1 0 0\r2 1 0\r3 0 1\r' >"$2/$1" ;;
+    bom.node) printf '\357\273\277# UTF-8 byte order mark\n3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n' >"$2/$1" ;;
+    nul.node) printf '3 2 0 0\n1 0 0\n2 1 \0000\n3 0 1\n' >"$2/$1" ;;
+    no_newline.node) printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1' >"$2/$1" ;;
     *) echo "run_case.sh: unknown generated input $1" >&2; exit 2 ;;
   esac
 }
@@ -66,7 +85,16 @@ run() {  # run DIR: copies the input into DIR and runs deltri there
     gen:*) name=${input#gen:}; gen_input "$name" "$1" ;;
     *) name=$(basename "$input"); cp "$input" "$1/$name" ;;
   esac
-  (cd "$1" && "$deltri" $switches "$name" >../stdout.$2 2>../stderr.$2)
+  for p in $priors; do printf 'output of a previous run\n' >"$1/$p"; done
+  for d in $in_the_way; do mkdir "$1/$d"; done
+  if [ -n "$fsize" ]; then
+    # The limit binds deltri alone: its messages go through a pipe to a writer outside it.
+    (cd "$1" && trap '' XFSZ && { (ulimit -f "$fsize" && exec "$deltri" $switches "$name" 2>&1 >../stdout.$2)
+      echo $? >"$work/status.$2"; } | cat >../stderr.$2)
+    return
+  else
+    (cd "$1" && "$deltri" $switches "$name" >../stdout.$2 2>../stderr.$2)
+  fi
   echo $? >"$work/status.$2"
 }
 
@@ -95,8 +123,13 @@ done <"$warnings_file"
 if [ $no_warning = 1 ] && [ -s "$work/stderr.1" ]; then fail "unexpected messages on stderr"; fi
 
 outputs=$(grep -v -x -F -- "$name" "$work/list.a")
+for p in $priors $in_the_way; do outputs=$(printf '%s\n' "$outputs" | grep -v -x -F -- "$p"); done
 if [ "$expect_exit" != 0 ]; then
   [ -z "$outputs" ] || fail "a failing run left output files: $outputs"
+  for p in $priors; do
+    printf 'output of a previous run\n' | cmp -s - "$work/a/$p" || fail "the failing run changed the earlier output $p"
+  done
+  for d in $in_the_way; do [ -d "$work/a/$d" ] || fail "the failing run replaced the directory $d"; done
   first=$(head -n 1 "$work/stderr.1")
   if [ -n "$error_text" ]; then
     case $first in "$error_text"*) ;; *) fail "stderr's first line does not start with '$error_text'" ;; esac
