@@ -1,6 +1,8 @@
 #include "cli/run.h"
 
 #include <chrono>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -39,6 +41,29 @@ class StageTimer {
   RunReport& report_;
   std::chrono::steady_clock::time_point last_;
 };
+
+// The exact predicates work on products of up to four coordinate differences in doubles: past
+// about 2^255 those overflow and below about 2^-255 they underflow, and then segment insertion
+// can loop forever or drop segments (found by scaling guitar.poly by 2^254 and 2^-300). A margin
+// of 2^50 on either side leaves room for the refinement's constructions.
+constexpr double kLargestCoordinate = 0x1p200;   // about 1.6e60
+constexpr double kSmallestMagnitude = 0x1p-200;  // about 6.2e-61
+
+void check_coordinate_range(const Pslg& pslg, const std::string& path) {
+  double largest = 0.0;
+  const auto look = [&largest](const Point& p) { largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)}); };
+  for (const Point& p : pslg.points) look(p);
+  for (const Point& p : pslg.holes) look(p);
+  for (const Pslg::Region& r : pslg.regions) look(r.at);
+  if (largest > kLargestCoordinate) {
+    char magnitude[32];
+    std::snprintf(magnitude, sizeof magnitude, "%g", largest);
+    throw InputError(path, 0, std::string("a coordinate of magnitude ") + magnitude +
+                                  " is beyond the supported range of +-2^200 (about 1.6e60); scale the input down");
+  }
+  if (largest > 0.0 && largest < kSmallestMagnitude)
+    throw InputError(path, 0, "every coordinate is below 2^-200 (about 6.2e-61) in magnitude; scale the input up");
+}
 
 // Debug builds check the mesh after every stage, so that a fault is caught in the stage that made
 // it rather than at the end (or never, without -C). A fault there is a bug, not bad input.
@@ -192,6 +217,7 @@ int run(const Switches& sw) {
   const InputFiles in = input_files(sw);
   report.input_name = in.path;
   Pslg pslg = in.is_poly ? read_poly_file(in.path) : read_node_file(in.path);
+  check_coordinate_range(pslg, pslg.source_name.empty() ? in.path : pslg.source_name);
   report.pslg = &pslg;
   report.input_vertices = pslg.points.size();
   timer.stage("read");
