@@ -14,14 +14,14 @@ namespace {
 
 struct Options {
   std::string input, mesh;
-  bool convex_hull = false, no_holes = false;
+  bool convex_hull = false, no_holes = false, refined = false;
   long expect_triangles = -1;
 };
 
 int usage() {
   std::fprintf(stderr,
                "usage: deltri_mesh_verify --input IN.poly|IN.node --mesh OUTBASE [--convex-hull]\n"
-               "                          [--expect-triangles N] [--no-holes]\n");
+               "                          [--expect-triangles N] [--no-holes] [--refined]\n");
   return 2;
 }
 
@@ -34,6 +34,7 @@ bool parse(int argc, char** argv, Options& o) {
     else if (arg == "--expect-triangles" && has_value) o.expect_triangles = std::atol(argv[++i]);
     else if (arg == "--convex-hull") o.convex_hull = true;
     else if (arg == "--no-holes") o.no_holes = true;
+    else if (arg == "--refined") o.refined = true;
     else return false;
   }
   return !o.input.empty() && !o.mesh.empty();
@@ -58,6 +59,7 @@ int main(int argc, char** argv) {
   mv::Context c(in, out);
   c.convex_hull = opt.convex_hull || !in.is_poly;
   c.no_holes = opt.no_holes;
+  c.refined = opt.refined;
   if (opt.expect_triangles >= 0 && static_cast<long>(out.triangles.size()) != opt.expect_triangles)
     f.add("count", std::to_string(out.triangles.size()) + " triangles, expected " + std::to_string(opt.expect_triangles));
   mv::check_triangles_ccw(c, f);
