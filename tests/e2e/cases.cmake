@@ -135,3 +135,13 @@ e2e_case(output.directory_in_the_way ${G} -p --in-the-way guitar.1.ele --prior g
 e2e_case(output.unwritable_directory gen:readonly_dir.node none --skip-as-root --exit 4 --error "readonly_dir.1.")
 # A failed run leaves a previous run's outputs as they were.
 e2e_case(error.keeps_previous_output ${E2E_INPUTS}/nan.node none --exit 1 --prior nan.1.node --prior nan.1.ele)
+
+# ---- extreme coordinates: far from the origin, tiny, and sizes from 1e-6 to 1e6 ----
+foreach(name star_1e9 star_1e-9 span)
+  e2e_case(extreme.${name}.p gen:${name}.poly -p)
+  e2e_case(extreme.${name}.pq30 gen:${name}.poly -pq30 --verify --refined)
+endforeach()
+e2e_case(extreme.offset1e9.q30 gen:offset.node -q30 --no-verify)
+# Beyond the supported range (+-2^200, and every coordinate below 2^-200): a clean error.
+e2e_case(error.coordinate_too_large ${I}/too_large.poly -p --exit 1 --error "too_large.poly: a coordinate of magnitude")
+e2e_case(error.coordinates_too_small ${I}/too_small.node none --exit 1 --error "too_small.node: every coordinate")

@@ -52,6 +52,17 @@ failed=0
 fail() { echo "FAIL: $*"; failed=1; }
 
 # Generated inputs (POSIX sh + awk only).
+star() {  # star CENTRE RADIUS: 40-gon with a 12-gon hole and 60 free vertices, radii jittered
+  awk -v c="$1" -v s="$2" 'BEGIN { srand(11); pi = atan2(0, -1); print 112, 2, 0, 0
+    for (k = 0; k < 40; k++) pt(0.85 + 0.15 * rand(), 2 * pi * (k + 0.3 * rand()) / 40)
+    for (k = 0; k < 12; k++) pt(0.15 + 0.05 * rand(), 2 * pi * (k + 0.3 * rand()) / 12)
+    for (k = 0; k < 60; k++) pt(0.3 + 0.5 * rand(), 2 * pi * rand())
+    print 52, 0
+    for (k = 0; k < 40; k++) print k + 1, k + 1, (k + 1) % 40 + 1
+    for (k = 0; k < 12; k++) print 41 + k, 41 + k, 40 + (k + 1) % 12 + 1
+    print 1; printf "1 %.17g %.17g\n", c, c }
+  function pt(r, a) { printf "%d %.17g %.17g\n", ++n, c + s * r * cos(a), c + s * r * sin(a) }'
+}
 gen_input() {  # gen_input NAME.EXT DIR
   case $1 in
     grid30.node)  # 30 x 30 unit grid: every quad is cocircular
@@ -63,6 +74,12 @@ gen_input() {  # gen_input NAME.EXT DIR
           printf "%d %.10f %.10f\n", n, 1000000000 + x / 1024, 1000000000 + y / 1024 } }' >"$2/$1" ;;
     collinear.node)  # 12 points on y = 2x + 1
       awk 'BEGIN { print 12, 2, 0, 0; for (i = 1; i <= 12; i++) print i, i * 0.5, 2 * i * 0.5 + 1 }' >"$2/$1" ;;
+    star_1e9.poly) star 1000000000 100 >"$2/$1" ;;  # a star polygon and hole of radius 100 at (1e9, 1e9)
+    star_1e-9.poly) star 0 1e-9 >"$2/$1" ;;          # the same of radius 1e-9 at the origin
+    span.poly)  # a 2e6 square around a 2e-6 square hole, free vertices at 1e-3 and 1: sizes 1e-6 to 1e6
+      printf '%s\n' '10 2 0 0' '1 -1e6 -1e6' '2 1e6 -1e6' '3 1e6 1e6' '4 -1e6 1e6' '5 -1e-6 -1e-6' '6 1e-6 -1e-6' \
+        '7 1e-6 1e-6' '8 -1e-6 1e-6' '9 1e-3 0' '10 1 1' '8 0' '1 1 2' '2 2 3' '3 3 4' '4 4 1' '5 5 6' '6 6 7' \
+        '7 7 8' '8 8 5' '1' '1 0 0' >"$2/$1" ;;
     garbage.node) printf '\177ELF\002\001\001\000\000\000\377\376\000\n\003\000>\000' >"$2/$1" ;;
     empty.node) : >"$2/$1" ;;
     dir.node) mkdir "$2/$1" ;;
