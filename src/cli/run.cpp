@@ -42,17 +42,22 @@ class StageTimer {
   std::chrono::steady_clock::time_point last_;
 };
 
-// The exact predicates work on products of up to four coordinate differences in doubles: past
-// about 2^255 those overflow and below about 2^-255 they underflow, and then segment insertion
-// can loop forever or drop segments (found by scaling guitar.poly by 2^254 and 2^-300). A margin
-// of 2^50 on either side leaves room for the refinement's constructions.
+// The exact predicates work on products of up to four coordinate differences in doubles, with
+// error terms about 2^-106 below them: past about 2^255 the products overflow, and their error
+// terms underflow once differences fall below about 2^-230; then segment insertion can loop
+// forever or drop segments (found by scaling guitar.poly by 2^254 and 2^-300). Distinct vertices
+// of magnitude M differ by at least M 2^-52, so M >= 2^-150 keeps their differences above 2^-202.
+// (Vertices much closer than that near the origin, e.g. 1e-300 and 2e-300 in a unit domain, are
+// not refused and may still underflow: docs/reliability.md.)
 constexpr double kLargestCoordinate = 0x1p200;   // about 1.6e60
-constexpr double kSmallestMagnitude = 0x1p-200;  // about 6.2e-61
+constexpr double kSmallestMagnitude = 0x1p-150;  // about 7.0e-46
 
 void check_coordinate_range(const Pslg& pslg, const std::string& path) {
   double largest = 0.0;
   const auto look = [&largest](const Point& p) { largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)}); };
   for (const Point& p : pslg.points) look(p);
+  // Only the vertices are ever differenced with each other: a tiny input is tiny in them.
+  const double largest_vertex = largest;
   for (const Point& p : pslg.holes) look(p);
   for (const Pslg::Region& r : pslg.regions) look(r.at);
   if (largest > kLargestCoordinate) {
@@ -61,8 +66,8 @@ void check_coordinate_range(const Pslg& pslg, const std::string& path) {
     throw InputError(path, 0, std::string("a coordinate of magnitude ") + magnitude +
                                   " is beyond the supported range of +-2^200 (about 1.6e60); scale the input down");
   }
-  if (largest > 0.0 && largest < kSmallestMagnitude)
-    throw InputError(path, 0, "every coordinate is below 2^-200 (about 6.2e-61) in magnitude; scale the input up");
+  if (largest_vertex > 0.0 && largest_vertex < kSmallestMagnitude)
+    throw InputError(path, 0, "every vertex coordinate is below 2^-150 (about 7.0e-46) in magnitude; scale the input up");
 }
 
 // Debug builds check the mesh after every stage, so that a fault is caught in the stage that made

@@ -142,6 +142,6 @@ foreach(name star_1e9 star_1e-9 span)
   e2e_case(extreme.${name}.pq30 gen:${name}.poly -pq30 --verify --refined)
 endforeach()
 e2e_case(extreme.offset1e9.q30 gen:offset.node -q30 --no-verify)
-# Beyond the supported range (+-2^200, and every coordinate below 2^-200): a clean error.
+# Beyond the supported range (+-2^200, and every vertex coordinate below 2^-150): a clean error.
 e2e_case(error.coordinate_too_large ${I}/too_large.poly -p --exit 1 --error "too_large.poly: a coordinate of magnitude")
-e2e_case(error.coordinates_too_small ${I}/too_small.node none --exit 1 --error "too_small.node: every coordinate")
+e2e_case(error.coordinates_too_small ${I}/too_small.node none --exit 1 --error "too_small.node: every vertex coordinate")
