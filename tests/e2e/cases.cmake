@@ -145,3 +145,4 @@ e2e_case(extreme.offset1e9.q30 gen:offset.node -q30 --no-verify)
 # Beyond the supported range (+-2^200, and every vertex coordinate below 2^-150): a clean error.
 e2e_case(error.coordinate_too_large ${I}/too_large.poly -p --exit 1 --error "too_large.poly: a coordinate of magnitude")
 e2e_case(error.coordinates_too_small ${I}/too_small.node none --exit 1 --error "too_small.node: every vertex coordinate")
+e2e_case(accept.marker_count2 ${I}/marker_count2.poly -pen --verify "--expect-triangles 2")
