@@ -21,21 +21,23 @@ find "$corpus" -name '*.poly' -o -name '*.node' | LC_ALL=C sort | while read -r 
     # A .poly with zero vertices reads the .node beside it.
     cp "$f" "$work/run/" && { [ -f "${f%.*}.node" ] && cp "${f%.*}.node" "$work/run/" 2>/dev/null; true; }
     name=$(basename "$f") base=${name%.*}
+    # Output names count the iteration on: box.1.poly gives box.2.*, box.poly box.1.*.
+    out=$(echo "$base" | awk -F. 'NF > 1 && $NF ~ /^[0-9]+$/ { $NF = $NF + 1; OFS = "."; $1 = $1; print; next } { print $0 ".1" }')
     start=$(date +%s.%N)
     (cd "$work/run" && timeout "$limit" "$deltri" "$sw"CQ "$name" >/dev/null 2>"$work/err")
     status=$?
     seconds=$(echo "$start $(date +%s.%N)" | awk '{ printf "%.2f", $2 - $1 }')
     [ $status = 124 ] && status="TIMEOUT ($limit s)"
     tri=- v=- m=-
-    if [ -f "$work/run/$base.1.ele" ]; then
-      tri=$(awk '!/^#/ && NF { print $1; exit }' "$work/run/$base.1.ele")
+    if [ -f "$work/run/$out.ele" ]; then
+      tri=$(awk '!/^#/ && NF { print $1; exit }' "$work/run/$out.ele")
       if [ "$sw" = -p ]; then
         case $name in *.node) vopt=--convex-hull ;; *) vopt= ;; esac
-        (cd "$work/run" && "$verify" --input "$name" --mesh "$base.1" $vopt >/dev/null 2>&1) && v=ok || v=FAIL
+        (cd "$work/run" && "$verify" --input "$name" --mesh "$out" $vopt >/dev/null 2>&1) && v=ok || v=FAIL
       fi
       if [ -n "$meshcheck" ] && [ "$tri" -le 60000 ]; then
         case $name in *.node) mopt=--convex-hull ;; *) mopt= ;; esac
-        (cd "$work/run" && timeout 300 python3 "$meshcheck" --input "$name" --mesh "$base.1" $mopt >"$work/mc" 2>&1)
+        (cd "$work/run" && timeout 300 python3 "$meshcheck" --input "$name" --mesh "$out" $mopt >"$work/mc" 2>&1)
         case $? in 0) m=ok ;; 124) m=timeout ;; *) m="FAIL: $(grep -m1 -i fail "$work/mc" | cut -c1-80)" ;; esac
       fi
     fi
