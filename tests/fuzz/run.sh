@@ -1,12 +1,12 @@
 #!/bin/sh
 # make fuzz: runs one libFuzzer target for a given time (one process: the machine is shared).
-#   run.sh BUILD_DIR TARGET SECONDS
+#   run.sh BUILD_DIR TARGET SECONDS [LIBFUZZER_FLAGS]
 # TARGET is fuzz_readers or fuzz_pipeline. The corpus grows in BUILD_DIR/corpus-TARGET and is
 # reused by later runs; crash, timeout and leak inputs land in BUILD_DIR/findings-TARGET/.
 # The seeds are the inputs in data/ and tests/e2e/inputs, each prefixed with the selector bytes
 # the target reads first (see the targets' comments).
 set -eu
-build=$1 target=$2 seconds=$3
+build=$1 target=$2 seconds=$3 extra=${4:-}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 seeds=$build/seeds-$target corpus=$build/corpus-$target findings=$build/findings-$target
 mkdir -p "$seeds" "$corpus" "$findings"
@@ -31,4 +31,4 @@ done
 
 cd "$findings"
 exec "$build/tests/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
-  -close_fd_mask=3 -print_final_stats=1 -artifact_prefix="$findings/" "$corpus" "$seeds"
+  -close_fd_mask=3 -print_final_stats=1 -artifact_prefix="$findings/" $extra "$corpus" "$seeds"
