@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <system_error>
 
 #include "cli/run.h"
 #include "cli/switches.h"
@@ -31,6 +32,14 @@ int main(int argc, char** argv) {
     return kExitOutput;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "deltri: out of memory\n");
+    return kExitInternal;
+  } catch (const std::system_error& e) {
+    // Under a memory limit a worker thread's stack may be what cannot be had (EAGAIN).
+    if (e.code() == std::errc::resource_unavailable_try_again) {
+      std::fprintf(stderr, "deltri: out of memory (cannot start a thread)\n");
+      return kExitInternal;
+    }
+    std::fprintf(stderr, "deltri: internal error: %s\n", e.what());
     return kExitInternal;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "deltri: internal error: %s\n", e.what());

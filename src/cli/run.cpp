@@ -1,7 +1,10 @@
 #include "cli/run.h"
 
 #include <chrono>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -48,6 +51,46 @@ class StageTimer {
   RunReport& report_;
   std::chrono::steady_clock::time_point last_;
 };
+
+// The exact predicates work on products of up to four coordinate differences in doubles, with
+// error terms about 2^-106 below them: past about 2^255 the products overflow, and their error
+// terms underflow once differences fall below about 2^-230; then segment insertion can loop
+// forever or drop segments (found by scaling guitar.poly by 2^254 and 2^-300). Distinct vertices
+// of magnitude M differ by at least M 2^-52, so M >= 2^-150 keeps their differences above 2^-202.
+// (Vertices much closer than that near the origin, e.g. 1e-300 and 2e-300 in a unit domain, are
+// not refused and may still underflow: docs/reliability.md.)
+constexpr double kLargestCoordinate = 0x1p200;   // about 1.6e60
+constexpr double kSmallestMagnitude = 0x1p-150;  // about 7.0e-46
+
+void check_coordinate_range(const Pslg& pslg, const std::string& path) {
+  double largest = 0.0;
+  const auto look = [&largest](const Point& p) { largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)}); };
+  for (const Point& p : pslg.points) look(p);
+  // Only the vertices are ever differenced with each other: a tiny input is tiny in them.
+  const double largest_vertex = largest;
+  for (const Point& p : pslg.holes) look(p);
+  for (const Pslg::Region& r : pslg.regions) look(r.at);
+  if (largest > kLargestCoordinate) {
+    char magnitude[32];
+    std::snprintf(magnitude, sizeof magnitude, "%g", largest);
+    throw InputError(path, 0, std::string("a coordinate of magnitude ") + magnitude +
+                                  " is beyond the supported range of +-2^200 (about 1.6e60); scale the input down");
+  }
+  if (largest_vertex > 0.0 && largest_vertex < kSmallestMagnitude)
+    throw InputError(path, 0, "every vertex coordinate is below 2^-150 (about 7.0e-46) in magnitude; scale the input up");
+}
+
+// Debug builds check the mesh after every stage, so that a fault is caught in the stage that made
+// it rather than at the end (or never, without -C). A fault there is a bug, not bad input.
+void check_stage([[maybe_unused]] const Mesh& mesh, [[maybe_unused]] const char* stage,
+                 [[maybe_unused]] bool conforming = false) {
+#ifndef NDEBUG
+  CheckOptions opt;
+  opt.conforming = conforming;
+  const CheckReport report = check_mesh(mesh, opt);
+  if (!report.ok()) throw std::logic_error(std::string("inconsistent mesh after ") + stage + ": " + report.summary());
+#endif
+}
 
 struct InputFiles {
   std::string base;       // name without extension, for output names
@@ -255,6 +298,7 @@ int run(const Switches& sw) {
   const InputFiles in = input_files(sw);
   report.input_name = in.path == "-" ? kStandardInputName : in.path;
   Pslg pslg = in.is_poly ? read_poly_file(in.path) : read_node_file(in.path);
+  check_coordinate_range(pslg, pslg.source_name.empty() ? in.path : pslg.source_name);
   report.pslg = &pslg;
   report.input_vertices = pslg.points.size();
   timer.stage("read");
@@ -263,16 +307,20 @@ int run(const Switches& sw) {
   if (in.refine) {
     rebuild(mesh, pslg, in, report);
     timer.stage("mesh reconstruction");
+    check_stage(mesh, "mesh reconstruction");
   } else {
     const DelaunayReport dt = delaunay_triangulate(mesh, sw.algorithm, sw.threads);
     report.duplicates = dt.duplicates.size();
     report.counters.add(dt.counters);
     timer.stage("Delaunay");
+    check_stage(mesh, "Delaunay");
     if (in.is_poly) {
       constrain(mesh, pslg, dt, sw, report);
       timer.stage("segments and holes");
+      check_stage(mesh, "segments and holes");
     } else if (sw.convex_hull) {
       enclose_convex_hull(mesh);
+      check_stage(mesh, "convex hull");
     }
   }
   if (refinement_wanted(sw, in)) {
@@ -282,6 +330,7 @@ int run(const Switches& sw) {
     report.counters.add(pred.counters);
     mesh.compact_triangles();
     timer.stage("refinement");
+    check_stage(mesh, "refinement", sw.conforming_delaunay);
   }
   // Once, at the end: every marker follows from input markers, subsegments and the boundary.
   assign_boundary_markers(mesh, pslg.has_markers);

@@ -159,7 +159,8 @@ class Builder {
     TriangleId left, right;
     if (threads > 1 && n >= kParallelThreshold) {
       Builder other(p_, order_, corner_, link_, key_);
-      std::thread worker([&] { left = other.build(lo, half, slot, threads / 2); });
+      // An init-capture: clang before 16 cannot capture a structured binding (the fuzz build).
+      std::thread worker([&, half = half] { left = other.build(lo, half, slot, threads / 2); });
       right = build(lo + half, n - half, right_slot, threads - threads / 2);
       worker.join();
       pred.counters.add(other.pred.counters);

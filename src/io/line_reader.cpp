@@ -48,6 +48,9 @@ LineReader::LineReader(std::string name, FileText text)
     : name_(std::move(name)), text_(std::make_shared<const FileText>(std::move(text))) {
   pos_ = text_->bytes.get();
   end_ = pos_ + text_->size;
+  // Windows editors may start a UTF-8 file with a byte order mark; Triangle's scanner skips it
+  // as it skips any non-numeric text, and a user cannot see it, so it is no error here either.
+  if (end_ - pos_ >= 3 && std::memcmp(pos_, "\xEF\xBB\xBF", 3) == 0) pos_ += 3;
 }
 
 namespace {

@@ -4,7 +4,8 @@
 // Rules: '#' starts a comment anywhere; lines that are blank after removing the comment are
 // skipped; fields are separated by whitespace or commas. Integers are decimal only (Triangle's
 // octal/hex readings of "010"/"0x3" surprise users); reals are decimal with optional exponent and
-// must be finite. A leading '+' is accepted on both. Anything else in a field is an error.
+// must be finite. A leading '+' is accepted on both. Anything else in a field is an error. A UTF-8
+// byte order mark at the very start is skipped.
 #pragma once
 
 #include <cstddef>

@@ -126,8 +126,27 @@ def refinement():
     print()
 
 
+def soak():
+    """The reliability soak (issue 5): 1,000,004 segments (125 x 125 holes) refined with -pq30a to
+    about ten million triangles, once (it is heavy); it must finish and pass -C."""
+    if quick or (only and only not in "soak"):
+        return
+    print("## Soak: 125 x 125 holes (1,000,004 segments), `deltri -pq30a1.2e-7C`, one run\n")
+    print("| segments | triangles | end to end s | peak | bytes/triangle |")
+    print("|---|---|---|---|---|")
+    path = workload("holes", 125, "poly")
+    wall, rss, _, tris = run("-pq30a0.00000012C", path, False)
+    if tris == 0:  # plain runs print only the summary line; count the .ele instead
+        with open(os.path.splitext(path)[0] + ".1.ele") as f:
+            tris = int(f.readline().split()[0])
+    print(f"| 1,000,004 | {tris:,} | {wall:.1f} | {mib(rss)} | {rss / max(tris, 1):.0f} |", flush=True)
+    remove_outputs(path)
+    print()
+
+
 if __name__ == "__main__":
     print(f"deltri benchmarks on {os.cpu_count()} cores; median of {REPEAT} run(s)\n")
     point_sets()
     pslgs()
     refinement()
+    soak()

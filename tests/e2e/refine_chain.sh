@@ -35,7 +35,7 @@ measure() {
 
 rm -f "$name".2.*
 "$deltri" -rpq33Q "$name.1" || fail "-rpq33 failed"
-"$verify" --input "$name.poly" --mesh "$name.2" --rounded-splits || fail "-rpq33: deltri_mesh_verify found faults"
+"$verify" --input "$name.poly" --mesh "$name.2" --refined || fail "-rpq33: deltri_mesh_verify found faults"
 set -- $(measure "$name.2")
 awk -v a="$1" 'BEGIN { exit !(a >= 33) }' || fail "-rpq33: smallest angle $1 < 33"
 echo "-rpq33: smallest angle $1"

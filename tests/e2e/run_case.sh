@@ -21,11 +21,17 @@
 #   --stdin             feed the input on standard input and name it "-" (outputs are stdin.1.*)
 #   --stdout NAME       keep standard output as the file NAME in the run's directory (so it is
 #                       compared between runs and counts as an output file)
+#   --prior NAME        before the run, NAME holds a previous run's output; a failing run must
+#                       leave it byte for byte as it was (may repeat)
+#   --in-the-way NAME   before the run, a directory stands where the output NAME goes
+#   --fsize BLOCKS      run deltri under `ulimit -f BLOCKS` with SIGXFSZ ignored: writes past the
+#                       limit fail as on a full disk
+#   --skip-as-root      exit 77 (CTest: skipped) when run as root, for permission cases
 set -u
 deltri=$1 verify=$2 input=$3 switches=$4
 [ "$switches" = none ] && switches=
 shift 4
-expect_exit=0 error_text= verify_args= run_verify=1 files= no_warning=0 use_stdin=0 stdout_name= varies=
+expect_exit=0 error_text= verify_args= run_verify=1 files= no_warning=0 use_stdin=0 stdout_name= varies= priors= in_the_way= fsize=
 warnings_file=$(mktemp) || exit 1
 while [ $# -gt 0 ]; do
   case $1 in
@@ -39,17 +45,32 @@ while [ $# -gt 0 ]; do
     --stdin) use_stdin=1 ;;
     --varies) varies="$varies $2"; shift ;;
     --stdout) stdout_name=$2; shift ;;
+    --prior) priors="$priors $2"; shift ;;
+    --in-the-way) in_the_way="$in_the_way $2"; shift ;;
+    --fsize) fsize=$2; shift ;;
+    --skip-as-root) [ "$(id -u)" = 0 ] && { echo "skipped: permissions do not bind root"; exit 77; } ;;
     *) echo "run_case.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift
 done
 
 work=$(mktemp -d) || exit 1
-trap 'rm -rf "$work" "$warnings_file"' EXIT
+trap 'chmod -R u+w "$work"; rm -rf "$work" "$warnings_file"' EXIT
 failed=0
 fail() { echo "FAIL: $*"; failed=1; }
 
 # Generated inputs (POSIX sh + awk only).
+star() {  # star CENTRE RADIUS: 40-gon with a 12-gon hole and 60 free vertices, radii jittered
+  awk -v c="$1" -v s="$2" 'BEGIN { srand(11); pi = atan2(0, -1); print 112, 2, 0, 0
+    for (k = 0; k < 40; k++) pt(0.85 + 0.15 * rand(), 2 * pi * (k + 0.3 * rand()) / 40)
+    for (k = 0; k < 12; k++) pt(0.15 + 0.05 * rand(), 2 * pi * (k + 0.3 * rand()) / 12)
+    for (k = 0; k < 60; k++) pt(0.3 + 0.5 * rand(), 2 * pi * rand())
+    print 52, 0
+    for (k = 0; k < 40; k++) print k + 1, k + 1, (k + 1) % 40 + 1
+    for (k = 0; k < 12; k++) print 41 + k, 41 + k, 40 + (k + 1) % 12 + 1
+    print 1; printf "1 %.17g %.17g\n", c, c }
+  function pt(r, a) { printf "%d %.17g %.17g\n", ++n, c + s * r * cos(a), c + s * r * sin(a) }'
+}
 gen_input() {  # gen_input NAME.EXT DIR
   case $1 in
     grid30.node)  # 30 x 30 unit grid: every quad is cocircular
@@ -61,9 +82,24 @@ gen_input() {  # gen_input NAME.EXT DIR
           printf "%d %.10f %.10f\n", n, 1000000000 + x / 1024, 1000000000 + y / 1024 } }' >"$2/$1" ;;
     collinear.node)  # 12 points on y = 2x + 1
       awk 'BEGIN { print 12, 2, 0, 0; for (i = 1; i <= 12; i++) print i, i * 0.5, 2 * i * 0.5 + 1 }' >"$2/$1" ;;
+    star_1e9.poly) star 1000000000 100 >"$2/$1" ;;  # a star polygon and hole of radius 100 at (1e9, 1e9)
+    star_1e-9.poly) star 0 1e-9 >"$2/$1" ;;          # the same of radius 1e-9 at the origin
+    span.poly)  # a 2e6 square around a 2e-6 square hole, free vertices at 1e-3 and 1: sizes 1e-6 to 1e6
+      printf '%s\n' '10 2 0 0' '1 -1e6 -1e6' '2 1e6 -1e6' '3 1e6 1e6' '4 -1e6 1e6' '5 -1e-6 -1e-6' '6 1e-6 -1e-6' \
+        '7 1e-6 1e-6' '8 -1e-6 1e-6' '9 1e-3 0' '10 1 1' '8 0' '1 1 2' '2 2 3' '3 3 4' '4 4 1' '5 5 6' '6 6 7' \
+        '7 7 8' '8 8 5' '1' '1 0 0' >"$2/$1" ;;
     garbage.node) printf '\177ELF\002\001\001\000\000\000\377\376\000\n\003\000>\000' >"$2/$1" ;;
     empty.node) : >"$2/$1" ;;
     dir.node) mkdir "$2/$1" ;;
+    missing.*) ;;  # no file at all
+    readonly_dir.node) printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n' >"$2/$1"; chmod 555 "$2" ;;
+    unreadable.node) printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n' >"$2/$1"; chmod 000 "$2/$1" ;;
+    crlf.node) printf '# Windows line ends\r\n3 2 0 0\r\n1 0 0\r\n2 1 0\r\n3 0 1\r\n' >"$2/$1" ;;
+    crlf.poly) printf '4 2 0 1\r\n1 0 0 1\r\n2 1 0 1\r\n3 1 1 1\r\n4 0 1 1\r\n4 1\r\n1 1 2 5\r\n2 2 3 5\r\n3 3 4 5\r\n4 4 1 5\r\n0\r\n' >"$2/$1" ;;
+    cr_only.node) printf '3 2 0 0\r1 0 0\r2 1 0\r3 0 1\r' >"$2/$1" ;;
+    bom.node) printf '\357\273\277# UTF-8 byte order mark\n3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n' >"$2/$1" ;;
+    nul.node) printf '3 2 0 0\n1 0 0\n2 1 \0000\n3 0 1\n' >"$2/$1" ;;
+    no_newline.node) printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1' >"$2/$1" ;;
     *) echo "run_case.sh: unknown generated input $1" >&2; exit 2 ;;
   esac
 }
@@ -76,7 +112,14 @@ run() {  # run DIR: copies the input into DIR and runs deltri there
   esac
   out=../stdout.$2
   [ -n "$stdout_name" ] && out=$stdout_name
-  if [ $use_stdin = 1 ]; then
+  for p in $priors; do printf 'output of a previous run\n' >"$1/$p"; done
+  for d in $in_the_way; do mkdir "$1/$d"; done
+  if [ -n "$fsize" ]; then
+    # The limit binds deltri alone: its messages go through a pipe to a writer outside it.
+    (cd "$1" && trap '' XFSZ && { (ulimit -f "$fsize" && exec "$deltri" $switches "$name" 2>&1 >"$out")
+      echo $? >"$work/status.$2"; } | cat >../stderr.$2)
+    return
+  elif [ $use_stdin = 1 ]; then
     (cd "$1" && "$deltri" $switches - <"$name" >"$out" 2>../stderr.$2)
   else
     (cd "$1" && "$deltri" $switches "$name" >"$out" 2>../stderr.$2)
@@ -117,8 +160,13 @@ if [ "$expect_exit" != 0 ] && [ -n "$stdout_name" ]; then
   [ -s "$work/a/$stdout_name" ] && fail "a failing run printed to standard output"
   outputs=$(printf '%s\n' "$outputs" | grep -v -x -F -- "$stdout_name")
 fi
+for p in $priors $in_the_way; do outputs=$(printf '%s\n' "$outputs" | grep -v -x -F -- "$p"); done
 if [ "$expect_exit" != 0 ]; then
   [ -z "$outputs" ] || fail "a failing run left output files: $outputs"
+  for p in $priors; do
+    printf 'output of a previous run\n' | cmp -s - "$work/a/$p" || fail "the failing run changed the earlier output $p"
+  done
+  for d in $in_the_way; do [ -d "$work/a/$d" ] || fail "the failing run replaced the directory $d"; done
   first=$(head -n 1 "$work/stderr.1")
   if [ -n "$error_text" ]; then
     case $first in "$error_text"*) ;; *) fail "stderr's first line does not start with '$error_text'" ;; esac

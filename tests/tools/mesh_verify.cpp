@@ -1,5 +1,5 @@
 // deltri_mesh_verify --input IN.poly|IN.node --mesh OUTBASE [--convex-hull] [--expect-triangles N]
-//                    [--no-holes] [--rounded-splits]
+//                    [--no-holes] [--refined]
 // Checks deltri's output OUTBASE.node/.ele (and .edge/.neigh/.poly/.v.node/.v.edge/.off when
 // present) against the input.
 // Prints one line per failed check and exits 1; exits 0 when everything holds, 2 on bad usage or
@@ -15,14 +15,14 @@ namespace {
 
 struct Options {
   std::string input, mesh;
-  bool convex_hull = false, no_holes = false, rounded_splits = false;
+  bool convex_hull = false, no_holes = false, refined = false;
   long expect_triangles = -1;
 };
 
 int usage() {
   std::fprintf(stderr,
                "usage: deltri_mesh_verify --input IN.poly|IN.node --mesh OUTBASE [--convex-hull]\n"
-               "                          [--expect-triangles N] [--no-holes] [--rounded-splits]\n");
+               "                          [--expect-triangles N] [--no-holes] [--refined]\n");
   return 2;
 }
 
@@ -35,7 +35,7 @@ bool parse(int argc, char** argv, Options& o) {
     else if (arg == "--expect-triangles" && has_value) o.expect_triangles = std::atol(argv[++i]);
     else if (arg == "--convex-hull") o.convex_hull = true;
     else if (arg == "--no-holes") o.no_holes = true;
-    else if (arg == "--rounded-splits") o.rounded_splits = true;
+    else if (arg == "--refined") o.refined = true;
     else return false;
   }
   return !o.input.empty() && !o.mesh.empty();
@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   mv::Context c(in, out);
   c.convex_hull = opt.convex_hull || !in.is_poly;
   c.no_holes = opt.no_holes;
-  c.rounded_splits = opt.rounded_splits;
+  c.refined = opt.refined;
   if (opt.expect_triangles >= 0 && static_cast<long>(out.triangles.size()) != opt.expect_triangles)
     f.add("count", std::to_string(out.triangles.size()) + " triangles, expected " + std::to_string(opt.expect_triangles));
   mv::check_triangles_ccw(c, f);

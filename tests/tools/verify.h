@@ -126,7 +126,7 @@ struct Context {
   std::unordered_set<std::uint64_t> segment_edges;  // undirected mesh edges covering input segments
   bool convex_hull = false;  // boundary edges may lie on the convex hull instead of segments
   bool no_holes = false;     // -O: the hole points were ignored
-  bool rounded_splits = false;  // refinement split points (rounded) count as on every segment
+  bool refined = false;      // -q/-a: points split off segments are rounded, as crossings are
 
   Context(const InputPslg& input, const OutputMesh& output);
   Point tri_point(int t, int corner) const { return out.points[out.triangles[t][corner]]; }

@@ -21,6 +21,7 @@ class Lines {
     std::stringstream ss;
     ss << file.rdbuf();
     text_ = ss.str();
+    if (text_.starts_with("\xEF\xBB\xBF")) text_.erase(0, 3);  // a UTF-8 byte order mark
   }
   bool opened() const { return ok_; }
 
@@ -89,7 +90,9 @@ bool read_nodes(Lines& in, std::vector<Point>& points, int& first, bool strict, 
   if (!in.count(t[0], n)) return false;
   if (t.size() > 1 && !in.integer(t[1], dim)) return false;
   if (t.size() > 2 && !in.count(t[2], attrs, 1000)) return false;
-  if (t.size() > 3 && !in.count(t[3], markers, 1)) return false;
+  // Any non-zero marker count means "one marker column", as Triangle reads it.
+  if (t.size() > 3 && !in.count(t[3], markers, 2147483647)) return false;
+  markers = markers != 0;
   if (dim != 2) return in.fail("dimension is not 2");
   if (n == 0 && allow_empty_header) return true;
   const std::size_t fields = 3 + attrs + markers;
@@ -179,7 +182,8 @@ bool read_input(const std::string& path, InputPslg& in, Failures& f) {
   std::vector<std::string> t;
   long count = 0, markers = 0;
   if (!lines.need(t, 1, "segment header") || !lines.count(t[0], count)) return false;
-  if (t.size() > 1 && !lines.count(t[1], markers, 1)) return false;
+  if (t.size() > 1 && !lines.count(t[1], markers, 2147483647)) return false;
+  markers = markers != 0;
   std::vector<EdgeLine> segments;
   if (!read_segments(lines, count, markers, first, in.points.size(), false, segments)) return false;
   for (const EdgeLine& e : segments) in.segments.push_back({e.a, e.b, e.marker.value_or(0)});

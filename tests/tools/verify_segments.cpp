@@ -7,8 +7,8 @@
 // input vertex also counts as "on" the segment when its distance from the segment's line is at most
 // kCrossUlps units in the last place of the largest coordinate involved (computed in long double).
 // A correctly rounded intersection is within 0.71 ulp; 8 leaves room for a few roundings.
-// With --rounded-splits the same tolerance applies to every segment: a mesh refined twice (-r)
-// splits pieces whose ends were already rounded, so its split points are not exactly on the line.
+// With --refined the same tolerance holds for every segment: a refined mesh splits segments at
+// rounded points (and a mesh refined twice, -r, splits pieces whose ends were already rounded).
 // Every other decision (collinear vertices, whether a gap between two vertices on the segment
 // meets a triangle) is exact.
 #include <algorithm>
@@ -133,7 +133,7 @@ void check_segments(Context& c, Failures& f) {
   for (std::size_t s = 0; s < c.in.segments.size(); ++s) {
     const Point a = c.in.points[c.in.segments[s].a], b = c.in.points[c.in.segments[s].b];
     if (a == b) continue;  // zero-length: deltri ignores it
-    SegmentWalk walk(c, input, a, b, crosses[s] || c.rounded_splits);
+    SegmentWalk walk(c, input, a, b, crosses[s] || c.refined);
     if (const auto stuck = walk.walk())
       f.add("segments", "input segment " + std::to_string(s) + " " + fmt(a) + "-" + fmt(b) +
                             " is not a chain of mesh edges after " + fmt(*stuck));

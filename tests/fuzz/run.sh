@@ -1,0 +1,34 @@
+#!/bin/sh
+# make fuzz: runs one libFuzzer target for a given time (one process: the machine is shared).
+#   run.sh BUILD_DIR TARGET SECONDS [LIBFUZZER_FLAGS]
+# TARGET is fuzz_readers or fuzz_pipeline. The corpus grows in BUILD_DIR/corpus-TARGET and is
+# reused by later runs; crash, timeout and leak inputs land in BUILD_DIR/findings-TARGET/.
+# The seeds are the inputs in data/ and tests/e2e/inputs, each prefixed with the selector bytes
+# the target reads first (see the targets' comments).
+set -eu
+build=$1 target=$2 seconds=$3 extra=${4:-}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+seeds=$build/seeds-$target corpus=$build/corpus-$target findings=$build/findings-$target
+mkdir -p "$seeds" "$corpus" "$findings"
+
+byte() { printf "\\$(printf '%03o' "$1")"; }
+seed() {  # seed MODE FILE
+  { byte "$1"; cat "$2"; } >"$seeds/$1-$(basename "$2")"
+}
+inputs="$root/data/*.node $root/data/*.poly $root/tests/e2e/inputs/*"
+printf '4 3 0\n1 1 2 3\n2 2 3 4\n3 1 3 4\n4 1 4 5\n' >"$build/small.ele"
+printf '3\n1 0.5\n2 -1\n3 1e-3\n' >"$build/small.area"
+for f in $inputs "$build/small.ele" "$build/small.area"; do
+  case $target:$f in
+    fuzz_readers:*.node) seed 0 "$f" ;;
+    fuzz_readers:*.poly) seed 1 "$f" ;;
+    fuzz_readers:*.ele) seed 18 "$f"; seed 22 "$f" ;;
+    fuzz_readers:*.area) seed 3 "$f"; seed 27 "$f" ;;
+    fuzz_pipeline:*.poly) for m in 0 2 4 16 18 20; do seed $m "$f"; done ;;
+    fuzz_pipeline:*.node) for m in 1 3 5 17 19 21; do seed $m "$f"; done ;;
+  esac
+done
+
+cd "$findings"
+exec "$build/tests/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
+  -close_fd_mask=3 -print_final_stats=1 -artifact_prefix="$findings/" $extra "$corpus" "$seeds"

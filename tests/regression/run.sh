@@ -1,0 +1,30 @@
+#!/bin/sh
+# One regression input (called by CTest, see CMakeLists.txt in this directory):
+#   run.sh DELTRI VERIFY INPUT
+# The input's first line is "# deltri SWITCHES". deltri must either fail cleanly (exit 1, first
+# line of stderr "NAME:LINE: message" or "NAME: message", no output file) or succeed with -C and
+# give a mesh that passes deltri_mesh_verify. Anything else (a crash, exit 5 or 6, a hang up to
+# CTest's timeout) fails the test.
+set -u
+deltri=$1 verify=$2 input=$3
+name=$(basename "$input") base=${name%.*}
+switches=$(sed -n '1s/^# deltri //p' "$input")
+[ -n "$switches" ] || { echo "FAIL: $name lacks a '# deltri SWITCHES' first line"; exit 1; }
+work=$(mktemp -d) || exit 1
+trap 'rm -rf "$work"' EXIT
+cp "$input" "$work/"
+(cd "$work" && "$deltri" $switches -C "$name" >/dev/null 2>stderr)
+status=$?
+echo "deltri $switches -C $name: exit $status"
+sed 's/^/  stderr: /' "$work/stderr"
+case $status in
+  0)
+    case $switches in *q*|*a*|*u*) refined=--refined ;; *) refined= ;; esac
+    case $name in *.node) hull=--convex-hull ;; *) hull= ;; esac
+    (cd "$work" && "$verify" --input "$name" --mesh "$base.1" $refined $hull) || { echo "FAIL: invalid mesh"; exit 1; } ;;
+  1)
+    [ -z "$(cd "$work" && ls | grep -v -x -F -e "$name" -e stderr)" ] || { echo "FAIL: output files left"; exit 1; }
+    head -n 1 "$work/stderr" | grep -q "^$name:\([0-9][0-9]*:\)\{0,1\} " || { echo "FAIL: not a 'file:line: message' error"; exit 1; } ;;
+  *) echo "FAIL: exit status $status"; exit 1 ;;
+esac
+exit 0
