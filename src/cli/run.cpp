@@ -337,7 +337,10 @@ int run(const Switches& sw) {
 
   if (sw.check) {
     CheckOptions opt;
-    opt.conforming = sw.conforming_delaunay;
+    // Where the termination guard stopped refinement (its warning says so), segments may still be
+    // encroached: the mesh is then held to the constrained Delaunay property only.
+    const bool stopped = report.refine && (report.refine->stopped_by_guard || report.refine->stopped_by_cap);
+    opt.conforming = sw.conforming_delaunay && !stopped;
     // Split points on hull edges are rounded, so a refined hull is convex only up to rounding.
     opt.convex_hull_expected = !in.is_poly && !report.refine && !in.refine;
     report.check = check_mesh(mesh, opt);

@@ -16,9 +16,8 @@ bool must_flip(const Mesh& mesh, Predicates& pred, EdgeRef e) {
                        mesh.point(mesh.apex(twin)), mesh.point(mesh.apex(e))) > 0;
 }
 
-}  // namespace
-
-EdgeRef restore_delaunay_around(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef out) {
+// Lawson's flips on the link of v (the edges opposite it), as after an exact insertion.
+EdgeRef flip_link(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef out) {
   std::vector<EdgeRef> stack;
   for_each_around(mesh, out, [&](EdgeRef e) { stack.push_back(lnext(e)); });
   EdgeRef leaving = out;
@@ -33,6 +32,35 @@ EdgeRef restore_delaunay_around(Mesh& mesh, Predicates& pred, VertexId v, EdgeRe
     stack.push_back(lprev(twin));
   }
   return mesh.org(leaving) == v ? leaving : out;
+}
+
+// A spoke v -> x that is not locally Delaunay, or kNone. Only a rounded v can have one: v then
+// lies a little off the line of the subsegment it split, and the spoke to an apex of that
+// subsegment can see the split's other end inside its circumcircle (a fuzzed thin wedge did).
+EdgeRef bad_spoke(const Mesh& mesh, Predicates& pred, EdgeRef out) {
+  EdgeRef found = kNone;
+  for_each_around(mesh, out, [&](EdgeRef e) {
+    if (found != kNone || !must_flip(mesh, pred, e)) return;
+    const EdgeRef twin = mesh.link[e];
+    const Point& c = mesh.point(mesh.apex(e));
+    const Point& d = mesh.point(mesh.apex(twin));
+    // The flip must leave two counter-clockwise triangles (Lawson's lemma promises it; checked).
+    if (pred.orient2d(c, d, mesh.point(mesh.dest(e))) > 0 && pred.orient2d(d, c, mesh.point(mesh.org(e))) > 0)
+      found = e;
+  });
+  return found;
+}
+
+}  // namespace
+
+EdgeRef restore_delaunay_around(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef out) {
+  EdgeRef leaving = flip_link(mesh, pred, v, out);
+  // Each flip removes a locally non-Delaunay edge, so the loop ends (Lawson).
+  for (EdgeRef spoke = bad_spoke(mesh, pred, leaving); spoke != kNone; spoke = bad_spoke(mesh, pred, leaving)) {
+    const EdgeRef g = flip(mesh, spoke);       // apex -> far apex; its twin's triangle keeps v
+    leaving = flip_link(mesh, pred, v, lprev(mesh.link[g]));
+  }
+  return leaving;
 }
 
 }  // namespace deltri

@@ -58,14 +58,20 @@ class SegmentWalk {
     while (!(pos == b_)) {
       int best = -1;
       long double t_best = 0;
-      if (cur >= 0)
+      // Vertices exactly on the segment first: a rounded vertex of a nearly collinear neighbour
+      // segment (a wedge of 1e-12 rad) can be within the tolerance too, and must not hide the
+      // exact edge.
+      for (bool exact : {true, false}) {
+        if (cur < 0 || best >= 0) break;
         for (int w : c_.topo.adjacent[cur]) {
-          const long double t = param(c_.out.points[w]);
-          if (t > t_pos && t <= t_end_ && (best < 0 || t < t_best) && on_segment(c_.out.points[w])) {
+          const Point& q = c_.out.points[w];
+          const long double t = param(q);
+          if (t > t_pos && t <= t_end_ && (best < 0 || t < t_best) && (exact ? exactly_on(q) : on_segment(q))) {
             best = w;
             t_best = t;
           }
         }
+      }
       if (best >= 0) {
         c_.segment_edges.insert(undirected_key(cur, best));
         cur = best;
