@@ -63,8 +63,7 @@ void write_data_view(TextWriter& out, const std::string& name, const Mesh& mesh,
 void write_msh_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& options) {
   const VertexNumbering number{options.numbering, 1};
   const std::vector<VertexId>* mid = options.midpoints;
-  std::uint32_t node_count = 0;
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v) node_count += number.written(v);
+  const std::uint32_t node_count = number.written_count(mesh.vertex_count());
 
   ElementSet lines, triangles;
   std::vector<double> values;

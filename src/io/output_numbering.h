@@ -16,6 +16,11 @@ struct VertexNumbering {
   int first_index = 1;
 
   bool written(VertexId v) const { return map == nullptr || (*map)[v] != kNone; }
+  std::uint32_t written_count(std::uint32_t vertex_count) const {
+    std::uint32_t n = 0;
+    for (VertexId v = 0; v < vertex_count; ++v) n += written(v);
+    return n;
+  }
   long long operator()(VertexId v) const {
     return static_cast<long long>(map ? (*map)[v] : v) + first_index;
   }

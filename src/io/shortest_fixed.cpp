@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "io/digit_pairs.h"
+
 namespace deltri {
 
 #if defined(__SIZEOF_INT128__)
@@ -57,17 +59,6 @@ u64 nearest(const Scaled& at, u64 q, int j, int s) {
   return q + (up ? 1 : 0);
 }
 
-// "00" "01" ... "99", so that digits are produced two per division.
-constexpr auto kDigitPairs = [] {
-  struct Table {
-    char text[200];
-  } table{};
-  for (int i = 0; i < 100; ++i) {
-    table.text[2 * i] = static_cast<char>('0' + i / 10);
-    table.text[2 * i + 1] = static_cast<char>('0' + i % 10);
-  }
-  return table;
-}();
 
 // Exactly four digits of v < 10^4, and exactly eight of v < 10^8: the pairs are independent of
 // each other, unlike a loop that divides the same number again and again.

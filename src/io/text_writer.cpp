@@ -5,22 +5,12 @@
 #include <cstdint>
 #include <cstring>
 
+#include "io/digit_pairs.h"
 #include "io/shortest_fixed.h"
 
 namespace deltri {
 namespace {
 
-// "00" "01" ... "99": two digits per table lookup halve the number of divisions.
-constexpr auto kDigitPairs = [] {
-  struct Table {
-    char text[200];
-  } table{};
-  for (int i = 0; i < 100; ++i) {
-    table.text[2 * i] = static_cast<char>('0' + i / 10);
-    table.text[2 * i + 1] = static_cast<char>('0' + i % 10);
-  }
-  return table;
-}();
 
 int digit_count(std::uint64_t v) {
   int n = 1;

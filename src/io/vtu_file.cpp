@@ -17,8 +17,7 @@ void open_array(TextWriter& out, const char* type, const std::string& name, int 
 void write_vtu_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& options) {
   const VertexNumbering number{options.numbering, 0};
   const std::vector<VertexId>* mid = options.midpoints;
-  std::uint32_t point_count = 0;
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v) point_count += number.written(v);
+  const std::uint32_t point_count = number.written_count(mesh.vertex_count());
   const std::vector<EdgeRef> lines = options.markers ? boundary_and_segment_edges(mesh) : std::vector<EdgeRef>{};
   std::vector<TriangleId> triangles;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
