@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "mesh/operations.h"
+#include "cdt/edit.h"
 #include "pslg/errors.h"
 
 namespace deltri {
@@ -78,30 +78,10 @@ void protect_boundary(Mesh& mesh) {
   }
 }
 
-std::size_t make_constrained_delaunay(Mesh& mesh, Predicates& pred) {
-  std::vector<EdgeRef> todo;
+void make_constrained_delaunay(Mesh& mesh, Predicates& pred) {
+  CdtEditor editor(mesh, pred);
   for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
-    if (mesh.corner[e] != kNone && mesh.link[e] != kNone && mesh.link[e] > e) todo.push_back(e);
-  std::size_t flips = 0;
-  while (!todo.empty()) {
-    const EdgeRef e = todo.back();
-    todo.pop_back();
-    const EdgeRef twin = mesh.link[e];
-    if (mesh.corner[e] == kNone || twin == kNone) continue;
-    if (mesh.has_subsegments() && mesh.subseg[e] != kNone) continue;
-    const Point& a = mesh.point(mesh.org(e));
-    const Point& b = mesh.point(mesh.dest(e));
-    const Point& c = mesh.point(mesh.apex(e));
-    if (pred.incircle(a, b, c, mesh.point(mesh.apex(twin))) <= 0) continue;
-    // A locally non-Delaunay edge between two counter-clockwise triangles always has a strictly
-    // convex quadrilateral around it, so the flip is legal.
-    const EdgeRef g = flip(mesh, e);
-    ++flips;
-    for (EdgeRef x : {lnext(g), lprev(g)}) todo.push_back(x);
-    const EdgeRef h = mesh.link[g];
-    for (EdgeRef x : {lnext(h), lprev(h)}) todo.push_back(x);
-  }
-  return flips;
+    if (mesh.corner[e] != kNone && mesh.link[e] != kNone && mesh.link[e] > e) editor.legalize_from(e);
 }
 
 }  // namespace deltri

@@ -25,8 +25,8 @@ void rebuild_mesh(Mesh& mesh, Predicates& pred, const EleData& ele, const std::s
 void protect_boundary(Mesh& mesh);
 
 // Lawson's flips over the whole mesh, never across a subsegment, until every edge is locally
-// Delaunay: a mesh written by another program need not be, and refinement assumes it. Returns
-// the number of flips (0 for deltri's own output).
-std::size_t make_constrained_delaunay(Mesh& mesh, Predicates& pred);
+// Delaunay: a mesh written by another program need not be, and refinement assumes it. Needs the
+// subsegment array (protect_boundary makes it).
+void make_constrained_delaunay(Mesh& mesh, Predicates& pred);
 
 }  // namespace deltri

@@ -137,14 +137,7 @@ void write_msh_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& optio
         out.integer(number(v));
         out.end_line();
       }
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
-      if (number.written(v)) {
-        TextWriter::Line line = out.line(3);
-        line.real(mesh.points[v].x);
-        line.next_real(mesh.points[v].y);
-        line.next_integer(0);
-        line.end_line();
-      }
+    write_points_xyz(out, mesh, number);
   }
   out.text("$EndNodes\n$Elements\n");
   const std::size_t element_count = lines.items.size() + triangles.items.size();

@@ -31,4 +31,15 @@ int edge_marker(const Mesh& mesh, EdgeRef e) {
   return mesh.link[e] == kNone ? 1 : 0;
 }
 
+void write_points_xyz(TextWriter& out, const Mesh& mesh, const VertexNumbering& number) {
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    if (number.written(v)) {
+      TextWriter::Line line = out.line(3);
+      line.real(mesh.points[v].x);
+      line.next_real(mesh.points[v].y);
+      line.next_integer(0);
+      line.end_line();
+    }
+}
+
 }  // namespace deltri

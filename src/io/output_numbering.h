@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "io/text_writer.h"
 #include "mesh/mesh.h"
 
 namespace deltri {
@@ -48,6 +49,9 @@ struct ExportOptions {
   const std::vector<VertexId>* midpoints = nullptr;        // -o2: see add_edge_midpoints
   bool markers = true;                                      // false: -B
 };
+
+// The written vertices as "x y 0" lines in id order: the 3-D points of the single-file formats.
+void write_points_xyz(TextWriter& out, const Mesh& mesh, const VertexNumbering& number);
 
 inline std::uint32_t triangle_number(const std::vector<std::uint32_t>& numbers, TriangleId t) {
   return numbers.empty() ? t : numbers[t];

@@ -70,14 +70,7 @@ void write_vtu_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& optio
   }
   out.text("</CellData>\n<Points>\n");
   open_array(out, "Float64", "", 3);
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
-    if (number.written(v)) {
-      TextWriter::Line line = out.line(3);
-      line.real(mesh.points[v].x);
-      line.next_real(mesh.points[v].y);
-      line.next_integer(0);
-      line.end_line();
-    }
+  write_points_xyz(out, mesh, number);
   out.text("</DataArray>\n</Points>\n<Cells>\n");
   open_array(out, "Int64", "connectivity");
   for (EdgeRef e : lines) {
