@@ -6,6 +6,7 @@
 #include "mesh/operations.h"
 #include "refine/concentric_shells.h"
 #include "refine/lawson.h"
+#include "refine/mirrored_split.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"
 
@@ -87,7 +88,9 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
   const VertexId a = mesh_.org(s), b = mesh_.dest(s);
   const Point& pa = mesh_.point(a);
   const Point& pb = mesh_.point(b);
-  const Point p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));  // l.39
+  Point p;  // Fig. 39 l.39, across a thin wedge aligned with the vertex opposite (mirrored_split.h)
+  if (!mirrored_split_point(mesh_, s, piece_of_subsegment_[mesh_.subseg[s]], piece_of_vertex_, p))
+    p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));
   if (p == pa || p == pb) return false;  // out of precision: the subsegment cannot be split
   if (!split_keeps_orientation(s, p)) return false;  // likewise: a neighbour is flush with s
   if (split_insertion_radius(mesh_, pred_, s, p, marks_) < guard_floor_) {
@@ -99,7 +102,7 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
     if (s == kNone || !split_keeps_orientation(s, p)) return false;
   }
   const VertexId v = add_segment_vertex(p, s);
-  const std::array<VertexId, 2> piece = piece_of_subsegment_[mesh_.subseg[s]];
+  const PieceEnds piece = piece_of_subsegment_[mesh_.subseg[s]];
   piece_of_vertex_.resize(mesh_.vertex_count(), {kNone, kNone});
   piece_of_vertex_[v] = piece;
   EdgeRef out = split_edge(mesh_, s, v);  // Fig. 39 l.44

@@ -16,6 +16,7 @@
 #include "refine/edge_finder.h"
 #include "refine/encroached.h"
 #include "refine/encroached_queue.h"
+#include "refine/mirrored_split.h"
 #include "refine/quality_queue.h"
 #include "refine/refine.h"
 
@@ -70,8 +71,8 @@ class Terminator {
   // The endpoints of the segment piece (a chain of subsegments between two vertices that are not
   // refinement splits) each subsegment record lies on, and each segment vertex added by
   // refinement; kNone pairs for other vertices.
-  std::vector<std::array<VertexId, 2>> piece_of_subsegment_;
-  std::vector<std::array<VertexId, 2>> piece_of_vertex_;
+  std::vector<PieceEnds> piece_of_subsegment_;
+  std::vector<PieceEnds> piece_of_vertex_;
   SegmentApices apices_;
   EdgeFinder finder_;
   CavityMarks marks_;

@@ -11,6 +11,7 @@
 #include "refine/edge_finder.h"
 #include "refine/encroached.h"
 #include "refine/encroached_queue.h"
+#include "refine/mirrored_split.h"
 #include "refine/split_permitted.h"
 #include "refine/steiner_point.h"
 #include "refine/termination_guard.h"
@@ -149,6 +150,31 @@ TEST(clusters_gather_subsegments_within_sixty_degrees) {
   const Cluster c = subsegment_cluster(m, spoke);
   CHECK_EQ(c.members.size(), std::size_t{3});  // 0, 20 and 40 degrees; 90 is 50 away from 40?
   CHECK_NEAR(c.min_separation, rad(20), 1e-12);
+}
+
+// A 3-degree wedge at vertex 0 between pieces 0-1 (along x) and 0-2; vertex 3 stands for a split
+// point on 0-2 at distance 0.45 from 0, the apex of the triangle beside subsegment 0-1.
+TEST(mirrored_split_lines_up_with_the_vertex_across_the_wedge) {
+  const Point dir{std::cos(rad(3)), std::sin(rad(3))};
+  Mesh m = triangulated({{0, 0}, {1, 0}, {1.2 * dir.x, 1.2 * dir.y}, {0.45 * dir.x, 0.45 * dir.y}});
+  const EdgeRef s = edge_between(m, 0, 1) != kNone ? edge_between(m, 0, 1) : edge_between(m, 1, 0);
+  REQUIRE(s != kNone);
+  REQUIRE(m.apex(s) == 3 || (m.link[s] != kNone && m.apex(m.link[s]) == 3));
+  std::vector<PieceEnds> pieces(4, PieceEnds{kNone, kNone});
+  pieces[3] = {0, 2};
+  Point p{-1, -1};
+  CHECK(mirrored_split_point(m, s, {0, 1}, pieces, p));
+  CHECK_NEAR(p.x, 0.45, 1e-15);
+  CHECK_EQ(p.y, 0.0);
+  // Not across the wedge: a vertex of the same piece, or one that is no split point.
+  pieces[3] = {1, 0};
+  CHECK(!mirrored_split_point(m, s, {0, 1}, pieces, p));
+  pieces[3] = {kNone, kNone};
+  CHECK(!mirrored_split_point(m, s, {0, 1}, pieces, p));
+  // Outside the middle third of s (at 0.2 of it): the shells or the midpoint decide instead.
+  pieces[3] = {0, 2};
+  m.points[3] = {0.2 * dir.x, 0.2 * dir.y};
+  CHECK(!mirrored_split_point(m, s, {0, 1}, pieces, p));
 }
 
 TEST(split_permitted_follows_figure_38) {

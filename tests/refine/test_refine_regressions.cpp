@@ -1,5 +1,6 @@
 // Inputs that once broke refinement, judged by independent facts about the result.
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "cdt/holes_and_regions.h"
@@ -66,6 +67,37 @@ TEST(cluster_far_from_apex_meets_the_bound) {
     const bool isosceles = std::fabs(distance(a, apex) - distance(b, apex)) <= 0.01 * distance(a, apex);
     CHECK(at_apex || isosceles);
   }
+}
+
+// A 1-degree wedge, from debug2.poly's 0.1-degree spikes (10,000 vertices, 665,345 triangles at
+// -q30 before, against 537,213 from Triangle 1.6). Split points on the two sides fell at unrelated
+// distances from the apex, encroached on each other and cut the subsegments down to the wedge's
+// width: 138 triangles here. Split points across the wedge must now pair up at equal distances
+// from the apex, which leaves the skinny triangles between them exempt and the subsegments long.
+TEST(thin_wedge_split_points_pair_up) {
+  const double a = 1.0 * std::numbers::pi / 180.0;
+  Mesh m = pslg_mesh({{0, 0}, {1, 0}, {0.83 * std::cos(a), 0.83 * std::sin(a)}}, {{0, 1}, {1, 2}, {2, 0}});
+  Predicates pred;
+  refine_mesh(m, pred, quality(30));
+  check_valid(m);
+  std::vector<double> on_x, on_other;  // distances from the apex of the split points of 0-1, 0-2
+  for (VertexId v = 3; v < m.vertex_count(); ++v) {
+    if (m.kind[v] != VertexKind::Segment) continue;
+    const Point& p = m.point(v);
+    if (p.y == 0.0) on_x.push_back(distance(p, {0, 0}));
+    else if (std::fabs(std::atan2(p.y, p.x) - a) < 1e-9) on_other.push_back(distance(p, {0, 0}));
+  }
+  CHECK(on_other.size() >= 3);
+  std::size_t unpaired = 0;
+  for (double r2 : on_other) {
+    bool paired = false;
+    for (double r1 : on_x) paired = paired || std::fabs(r1 - r2) <= 1e-12 * r2;
+    unpaired += paired ? 0 : 1;
+  }
+  // The last split before the far corner may fall between its neighbours' distances.
+  CHECK(unpaired <= 1);
+  CHECK(m.live_triangles() < 50);
+  for (TriangleId t : skinny_triangles(m, 30.0)) CHECK(min_angle_deg(m, t) >= 1.0 - 1e-9);
 }
 
 // A strip 256 long and 1 wide. The guard's local feature estimate (distance-extended from the
