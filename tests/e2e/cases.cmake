@@ -140,7 +140,7 @@ add_test(NAME e2e.refine_chain.guitar
 # -q34 finishes meeting the bound; -q40 is beyond what refinement can reach, and the termination
 # guard stops it with a report instead of running on (fan5 is small, so the cap comes quickly).
 foreach(name fan120 star50 fan5)
-  e2e_case(${name}.pq34 ${E2E_INPUTS}/${name}.poly -pq34 --no-warning --verify --refined)
+  e2e_case(${name}.pq34 ${E2E_INPUTS}/${name}.poly -pq34 --no-warning --verify "--refined --min-angle 34")
 endforeach()
 e2e_case(fan5.pq40 ${E2E_INPUTS}/fan5.poly -pq40 --verify --refined --warning "the termination guard's cap"
          --warning "triangles miss the requested bounds")
@@ -185,10 +185,16 @@ e2e_case(error.keeps_previous_output ${E2E_INPUTS}/nan.node none --exit 1 --prio
 # ---- extreme coordinates: far from the origin, tiny, and sizes from 1e-6 to 1e6 ----
 foreach(name star_1e9 star_1e-9 span)
   e2e_case(extreme.${name}.p gen:${name}.poly -p)
-  e2e_case(extreme.${name}.pq30 gen:${name}.poly -pq30 --verify --refined)
+  e2e_case(extreme.${name}.pq30 gen:${name}.poly -pq30 --verify "--refined --min-angle 30")
 endforeach()
 e2e_case(extreme.offset1e9.q30 gen:offset.node -q30 --no-verify)
 # Beyond the supported range (+-2^200, and every vertex coordinate below 2^-150): a clean error.
 e2e_case(error.coordinate_too_large ${I}/too_large.poly -p --exit 1 --error "too_large.poly: a coordinate of magnitude")
 e2e_case(error.coordinates_too_small ${I}/too_small.node none --exit 1 --error "too_small.node: every vertex coordinate")
 e2e_case(accept.marker_count2 ${I}/marker_count2.poly -pen --verify "--expect-triangles 2")
+
+# ---- refinement against Triangle 1.6's counts and the quality bounds, on data/ ----
+add_test(NAME e2e.refine.triangle_counts
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/triangle_counts.sh $<TARGET_FILE:deltri>
+                 $<TARGET_FILE:deltri_mesh_verify> ${E2E_DATA} ${CMAKE_CURRENT_SOURCE_DIR}/e2e/triangle_counts.md)
+set_tests_properties(e2e.refine.triangle_counts PROPERTIES TIMEOUT 300)

@@ -1,5 +1,5 @@
 // deltri_mesh_verify --input IN.poly|IN.node --mesh OUTBASE [--convex-hull] [--expect-triangles N]
-//                    [--no-holes] [--refined]
+//                    [--no-holes] [--refined] [--min-angle Q] [--max-area A]
 // Checks deltri's output OUTBASE.node/.ele (and .edge/.neigh/.poly/.v.node/.v.edge/.off when
 // present) against the input.
 // Prints one line per failed check and exits 1; exits 0 when everything holds, 2 on bad usage or
@@ -17,12 +17,14 @@ struct Options {
   std::string input, mesh;
   bool convex_hull = false, no_holes = false, refined = false;
   long expect_triangles = -1;
+  double min_angle = 0.0, max_area = 0.0;  // 0: not checked
 };
 
 int usage() {
   std::fprintf(stderr,
                "usage: deltri_mesh_verify --input IN.poly|IN.node --mesh OUTBASE [--convex-hull]\n"
-               "                          [--expect-triangles N] [--no-holes] [--refined]\n");
+               "                          [--expect-triangles N] [--no-holes] [--refined]\n"
+               "                          [--min-angle Q] [--max-area A]\n");
   return 2;
 }
 
@@ -36,6 +38,8 @@ bool parse(int argc, char** argv, Options& o) {
     else if (arg == "--convex-hull") o.convex_hull = true;
     else if (arg == "--no-holes") o.no_holes = true;
     else if (arg == "--refined") o.refined = true;
+    else if (arg == "--min-angle" && has_value) o.min_angle = std::atof(argv[++i]);
+    else if (arg == "--max-area" && has_value) o.max_area = std::atof(argv[++i]);
     else return false;
   }
   return !o.input.empty() && !o.mesh.empty();
@@ -69,6 +73,7 @@ int main(int argc, char** argv) {
   mv::check_distinct_vertices(c, f);
   mv::check_input_vertices(c, f);
   mv::check_segments(c, f);
+  if (opt.min_angle > 0 || opt.max_area > 0) mv::check_quality(c, f, opt.min_angle, opt.max_area);
   mv::check_boundary_edges(c, f);
   mv::check_holes(c, f);
   mv::check_constrained_delaunay(c, f);

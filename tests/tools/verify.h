@@ -124,6 +124,7 @@ struct Context {
   Grid triangle_grid;
   Grid vertex_grid;
   std::unordered_set<std::uint64_t> segment_edges;  // undirected mesh edges covering input segments
+  std::vector<std::vector<int>> segments_at;        // mesh vertex -> input segments through it
   bool convex_hull = false;  // boundary edges may lie on the convex hull instead of segments
   bool no_holes = false;     // -O: the hole points were ignored
   bool refined = false;      // -q/-a: points split off segments are rounded, as crossings are
@@ -151,6 +152,8 @@ void check_holes(Context& c, Failures& f);
 void check_constrained_delaunay(Context& c, Failures& f);
 void check_point_set_cover(Context& c, Failures& f);
 void check_side_files(Context& c, Failures& f);
+// verify_quality.cpp: angles and areas of a refined mesh (after check_segments).
+void check_quality(Context& c, Failures& f, double min_angle_deg, double max_area);
 // verify_dual.cpp: -o2 midpoints, the -v Voronoi files, the -g .off file.
 void check_midpoints(Context& c, Failures& f);
 void check_voronoi(Context& c, Failures& f);

@@ -47,14 +47,21 @@ double ulp(double m) { return std::nextafter(m, INFINITY) - m; }
 
 class SegmentWalk {
  public:
-  SegmentWalk(Context& c, const PointIndex& input, const Point& a, const Point& b, bool crosses)
-      : c_(c), input_(input), a_(a), b_(b), crosses_(crosses), t_end_(param(b)) {}
+  SegmentWalk(Context& c, const PointIndex& input, int segment, bool crosses)
+      : c_(c),
+        input_(input),
+        segment_(segment),
+        a_(c.in.points[c.in.segments[segment].a]),
+        b_(c.in.points[c.in.segments[segment].b]),
+        crosses_(crosses),
+        t_end_(param(b_)) {}
 
   // Marks the covering mesh edges; returns the point where coverage fails, if it does.
   std::optional<Point> walk() {
     Point pos = a_;
     long double t_pos = 0;
     int cur = vertex_at(a_);
+    note(cur);
     while (!(pos == b_)) {
       int best = -1;
       long double t_best = 0;
@@ -75,6 +82,7 @@ class SegmentWalk {
       if (best >= 0) {
         c_.segment_edges.insert(undirected_key(cur, best));
         cur = best;
+        note(cur);
         pos = c_.out.points[best];
         t_pos = t_best;
         continue;
@@ -94,6 +102,7 @@ class SegmentWalk {
       pos = next;
       t_pos = t_next;
       cur = vertex_at(next);
+      note(cur);
     }
     return std::nullopt;
   }
@@ -105,6 +114,9 @@ class SegmentWalk {
   long double param(const Point& p) const {
     return (static_cast<long double>(p.x) - a_.x) * (static_cast<long double>(b_.x) - a_.x) +
            (static_cast<long double>(p.y) - a_.y) * (static_cast<long double>(b_.y) - a_.y);
+  }
+  void note(int v) {
+    if (v >= 0) c_.segments_at[v].push_back(segment_);
   }
   int vertex_at(const Point& p) const {
     const auto it = c_.topo.used_at.find(p);
@@ -125,6 +137,7 @@ class SegmentWalk {
 
   Context& c_;
   const PointIndex& input_;
+  int segment_;
   Point a_, b_;
   bool crosses_;
   long double t_end_;
@@ -136,10 +149,11 @@ void check_segments(Context& c, Failures& f) {
   PointIndex input;
   for (std::size_t v = 0; v < c.in.points.size(); ++v) input.emplace(c.in.points[v], static_cast<int>(v));
   const std::vector<char> crosses = crossing_segments(c);
+  c.segments_at.assign(c.out.points.size(), {});
   for (std::size_t s = 0; s < c.in.segments.size(); ++s) {
     const Point a = c.in.points[c.in.segments[s].a], b = c.in.points[c.in.segments[s].b];
     if (a == b) continue;  // zero-length: deltri ignores it
-    SegmentWalk walk(c, input, a, b, crosses[s] || c.refined);
+    SegmentWalk walk(c, input, static_cast<int>(s), crosses[s] || c.refined);
     if (const auto stuck = walk.walk())
       f.add("segments", "input segment " + std::to_string(s) + " " + fmt(a) + "-" + fmt(b) +
                             " is not a chain of mesh edges after " + fmt(*stuck));
