@@ -93,7 +93,7 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
     p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));
   if (p == pa || p == pb) return false;  // out of precision: the subsegment cannot be split
   if (!split_keeps_orientation(s, p)) return false;  // likewise: a neighbour is flush with s
-  if (split_insertion_radius(mesh_, pred_, s, p, marks_) < guard_floor_) {
+  if (split_insertion_radius(mesh_, pred_, s, p, marks_) < floor_at(p)) {
     refuse_by_guard();
     return false;
   }

@@ -35,12 +35,8 @@ std::vector<double> initial_feature_sizes(const Mesh& mesh) {
   return f;
 }
 
-double precision_floor(const Mesh& mesh) {
-  double largest = 0.0;
-  for (const Point& p : mesh.points)
-    if (std::isfinite(p.x) && std::isfinite(p.y))
-      largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)});
-  return std::ldexp(largest, -kPrecisionOctaves);
+double precision_floor_at(const Point& p) {
+  return std::ldexp(std::max(std::fabs(p.x), std::fabs(p.y)), -kPrecisionOctaves);
 }
 
 double guard_floor(double feature, double size_floor) {

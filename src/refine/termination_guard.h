@@ -27,13 +27,15 @@ inline constexpr int kGuardOctaves = 5;
 // f(u) for every vertex of the initial mesh (HUGE_VAL for a vertex in no triangle).
 std::vector<double> initial_feature_sizes(const Mesh& mesh);
 
-// Edges shorter than this many units in the last place of the largest coordinate are not worth
-// making: the points that bound them are rounded by about an ulp, so the shapes of their triangles,
-// and whether a split point even lands between its endpoints, are decided by rounding error. An
-// input with vertices that close (robustness tests with points an ulp apart, a vertex an ulp from a
-// hull edge) cannot be meshed to an angle bound there anyway.
+// Edges shorter than this many units in the last place of the coordinates where they lie are not
+// worth making: the points that bound them are rounded by about an ulp, so the shapes of their
+// triangles, and whether a split point even lands between its endpoints, are decided by rounding
+// error. An input with vertices that close (robustness tests with points an ulp apart, a vertex an
+// ulp from a hull edge) cannot be meshed to an angle bound there anyway. The floor is local: a
+// hole 2e-6 wide at the origin of a square 2e6 wide is meshed at its own scale, where doubles are
+// a trillion times finer than at the square's corners.
 inline constexpr int kPrecisionOctaves = 36;  // 2^-36 relative: about 2^16 ulps
-double precision_floor(const Mesh& mesh);
+double precision_floor_at(const Point& p);
 
 // The edge-length floor for a smallest feature estimate `feature`; size_floor (<= 0: none) is the
 // edge length a size bound asks for.

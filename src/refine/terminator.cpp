@@ -23,8 +23,9 @@ double size_floor_of(const Mesh& mesh, const RefineOptions& opt) {
   return std::isfinite(floor) ? floor : 0.0;
 }
 
-// The guard's edge floor, one value for the whole run: the smallest initial feature estimate scaled
-// down (and never below what rounding can resolve), not an estimate at each new vertex: the
+// The guard's edge floor from the input's features, one value for the whole run (floor_at adds the
+// local precision floor): the smallest initial feature estimate scaled down, not an estimate at
+// each new vertex: the
 // Lipschitz extension f(u) + |uc| is an upper bound on lfs that grows without limit away from input
 // vertices (halfway along a strip 1000 wide and 200000 long it reads 50000), so a floor taken from
 // it refused ordinary insertions that real lfs allows. Any positive floor keeps termination
@@ -32,7 +33,7 @@ double size_floor_of(const Mesh& mesh, const RefineOptions& opt) {
 double guard_floor_of(const Mesh& mesh, const RefineOptions& opt) {
   const std::vector<double> features = initial_feature_sizes(mesh);
   const double smallest = features.empty() ? 0.0 : *std::min_element(features.begin(), features.end());
-  return std::max(guard_floor(smallest, size_floor_of(mesh, opt)), precision_floor(mesh));
+  return guard_floor(smallest, size_floor_of(mesh, opt));
 }
 
 // The squared diagonal of the bounding box of the vertices.
@@ -73,6 +74,8 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
   report_.steiner_cap = steiner_cap_;
 }
 
+double Terminator::floor_at(const Point& p) const { return std::max(guard_floor_, precision_floor_at(p)); }
+
 void Terminator::refuse_by_guard() {
   ++report_.guard_refusals;
   report_.stopped_by_guard = true;
@@ -104,7 +107,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   const Assessment assessment = assess(t);
   if (!assessment.bad() || !budget_left()) return;
   const double d = std::sqrt(assessment.shape.shortest_length2);
-  if (d < guard_floor_) {  // at the floor: could only make shorter edges
+  if (d < floor_at(mesh_.point(mesh_.org(assessment.shape.shortest)))) {  // could only make shorter edges
     refuse_by_guard();
     return;
   }
@@ -122,7 +125,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   }
   if (probe.status == ProbeStatus::Unusable) return;
   if (probe.status == ProbeStatus::Clear) {  // Fig. 38 l.15-17
-    if (probe.insertion_radius < guard_floor_) {
+    if (probe.insertion_radius < floor_at(c)) {
       refuse_by_guard();
       return;
     }

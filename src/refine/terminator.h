@@ -57,6 +57,7 @@ class Terminator {
   Point centroid_of(TriangleId t) const;
   void drop_last_vertex();
   void refuse_by_guard();
+  double floor_at(const Point& p) const;  // the guard's edge floor where p lies
   void survey_remaining();
 
   Mesh& mesh_;
@@ -65,7 +66,7 @@ class Terminator {
   QualityRules rules_;
   EncroachRule rule_;
   double off_constant_ = 0.0;
-  double guard_floor_ = 0.0;           // the termination guard's edge floor (see terminator.cpp)
+  double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   double reference2_ = 0.0;            // squared diameter of the mesh, the edge buckets' scale
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   // The endpoints of the segment piece (a chain of subsegments between two vertices that are not
