@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "mesh/mesh.h"
@@ -22,10 +23,20 @@ namespace deltri {
 // refinement splits. kNone twice for vertices that are not refinement splits.
 using PieceEnds = std::array<VertexId, 2>;
 
-// True, with p set, when an apex c of a triangle beside s is a split point on another piece that
-// shares an endpoint o with s's piece, and the point of s at distance |oc| from o lies in the
-// middle third of s (the one nearest the middle if both apices qualify).
+// Where the pieces are: the piece of each segment vertex added by refinement, and the pieces of
+// the initial mesh (its subsegments) for their ends.
+struct SegmentPieces {
+  std::vector<PieceEnds> of_vertex;       // kNone pairs for vertices that are not refinement splits
+  std::vector<std::uint64_t> initial;     // piece_key of every initial subsegment, sorted
+  static std::uint64_t piece_key(VertexId a, VertexId b);
+  bool is_initial_piece(VertexId a, VertexId b) const;
+};
+
+// True, with p set, when an apex c of a triangle beside s lies on another piece that shares an
+// endpoint o with s's piece (as a split point on it, or as its other end), and the point of s at
+// distance |oc| from o lies in the middle third of s (the one nearest the middle if both apices
+// qualify).
 bool mirrored_split_point(const Mesh& mesh, EdgeRef s, const PieceEnds& piece_of_s,
-                          const std::vector<PieceEnds>& piece_of_vertex, Point& p);
+                          const SegmentPieces& pieces, Point& p);
 
 }  // namespace deltri

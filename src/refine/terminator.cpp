@@ -68,8 +68,12 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
       steiner_cap_(steiner_cap(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length})),
       apices_(mesh),
       finder_(mesh) {
-  for (const Subsegment& sub : mesh.subsegments) piece_of_subsegment_.push_back({sub.a, sub.b});
-  piece_of_vertex_.assign(mesh.vertex_count(), {kNone, kNone});
+  for (const Subsegment& sub : mesh.subsegments) {
+    piece_of_subsegment_.push_back({sub.a, sub.b});
+    pieces_.initial.push_back(SegmentPieces::piece_key(sub.a, sub.b));
+  }
+  std::sort(pieces_.initial.begin(), pieces_.initial.end());
+  pieces_.of_vertex.assign(mesh.vertex_count(), {kNone, kNone});
   report_.guard_length = guard_floor_;
   report_.steiner_cap = steiner_cap_;
 }
@@ -182,9 +186,9 @@ Assessment Terminator::assess(TriangleId t) const {
 // rounded.
 bool Terminator::shell_exempt(EdgeRef shortest) const {
   const VertexId a = mesh_.org(shortest), b = mesh_.dest(shortest);
-  if (a >= piece_of_vertex_.size() || b >= piece_of_vertex_.size()) return false;
-  const std::array<VertexId, 2>& pa = piece_of_vertex_[a];
-  const std::array<VertexId, 2>& pb = piece_of_vertex_[b];
+  if (a >= pieces_.of_vertex.size() || b >= pieces_.of_vertex.size()) return false;
+  const PieceEnds& pa = pieces_.of_vertex[a];
+  const PieceEnds& pb = pieces_.of_vertex[b];
   if (pa[0] == kNone || pb[0] == kNone) return false;
   if ((pa[0] == pb[0] && pa[1] == pb[1]) || (pa[0] == pb[1] && pa[1] == pb[0])) return false;
   for (VertexId j : pa) {

@@ -73,7 +73,7 @@ class Terminator {
   // refinement splits) each subsegment record lies on, and each segment vertex added by
   // refinement; kNone pairs for other vertices.
   std::vector<PieceEnds> piece_of_subsegment_;
-  std::vector<PieceEnds> piece_of_vertex_;
+  SegmentPieces pieces_;  // the piece of each refinement split, and the initial pieces
   SegmentApices apices_;
   EdgeFinder finder_;
   CavityMarks marks_;
