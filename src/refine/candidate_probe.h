@@ -18,6 +18,7 @@
 
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
+#include "mesh/operations.h"
 #include "refine/encroached.h"
 
 namespace deltri {
@@ -42,6 +43,8 @@ class CavityMarks {
  public:
   void begin(std::uint32_t slots);
   bool mark(TriangleId t);  // false if already marked in this search
+  // The triangles marked by the latest search, valid until the next begin().
+  KnownCavity marked() const { return {stamp_.data(), stamp_.size(), now_}; }
 
  private:
   std::vector<std::uint32_t> stamp_;

@@ -127,7 +127,9 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
       return;
     }
     const VertexId v = add_free_vertex(c, probe.container);
-    const InsertResult inserted = insert_vertex(mesh_, pred_, v, probe.container, false);  // l.16
+    // The probe's cavity search left exactly the triangles c destroys marked.
+    const InsertResult inserted =
+        insert_vertex_into_cavity(mesh_, pred_, v, probe.container, marks_.marked());  // l.16
     if (inserted.status != InsertStatus::Inserted) {  // c sits on an unsplittable subsegment
       drop_last_vertex();
       return;
