@@ -40,6 +40,40 @@ double first_order(double dx, double dy, double dx_tail, double dy_tail, double 
   return (dx * dx + dy * dy) * minor_tail_effect + 2.0 * (dx * dx_tail + dy * dy_tail) * minor;
 }
 
+// x * y, adding the magnitude of its roundoff to `slop`.
+double product(double x, double y, double& slop) {
+  double p, tail;
+  two_product(x, y, p, tail);
+  slop += std::fabs(tail);
+  return p;
+}
+
+// x + y, adding the magnitude of its roundoff to `slop`.
+double add(double x, double y, double& slop) {
+  double s, tail;
+  two_sum(x, y, s, tail);
+  slop += std::fabs(tail);
+  return s;
+}
+
+// Stage B's determinant evaluated in plain doubles, each product and sum checked with an
+// error-free transformation. When no roundoff occurred (slop stays 0) the value is exact; that is
+// the common case of stage B on points of a coarse dyadic grid, where refinement meets exactly
+// cocircular quadruples by the million, and it costs a fraction of the expansion arithmetic.
+bool incircle_in_doubles(double adx, double ady, double bdx, double bdy, double cdx, double cdy,
+                         double& det) {
+  double slop = 0.0;
+  const double bc = add(product(bdx, cdy, slop), -product(cdx, bdy, slop), slop);
+  const double ca = add(product(cdx, ady, slop), -product(adx, cdy, slop), slop);
+  const double ab = add(product(adx, bdy, slop), -product(bdx, ady, slop), slop);
+  const double alift = add(product(adx, adx, slop), product(ady, ady, slop), slop);
+  const double blift = add(product(bdx, bdx, slop), product(bdy, bdy, slop), slop);
+  const double clift = add(product(cdx, cdx, slop), product(cdy, cdy, slop), slop);
+  const double first = add(product(alift, bc, slop), product(blift, ca, slop), slop);
+  det = add(first, product(clift, ab, slop), slop);
+  return slop == 0.0;
+}
+
 }  // namespace
 
 double Predicates::orient2d_adapt(const Point& a, const Point& b, const Point& c, double detsum) {
@@ -71,6 +105,13 @@ double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c
   ++counters.incircle_adaptive;
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+  const bool exact_differences =
+      two_diff_tail(a.x, d.x, adx) == 0.0 && two_diff_tail(a.y, d.y, ady) == 0.0 &&
+      two_diff_tail(b.x, d.x, bdx) == 0.0 && two_diff_tail(b.y, d.y, bdy) == 0.0 &&
+      two_diff_tail(c.x, d.x, cdx) == 0.0 && two_diff_tail(c.y, d.y, cdy) == 0.0;
+  double in_doubles = 0.0;
+  if (exact_differences && incircle_in_doubles(adx, ady, bdx, bdy, cdx, cdy, in_doubles))
+    return in_doubles;
 
   double bc[4], ca[4], ab[4];
   const int bcn = difference_of_products(bdx, cdy, cdx, bdy, bc);
