@@ -5,6 +5,10 @@
 // Stage C adds the first-order effect of the differences' roundoff in floating point. Stage D
 // evaluates the determinant exactly from the input coordinates. Each stage stops as soon as its
 // error bound proves the sign.
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+
 #include "geometry/expansion.h"
 #include "geometry/exact_determinants.h"
 #include "geometry/predicates.h"
@@ -40,38 +44,35 @@ double first_order(double dx, double dy, double dx_tail, double dy_tail, double 
   return (dx * dx + dy * dy) * minor_tail_effect + 2.0 * (dx * dx_tail + dy * dy_tail) * minor;
 }
 
-// x * y, adding the magnitude of its roundoff to `slop`.
-double product(double x, double y, double& slop) {
-  double p, tail;
-  two_product(x, y, p, tail);
-  slop += std::fabs(tail);
-  return p;
+// Widens [low, high) to cover the significant bits of d: bit positions as powers of two, so d is
+// an integer multiple of 2^low below 2^high. False for subnormals and non-finite values.
+bool cover_bits(double d, int& low, int& high) {
+  if (d == 0.0) return true;
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(d);
+  const int biased = static_cast<int>((bits >> 52) & 0x7FF);
+  if (biased == 0 || biased == 0x7FF) return false;
+  const std::uint64_t mantissa = (bits & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
+  const int exponent = biased - 1075;  // d = mantissa * 2^exponent
+  low = std::min(low, exponent + std::countr_zero(mantissa));
+  high = std::max(high, exponent + 53);
+  return true;
 }
 
-// x + y, adding the magnitude of its roundoff to `slop`.
-double add(double x, double y, double& slop) {
-  double s, tail;
-  two_sum(x, y, s, tail);
-  slop += std::fabs(tail);
-  return s;
-}
-
-// Stage B's determinant evaluated in plain doubles, each product and sum checked with an
-// error-free transformation. When no roundoff occurred (slop stays 0) the value is exact; that is
-// the common case of stage B on points of a coarse dyadic grid, where refinement meets exactly
+// Stage B's determinant in plain doubles when that is provably exact: if the six differences are
+// multiples of 2^low below 2^high with high - low <= 12 bits, every product and sum of the
+// determinant is an integer multiple of a power of two below 2^53, so no operation rounds. That is
+// stage B's usual case on points of a coarse dyadic grid, where refinement meets exactly
 // cocircular quadruples by the million, and it costs a fraction of the expansion arithmetic.
-bool incircle_in_doubles(double adx, double ady, double bdx, double bdy, double cdx, double cdy,
-                         double& det) {
-  double slop = 0.0;
-  const double bc = add(product(bdx, cdy, slop), -product(cdx, bdy, slop), slop);
-  const double ca = add(product(cdx, ady, slop), -product(adx, cdy, slop), slop);
-  const double ab = add(product(adx, bdy, slop), -product(bdx, ady, slop), slop);
-  const double alift = add(product(adx, adx, slop), product(ady, ady, slop), slop);
-  const double blift = add(product(bdx, bdx, slop), product(bdy, bdy, slop), slop);
-  const double clift = add(product(cdx, cdx, slop), product(cdy, cdy, slop), slop);
-  const double first = add(product(alift, bc, slop), product(blift, ca, slop), slop);
-  det = add(first, product(clift, ab, slop), slop);
-  return slop == 0.0;
+bool incircle_on_grid(const double (&d)[6], double& det) {
+  int low = 4096, high = -4096;
+  for (double x : d)
+    if (!cover_bits(x, low, high)) return false;
+  if (high - low > 12) return false;  // 12 monomials of 4 factors each: 4 * 12 + 4 bits <= 53
+  const double adx = d[0], ady = d[1], bdx = d[2], bdy = d[3], cdx = d[4], cdy = d[5];
+  det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+        (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+        (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+  return true;
 }
 
 }  // namespace
@@ -109,9 +110,8 @@ double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c
       two_diff_tail(a.x, d.x, adx) == 0.0 && two_diff_tail(a.y, d.y, ady) == 0.0 &&
       two_diff_tail(b.x, d.x, bdx) == 0.0 && two_diff_tail(b.y, d.y, bdy) == 0.0 &&
       two_diff_tail(c.x, d.x, cdx) == 0.0 && two_diff_tail(c.y, d.y, cdy) == 0.0;
-  double in_doubles = 0.0;
-  if (exact_differences && incircle_in_doubles(adx, ady, bdx, bdy, cdx, cdy, in_doubles))
-    return in_doubles;
+  double on_grid = 0.0;
+  if (exact_differences && incircle_on_grid({adx, ady, bdx, bdy, cdx, cdy}, on_grid)) return on_grid;
 
   double bc[4], ca[4], ab[4];
   const int bcn = difference_of_products(bdx, cdy, cdx, bdy, bc);

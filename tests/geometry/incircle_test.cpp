@@ -165,3 +165,24 @@ TEST(incircle_counters) {
   CHECK_EQ(pred.counters.incircle_adaptive, 2u);
   CHECK_EQ(pred.counters.incircle_exact, 1u);
 }
+
+// Points of dyadic grids: the differences then span few bits and stage B is evaluated in plain
+// doubles. Cocircular lattice points scaled to widths around the 12-bit limit of that shortcut,
+// and the same with the fourth point one grid unit off, must all match the exact sign.
+TEST(incircle_dyadic_grid_points_match_exact_sign) {
+  Predicates pred;
+  Random rng(32);
+  const auto points = lattice_circle();
+  for (int i = 0; i < 20000; ++i) {
+    const int scale = rng.integer(1, 250);  // the circle's span: 130 to 32,500 units
+    const double unit = std::ldexp(1.0, rng.integer(-40, 10));
+    const double base = unit * rng.integer(-1000, 1000) * 65536;
+    auto pick = [&]() {
+      const auto& p = points[rng.integer(0, static_cast<int>(points.size()) - 1)];
+      return Point{base + unit * scale * p[0], base + unit * scale * p[1]};
+    };
+    const Point a = pick(), b = pick(), c = pick(), d0 = pick();
+    const Point d{d0.x + unit * rng.integer(-1, 1), d0.y + unit * rng.integer(-1, 1)};
+    CHECK_EQ(sign_of(pred.incircle(a, b, c, d)), incircle_sign(a, b, c, d));
+  }
+}
