@@ -23,8 +23,34 @@ bool must_flip(const Mesh& m, Predicates& pred, EdgeRef e, VertexId v) {
   return pred.incircle(m.point(b), m.point(a), m.point(d), p) > 0;
 }
 
+// The flip stack: a vertex's link is short, so the common case needs no allocation (insertion
+// runs once per Steiner point, and the allocator showed in refinement's profile).
+class EdgeStack {
+ public:
+  void push_back(EdgeRef e) {
+    if (size_ < kInline) {
+      inline_[size_++] = e;
+      return;
+    }
+    spill_.push_back(e);
+    ++size_;
+  }
+  EdgeRef back() const { return size_ > kInline ? spill_.back() : inline_[size_ - 1]; }
+  void pop_back() {
+    if (size_ > kInline) spill_.pop_back();
+    --size_;
+  }
+  bool empty() const { return size_ == 0; }
+
+ private:
+  static constexpr std::size_t kInline = 64;
+  EdgeRef inline_[kInline];
+  std::size_t size_ = 0;
+  std::vector<EdgeRef> spill_;
+};
+
 // The edges opposite v in every triangle around it (the fan may be open at the boundary).
-void push_link_of(const Mesh& m, EdgeRef out, std::vector<EdgeRef>& stack) {
+void push_link_of(const Mesh& m, EdgeRef out, EdgeStack& stack) {
   EdgeRef e = out;
   do {
     stack.push_back(lnext(e));
@@ -41,7 +67,7 @@ void push_link_of(const Mesh& m, EdgeRef out, std::vector<EdgeRef>& stack) {
 template <class FlipRule>
 void restore_delaunay(Mesh& m, VertexId v, EdgeRef out, std::vector<EdgeRef>* flipped,
                       FlipRule&& must_flip) {
-  std::vector<EdgeRef> stack;
+  EdgeStack stack;
   push_link_of(m, out, stack);
   while (!stack.empty()) {
     const EdgeRef e = stack.back();

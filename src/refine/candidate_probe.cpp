@@ -77,12 +77,13 @@ WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const 
   return result;
 }
 
-void cavity_of(const Mesh& mesh, Predicates& pred, const std::vector<TriangleId>& seeds,
+void cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> seeds,
                const Point& c, CavityMarks& marks, Cavity& out) {
   marks.begin(mesh.triangle_slots());
   out.boundary_subsegments.clear();
   out.nearest2 = HUGE_VAL;
-  std::vector<TriangleId> todo;
+  std::vector<TriangleId>& todo = marks.todo();
+  todo.clear();
   for (TriangleId s : seeds)
     if (marks.mark(s)) todo.push_back(s);
   while (!todo.empty()) {
@@ -112,10 +113,10 @@ void cavity_of(const Mesh& mesh, Predicates& pred, const std::vector<TriangleId>
 
 double split_insertion_radius(const Mesh& mesh, Predicates& pred, EdgeRef s, const Point& c,
                               CavityMarks& marks) {
-  std::vector<TriangleId> seeds{triangle_of(s)};
-  if (mesh.link[s] != kNone) seeds.push_back(triangle_of(mesh.link[s]));
+  const TriangleId seeds[2] = {triangle_of(s), triangle_of(mesh.link[s])};
+  const std::size_t count = mesh.link[s] == kNone ? 1 : 2;
   detail::Cavity cavity;
-  detail::cavity_of(mesh, pred, seeds, c, marks, cavity);
+  detail::cavity_of(mesh, pred, {seeds, count}, c, marks, cavity);
   return std::sqrt(cavity.nearest2);
 }
 

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "geometry/predicates.h"
@@ -38,17 +39,20 @@ struct Probe {
   double insertion_radius = 0.0;       // distance from c to the nearest vertex it would join
 };
 
-// Reusable triangle marks for the cavity search.
+// Reusable triangle marks for the cavity search, and its work list (reused so that a search,
+// which runs for every candidate point, allocates nothing).
 class CavityMarks {
  public:
   void begin(std::uint32_t slots);
   bool mark(TriangleId t);  // false if already marked in this search
   // The triangles marked by the latest search, valid until the next begin().
   KnownCavity marked() const { return {stamp_.data(), stamp_.size(), now_}; }
+  std::vector<TriangleId>& todo() { return todo_; }
 
  private:
   std::vector<std::uint32_t> stamp_;
   std::uint32_t now_ = 0;
+  std::vector<TriangleId> todo_;
 };
 
 // Probes point c for a bad triangle t. `splittable(e)` says whether the subsegment on edge e may
@@ -75,7 +79,7 @@ struct Cavity {
   std::vector<EdgeRef> boundary_subsegments;  // cavity edges carrying subsegments
   double nearest2 = 0.0;                      // squared distance to the nearest cavity vertex
 };
-void cavity_of(const Mesh& mesh, Predicates& pred, const std::vector<TriangleId>& seeds,
+void cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> seeds,
                const Point& c, CavityMarks& marks, Cavity& out);
 
 }  // namespace detail
@@ -95,7 +99,8 @@ Probe probe_candidate(const Mesh& mesh, Predicates& pred, TriangleId t, const Po
     return probe;
   }
   detail::Cavity cavity;
-  detail::cavity_of(mesh, pred, {triangle_of(walk.container)}, c, marks, cavity);
+  const TriangleId seed = triangle_of(walk.container);
+  detail::cavity_of(mesh, pred, {&seed, 1}, c, marks, cavity);
   probe.insertion_radius = std::sqrt(cavity.nearest2);
   for (EdgeRef e : cavity.boundary_subsegments) {
     const Point& a = mesh.point(mesh.org(e));
