@@ -62,13 +62,20 @@ struct InsertResult {
 InsertResult insert_vertex(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint,
                            bool split_subsegments = true, std::vector<EdgeRef>* flipped = nullptr);
 
-// The triangles an insertion will destroy, found beforehand (refine/candidate_probe.h): slot t is
-// one of them iff t < size and stamp[t] == mark.
+// The triangles an insertion will destroy, found beforehand (refine/candidate_probe.h): either
+// the `count` slots of `list`, or (list null) the slots t < size with stamp[t] == mark.
 struct KnownCavity {
+  const TriangleId* list = nullptr;
+  std::size_t count = 0;
   const std::uint32_t* stamp = nullptr;
   std::size_t size = 0;
   std::uint32_t mark = 0;
-  bool contains(TriangleId t) const { return t < size && stamp[t] == mark; }
+  bool contains(TriangleId t) const {
+    if (list == nullptr) return t < size && stamp[t] == mark;
+    for (std::size_t i = 0; i < count; ++i)
+      if (list[i] == t) return true;
+    return false;
+  }
 };
 
 // insert_vertex without subsegment splits, for a vertex whose cavity is already known: in a

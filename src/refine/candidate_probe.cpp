@@ -6,17 +6,39 @@
 namespace deltri {
 
 void CavityMarks::begin(std::uint32_t slots) {
-  if (stamp_.size() < slots) stamp_.resize(slots, 0);
+  slots_ = slots;
+  listed_ = 0;
+  stamped_ = false;
+}
+
+void CavityMarks::spill() {
+  if (stamp_.size() < slots_) stamp_.resize(slots_, 0);
   if (++now_ == 0) {  // wrapped: forget every old mark
     std::fill(stamp_.begin(), stamp_.end(), 0);
     now_ = 1;
   }
+  for (std::size_t i = 0; i < listed_; ++i) stamp_[list_[i]] = now_;
+  stamped_ = true;
 }
 
 bool CavityMarks::mark(TriangleId t) {
+  if (!stamped_) {
+    for (std::size_t i = 0; i < listed_; ++i)
+      if (list_[i] == t) return false;
+    if (listed_ < kListLimit) {
+      list_[listed_++] = t;
+      return true;
+    }
+    spill();
+  }
   if (stamp_[t] == now_) return false;
   stamp_[t] = now_;
   return true;
+}
+
+KnownCavity CavityMarks::marked() const {
+  if (!stamped_) return {list_, listed_, nullptr, 0, 0};
+  return {nullptr, 0, stamp_.data(), stamp_.size(), now_};
 }
 
 namespace detail {

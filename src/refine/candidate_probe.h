@@ -40,16 +40,25 @@ struct Probe {
 };
 
 // Reusable triangle marks for the cavity search, and its work list (reused so that a search,
-// which runs for every candidate point, allocates nothing).
+// which runs for every candidate point, allocates nothing). A cavity is a handful of triangles, so
+// the marks of a search are a short list first and spill to per-slot stamps only when it grows:
+// the stamp array is one more random access per triangle looked at, in an array as long as the
+// mesh.
 class CavityMarks {
  public:
   void begin(std::uint32_t slots);
   bool mark(TriangleId t);  // false if already marked in this search
   // The triangles marked by the latest search, valid until the next begin().
-  KnownCavity marked() const { return {stamp_.data(), stamp_.size(), now_}; }
+  KnownCavity marked() const;
   std::vector<TriangleId>& todo() { return todo_; }
 
  private:
+  static constexpr std::size_t kListLimit = 32;
+  void spill();
+  TriangleId list_[kListLimit];
+  std::size_t listed_ = 0;
+  bool stamped_ = false;  // this search has spilled to the stamps
+  std::uint32_t slots_ = 0;
   std::vector<std::uint32_t> stamp_;
   std::uint32_t now_ = 0;
   std::vector<TriangleId> todo_;

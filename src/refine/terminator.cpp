@@ -47,6 +47,25 @@ double squared_diameter(const Mesh& mesh) {
   return (hi_x - lo_x) * (hi_x - lo_x) + (hi_y - lo_y) * (hi_y - lo_y);
 }
 
+// Size-bounded refinement ends with about twice as many triangles as its bounds ask for (the unit
+// square at -a: 1.68 times). Reserving that up front spares the arrays' doublings, each of which
+// copies everything and faults in fresh pages while the old copy is still held (which also set
+// the peak memory); capacity beyond what is used is never touched, so it costs no resident memory.
+constexpr double kMaxReservedTriangles = 3.2e7;
+
+void reserve_for_size_bounds(Mesh& mesh, const RefineOptions& opt) {
+  const double wanted =
+      triangles_wanted(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
+  if (!(wanted > 0.0) || wanted > kMaxReservedTriangles) return;  // let such runs grow as needed
+  const std::size_t triangles = mesh.triangle_slots() + static_cast<std::size_t>(2.0 * wanted);
+  const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(wanted);
+  mesh.corner.reserve(3 * triangles);
+  mesh.link.reserve(3 * triangles);
+  if (mesh.has_subsegments()) mesh.subseg.reserve(3 * triangles);
+  mesh.points.reserve(vertices);
+  mesh.kind.reserve(vertices);
+}
+
 EncroachRule rule_for(const RefineOptions& opt) {
   if (!opt.lenses || opt.conforming_delaunay) return diametral_circle_rule();
   return diametral_lens_rule(opt.quality ? opt.min_angle_deg : 0.0);
@@ -80,6 +99,7 @@ void Terminator::refuse_by_guard() {
 
 // Fig. 38, DELAUNAYTERMINATOR; l.1-2 (the CDT, exterior removed) are the caller's.
 RefineReport Terminator::run() {
+  reserve_for_size_bounds(mesh_, opt_);
   if (mesh_.has_subsegments()) {
     for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {  // Fig. 38 l.3-5
       if (mesh_.corner[e] == kNone || mesh_.subseg[e] == kNone) continue;
