@@ -133,6 +133,14 @@ void Terminator::prefetch_queued() const {
   if (mesh_.has_subsegments()) prefetch(&mesh_.subseg[e]);
   for (VertexId v : {next->a, next->b, next->c})
     if (v < mesh_.vertex_count()) prefetch(&mesh_.points[v]);
+  // Half as far ahead the entry's links have arrived, and its neighbours are what the cavity
+  // search reads first.
+  const QueuedTriangle* nearer = bad_triangles_.peek(kPrefetchDistance / 2);
+  if (nearer == nullptr) return;
+  const std::size_t f = 3 * static_cast<std::size_t>(nearer->triangle);
+  if (f >= mesh_.corner.size()) return;
+  for (std::size_t i = 0; i < 3; ++i)
+    if (const EdgeRef twin = mesh_.link[f + i]; twin != kNone) prefetch(&mesh_.corner[twin - twin % 3]);
 }
 
 void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
