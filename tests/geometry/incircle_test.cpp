@@ -186,3 +186,22 @@ TEST(incircle_dyadic_grid_points_match_exact_sign) {
     CHECK_EQ(sign_of(pred.incircle(a, b, c, d)), incircle_sign(a, b, c, d));
   }
 }
+
+// Rectangle corners about the origin are exactly cocircular, and all their differences (0, 2x,
+// 2y) are exact: with x and y of full 53-bit mantissas up to nine octaves apart the differences
+// span 53 to 62 bits, beyond the grid path and (exact zero) beyond the double-word stage, which
+// leaves it to the integer evaluation. One ulp off, the double-word stage decides.
+TEST(incircle_wide_exactly_cocircular_rectangles) {
+  Predicates pred;
+  Random rng(33);
+  for (int i = 0; i < 5000; ++i) {
+    const double x = rng.uniform(1, 2) * std::ldexp(1.0, rng.integer(-30, 30));
+    const double y = x * rng.uniform(1, 2) * std::ldexp(1.0, -rng.integer(0, 9));
+    std::array<Point, 4> corner = {Point{x, y}, Point{-x, y}, Point{-x, -y}, Point{x, -y}};
+    for (int k = 3; k > 0; --k) std::swap(corner[k], corner[rng.integer(0, k)]);
+    const Point &a = corner[0], &b = corner[1], &c = corner[2], &d = corner[3];
+    CHECK_EQ(pred.incircle(a, b, c, d), 0.0);
+    const Point d1 = nudge(d, rng.integer(-1, 1), rng.integer(-1, 1));
+    CHECK_EQ(sign_of(pred.incircle(a, b, c, d1)), incircle_sign(a, b, c, d1));
+  }
+}
