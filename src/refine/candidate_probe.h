@@ -47,6 +47,7 @@ struct Probe {
 class CavityMarks {
  public:
   void begin(std::uint32_t slots);
+  void reserve(std::size_t slots) { stamp_.reserve(slots); }
   bool mark(TriangleId t);  // false if already marked in this search
   // The triangles marked by the latest search, valid until the next begin().
   KnownCavity marked() const;

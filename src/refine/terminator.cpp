@@ -53,10 +53,11 @@ double squared_diameter(const Mesh& mesh) {
 // the peak memory); capacity beyond what is used is never touched, so it costs no resident memory.
 constexpr double kMaxReservedTriangles = 3.2e7;
 
-void reserve_for_size_bounds(Mesh& mesh, const RefineOptions& opt) {
+// Returns the number of triangle slots reserved, 0 if none.
+std::size_t reserve_for_size_bounds(Mesh& mesh, const RefineOptions& opt) {
   const double wanted =
       triangles_wanted(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
-  if (!(wanted > 0.0) || wanted > kMaxReservedTriangles) return;  // let such runs grow as needed
+  if (!(wanted > 0.0) || wanted > kMaxReservedTriangles) return 0;  // let such runs grow as needed
   const std::size_t triangles = mesh.triangle_slots() + static_cast<std::size_t>(2.0 * wanted);
   const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(wanted);
   mesh.corner.reserve(3 * triangles);
@@ -64,6 +65,7 @@ void reserve_for_size_bounds(Mesh& mesh, const RefineOptions& opt) {
   if (mesh.has_subsegments()) mesh.subseg.reserve(3 * triangles);
   mesh.points.reserve(vertices);
   mesh.kind.reserve(vertices);
+  return triangles;
 }
 
 EncroachRule rule_for(const RefineOptions& opt) {
@@ -99,7 +101,7 @@ void Terminator::refuse_by_guard() {
 
 // Fig. 38, DELAUNAYTERMINATOR; l.1-2 (the CDT, exterior removed) are the caller's.
 RefineReport Terminator::run() {
-  reserve_for_size_bounds(mesh_, opt_);
+  marks_.reserve(reserve_for_size_bounds(mesh_, opt_));
   if (mesh_.has_subsegments()) {
     for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {  // Fig. 38 l.3-5
       if (mesh_.corner[e] == kNone || mesh_.subseg[e] == kNone) continue;
