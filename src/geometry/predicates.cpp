@@ -6,15 +6,19 @@
 // evaluates the determinant exactly from the input coordinates. Each stage stops as soon as its
 // error bound proves the sign.
 //
-// incircle has one more stage before B (ours, not the paper's): the filter's evaluation repeated in
-// long double. Where long double has a 64-bit significand (x87, as on x86-64 Linux) the filter's
-// error bound, with long double's unit roundoff in place of 2^-53, is 2^11 times tighter; that
-// decides most of the nearly cocircular quadruples that points rounded onto a circle produce (the
-// holes of a PSLG, circles of segments), at a small fraction of stage B's cost. The analysis is the
-// filter's: inputs are doubles, so exact in long double, and its exponent range is wider. Where
-// long double is no wider than double the stage is compiled out.
+// incircle tries cheaper ways to the exact sign before stage B (ours, not the paper's), in this
+// order: plain doubles when the differences are exact and span at most 12 bits (lattice points,
+// whose zeros no filter can decide); the filter's evaluation repeated in long double, whose bound
+// with long double's unit roundoff is 2^11 times tighter where long double has a 64-bit significand
+// (x87, as on x86-64 Linux) and which decides most of the nearly cocircular quadruples of points
+// rounded onto a circle (the analysis is the filter's: the inputs are doubles, exact in long
+// double, whose exponent range is wider; compiled out where long double is no wider than double);
+// and, with exact differences, double-word arithmetic with a proven bound, then 256-bit integers.
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "geometry/expansion.h"
@@ -75,6 +79,156 @@ double first_order(double dx, double dy, double dx_tail, double dy_tail, double 
   return (dx * dx + dy * dy) * minor_tail_effect + 2.0 * (dx * dx_tail + dy * dy_tail) * minor;
 }
 
+// The six coordinate differences of an incircle test as integers times a common power of two:
+// d[k] = m[k] * 2^low, and every |m[k]| < 2^width.
+struct ScaledDifferences {
+  std::int64_t m[6] = {0, 0, 0, 0, 0, 0};
+  int width = 0;
+};
+
+// False for subnormals, non-finite values, or a width beyond 62 bits.
+bool scale_to_integers(const double (&d)[6], ScaledDifferences& out) {
+  std::uint64_t mantissa[6] = {0, 0, 0, 0, 0, 0};
+  int exponent[6] = {0, 0, 0, 0, 0, 0};
+  int low = 4096, high = -4096;
+  for (int k = 0; k < 6; ++k) {
+    if (d[k] == 0.0) continue;
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(d[k]);
+    const int biased = static_cast<int>((bits >> 52) & 0x7FF);
+    if (biased == 0 || biased == 0x7FF) return false;
+    mantissa[k] = (bits & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
+    exponent[k] = biased - 1075;  // d = mantissa * 2^exponent
+    low = std::min(low, exponent[k] + std::countr_zero(mantissa[k]));
+    high = std::max(high, exponent[k] + 53);
+  }
+  if (high - low > 62) return false;
+  out.width = std::max(0, high - low);
+  for (int k = 0; k < 6; ++k) {
+    if (mantissa[k] == 0) continue;
+    const int shift = exponent[k] - low;  // >= -52 (trailing zeros only) and <= 9
+    const std::uint64_t v = shift >= 0 ? mantissa[k] << shift : mantissa[k] >> -shift;
+    out.m[k] = d[k] < 0.0 ? -static_cast<std::int64_t>(v) : static_cast<std::int64_t>(v);
+  }
+  return true;
+}
+
+// Stage B's determinant in plain doubles when that is provably exact: with the differences within
+// 12 bits, every product and sum of the determinant is an integer multiple of a power of two below
+// 2^53 (12 monomials of 4 factors: 4 * 12 + 4 bits), so no operation rounds. That is stage B's
+// usual case on points of a coarse dyadic grid, where refinement meets exactly cocircular
+// quadruples by the million.
+double incircle_on_grid(const double (&d)[6]) {
+  const double adx = d[0], ady = d[1], bdx = d[2], bdy = d[3], cdx = d[4], cdy = d[5];
+  return (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+         (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+         (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+}
+
+// 256-bit two's complement integers, four 64-bit limbs from the least significant.
+using u128 = unsigned __int128;
+using Int256 = std::array<std::uint64_t, 4>;
+
+Int256 multiply_256(u128 a, u128 b) {
+  const std::uint64_t a0 = static_cast<std::uint64_t>(a), a1 = static_cast<std::uint64_t>(a >> 64);
+  const std::uint64_t b0 = static_cast<std::uint64_t>(b), b1 = static_cast<std::uint64_t>(b >> 64);
+  const u128 p00 = u128{a0} * b0, p01 = u128{a0} * b1, p10 = u128{a1} * b0, p11 = u128{a1} * b1;
+  const u128 mid = (p00 >> 64) + static_cast<std::uint64_t>(p01) + static_cast<std::uint64_t>(p10);
+  const u128 top = (p01 >> 64) + (p10 >> 64) + p11 + (mid >> 64);
+  return {static_cast<std::uint64_t>(p00), static_cast<std::uint64_t>(mid),
+          static_cast<std::uint64_t>(top), static_cast<std::uint64_t>(top >> 64)};
+}
+
+Int256 add_256(const Int256& x, const Int256& y) {
+  Int256 z{};
+  std::uint64_t carry = 0;
+  for (int i = 0; i < 4; ++i) {
+    const u128 t = u128{x[i]} + y[i] + carry;
+    z[i] = static_cast<std::uint64_t>(t);
+    carry = static_cast<std::uint64_t>(t >> 64);
+  }
+  return z;
+}
+
+Int256 negate_256(const Int256& x) {
+  const Int256 inverted{~x[0], ~x[1], ~x[2], ~x[3]};
+  return add_256(inverted, {1, 0, 0, 0});
+}
+
+// lift * minor for a minor given as the difference of two products of 63-bit integers.
+Int256 lifted_term(std::int64_t x, std::int64_t y, std::int64_t p, std::int64_t q, std::int64_t r,
+                   std::int64_t s) {
+  const __int128 minor = static_cast<__int128>(p) * q - static_cast<__int128>(r) * s;  // < 2^125
+  const u128 lift = static_cast<u128>(static_cast<__int128>(x) * x) + static_cast<u128>(static_cast<__int128>(y) * y);
+  const Int256 magnitude = multiply_256(lift, static_cast<u128>(minor < 0 ? -minor : minor));
+  return minor < 0 ? negate_256(magnitude) : magnitude;
+}
+
+// Stage B's determinant exactly in integers (|terms| < 2^252, their sum < 2^254); reached by
+// exactly cocircular points whose differences span too many bits for the grid path (the vertices of
+// a polygon placed symmetrically about its centre), which the double-word stage cannot decide.
+double incircle_in_integers(const ScaledDifferences& s) {
+  const std::int64_t* m = s.m;  // adx, ady, bdx, bdy, cdx, cdy
+  const Int256 det = add_256(add_256(lifted_term(m[0], m[1], m[2], m[5], m[4], m[3]),
+                                     lifted_term(m[2], m[3], m[4], m[1], m[0], m[5])),
+                             lifted_term(m[4], m[5], m[0], m[3], m[2], m[1]));
+  if (static_cast<std::int64_t>(det[3]) < 0) return -1.0;
+  return (det[0] | det[1] | det[2] | det[3]) != 0 ? 1.0 : 0.0;
+}
+
+// A double-word number hi + lo, |lo| <= ulp(hi) / 2 (Joldes, Muller and Popescu, "Tight and
+// rigorous error bounds for basic building blocks of double-word arithmetic", 2017).
+struct DoubleWord {
+  double hi, lo;
+};
+
+DoubleWord exact_product(double a, double b) {
+  DoubleWord p;
+  two_product(a, b, p.hi, p.lo);
+  return p;
+}
+
+// Their AccurateDWPlusDW: relative error at most 3u^2 + 13u^3 (u = 2^-53), cancellation included.
+DoubleWord dw_add(DoubleWord x, DoubleWord y) {
+  double sh, sl, th, tl, vh, vl, zh, zl;
+  two_sum(x.hi, y.hi, sh, sl);
+  two_sum(x.lo, y.lo, th, tl);
+  fast_two_sum(sh, sl + th, vh, vl);
+  fast_two_sum(vh, tl + vl, zh, zl);
+  return {zh, zl};
+}
+
+DoubleWord negated(DoubleWord x) { return {-x.hi, -x.lo}; }
+
+// Their DWTimesDW1: relative error at most 7u^2.
+DoubleWord dw_multiply(DoubleWord x, DoubleWord y) {
+  double ch, cl1, zh, zl;
+  two_product(x.hi, y.hi, ch, cl1);
+  const double cl2 = x.hi * y.lo + x.lo * y.hi;
+  fast_two_sum(ch, cl1 + cl2, zh, zl);
+  return {zh, zl};
+}
+
+// Stage B's determinant of the exact differences in double-word arithmetic. Each minor and lift
+// is within 3.1u^2 of its exact value, each lift * minor within 14u^2 and the two final sums add
+// 3.1u^2 of the sum of the terms' magnitudes each, so the error is below 21u^2 times the
+// permanent; 128u^2 leaves room for the permanent's own rounding and for reading the sign off
+// hi. Rounded cocircular points (the vertices of a polygonal hole) miss zero by about u times the
+// permanent, so this decides nearly all of them at a tenth of the cost of expansions.
+constexpr double kIncircleDoubleWord = 128.0 * kEpsilon * kEpsilon;
+
+bool incircle_double_word(const double (&d)[6], double permanent, double& det) {
+  const double adx = d[0], ady = d[1], bdx = d[2], bdy = d[3], cdx = d[4], cdy = d[5];
+  const auto minor = [](double p, double q, double r, double s) {
+    return dw_add(exact_product(p, q), negated(exact_product(r, s)));
+  };
+  const auto lift = [](double x, double y) { return dw_add(exact_product(x, x), exact_product(y, y)); };
+  const DoubleWord a_term = dw_multiply(lift(adx, ady), minor(bdx, cdy, cdx, bdy));
+  const DoubleWord b_term = dw_multiply(lift(bdx, bdy), minor(cdx, ady, adx, cdy));
+  const DoubleWord c_term = dw_multiply(lift(cdx, cdy), minor(adx, bdy, bdx, ady));
+  det = dw_add(dw_add(a_term, b_term), c_term).hi;
+  return std::fabs(det) > kIncircleDoubleWord * permanent;
+}
+
 }  // namespace
 
 double Predicates::orient2d_adapt(const Point& a, const Point& b, const Point& c, double detsum) {
@@ -104,12 +258,25 @@ double Predicates::orient2d_adapt(const Point& a, const Point& b, const Point& c
 double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c, const Point& d,
                                   double permanent) {
   ++counters.incircle_adaptive;
+  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
+  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+  const bool exact_differences =
+      two_diff_tail(a.x, d.x, adx) == 0.0 && two_diff_tail(a.y, d.y, ady) == 0.0 &&
+      two_diff_tail(b.x, d.x, bdx) == 0.0 && two_diff_tail(b.y, d.y, bdy) == 0.0 &&
+      two_diff_tail(c.x, d.x, cdx) == 0.0 && two_diff_tail(c.y, d.y, cdy) == 0.0;
+  ScaledDifferences scaled;
+  const bool scaled_ok = exact_differences && scale_to_integers({adx, ady, bdx, bdy, cdx, cdy}, scaled);
+  // Exactly cocircular lattice points first: no filter can decide a zero.
+  if (scaled_ok && scaled.width <= 12) return incircle_on_grid({adx, ady, bdx, bdy, cdx, cdy});
   if constexpr (kWideLongDouble) {
     double extended = 0.0;
     if (incircle_extended(a, b, c, d, extended)) return extended;
   }
-  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
-  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+  if (scaled_ok) {
+    double quick = 0.0;
+    if (incircle_double_word({adx, ady, bdx, bdy, cdx, cdy}, permanent, quick)) return quick;
+    return incircle_in_integers(scaled);
+  }
 
   double bc[4], ca[4], ab[4];
   const int bcn = difference_of_products(bdx, cdy, cdx, bdy, bc);

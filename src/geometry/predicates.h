@@ -5,6 +5,11 @@
 // the magnitude exceeds a proven error bound (the filter). Otherwise it recomputes with expansion
 // arithmetic, first cheaply (the adaptive stage, reusing the exact differences when the input
 // differences were exact), and if that is still not conclusive, to full precision (the exact stage).
+// Before that, incircle tries cheaper ways to the same exact sign (predicates.cpp): plain doubles
+// when the differences are exact and span at most 12 bits (dyadic grids, where refinement meets
+// exactly cocircular points all the time), the filter again in long double (rounded cocircular
+// points), and with exact differences double-word arithmetic with a proven error bound and 256-bit
+// integers up to 62 bits (exactly cocircular points such as a symmetric polygon's).
 // The sign returned is always the sign of the exact determinant of the given doubles.
 //
 // Limitation: exactness needs every intermediate product and its roundoff to stay clear of overflow

@@ -23,8 +23,34 @@ bool must_flip(const Mesh& m, Predicates& pred, EdgeRef e, VertexId v) {
   return pred.incircle(m.point(b), m.point(a), m.point(d), p) > 0;
 }
 
+// The flip stack: a vertex's link is short, so the common case needs no allocation (insertion
+// runs once per Steiner point, and the allocator showed in refinement's profile).
+class EdgeStack {
+ public:
+  void push_back(EdgeRef e) {
+    if (size_ < kInline) {
+      inline_[size_++] = e;
+      return;
+    }
+    spill_.push_back(e);
+    ++size_;
+  }
+  EdgeRef back() const { return size_ > kInline ? spill_.back() : inline_[size_ - 1]; }
+  void pop_back() {
+    if (size_ > kInline) spill_.pop_back();
+    --size_;
+  }
+  bool empty() const { return size_ == 0; }
+
+ private:
+  static constexpr std::size_t kInline = 64;
+  EdgeRef inline_[kInline];
+  std::size_t size_ = 0;
+  std::vector<EdgeRef> spill_;
+};
+
 // The edges opposite v in every triangle around it (the fan may be open at the boundary).
-void push_link_of(const Mesh& m, EdgeRef out, std::vector<EdgeRef>& stack) {
+void push_link_of(const Mesh& m, EdgeRef out, EdgeStack& stack) {
   EdgeRef e = out;
   do {
     stack.push_back(lnext(e));
@@ -37,14 +63,16 @@ void push_link_of(const Mesh& m, EdgeRef out, std::vector<EdgeRef>& stack) {
   }
 }
 
-void restore_delaunay(Mesh& m, Predicates& pred, VertexId v, EdgeRef out,
-                      std::vector<EdgeRef>* flipped) {
-  std::vector<EdgeRef> stack;
+// Lawson's flips on the link of v; `must_flip(e)` decides each edge opposite v.
+template <class FlipRule>
+void restore_delaunay(Mesh& m, VertexId v, EdgeRef out, std::vector<EdgeRef>* flipped,
+                      FlipRule&& must_flip) {
+  EdgeStack stack;
   push_link_of(m, out, stack);
   while (!stack.empty()) {
     const EdgeRef e = stack.back();
     stack.pop_back();
-    if (m.apex(e) != v || !must_flip(m, pred, e, v)) continue;
+    if (m.apex(e) != v || !must_flip(e)) continue;
     const EdgeRef f = m.link[e];
     const EdgeRef g = flip(m, e);  // v -> old apex of f; the link of v is now lnext(g), lprev(f)
     if (flipped) flipped->push_back(g);
@@ -57,12 +85,10 @@ EdgeRef leaving(const Mesh& m, TriangleId t, VertexId v) {
   return 3 * t + detail::corner_index(m, t, v);
 }
 
-}  // namespace
-
-InsertResult insert_vertex(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint,
-                           bool split_subsegments, std::vector<EdgeRef>* flipped) {
+// Locates v and splits what it falls in (Inserted: an edge leaving v, no flips yet), or says why
+// nothing was changed, as insert_vertex does.
+InsertResult split_at(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint, bool split_subsegments) {
   const Location loc = locate(mesh, pred, mesh.point(v), hint);
-  EdgeRef out = kNone;
   switch (loc.status) {
     case LocateStatus::OnVertex:
       return {InsertStatus::Duplicate, loc.edge};
@@ -70,20 +96,38 @@ InsertResult insert_vertex(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hin
       // Only a hull edge with a ghost behind it lets the mesh grow outwards.
       if (loc.edge == kNone || mesh.link[loc.edge] == kNone)
         return {InsertStatus::Outside, loc.edge};
-      out = split_triangle(mesh, mesh.link[loc.edge], v);
-      break;
+      return {InsertStatus::Inserted, split_triangle(mesh, mesh.link[loc.edge], v)};
     case LocateStatus::OnEdge:
       if (!split_subsegments && detail::carries_subsegment(mesh, loc.edge))
         return {InsertStatus::OnSubsegment, loc.edge};
-      out = split_edge(mesh, loc.edge, v);
-      break;
+      return {InsertStatus::Inserted, split_edge(mesh, loc.edge, v)};
     case LocateStatus::InTriangle:
-      out = split_triangle(mesh, loc.edge, v);
       break;
   }
-  restore_delaunay(mesh, pred, v, out, flipped);
+  return {InsertStatus::Inserted, split_triangle(mesh, loc.edge, v)};
+}
+
+}  // namespace
+
+InsertResult insert_vertex(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint,
+                           bool split_subsegments, std::vector<EdgeRef>* flipped) {
+  const InsertResult split = split_at(mesh, pred, v, hint, split_subsegments);
+  if (split.status != InsertStatus::Inserted) return split;
+  restore_delaunay(mesh, v, split.edge, flipped, [&](EdgeRef e) { return must_flip(mesh, pred, e, v); });
   // Flips keep v in the slot that was split (undo_insertion relies on this edge being there).
-  return {InsertStatus::Inserted, leaving(mesh, triangle_of(out), v)};
+  return {InsertStatus::Inserted, leaving(mesh, triangle_of(split.edge), v)};
+}
+
+InsertResult insert_vertex_into_cavity(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint,
+                                       const KnownCavity& cavity) {
+  const InsertResult split = split_at(mesh, pred, v, hint, false);
+  if (split.status != InsertStatus::Inserted) return split;
+  // The triangle beyond a link edge never holds v, so its slot still names an original triangle.
+  restore_delaunay(mesh, v, split.edge, nullptr, [&](EdgeRef e) {
+    const EdgeRef f = mesh.link[e];
+    return f != kNone && !detail::carries_subsegment(mesh, e) && cavity.contains(triangle_of(f));
+  });
+  return {InsertStatus::Inserted, leaving(mesh, triangle_of(split.edge), v)};
 }
 
 }  // namespace deltri

@@ -96,6 +96,8 @@ struct Mesh {
   // --- storage primitives (topology-free) ---
   // A new triangle a, b, c (counter-clockwise) with no links, reusing a dead slot if there is one.
   TriangleId add_triangle(VertexId a, VertexId b, VertexId c);
+  // add_triangle's new slot at the end of the arrays.
+  TriangleId append_triangle(VertexId a, VertexId b, VertexId c);
   // Marks t dead and unlinks its neighbours from it.
   void kill_triangle(TriangleId t);
   // Makes e and f twins.

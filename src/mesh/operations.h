@@ -2,6 +2,8 @@
 // switches or prints. Geometry decisions use exact predicates only.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "geometry/predicates.h"
@@ -59,5 +61,29 @@ struct InsertResult {
 // grows; only a plain boundary edge (link kNone) makes the answer Outside.
 InsertResult insert_vertex(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint,
                            bool split_subsegments = true, std::vector<EdgeRef>* flipped = nullptr);
+
+// The triangles an insertion will destroy, found beforehand (refine/candidate_probe.h): either
+// the `count` slots of `list`, or (list null) the slots t < size with stamp[t] == mark.
+struct KnownCavity {
+  const TriangleId* list = nullptr;
+  std::size_t count = 0;
+  const std::uint32_t* stamp = nullptr;
+  std::size_t size = 0;
+  std::uint32_t mark = 0;
+  bool contains(TriangleId t) const {
+    if (list == nullptr) return t < size && stamp[t] == mark;
+    for (std::size_t i = 0; i < count; ++i)
+      if (list[i] == t) return true;
+    return false;
+  }
+};
+
+// insert_vertex without subsegment splits, for a vertex whose cavity is already known: in a
+// constrained Delaunay triangulation Lawson's flips remove exactly the triangles reachable from
+// the container across non-subsegment edges whose circumcircles strictly contain v, so each flip
+// decision is a lookup instead of an incircle test. The flips, their order and the slots they
+// use are those of insert_vertex, so the result is the same mesh, slot for slot.
+InsertResult insert_vertex_into_cavity(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint,
+                                       const KnownCavity& cavity);
 
 }  // namespace deltri

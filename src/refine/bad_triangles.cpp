@@ -34,21 +34,22 @@ bool angle_between_subsegments(const Mesh& mesh, EdgeRef e) {
   return has_subsegment(mesh, lnext(e)) && has_subsegment(mesh, lprev(e));
 }
 
+// Each corner and point is read once: this runs for every triangle around every new vertex.
 TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta) {
   TriangleShape shape;
-  double len2[3];
-  for (unsigned i = 0; i < 3; ++i) {
-    const EdgeRef e = edge_of(t, i);
-    len2[i] = length2(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e)));
-  }
+  const VertexId* corners = &mesh.corner[3 * t];
+  const Point& a = mesh.point(corners[0]);
+  const Point& b = mesh.point(corners[1]);
+  const Point& c = mesh.point(corners[2]);
+  double* len2 = shape.length2;
+  len2[0] = length2(a, b);
+  len2[1] = length2(b, c);
+  len2[2] = length2(c, a);
   unsigned s = 0;
   if (len2[1] < len2[s]) s = 1;
   if (len2[2] < len2[s]) s = 2;
   shape.shortest = edge_of(t, s);
   shape.shortest_length2 = len2[s];
-  const Point& a = mesh.point(mesh.corner[3 * t]);
-  const Point& b = mesh.point(mesh.corner[3 * t + 1]);
-  const Point& c = mesh.point(mesh.corner[3 * t + 2]);
   const double twice_area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   shape.area = 0.5 * twice_area;
   const double others = len2[(s + 1) % 3] * len2[(s + 2) % 3];
@@ -60,14 +61,12 @@ TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta
 Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& rules) {
   Assessment out;
   out.shape = measure_triangle(mesh, t, rules.sin2_theta);
+  const double* len2 = out.shape.length2;
   if (rules.sin2_theta > 0.0 && out.shape.ratio2_over_bound2 > 1.0) {
     // With ties for the shortest edge, any tied smallest angle between subsegments exempts t.
     bool exempt = false;
-    for (unsigned i = 0; i < 3 && !exempt; ++i) {
-      const EdgeRef e = edge_of(t, i);
-      const double l2 = length2(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e)));
-      exempt = l2 == out.shape.shortest_length2 && angle_between_subsegments(mesh, e);
-    }
+    for (unsigned i = 0; i < 3 && !exempt; ++i)
+      exempt = len2[i] == out.shape.shortest_length2 && angle_between_subsegments(mesh, edge_of(t, i));
     out.skinny = !exempt;
   }
   const double area = out.shape.area;
@@ -77,10 +76,8 @@ Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& r
     out.too_large = true;
   if (rules.max_edge_length > 0.0) {
     const double limit2 = rules.max_edge_length * rules.max_edge_length;
-    for (unsigned i = 0; i < 3; ++i) {
-      const EdgeRef e = edge_of(t, i);
-      if (length2(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e))) > limit2) out.too_large = true;
-    }
+    for (unsigned i = 0; i < 3; ++i)
+      if (len2[i] > limit2) out.too_large = true;
   }
   return out;
 }

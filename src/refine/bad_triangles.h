@@ -25,6 +25,7 @@ struct TriangleShape {
   // the two other edges, since r = l1 l2 l3 / (4 area).
   double ratio2_over_bound2 = 0.0;
   double area = 0.0;
+  double length2[3] = {0.0, 0.0, 0.0};  // squared length of side i (corner i to corner i+1)
 };
 
 TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta);

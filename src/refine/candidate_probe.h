@@ -14,10 +14,12 @@
 
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
+#include "mesh/operations.h"
 #include "refine/encroached.h"
 
 namespace deltri {
@@ -37,15 +39,30 @@ struct Probe {
   double insertion_radius = 0.0;       // distance from c to the nearest vertex it would join
 };
 
-// Reusable triangle marks for the cavity search.
+// Reusable triangle marks for the cavity search, and its work list (reused so that a search,
+// which runs for every candidate point, allocates nothing). A cavity is a handful of triangles, so
+// the marks of a search are a short list first and spill to per-slot stamps only when it grows:
+// the stamp array is one more random access per triangle looked at, in an array as long as the
+// mesh.
 class CavityMarks {
  public:
   void begin(std::uint32_t slots);
+  void reserve(std::size_t slots) { stamp_.reserve(slots); }
   bool mark(TriangleId t);  // false if already marked in this search
+  // The triangles marked by the latest search, valid until the next begin().
+  KnownCavity marked() const;
+  std::vector<TriangleId>& todo() { return todo_; }
 
  private:
+  static constexpr std::size_t kListLimit = 32;
+  void spill();
+  TriangleId list_[kListLimit];
+  std::size_t listed_ = 0;
+  bool stamped_ = false;  // this search has spilled to the stamps
+  std::uint32_t slots_ = 0;
   std::vector<std::uint32_t> stamp_;
   std::uint32_t now_ = 0;
+  std::vector<TriangleId> todo_;
 };
 
 // Probes point c for a bad triangle t. `splittable(e)` says whether the subsegment on edge e may
@@ -72,7 +89,7 @@ struct Cavity {
   std::vector<EdgeRef> boundary_subsegments;  // cavity edges carrying subsegments
   double nearest2 = 0.0;                      // squared distance to the nearest cavity vertex
 };
-void cavity_of(const Mesh& mesh, Predicates& pred, const std::vector<TriangleId>& seeds,
+void cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> seeds,
                const Point& c, CavityMarks& marks, Cavity& out);
 
 }  // namespace detail
@@ -92,7 +109,8 @@ Probe probe_candidate(const Mesh& mesh, Predicates& pred, TriangleId t, const Po
     return probe;
   }
   detail::Cavity cavity;
-  detail::cavity_of(mesh, pred, {triangle_of(walk.container)}, c, marks, cavity);
+  const TriangleId seed = triangle_of(walk.container);
+  detail::cavity_of(mesh, pred, {&seed, 1}, c, marks, cavity);
   probe.insertion_radius = std::sqrt(cavity.nearest2);
   for (EdgeRef e : cavity.boundary_subsegments) {
     const Point& a = mesh.point(mesh.org(e));

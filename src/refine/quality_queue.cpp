@@ -42,6 +42,13 @@ void QualityQueue::push_keyed(const QueuedTriangle& entry, double key) {
   note_push();
 }
 
+const QueuedTriangle* QualityQueue::peek(std::size_t ahead) const {
+  if (!heap_.empty() || nonempty_ == 0) return nullptr;
+  const Fifo& fifo = buckets_[63u - static_cast<unsigned>(std::countl_zero(nonempty_))];
+  const std::size_t at = fifo.head + ahead;
+  return at < fifo.items.size() ? &fifo.items[at] : nullptr;
+}
+
 std::optional<QueuedTriangle> QualityQueue::pop() {
   if (!heap_.empty()) {
     std::pop_heap(heap_.begin(), heap_.end());

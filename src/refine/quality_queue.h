@@ -59,6 +59,9 @@ class QualityQueue {
   void push_keyed(const QueuedTriangle& entry, double key);
   // The oldest entry of the worst non-empty bucket (or the heap's top), or nothing when empty.
   std::optional<QueuedTriangle> pop();
+  // The entry `ahead` places behind the next one in the bucket pop() serves now, or null; a hint
+  // for prefetching only (a later push may still overtake it).
+  const QueuedTriangle* peek(std::size_t ahead) const;
   bool empty() const { return size_ == 0; }
   std::size_t size() const { return size_; }
   std::size_t peak_size() const { return peak_; }

@@ -44,8 +44,8 @@ double guard_floor(double feature, double size_floor) {
   return std::ldexp(scale, -kGuardOctaves);
 }
 
-std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds) {
-  double wanted = 0.0;  // triangles the size bounds ask for
+double triangles_wanted(const Mesh& mesh, const SizeBounds& bounds) {
+  double wanted = 0.0;
   const double edge_area = bounds.max_edge_length > 0.0
                                ? std::sqrt(3.0) / 4.0 * bounds.max_edge_length * bounds.max_edge_length
                                : HUGE_VAL;
@@ -60,6 +60,11 @@ std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds) {
       bound = std::min(bound, mesh.area_bound[t]);
     if (bound < HUGE_VAL) wanted += area / bound;
   }
+  return wanted;
+}
+
+std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds) {
+  const double wanted = triangles_wanted(mesh, bounds);
   const double cap = static_cast<double>(kCapPerVertex) * mesh.vertex_count() + 4.0 * wanted;
   return cap < 1.8e19 ? static_cast<std::uint64_t>(cap) : UINT64_MAX;
 }

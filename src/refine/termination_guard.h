@@ -56,5 +56,7 @@ struct SizeBounds {
   double max_edge_length = 0.0; // <= 0: none
 };
 std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds);
+// The number of triangles the size bounds ask for (0 without size bounds), as in steiner_cap.
+double triangles_wanted(const Mesh& mesh, const SizeBounds& bounds);
 
 }  // namespace deltri

@@ -22,6 +22,15 @@
 
 namespace deltri {
 
+// A hint to the processor that *p will be read soon; nothing else.
+inline void prefetch(const void* p) {
+#if defined(__GNUC__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
 class Terminator {
  public:
   Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt);
@@ -43,6 +52,8 @@ class Terminator {
   // Fig. 39 l.50-55; `out` leaves the new vertex.
   void new_vertex(EdgeRef out, bool queue_triangles);
 
+  void prefetch_queued() const;
+  static constexpr std::size_t kPrefetchDistance = 8;  // queue entries ahead
   // assess_triangle plus the equal-shell exemption (shell_exempt).
   Assessment assess(TriangleId t) const;
   bool shell_exempt(EdgeRef shortest) const;

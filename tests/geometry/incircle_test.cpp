@@ -165,3 +165,43 @@ TEST(incircle_counters) {
   CHECK_EQ(pred.counters.incircle_adaptive, 2u);
   CHECK_EQ(pred.counters.incircle_exact, 1u);
 }
+
+// Points of dyadic grids: the differences then span few bits and stage B is evaluated in plain
+// doubles. Cocircular lattice points scaled to widths around the 12-bit limit of that shortcut,
+// and the same with the fourth point one grid unit off, must all match the exact sign.
+TEST(incircle_dyadic_grid_points_match_exact_sign) {
+  Predicates pred;
+  Random rng(32);
+  const auto points = lattice_circle();
+  for (int i = 0; i < 20000; ++i) {
+    const int scale = rng.integer(1, 250);  // the circle's span: 130 to 32,500 units
+    const double unit = std::ldexp(1.0, rng.integer(-40, 10));
+    const double base = unit * rng.integer(-1000, 1000) * 65536;
+    auto pick = [&]() {
+      const auto& p = points[rng.integer(0, static_cast<int>(points.size()) - 1)];
+      return Point{base + unit * scale * p[0], base + unit * scale * p[1]};
+    };
+    const Point a = pick(), b = pick(), c = pick(), d0 = pick();
+    const Point d{d0.x + unit * rng.integer(-1, 1), d0.y + unit * rng.integer(-1, 1)};
+    CHECK_EQ(sign_of(pred.incircle(a, b, c, d)), incircle_sign(a, b, c, d));
+  }
+}
+
+// Rectangle corners about the origin are exactly cocircular, and all their differences (0, 2x,
+// 2y) are exact: with x and y of full 53-bit mantissas up to nine octaves apart the differences
+// span 53 to 62 bits, beyond the grid path and (exact zero) beyond the double-word stage, which
+// leaves it to the integer evaluation. One ulp off, the double-word stage decides.
+TEST(incircle_wide_exactly_cocircular_rectangles) {
+  Predicates pred;
+  Random rng(33);
+  for (int i = 0; i < 5000; ++i) {
+    const double x = rng.uniform(1, 2) * std::ldexp(1.0, rng.integer(-30, 30));
+    const double y = x * rng.uniform(1, 2) * std::ldexp(1.0, -rng.integer(0, 9));
+    std::array<Point, 4> corner = {Point{x, y}, Point{-x, y}, Point{-x, -y}, Point{x, -y}};
+    for (int k = 3; k > 0; --k) std::swap(corner[k], corner[rng.integer(0, k)]);
+    const Point &a = corner[0], &b = corner[1], &c = corner[2], &d = corner[3];
+    CHECK_EQ(pred.incircle(a, b, c, d), 0.0);
+    const Point d1 = nudge(d, rng.integer(-1, 1), rng.integer(-1, 1));
+    CHECK_EQ(sign_of(pred.incircle(a, b, c, d1)), incircle_sign(a, b, c, d1));
+  }
+}
