@@ -30,8 +30,31 @@ void QualityQueue::note_push() {
   if (++size_ > peak_) peak_ = size_;
 }
 
+std::uint32_t QualityQueue::take_block() {
+  if (!free_blocks_.empty()) {
+    const std::uint32_t block = free_blocks_.back();
+    free_blocks_.pop_back();
+    blocks_[block]->next = kNoBlock;
+    return block;
+  }
+  blocks_.push_back(std::make_unique<Block>());
+  return static_cast<std::uint32_t>(blocks_.size() - 1);
+}
+
+void QualityQueue::give_back(std::uint32_t block) { free_blocks_.push_back(block); }
+
 void QualityQueue::push(const QueuedTriangle& entry, unsigned bucket) {
-  buckets_[bucket].items.push_back(entry);
+  Fifo& fifo = buckets_[bucket];
+  if (fifo.last == kNoBlock) {
+    fifo.first = fifo.last = take_block();
+    fifo.head = fifo.tail = 0;
+  } else if (fifo.tail == kBlock) {
+    const std::uint32_t block = take_block();
+    blocks_[fifo.last]->next = block;
+    fifo.last = block;
+    fifo.tail = 0;
+  }
+  blocks_[fifo.last]->items[fifo.tail++] = entry;
   nonempty_ |= std::uint64_t{1} << bucket;
   note_push();
 }
@@ -45,8 +68,14 @@ void QualityQueue::push_keyed(const QueuedTriangle& entry, double key) {
 const QueuedTriangle* QualityQueue::peek(std::size_t ahead) const {
   if (!heap_.empty() || nonempty_ == 0) return nullptr;
   const Fifo& fifo = buckets_[63u - static_cast<unsigned>(std::countl_zero(nonempty_))];
-  const std::size_t at = fifo.head + ahead;
-  return at < fifo.items.size() ? &fifo.items[at] : nullptr;
+  std::uint32_t block = fifo.first;
+  std::size_t at = fifo.head + ahead;
+  while (at >= kBlock && block != fifo.last) {
+    block = blocks_[block]->next;
+    at -= kBlock;
+  }
+  if (block == fifo.last && at >= fifo.tail) return nullptr;
+  return at < kBlock ? &blocks_[block]->items[at] : nullptr;
 }
 
 std::optional<QueuedTriangle> QualityQueue::pop() {
@@ -60,16 +89,17 @@ std::optional<QueuedTriangle> QualityQueue::pop() {
   if (nonempty_ == 0) return std::nullopt;
   const unsigned bucket = 63u - static_cast<unsigned>(std::countl_zero(nonempty_));
   Fifo& fifo = buckets_[bucket];
-  const QueuedTriangle entry = fifo.items[fifo.head++];
+  const QueuedTriangle entry = blocks_[fifo.first]->items[fifo.head++];
   --size_;
-  if (fifo.head == fifo.items.size()) {
-    fifo.items.clear();
-    fifo.head = 0;
+  if (fifo.first == fifo.last && fifo.head == fifo.tail) {  // the bucket is empty
+    give_back(fifo.first);
+    fifo = Fifo{};
     nonempty_ &= ~(std::uint64_t{1} << bucket);
-  } else if (fifo.head >= 4096 && 2 * fifo.head >= fifo.items.size()) {
-    // Reclaim the consumed front so a long-lived bucket does not grow without bound.
-    fifo.items.erase(fifo.items.begin(), fifo.items.begin() + static_cast<std::ptrdiff_t>(fifo.head));
+  } else if (fifo.head == kBlock) {  // the front block is used up
+    const std::uint32_t used = fifo.first;
+    fifo.first = blocks_[used]->next;
     fifo.head = 0;
+    give_back(used);
   }
   return entry;
 }
