@@ -72,7 +72,7 @@ class MortonKey {
   static constexpr double kCells = 16777215.0;  // 2^24 - 1
   static constexpr std::uint32_t kLastCell = 0xFFFFFFu;
   MortonKey() = default;
-  explicit MortonKey(const std::vector<Point>& pts, const std::vector<VertexKind>& kind) {
+  explicit MortonKey(const BigVector<Point>& pts, const std::vector<VertexKind>& kind) {
     bool first = true;
     for (std::size_t i = 0; i < pts.size(); ++i) {
       if (kind[i] != VertexKind::Input) continue;
@@ -114,10 +114,10 @@ unsigned digit(const KeyedVertex& k, int d) { return static_cast<unsigned>(k.key
 // LSD radix sort on the 48-bit key, 16 bits at a time, skipping digits all keys share. With two
 // threads each pass counts and moves the two halves of the array at once; the first half's keys
 // go before the second's in every bucket, so the sort stays stable and the result is the same.
-void radix_sort(std::vector<KeyedVertex>& items, int threads) {
+void radix_sort(BigVector<KeyedVertex>& items, int threads) {
   const std::size_t n = items.size();
   const bool two = worth_two(threads, n);
-  std::vector<KeyedVertex> buffer(n);
+  BigVector<KeyedVertex> buffer(n);
   std::vector<std::uint32_t> count(2 * kDigits);
   for (int d = 0; d < 3; ++d) {
     std::fill(count.begin(), count.end(), 0u);
@@ -418,7 +418,7 @@ bool lexicographic_less(const Point& a, VertexId ia, const Point& b, VertexId ib
 
 // The Input vertices in the order the recursion wants them: along the Morton curve with each group
 // of equal keys in x order, or (key null) in x order. Equal points end up adjacent, lowest id first.
-std::vector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, int threads) {
+BigVector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, int threads) {
   const std::size_t n = mesh.vertex_count();
   const bool two = worth_two(threads, n);
   std::size_t first_half = 0, all = 0;  // Input vertices in [0, n/2), in [0, n)
@@ -427,7 +427,7 @@ std::vector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, 
     all += mesh.kind[v] == VertexKind::Input;
   }
   if (!two) first_half = 0;
-  std::vector<KeyedVertex> items(all);
+  BigVector<KeyedVertex> items(all);
   split_in_two(n, two, [&](std::size_t from, std::size_t to) {
     std::size_t k = from == 0 ? 0 : first_half;
     for (std::size_t v = from; v < to; ++v)
@@ -447,8 +447,8 @@ std::vector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, 
 }
 
 // sorted[k] = points[items[k].id], order[k] = items[k].id; the random reads are split over threads.
-void gather(const std::vector<Point>& points, const std::vector<KeyedVertex>& items,
-            std::vector<Point>& sorted, std::vector<VertexId>& order, int threads) {
+void gather(const BigVector<Point>& points, const BigVector<KeyedVertex>& items,
+            BigVector<Point>& sorted, BigVector<VertexId>& order, int threads) {
   split_in_two(items.size(), worth_two(threads, items.size()), [&](std::size_t from, std::size_t to) {
     for (std::size_t k = from; k < to; ++k) {
       sorted[k] = points[items[k].id];
@@ -458,7 +458,7 @@ void gather(const std::vector<Point>& points, const std::vector<KeyedVertex>& it
 }
 
 // Drops all but the first of each run of equal points and reports them.
-void remove_duplicates(const Mesh& mesh, std::vector<KeyedVertex>& items,
+void remove_duplicates(const Mesh& mesh, BigVector<KeyedVertex>& items,
                        std::vector<std::pair<VertexId, VertexId>>& duplicates) {
   std::size_t kept = 1;
   for (std::size_t i = 1; i < items.size(); ++i) {
@@ -530,7 +530,7 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
 
   const MortonKey key(mesh.points, mesh.kind);
   const MortonKey* cut_key = options.alternate_cuts ? &key : nullptr;
-  std::vector<KeyedVertex> items = order_vertices(mesh, cut_key, threads);
+  BigVector<KeyedVertex> items = order_vertices(mesh, cut_key, threads);
   remove_duplicates(mesh, items, duplicates);
   for (const auto& [dup, kept] : duplicates) mesh.kind[dup] = VertexKind::Duplicate;
   const std::uint32_t m = static_cast<std::uint32_t>(items.size());
@@ -543,15 +543,15 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   std::vector<std::pair<VertexId, Point>> bystanders;
   for (VertexId v = 0; v < total; ++v)
     if (mesh.kind[v] != VertexKind::Input) bystanders.emplace_back(v, mesh.points[v]);
-  std::vector<Point> sorted;
-  std::vector<VertexId> order;
+  BigVector<Point> sorted;
+  BigVector<VertexId> order;
   sorted.reserve(total);
   order.reserve(total);
   sorted.resize(m);
   order.resize(m);
   gather(mesh.points, items, sorted, order, threads);
-  std::vector<KeyedVertex>().swap(items);
-  std::vector<Point>().swap(mesh.points);
+  BigVector<KeyedVertex>().swap(items);
+  BigVector<Point>().swap(mesh.points);
 
   const std::size_t slots = 2 * static_cast<std::size_t>(m) - 2;
   // Zero-filling the two arrays (and faulting in their pages) is done by a thread each.

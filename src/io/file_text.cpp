@@ -32,7 +32,7 @@ FileText read_stream(std::FILE* f, const std::string& name) {
   while (true) {
     if (text.size == capacity) {
       capacity = capacity * 2 + 65536;
-      auto bigger = std::make_unique_for_overwrite<char[]>(capacity);
+      BigBytes bigger(capacity);
       if (text.size) std::memcpy(bigger.get(), text.bytes.get(), text.size);
       text.bytes = std::move(bigger);
     }
@@ -61,7 +61,7 @@ void read_range(std::FILE* f, const std::string& path, char* dest, std::size_t f
 // Two threads each copy half of the file: on this hardware copying out of the page cache is
 // bound by page faults, which two cores take in parallel.
 FileText read_sized(FileHandle f, const std::string& path, std::size_t size) {
-  FileText text{std::make_unique_for_overwrite<char[]>(size ? size : 1), size};
+  FileText text{BigBytes(size ? size : 1), size};
   if (size < kParallelReadBytes) {
     read_range(f.get(), path, text.bytes.get(), 0, size);
     return text;

@@ -3,15 +3,16 @@
 #pragma once
 
 #include <cstddef>
-#include <memory>
 #include <string>
+
+#include "util/big_allocator.h"
 
 namespace deltri {
 
 // Raw bytes; not a std::string because zero-filling a large buffer before reading into it costs
 // as much as a third of the read.
 struct FileText {
-  std::unique_ptr<char[]> bytes;
+  BigBytes bytes;
   std::size_t size = 0;
 };
 
