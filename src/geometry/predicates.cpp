@@ -40,6 +40,58 @@ double first_order(double dx, double dy, double dx_tail, double dy_tail, double 
   return (dx * dx + dy * dy) * minor_tail_effect + 2.0 * (dx * dx_tail + dy * dy_tail) * minor;
 }
 
+// Plain floating-point arithmetic that records whether any operation rounded.
+class NoRoundoff {
+ public:
+  double mul(double a, double b) {
+    double x, y;
+    two_product(a, b, x, y);
+    exact_ = exact_ && y == 0.0;
+    return x;
+  }
+  double add(double a, double b) {
+    double x, y;
+    two_sum(a, b, x, y);
+    exact_ = exact_ && y == 0.0;
+    return x;
+  }
+  double sub(double a, double b) {
+    double x, y;
+    two_diff(a, b, x, y);
+    exact_ = exact_ && y == 0.0;
+    return x;
+  }
+  bool exact() const { return exact_; }
+
+ private:
+  bool exact_ = true;
+};
+
+// Within these magnitudes (or zero) a difference is a multiple of 2^-252, so every product and sum
+// of the determinant is a multiple of 2^-1008 below 2^803: each roundoff is representable, and a
+// zero roundoff really means the operation was exact.
+bool tame(double d) {
+  const double m = std::fabs(d);
+  return m == 0.0 || (m >= 0x1p-200 && m <= 0x1p200);
+}
+
+// Points of a coarse lattice (grids, integer coordinates) meet the adaptive stage in great numbers
+// as cocircular quadruples, whose determinant is exactly zero. With exact differences and no
+// rounding anywhere in the plain evaluation, that evaluation is the exact determinant: true means
+// it is exactly zero, which stage B would also find, at several times the cost.
+bool exactly_cocircular(double adx, double ady, double bdx, double bdy, double cdx, double cdy) {
+  if (!(tame(adx) && tame(ady) && tame(bdx) && tame(bdy) && tame(cdx) && tame(cdy))) return false;
+  NoRoundoff f;
+  const double alift = f.add(f.mul(adx, adx), f.mul(ady, ady));
+  const double blift = f.add(f.mul(bdx, bdx), f.mul(bdy, bdy));
+  const double clift = f.add(f.mul(cdx, cdx), f.mul(cdy, cdy));
+  const double bc = f.sub(f.mul(bdx, cdy), f.mul(cdx, bdy));
+  const double ca = f.sub(f.mul(cdx, ady), f.mul(adx, cdy));
+  const double ab = f.sub(f.mul(adx, bdy), f.mul(bdx, ady));
+  const double det = f.add(f.add(f.mul(alift, bc), f.mul(blift, ca)), f.mul(clift, ab));
+  return f.exact() && det == 0.0;
+}
+
 }  // namespace
 
 double Predicates::orient2d_adapt(const Point& a, const Point& b, const Point& c, double detsum) {
@@ -71,6 +123,11 @@ double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c
   ++counters.incircle_adaptive;
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+  const bool exact_differences =
+      two_diff_tail(a.x, d.x, adx) == 0.0 && two_diff_tail(a.y, d.y, ady) == 0.0 &&
+      two_diff_tail(b.x, d.x, bdx) == 0.0 && two_diff_tail(b.y, d.y, bdy) == 0.0 &&
+      two_diff_tail(c.x, d.x, cdx) == 0.0 && two_diff_tail(c.y, d.y, cdy) == 0.0;
+  if (exact_differences && exactly_cocircular(adx, ady, bdx, bdy, cdx, cdy)) return 0.0;
 
   double bc[4], ca[4], ab[4];
   const int bcn = difference_of_products(bdx, cdy, cdx, bdy, bc);
