@@ -5,6 +5,11 @@
 // Stage C adds the first-order effect of the differences' roundoff in floating point. Stage D
 // evaluates the determinant exactly from the input coordinates. Each stage stops as soon as its
 // error bound proves the sign.
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
 #include "geometry/expansion.h"
 #include "geometry/exact_determinants.h"
 #include "geometry/predicates.h"
@@ -40,56 +45,29 @@ double first_order(double dx, double dy, double dx_tail, double dy_tail, double 
   return (dx * dx + dy * dy) * minor_tail_effect + 2.0 * (dx * dx_tail + dy * dy_tail) * minor;
 }
 
-// Plain floating-point arithmetic that records whether any operation rounded.
-class NoRoundoff {
- public:
-  double mul(double a, double b) {
-    double x, y;
-    two_product(a, b, x, y);
-    exact_ = exact_ && y == 0.0;
-    return x;
-  }
-  double add(double a, double b) {
-    double x, y;
-    two_sum(a, b, x, y);
-    exact_ = exact_ && y == 0.0;
-    return x;
-  }
-  double sub(double a, double b) {
-    double x, y;
-    two_diff(a, b, x, y);
-    exact_ = exact_ && y == 0.0;
-    return x;
-  }
-  bool exact() const { return exact_; }
-
- private:
-  bool exact_ = true;
-};
-
-// Within these magnitudes (or zero) a difference is a multiple of 2^-252, so every product and sum
-// of the determinant is a multiple of 2^-1008 below 2^803: each roundoff is representable, and a
-// zero roundoff really means the operation was exact.
-bool tame(double d) {
-  const double m = std::fabs(d);
-  return m == 0.0 || (m >= 0x1p-200 && m <= 0x1p200);
-}
-
 // Points of a coarse lattice (grids, integer coordinates) meet the adaptive stage in great numbers
-// as cocircular quadruples, whose determinant is exactly zero. With exact differences and no
-// rounding anywhere in the plain evaluation, that evaluation is the exact determinant: true means
-// it is exactly zero, which stage B would also find, at several times the cost.
-bool exactly_cocircular(double adx, double ady, double bdx, double bdy, double cdx, double cdy) {
-  if (!(tame(adx) && tame(ady) && tame(bdx) && tame(bdy) && tame(cdx) && tame(cdy))) return false;
-  NoRoundoff f;
-  const double alift = f.add(f.mul(adx, adx), f.mul(ady, ady));
-  const double blift = f.add(f.mul(bdx, bdx), f.mul(bdy, bdy));
-  const double clift = f.add(f.mul(cdx, cdx), f.mul(cdy, cdy));
-  const double bc = f.sub(f.mul(bdx, cdy), f.mul(cdx, bdy));
-  const double ca = f.sub(f.mul(cdx, ady), f.mul(adx, cdy));
-  const double ab = f.sub(f.mul(adx, bdy), f.mul(bdx, ady));
-  const double det = f.add(f.add(f.mul(alift, bc), f.mul(blift, ca)), f.mul(clift, ab));
-  return f.exact() && det == 0.0;
+// as cocircular quadruples, whose determinant is exactly zero; true means that it is, which stage B
+// would also find, at several times the cost. If every difference is an integer multiple of a power
+// of two g and at most 4096 g in magnitude, every product and sum of the plain evaluation is an
+// integer multiple of g^4 below 2^52 g^4, so that evaluation is exact. The magnitude limits keep
+// g^4 and the scaling by 1/g clear of underflow and overflow.
+bool exactly_cocircular(const double (&d)[6]) {
+  double m = 0.0;
+  for (double v : d) m = std::max(m, std::fabs(v));
+  if (m == 0.0) return true;
+  if (!(m >= 0x1p-200 && m <= 0x1p200)) return false;
+  // m < 2^e with e from m's exponent field; 1/g = 2^(12 - e).
+  const int e = static_cast<int>(std::bit_cast<std::uint64_t>(m) >> 52) - 1022;
+  const double to_units = std::bit_cast<double>(static_cast<std::uint64_t>(12 - e + 1023) << 52);
+  for (double v : d) {
+    const double u = v * to_units;  // |u| < 4096: the conversion below cannot overflow
+    if (u != static_cast<double>(static_cast<std::int32_t>(u))) return false;
+  }
+  const auto [adx, ady, bdx, bdy, cdx, cdy] = d;
+  const double det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+                     (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+                     (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+  return det == 0.0;
 }
 
 }  // namespace
@@ -127,7 +105,7 @@ double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c
       two_diff_tail(a.x, d.x, adx) == 0.0 && two_diff_tail(a.y, d.y, ady) == 0.0 &&
       two_diff_tail(b.x, d.x, bdx) == 0.0 && two_diff_tail(b.y, d.y, bdy) == 0.0 &&
       two_diff_tail(c.x, d.x, cdx) == 0.0 && two_diff_tail(c.y, d.y, cdy) == 0.0;
-  if (exact_differences && exactly_cocircular(adx, ady, bdx, bdy, cdx, cdy)) return 0.0;
+  if (exact_differences && exactly_cocircular({adx, ady, bdx, bdy, cdx, cdy})) return 0.0;
 
   double bc[4], ca[4], ab[4];
   const int bcn = difference_of_products(bdx, cdy, cdx, bdy, bc);
