@@ -275,18 +275,20 @@ class Builder {
   }
 
   // The ghost over the hull edge entering the extreme vertex of the ring along `axis` (largest if
-  // `largest`, else smallest), entering or leaving it as `entering` says.
+  // `largest`, else smallest), entering or leaving it as `entering` says. Along a convex ring the
+  // order on `axis` (a linear order with ties broken by the other coordinate) rises once and falls
+  // once, so walking from `start` in the direction that improves finds the extreme without going
+  // round: with long hulls (grids) the full round cost a twentieth of the triangulation.
   TriangleId extreme_ghost(TriangleId start, int axis, bool largest, bool entering) const {
+    const auto vertex = [&](TriangleId g) { return entering ? corner_[3 * g] : corner_[3 * g + 1]; };
+    const auto better = [&](TriangleId g, TriangleId than) {
+      const Point &p = p_[vertex(g)], &q = p_[vertex(than)];
+      return largest ? less_on(axis, q, p) : less_on(axis, p, q);
+    };
     TriangleId best = start;
-    VertexId best_v = entering ? corner_[3 * start] : corner_[3 * start + 1];
-    for (TriangleId g = next_ghost(start); g != start; g = next_ghost(g)) {
-      const VertexId v = entering ? corner_[3 * g] : corner_[3 * g + 1];
-      const bool better = largest ? less_on(axis, p_[best_v], p_[v]) : less_on(axis, p_[v], p_[best_v]);
-      if (better) {
-        best = g;
-        best_v = v;
-      }
-    }
+    for (TriangleId g = next_ghost(best); g != start && better(g, best); g = next_ghost(g)) best = g;
+    if (best != start) return best;
+    for (TriangleId g = prev_ghost(best); g != start && better(g, best); g = prev_ghost(g)) best = g;
     return best;
   }
 
