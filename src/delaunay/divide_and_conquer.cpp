@@ -72,14 +72,28 @@ class MortonKey {
   static constexpr double kCells = 16777215.0;  // 2^24 - 1
   static constexpr std::uint32_t kLastCell = 0xFFFFFFu;
   MortonKey() = default;
-  explicit MortonKey(const std::vector<Point>& pts, const std::vector<VertexKind>& kind) {
-    bool first = true;
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      if (kind[i] != VertexKind::Input) continue;
-      const Point& p = pts[i];
-      if (first) { lo_ = p; first = false; }
-      lo_.x = std::min(lo_.x, p.x), lo_.y = std::min(lo_.y, p.y);
-      hi_x_ = std::max(hi_x_, p.x), hi_y_ = std::max(hi_y_, p.y);
+  // The bounding box is found by two threads (when `threads` allows) over the two halves.
+  MortonKey(const BigVector<Point>& pts, const std::vector<VertexKind>& kind, int threads) {
+    struct Box {
+      bool any = false;
+      Point lo;
+      double hi_x = -1e308, hi_y = -1e308;
+    } half[2];
+    split_in_two(pts.size(), worth_two(threads, pts.size()), [&](std::size_t from, std::size_t to) {
+      Box& box = half[from == 0 ? 0 : 1];
+      for (std::size_t i = from; i < to; ++i) {
+        if (kind[i] != VertexKind::Input) continue;
+        const Point& p = pts[i];
+        if (!box.any) box.lo = p, box.any = true;
+        box.lo.x = std::min(box.lo.x, p.x), box.lo.y = std::min(box.lo.y, p.y);
+        box.hi_x = std::max(box.hi_x, p.x), box.hi_y = std::max(box.hi_y, p.y);
+      }
+    });
+    for (const Box& box : half) {
+      if (!box.any) continue;
+      if (!any_) lo_ = box.lo, any_ = true;
+      lo_.x = std::min(lo_.x, box.lo.x), lo_.y = std::min(lo_.y, box.lo.y);
+      hi_x_ = std::max(hi_x_, box.hi_x), hi_y_ = std::max(hi_y_, box.hi_y);
     }
     const double extent = std::max(hi_x_ - lo_.x, hi_y_ - lo_.y);
     scale_ = extent > 0.0 ? kCells / extent : 0.0;
@@ -93,6 +107,7 @@ class MortonKey {
     const double c = d * scale_;
     return c >= kCells ? kLastCell : static_cast<std::uint32_t>(c);
   }
+  bool any_ = false;
   Point lo_;
   double hi_x_ = -1e308, hi_y_ = -1e308;
   double scale_ = 0.0;
@@ -114,10 +129,10 @@ unsigned digit(const KeyedVertex& k, int d) { return static_cast<unsigned>(k.key
 // LSD radix sort on the 48-bit key, 16 bits at a time, skipping digits all keys share. With two
 // threads each pass counts and moves the two halves of the array at once; the first half's keys
 // go before the second's in every bucket, so the sort stays stable and the result is the same.
-void radix_sort(std::vector<KeyedVertex>& items, int threads) {
+void radix_sort(BigVector<KeyedVertex>& items, int threads) {
   const std::size_t n = items.size();
   const bool two = worth_two(threads, n);
-  std::vector<KeyedVertex> buffer(n);
+  BigVector<KeyedVertex> buffer(n);
   std::vector<std::uint32_t> count(2 * kDigits);
   for (int d = 0; d < 3; ++d) {
     std::fill(count.begin(), count.end(), 0u);
@@ -275,18 +290,20 @@ class Builder {
   }
 
   // The ghost over the hull edge entering the extreme vertex of the ring along `axis` (largest if
-  // `largest`, else smallest), entering or leaving it as `entering` says.
+  // `largest`, else smallest), entering or leaving it as `entering` says. Along a convex ring the
+  // order on `axis` (a linear order with ties broken by the other coordinate) rises once and falls
+  // once, so walking from `start` in the direction that improves finds the extreme without going
+  // round: with long hulls (grids) the full round cost a twentieth of the triangulation.
   TriangleId extreme_ghost(TriangleId start, int axis, bool largest, bool entering) const {
+    const auto vertex = [&](TriangleId g) { return entering ? corner_[3 * g] : corner_[3 * g + 1]; };
+    const auto better = [&](TriangleId g, TriangleId than) {
+      const Point &p = p_[vertex(g)], &q = p_[vertex(than)];
+      return largest ? less_on(axis, q, p) : less_on(axis, p, q);
+    };
     TriangleId best = start;
-    VertexId best_v = entering ? corner_[3 * start] : corner_[3 * start + 1];
-    for (TriangleId g = next_ghost(start); g != start; g = next_ghost(g)) {
-      const VertexId v = entering ? corner_[3 * g] : corner_[3 * g + 1];
-      const bool better = largest ? less_on(axis, p_[best_v], p_[v]) : less_on(axis, p_[v], p_[best_v]);
-      if (better) {
-        best = g;
-        best_v = v;
-      }
-    }
+    for (TriangleId g = next_ghost(best); g != start && better(g, best); g = next_ghost(g)) best = g;
+    if (best != start) return best;
+    for (TriangleId g = prev_ghost(best); g != start && better(g, best); g = prev_ghost(g)) best = g;
     return best;
   }
 
@@ -416,9 +433,9 @@ bool lexicographic_less(const Point& a, VertexId ia, const Point& b, VertexId ib
   return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && ia < ib)));
 }
 
-// The Input vertices in the order the recursion wants them: along the Morton curve with each group
-// of equal keys in x order, or (key null) in x order. Equal points end up adjacent, lowest id first.
-std::vector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, int threads) {
+// The Input vertices along the Morton curve (key null: all in one group of equal keys), to be put
+// in the order the recursion wants by order_groups_and_remove_duplicates.
+BigVector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, int threads) {
   const std::size_t n = mesh.vertex_count();
   const bool two = worth_two(threads, n);
   std::size_t first_half = 0, all = 0;  // Input vertices in [0, n/2), in [0, n)
@@ -427,28 +444,19 @@ std::vector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, 
     all += mesh.kind[v] == VertexKind::Input;
   }
   if (!two) first_half = 0;
-  std::vector<KeyedVertex> items(all);
+  BigVector<KeyedVertex> items(all);
   split_in_two(n, two, [&](std::size_t from, std::size_t to) {
     std::size_t k = from == 0 ? 0 : first_half;
     for (std::size_t v = from; v < to; ++v)
       if (mesh.kind[v] == VertexKind::Input) items[k++] = {key ? (*key)(mesh.points[v]) : 0, static_cast<VertexId>(v)};
   });
   if (key) radix_sort(items, threads);
-  const auto by_point = [&](const KeyedVertex& a, const KeyedVertex& b) {
-    return lexicographic_less(mesh.points[a.id], a.id, mesh.points[b.id], b.id);
-  };
-  for (std::size_t i = 0; i < items.size();) {
-    std::size_t j = i + 1;
-    while (j < items.size() && items[j].key == items[i].key) ++j;
-    if (j - i > 1) std::sort(items.begin() + static_cast<std::ptrdiff_t>(i), items.begin() + static_cast<std::ptrdiff_t>(j), by_point);
-    i = j;
-  }
   return items;
 }
 
 // sorted[k] = points[items[k].id], order[k] = items[k].id; the random reads are split over threads.
-void gather(const std::vector<Point>& points, const std::vector<KeyedVertex>& items,
-            std::vector<Point>& sorted, std::vector<VertexId>& order, int threads) {
+void gather(const BigVector<Point>& points, const BigVector<KeyedVertex>& items,
+            BigVector<Point>& sorted, BigVector<VertexId>& order, int threads) {
   split_in_two(items.size(), worth_two(threads, items.size()), [&](std::size_t from, std::size_t to) {
     for (std::size_t k = from; k < to; ++k) {
       sorted[k] = points[items[k].id];
@@ -457,19 +465,31 @@ void gather(const std::vector<Point>& points, const std::vector<KeyedVertex>& it
   });
 }
 
-// Drops all but the first of each run of equal points and reports them.
-void remove_duplicates(const Mesh& mesh, std::vector<KeyedVertex>& items,
-                       std::vector<std::pair<VertexId, VertexId>>& duplicates) {
-  std::size_t kept = 1;
-  for (std::size_t i = 1; i < items.size(); ++i) {
-    const KeyedVertex& last = items[kept - 1];
-    if (items[i].key == last.key && mesh.points[items[i].id] == mesh.points[last.id]) {
-      duplicates.emplace_back(items[i].id, items[kept - 1].id);
-    } else {
+// Puts each group of equal keys in x order and drops all but the first of each run of equal points,
+// reporting them; one pass, because at 4M points every pass over the keys costs 10 ms on one core.
+void order_groups_and_remove_duplicates(const Mesh& mesh, BigVector<KeyedVertex>& items,
+                                        std::vector<std::pair<VertexId, VertexId>>& duplicates) {
+  const auto by_point = [&](const KeyedVertex& a, const KeyedVertex& b) {
+    return lexicographic_less(mesh.points[a.id], a.id, mesh.points[b.id], b.id);
+  };
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < items.size();) {
+    std::size_t j = i + 1;
+    while (j < items.size() && items[j].key == items[i].key) ++j;
+    if (j - i == 1) {
       items[kept++] = items[i];
+      i = j;
+      continue;
     }
+    std::sort(items.begin() + static_cast<std::ptrdiff_t>(i), items.begin() + static_cast<std::ptrdiff_t>(j), by_point);
+    items[kept++] = items[i];  // equal points are adjacent now, the lowest id first
+    for (std::size_t k = i + 1; k < j; ++k) {
+      if (mesh.points[items[k].id] == mesh.points[items[kept - 1].id]) duplicates.emplace_back(items[k].id, items[kept - 1].id);
+      else items[kept++] = items[k];
+    }
+    i = j;
   }
-  items.resize(std::min(kept, items.size()));
+  items.resize(kept);
   std::sort(duplicates.begin(), duplicates.end());
 }
 
@@ -528,10 +548,10 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   mesh.subseg.clear();
   mesh.free_triangles.clear();
 
-  const MortonKey key(mesh.points, mesh.kind);
+  const MortonKey key(mesh.points, mesh.kind, threads);
   const MortonKey* cut_key = options.alternate_cuts ? &key : nullptr;
-  std::vector<KeyedVertex> items = order_vertices(mesh, cut_key, threads);
-  remove_duplicates(mesh, items, duplicates);
+  BigVector<KeyedVertex> items = order_vertices(mesh, cut_key, threads);
+  order_groups_and_remove_duplicates(mesh, items, duplicates);
   for (const auto& [dup, kept] : duplicates) mesh.kind[dup] = VertexKind::Duplicate;
   const std::uint32_t m = static_cast<std::uint32_t>(items.size());
   if (m < 3) return;
@@ -543,15 +563,15 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   std::vector<std::pair<VertexId, Point>> bystanders;
   for (VertexId v = 0; v < total; ++v)
     if (mesh.kind[v] != VertexKind::Input) bystanders.emplace_back(v, mesh.points[v]);
-  std::vector<Point> sorted;
-  std::vector<VertexId> order;
+  BigVector<Point> sorted;
+  BigVector<VertexId> order;
   sorted.reserve(total);
   order.reserve(total);
   sorted.resize(m);
   order.resize(m);
   gather(mesh.points, items, sorted, order, threads);
-  std::vector<KeyedVertex>().swap(items);
-  std::vector<Point>().swap(mesh.points);
+  BigVector<KeyedVertex>().swap(items);
+  BigVector<Point>().swap(mesh.points);
 
   const std::size_t slots = 2 * static_cast<std::size_t>(m) - 2;
   // Zero-filling the two arrays (and faulting in their pages) is done by a thread each.

@@ -84,6 +84,10 @@ double first_order(double dx, double dy, double dx_tail, double dy_tail, double 
 struct ScaledDifferences {
   std::int64_t m[6] = {0, 0, 0, 0, 0, 0};
   int width = 0;
+  int low = 0;  // the power of two of the unit
+  // The plain and double-word evaluations stay clear of underflow and overflow: their smallest
+  // terms (2^(4 low), their roundoff u^2 below that) stay normal, their largest below 2^1000.
+  bool fits_doubles() const { return low >= -225 && low + width <= 245; }
 };
 
 // False for subnormals, non-finite values, or a width beyond 62 bits.
@@ -103,6 +107,7 @@ bool scale_to_integers(const double (&d)[6], ScaledDifferences& out) {
   }
   if (high - low > 62) return false;
   out.width = std::max(0, high - low);
+  out.low = low;
   for (int k = 0; k < 6; ++k) {
     if (mantissa[k] == 0) continue;
     const int shift = exponent[k] - low;  // >= -52 (trailing zeros only) and <= 9
@@ -267,14 +272,16 @@ double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c
   ScaledDifferences scaled;
   const bool scaled_ok = exact_differences && scale_to_integers({adx, ady, bdx, bdy, cdx, cdy}, scaled);
   // Exactly cocircular lattice points first: no filter can decide a zero.
-  if (scaled_ok && scaled.width <= 12) return incircle_on_grid({adx, ady, bdx, bdy, cdx, cdy});
+  if (scaled_ok && scaled.width <= 12 && scaled.fits_doubles())
+    return incircle_on_grid({adx, ady, bdx, bdy, cdx, cdy});
   if constexpr (kWideLongDouble) {
     double extended = 0.0;
     if (incircle_extended(a, b, c, d, extended)) return extended;
   }
   if (scaled_ok) {
     double quick = 0.0;
-    if (incircle_double_word({adx, ady, bdx, bdy, cdx, cdy}, permanent, quick)) return quick;
+    if (scaled.fits_doubles() && incircle_double_word({adx, ady, bdx, bdy, cdx, cdy}, permanent, quick))
+      return quick;
     return incircle_in_integers(scaled);
   }
 

@@ -7,14 +7,24 @@
 #include <filesystem>
 #include <system_error>
 #include <thread>
+#include <utility>
 
 #include "pslg/errors.h"
+
+#ifdef __linux__
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
 
 namespace deltri {
 namespace {
 
 // Below this a second reading thread costs more than it saves.
 constexpr std::size_t kParallelReadBytes = std::size_t{4} << 20;
+// From this size a file is mapped rather than copied, where the system allows.
+[[maybe_unused]] constexpr std::size_t kMapBytes = std::size_t{4} << 20;
 
 struct FileCloser {
   void operator()(std::FILE* f) const { std::fclose(f); }
@@ -32,7 +42,7 @@ FileText read_stream(std::FILE* f, const std::string& name) {
   while (true) {
     if (text.size == capacity) {
       capacity = capacity * 2 + 65536;
-      auto bigger = std::make_unique_for_overwrite<char[]>(capacity);
+      BigBytes bigger(capacity);
       if (text.size) std::memcpy(bigger.get(), text.bytes.get(), text.size);
       text.bytes = std::move(bigger);
     }
@@ -61,7 +71,7 @@ void read_range(std::FILE* f, const std::string& path, char* dest, std::size_t f
 // Two threads each copy half of the file: on this hardware copying out of the page cache is
 // bound by page faults, which two cores take in parallel.
 FileText read_sized(FileHandle f, const std::string& path, std::size_t size) {
-  FileText text{std::make_unique_for_overwrite<char[]>(size ? size : 1), size};
+  FileText text{BigBytes(size ? size : 1), size, {}};
   if (size < kParallelReadBytes) {
     read_range(f.get(), path, text.bytes.get(), 0, size);
     return text;
@@ -86,7 +96,44 @@ FileText read_sized(FileHandle f, const std::string& path, std::size_t size) {
   return text;
 }
 
+#ifdef __linux__
+// Maps a regular file of `size` bytes; false (and `text` untouched) when that is not possible or
+// the file's size changed since it was measured, in which case the caller reads it instead. Pages
+// are faulted in by the threads that parse them, not in advance.
+bool map_file(const std::string& path, std::size_t size, FileText& text) {
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  struct stat st;
+  void* p = MAP_FAILED;
+  if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) == size)
+    p = mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+  close(fd);  // the mapping keeps the file
+  if (p == MAP_FAILED) return false;
+  text.mapped = MappedFile(static_cast<const char*>(p), size);
+  text.size = size;
+  return true;
+}
+#endif
+
 }  // namespace
+
+MappedFile& MappedFile::operator=(MappedFile&& other) noexcept {
+  if (this != &other) {
+    release();
+    data_ = std::exchange(other.data_, nullptr);
+    size_ = other.size_;
+  }
+  return *this;
+}
+
+MappedFile::~MappedFile() { release(); }
+
+void MappedFile::release() noexcept {
+#ifdef __linux__
+  if (data_) munmap(const_cast<char*>(data_), size_);
+#endif
+  data_ = nullptr;
+}
 
 FileText read_file_text(const std::string& path) {
   if (path == "-") return read_stream(stdin, kStandardInputName);
@@ -95,6 +142,12 @@ FileText read_file_text(const std::string& path) {
   FileHandle f = open_or_throw(path);
   const auto size = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
   if (ec || size == 0) return read_stream(f.get(), path);  // pipes, devices, files whose size lies
+#ifdef __linux__
+  // A file that shrinks while it is mapped would fault (SIGBUS) where a read would report a short
+  // file; input files changing during a run are not something a mesher can defend against anyway.
+  FileText mapped;
+  if (size >= kMapBytes && map_file(path, static_cast<std::size_t>(size), mapped)) return mapped;
+#endif
   return read_sized(std::move(f), path, static_cast<std::size_t>(size));
 }
 

@@ -46,7 +46,7 @@ std::string describe(const FieldName& name) {
 
 LineReader::LineReader(std::string name, FileText text)
     : name_(std::move(name)), text_(std::make_shared<const FileText>(std::move(text))) {
-  pos_ = text_->bytes.get();
+  pos_ = text_->data();
   end_ = pos_ + text_->size;
   // Windows editors may start a UTF-8 file with a byte order mark; Triangle's scanner skips it
   // as it skips any non-numeric text, and a user cannot see it, so it is no error here either.
@@ -55,7 +55,7 @@ LineReader::LineReader(std::string name, FileText text)
 
 namespace {
 FileText copy_text(const std::string& text) {
-  FileText copy{std::make_unique_for_overwrite<char[]>(text.size() + 1), text.size()};
+  FileText copy{BigBytes(text.size() + 1), text.size(), {}};
   text.copy(copy.bytes.get(), text.size());
   return copy;
 }

@@ -39,6 +39,7 @@
 
 #include "geometry/point.h"
 #include "mesh/ids.h"
+#include "util/big_allocator.h"
 
 namespace deltri {
 
@@ -59,15 +60,15 @@ struct Subsegment {
 
 struct Mesh {
   // Vertices.
-  std::vector<Point> points;
+  BigVector<Point> points;
   std::vector<VertexKind> kind;
   std::vector<int> marker;          // empty when nothing carries markers
   int num_attributes = 0;
   std::vector<double> attributes;   // num_attributes per vertex
 
   // Triangles.
-  std::vector<VertexId> corner;
-  std::vector<EdgeRef> link;
+  BigVector<VertexId> corner;
+  BigVector<EdgeRef> link;
   std::vector<SubsegmentId> subseg;
   std::vector<TriangleId> free_triangles;
   int num_triangle_attributes = 0;

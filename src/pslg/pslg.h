@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/point.h"
+#include "util/big_allocator.h"
 
 namespace deltri {
 
@@ -21,7 +22,7 @@ struct Pslg {
     double max_area = -1.0;  // <= 0: no bound
   };
 
-  std::vector<Point> points;
+  BigVector<Point> points;
   int num_attributes = 0;
   std::vector<double> attributes;  // num_attributes per point
   bool has_markers = false;

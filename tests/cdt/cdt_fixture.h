@@ -25,7 +25,7 @@ struct Built {
 
 inline void triangulate_and_insert(Built& b, const std::vector<Point>& points,
                                    const std::vector<Pslg::Segment>& segments) {
-  b.mesh.points = points;
+  b.mesh.points.assign(points.begin(), points.end());
   b.mesh.kind.assign(points.size(), VertexKind::Input);
   b.dt = delaunay_triangulate(b.mesh, DelaunayAlgorithm::DivideAndConquer, 1);
   b.seg = insert_segments(b.mesh, b.pred, segments, b.dt.duplicates);

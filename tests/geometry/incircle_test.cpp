@@ -127,6 +127,29 @@ TEST(incircle_exactly_cocircular_lattice_points_are_zero) {
   }
 }
 
+// Lattice points just off the circle: exact differences and a determinant that is small but not zero,
+// at scales inside and outside the range where the adaptive stage's shortcut for exact zeros applies.
+TEST(incircle_lattice_points_next_to_the_circle_are_not_zero) {
+  Predicates pred;
+  Random rng(30);
+  const auto points = lattice_circle();
+  std::vector<std::array<int, 2>> near;  // x^2 + y^2 = 65^2 +- 1, +- 2
+  for (int x = -66; x <= 66; ++x)
+    for (int y = -66; y <= 66; ++y)
+      if (const int off = x * x + y * y - 65 * 65; off != 0 && off >= -2 && off <= 2) near.push_back({x, y});
+  REQUIRE(!near.empty());
+  const int exponents[] = {-300, -280, -250, -210, -199, -60, 0, 40, 199, 201};
+  for (int i = 0; i < 4000; ++i) {
+    const double scale = std::ldexp(1.0, exponents[i % 10]);
+    auto at = [&](const std::array<int, 2>& p) { return Point{scale * p[0], scale * p[1]}; };
+    const Point a = at(points[rng.integer(0, static_cast<int>(points.size()) - 1)]);
+    const Point b = at(points[rng.integer(0, static_cast<int>(points.size()) - 1)]);
+    const Point c = at(points[rng.integer(0, static_cast<int>(points.size()) - 1)]);
+    const Point d = at(near[rng.integer(0, static_cast<int>(near.size()) - 1)]);
+    CHECK_EQ(sign_of(pred.incircle(a, b, c, d)), incircle_sign(a, b, c, d));
+  }
+}
+
 TEST(incircle_permutations_follow_parity) {
   Predicates pred;
   Random rng(29);

@@ -21,7 +21,7 @@ using namespace deltri;
 
 inline Mesh mesh_of(const std::vector<Point>& pts) {
   Mesh m;
-  m.points = pts;
+  m.points.assign(pts.begin(), pts.end());
   m.kind.assign(pts.size(), VertexKind::Input);
   return m;
 }

@@ -1,5 +1,6 @@
 // incremental_delaunay judged by independent facts: exact orientation and empty circles, Euler's
 // formula, and the triangle count 2n - 2 - h with h from a monotone-chain hull.
+#include <algorithm>
 #include <chrono>
 
 #include "delaunay/incremental.h"
@@ -114,7 +115,7 @@ TEST(incremental_all_collinear_and_too_few) {
   run(m);
   CHECK_EQ(m.live_triangles(), 0u);
   CHECK(m.corner.empty());
-  CHECK(m.points == line);
+  CHECK(std::ranges::equal(m.points, line));
   for (const auto& pts : {std::vector<Point>{}, std::vector<Point>{{1, 1}},
                           std::vector<Point>{{1, 1}, {1, 1}, {2, 2}}, std::vector<Point>{{0, 0}, {1, 1}}}) {
     Mesh s = mesh_of(pts);

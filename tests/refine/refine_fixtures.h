@@ -142,9 +142,9 @@ inline std::vector<TriangleId> skinny_triangles(const Mesh& m, double theta) {
 
 // A bit-for-bit copy of the topology, for "nothing changed" checks.
 struct Snapshot {
-  std::vector<Point> points;
-  std::vector<VertexId> corner;
-  std::vector<EdgeRef> link;
+  BigVector<Point> points;
+  BigVector<VertexId> corner;
+  BigVector<EdgeRef> link;
   std::vector<SubsegmentId> subseg;
   std::size_t subsegments = 0;
   explicit Snapshot(const Mesh& m)

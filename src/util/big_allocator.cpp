@@ -1,0 +1,62 @@
+#include "util/big_allocator.h"
+
+#include <cstdint>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
+namespace deltri {
+namespace {
+
+#ifdef __linux__
+constexpr std::size_t kHugePage = std::size_t{2} << 20;
+
+// Whole small pages only: a last partial huge page stays in small pages instead of adding up to
+// 2 MiB of resident memory per array (which cost 3 bytes per point at the peak).
+std::size_t mapped_size(std::size_t bytes) {
+  const long page = sysconf(_SC_PAGESIZE);
+  const std::size_t small = page > 0 ? static_cast<std::size_t>(page) : 4096;
+  return (bytes + small - 1) / small * small;
+}
+
+// Maps one huge page more than needed and trims both ends, so that the block starts on a 2 MiB
+// boundary and all its whole 2 MiB ranges can be huge pages. Null when mmap fails.
+void* map_aligned(std::size_t size) {
+  const std::size_t padded = size + kHugePage;
+  void* raw = mmap(nullptr, padded, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (raw == MAP_FAILED) return nullptr;
+  const auto start = reinterpret_cast<std::uintptr_t>(raw);
+  const std::uintptr_t aligned = (start + kHugePage - 1) & ~(std::uintptr_t{kHugePage} - 1);
+  if (aligned > start) munmap(raw, aligned - start);
+  if (const std::size_t tail = padded - (aligned - start) - size) munmap(reinterpret_cast<void*>(aligned + size), tail);
+  void* block = reinterpret_cast<void*>(aligned);
+  madvise(block, size, MADV_HUGEPAGE);  // refused (no THP, old kernel): small pages then
+  return block;
+}
+#endif
+
+}  // namespace
+
+void* allocate_big(std::size_t bytes) {
+#ifdef __linux__
+  if (bytes >= kBigBlock) {
+    if (void* p = map_aligned(mapped_size(bytes))) return p;
+    throw std::bad_alloc();
+  }
+#endif
+  return ::operator new(bytes ? bytes : 1);
+}
+
+void release_big(void* p, std::size_t bytes) noexcept {
+#ifdef __linux__
+  if (bytes >= kBigBlock) {
+    munmap(p, mapped_size(bytes));
+    return;
+  }
+#endif
+  ::operator delete(p);
+}
+
+}  // namespace deltri
