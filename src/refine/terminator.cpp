@@ -242,9 +242,12 @@ bool Terminator::shell_exempt(EdgeRef shortest) const {
   for (VertexId j : pa) {
     if (j != pb[0] && j != pb[1]) continue;
     const Point& pj = mesh_.point(j);
-    const double da = std::hypot(mesh_.point(a).x - pj.x, mesh_.point(a).y - pj.y);
-    const double db = std::hypot(mesh_.point(b).x - pj.x, mesh_.point(b).y - pj.y);
-    if (da > 0.999 * db && db > 0.999 * da) return true;
+    const Point& qa = mesh_.point(a);
+    const Point& qb = mesh_.point(b);
+    const double da2 = (qa.x - pj.x) * (qa.x - pj.x) + (qa.y - pj.y) * (qa.y - pj.y);
+    const double db2 = (qb.x - pj.x) * (qb.x - pj.x) + (qb.y - pj.y) * (qb.y - pj.y);
+    constexpr double k = 0.999 * 0.999;  // the distances within 0.1%, compared squared
+    if (da2 > k * db2 && db2 > k * da2) return true;
   }
   return false;
 }
