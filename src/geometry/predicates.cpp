@@ -47,16 +47,10 @@ bool incircle_extended(const Point& a, const Point& b, const Point& c, const Poi
   using R = long double;
   constexpr R u = std::numeric_limits<R>::epsilon() / 2;  // unit roundoff
   constexpr R bound_factor = (10 + 96 * u) * u;
-  const R adx = R(a.x) - d.x, bdx = R(b.x) - d.x, cdx = R(c.x) - d.x;
-  const R ady = R(a.y) - d.y, bdy = R(b.y) - d.y, cdy = R(c.y) - d.y;
-  const R bdxcdy = bdx * cdy, cdxbdy = cdx * bdy, cdxady = cdx * ady;
-  const R adxcdy = adx * cdy, adxbdy = adx * bdy, bdxady = bdx * ady;
-  const R alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
-  const R value = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-  const R permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
-                      (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
-                      (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-  if (!(std::fabs(value) > bound_factor * permanent)) return false;
+  const PlainIncircle<R> plain =
+      plain_incircle<R>(R(a.x) - d.x, R(a.y) - d.y, R(b.x) - d.x, R(b.y) - d.y, R(c.x) - d.x, R(c.y) - d.y);
+  const R value = plain.det;
+  if (!(std::fabs(value) > bound_factor * plain.permanent)) return false;
   // The sign is proven; report it in a double that keeps it (a tiny value must not round to 0).
   det = value > 0 ? std::max(static_cast<double>(value), std::numeric_limits<double>::denorm_min())
                   : std::min(static_cast<double>(value), -std::numeric_limits<double>::denorm_min());
@@ -115,18 +109,6 @@ bool scale_to_integers(const double (&d)[6], ScaledDifferences& out) {
     out.m[k] = d[k] < 0.0 ? -static_cast<std::int64_t>(v) : static_cast<std::int64_t>(v);
   }
   return true;
-}
-
-// Stage B's determinant in plain doubles when that is provably exact: with the differences within
-// 12 bits, every product and sum of the determinant is an integer multiple of a power of two below
-// 2^53 (12 monomials of 4 factors: 4 * 12 + 4 bits), so no operation rounds. That is stage B's
-// usual case on points of a coarse dyadic grid, where refinement meets exactly cocircular
-// quadruples by the million.
-double incircle_on_grid(const double (&d)[6]) {
-  const double adx = d[0], ady = d[1], bdx = d[2], bdy = d[3], cdx = d[4], cdy = d[5];
-  return (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
-         (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
-         (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
 }
 
 // 256-bit two's complement integers, four 64-bit limbs from the least significant.
@@ -271,9 +253,13 @@ double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c
       two_diff_tail(c.x, d.x, cdx) == 0.0 && two_diff_tail(c.y, d.y, cdy) == 0.0;
   ScaledDifferences scaled;
   const bool scaled_ok = exact_differences && scale_to_integers({adx, ady, bdx, bdy, cdx, cdy}, scaled);
-  // Exactly cocircular lattice points first: no filter can decide a zero.
+  // Exactly cocircular lattice points first: no filter can decide a zero. With the differences
+  // within 12 bits, every product and sum of the plain determinant is an integer multiple of a
+  // power of two below 2^53 (12 monomials of 4 factors: 4 * 12 + 4 bits), so no operation rounds:
+  // stage B's usual case on a coarse dyadic grid, where refinement meets such quadruples by the
+  // million.
   if (scaled_ok && scaled.width <= 12 && scaled.fits_doubles())
-    return incircle_on_grid({adx, ady, bdx, bdy, cdx, cdy});
+    return plain_incircle(adx, ady, bdx, bdy, cdx, cdy).det;
   if constexpr (kWideLongDouble) {
     double extended = 0.0;
     if (incircle_extended(a, b, c, d, extended)) return extended;

@@ -54,6 +54,28 @@ inline constexpr double kOrientA = (3.0 + 16.0 * kEpsilon) * kEpsilon;
 inline constexpr double kIncircleA = (10.0 + 96.0 * kEpsilon) * kEpsilon;
 }  // namespace bounds
 
+// incircle's determinant evaluated plainly in R from the six coordinate differences (a - d, b - d,
+// c - d), with its permanent (the sum of its terms' magnitudes, which scales its error bound):
+// in double for the filter, in long double for the first adaptive try, and in double where the
+// differences make that evaluation exact.
+template <class R>
+struct PlainIncircle {
+  R det, permanent;
+};
+
+template <class R>
+inline PlainIncircle<R> plain_incircle(R adx, R ady, R bdx, R bdy, R cdx, R cdy) {
+  const R bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const R alift = adx * adx + ady * ady;
+  const R cdxady = cdx * ady, adxcdy = adx * cdy;
+  const R blift = bdx * bdx + bdy * bdy;
+  const R adxbdy = adx * bdy, bdxady = bdx * ady;
+  const R clift = cdx * cdx + cdy * cdy;
+  return {alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady),
+          (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift + (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+              (std::fabs(adxbdy) + std::fabs(bdxady)) * clift};
+}
+
 class Predicates {
  public:
   // Positive if a, b, c are in counter-clockwise order, negative if clockwise, zero if collinear.
@@ -75,21 +97,10 @@ class Predicates {
   // outside, zero if the four points are cocircular.
   double incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
     ++counters.incircle_calls;
-    const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
-    const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
-    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-    const double alift = adx * adx + ady * ady;
-    const double cdxady = cdx * ady, adxcdy = adx * cdy;
-    const double blift = bdx * bdx + bdy * bdy;
-    const double adxbdy = adx * bdy, bdxady = bdx * ady;
-    const double clift = cdx * cdx + cdy * cdy;
-    const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-    const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
-                             (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
-                             (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-    const double bound = bounds::kIncircleA * permanent;
-    if (std::fabs(det) > bound) return det;
-    return incircle_adapt(a, b, c, d, permanent);
+    const PlainIncircle<double> plain =
+        plain_incircle(a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y, c.x - d.x, c.y - d.y);
+    if (std::fabs(plain.det) > bounds::kIncircleA * plain.permanent) return plain.det;
+    return incircle_adapt(a, b, c, d, plain.permanent);
   }
 
   PredicateCounters counters;
