@@ -11,26 +11,10 @@
 // within 1:2 and the new vertex's insertion radius is at least a third of the subsegment.
 #pragma once
 
-#include <array>
-#include <cstdint>
-#include <vector>
-
 #include "mesh/mesh.h"
+#include "refine/segment_pieces.h"
 
 namespace deltri {
-
-// The endpoints of a segment piece: a chain of subsegments between two vertices that are not
-// refinement splits. kNone twice for vertices that are not refinement splits.
-using PieceEnds = std::array<VertexId, 2>;
-
-// Where the pieces are: the piece of each segment vertex added by refinement, and the pieces of
-// the initial mesh (its subsegments) for their ends.
-struct SegmentPieces {
-  std::vector<PieceEnds> of_vertex;       // kNone pairs for vertices that are not refinement splits
-  std::vector<std::uint64_t> initial;     // piece_key of every initial subsegment, sorted
-  static std::uint64_t piece_key(VertexId a, VertexId b);
-  bool is_initial_piece(VertexId a, VertexId b) const;
-};
 
 // True, with p set, when an apex c of a triangle beside s lies on another piece that shares an
 // endpoint o with s's piece (as a split point on it, or as its other end), and the point of s at

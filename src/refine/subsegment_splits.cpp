@@ -89,7 +89,7 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
   const Point& pa = mesh_.point(a);
   const Point& pb = mesh_.point(b);
   Point p;  // Fig. 39 l.39, across a thin wedge aligned with the vertex opposite (mirrored_split.h)
-  if (!mirrored_split_point(mesh_, s, piece_of_subsegment_[mesh_.subseg[s]], pieces_, p))
+  if (!mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
     p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));
   if (p == pa || p == pb) return false;  // out of precision: the subsegment cannot be split
   if (!split_keeps_orientation(s, p)) return false;  // likewise: a neighbour is flush with s
@@ -102,11 +102,9 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
     if (s == kNone || !split_keeps_orientation(s, p)) return false;
   }
   const VertexId v = add_segment_vertex(p, s);
-  const PieceEnds piece = piece_of_subsegment_[mesh_.subseg[s]];
-  pieces_.of_vertex.resize(mesh_.vertex_count(), {kNone, kNone});
-  pieces_.of_vertex[v] = piece;
+  const PieceEnds piece = pieces_.of_subsegment[mesh_.subseg[s]];
   EdgeRef out = split_edge(mesh_, s, v);  // Fig. 39 l.44
-  piece_of_subsegment_.resize(mesh_.subsegments.size(), piece);  // the new half's record
+  pieces_.record_split(mesh_, v, piece);
   out = restore_delaunay_around(mesh_, pred_, v, out);
   ++report_.segment_steiner;
   ++report_.encroached_splits;

@@ -87,14 +87,9 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
       guard_floor_(guard_floor_of(mesh, opt)),
       reference2_(squared_diameter(mesh)),
       steiner_cap_(steiner_cap(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length})),
+      pieces_(mesh),
       apices_(mesh),
       finder_(mesh) {
-  for (const Subsegment& sub : mesh.subsegments) {
-    piece_of_subsegment_.push_back({sub.a, sub.b});
-    pieces_.initial.push_back(SegmentPieces::piece_key(sub.a, sub.b));
-  }
-  std::sort(pieces_.initial.begin(), pieces_.initial.end());
-  pieces_.of_vertex.assign(mesh.vertex_count(), {kNone, kNone});
   report_.guard_length = guard_floor_;
   report_.steiner_cap = steiner_cap_;
 }
@@ -238,18 +233,15 @@ bool Terminator::shell_exempt(EdgeRef shortest) const {
   const PieceEnds& pa = pieces_.of_vertex[a];
   const PieceEnds& pb = pieces_.of_vertex[b];
   if (pa[0] == kNone || pb[0] == kNone) return false;
-  if ((pa[0] == pb[0] && pa[1] == pb[1]) || (pa[0] == pb[1] && pa[1] == pb[0])) return false;
-  for (VertexId j : pa) {
-    if (j != pb[0] && j != pb[1]) continue;
-    const Point& pj = mesh_.point(j);
-    const Point& qa = mesh_.point(a);
-    const Point& qb = mesh_.point(b);
-    const double da2 = (qa.x - pj.x) * (qa.x - pj.x) + (qa.y - pj.y) * (qa.y - pj.y);
-    const double db2 = (qb.x - pj.x) * (qb.x - pj.x) + (qb.y - pj.y) * (qb.y - pj.y);
-    constexpr double k = 0.999 * 0.999;  // the distances within 0.1%, compared squared
-    if (da2 > k * db2 && db2 > k * da2) return true;
-  }
-  return false;
+  const VertexId j = shared_end(pa, pb);
+  if (j == kNone) return false;
+  const Point& pj = mesh_.point(j);
+  const Point& qa = mesh_.point(a);
+  const Point& qb = mesh_.point(b);
+  const double da2 = (qa.x - pj.x) * (qa.x - pj.x) + (qa.y - pj.y) * (qa.y - pj.y);
+  const double db2 = (qb.x - pj.x) * (qb.x - pj.x) + (qb.y - pj.y) * (qb.y - pj.y);
+  constexpr double k = 0.999 * 0.999;  // the distances within 0.1%, compared squared
+  return da2 > k * db2 && db2 > k * da2;
 }
 
 void Terminator::enqueue_if_bad(TriangleId t) {

@@ -80,11 +80,7 @@ class Terminator {
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   double reference2_ = 0.0;            // squared diameter of the mesh, the edge buckets' scale
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
-  // The endpoints of the segment piece (a chain of subsegments between two vertices that are not
-  // refinement splits) each subsegment record lies on, and each segment vertex added by
-  // refinement; kNone pairs for other vertices.
-  std::vector<PieceEnds> piece_of_subsegment_;
-  SegmentPieces pieces_;  // the piece of each refinement split, and the initial pieces
+  SegmentPieces pieces_;  // the piece of each subsegment and refinement split
   SegmentApices apices_;
   EdgeFinder finder_;
   CavityMarks marks_;

@@ -1,0 +1,40 @@
+// Which segment piece each subsegment and each refinement split lies on. A piece is a chain of
+// subsegments between two vertices that are not refinement splits (the subsegments of the initial
+// mesh); splits keep the piece of the subsegment they split. Two pieces that share an end meet
+// there at an input angle, which the shell exemption (Terminator::shell_exempt) and the mirrored
+// splits of thin wedges (mirrored_split.h) both need to know.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "mesh/mesh.h"
+
+namespace deltri {
+
+// The endpoints of a segment piece; kNone twice for vertices that are not refinement splits.
+using PieceEnds = std::array<VertexId, 2>;
+
+// The end two different pieces share, or kNone (none, or the same piece).
+VertexId shared_end(const PieceEnds& mine, const PieceEnds& other);
+
+struct SegmentPieces {
+  SegmentPieces() = default;
+  explicit SegmentPieces(const Mesh& mesh);  // every subsegment of `mesh` an initial piece
+
+  // v split a subsegment of `piece`; mesh's vertex and subsegment records now include the split.
+  void record_split(const Mesh& mesh, VertexId v, const PieceEnds& piece);
+  // The end o of `mine` such that c lies on another piece from o: c splits such a piece, or c is
+  // the far end of an initial one; kNone if there is none.
+  VertexId end_shared_with(const PieceEnds& mine, VertexId c) const;
+
+  static std::uint64_t piece_key(VertexId a, VertexId b);
+  bool is_initial_piece(VertexId a, VertexId b) const;
+
+  std::vector<PieceEnds> of_subsegment;  // by subsegment record
+  std::vector<PieceEnds> of_vertex;      // kNone pairs for vertices that are not refinement splits
+  std::vector<std::uint64_t> initial;    // piece_key of every initial subsegment, sorted
+};
+
+}  // namespace deltri
