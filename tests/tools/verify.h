@@ -140,6 +140,11 @@ struct Context {
 
 std::string fmt(const Point& p);
 
+// p lies on the closed segment ab (exact).
+bool on_closed_segment(deltri::Predicates& pred, const Point& a, const Point& b, const Point& p);
+// The segments ab and de cross at a single point inside both (exact).
+bool properly_cross(deltri::Predicates& pred, const Point& a, const Point& b, const Point& d, const Point& e);
+
 // ---- the checks (verify_checks.cpp, verify_segments.cpp) ----
 
 void check_triangles_ccw(Context& c, Failures& f);

@@ -23,12 +23,6 @@ std::vector<Point> distinct_input_points(const InputPslg& in) {
   return pts;
 }
 
-// p lies on the closed segment ab (exactly).
-bool on_closed_segment(deltri::Predicates& pred, const Point& a, const Point& b, const Point& p) {
-  return pred.orient2d(a, b, p) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
-         std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
-}
-
 // Edge a->b lies on the boundary of the convex hull (ccw): no hull vertex strictly to its right.
 bool on_hull(deltri::Predicates& pred, const std::vector<Point>& hull, const Point& a, const Point& b) {
   return std::all_of(hull.begin(), hull.end(), [&](const Point& h) { return pred.orient2d(a, b, h) >= 0; });

@@ -26,6 +26,17 @@ std::size_t PointHash::operator()(const Point& p) const {
   return std::hash<std::uint64_t>()(a * 0x9E3779B97F4A7C15ULL ^ (b + 0x632BE59BD9B4E019ULL + (a << 6)));
 }
 
+bool on_closed_segment(deltri::Predicates& pred, const Point& a, const Point& b, const Point& p) {
+  return pred.orient2d(a, b, p) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+         std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+}
+
+bool properly_cross(deltri::Predicates& pred, const Point& a, const Point& b, const Point& d, const Point& e) {
+  const auto opposite = [](double u, double v) { return (u > 0 && v < 0) || (u < 0 && v > 0); };
+  return opposite(pred.orient2d(a, b, d), pred.orient2d(a, b, e)) &&
+         opposite(pred.orient2d(d, e, a), pred.orient2d(d, e, b));
+}
+
 std::string fmt(const Point& p) {
   char buf[80];
   std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);

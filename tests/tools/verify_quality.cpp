@@ -92,19 +92,15 @@ class Explainer {
   std::vector<Point> meeting_points(int s1, int s2) {
     const Point &a = in_point(c_.in.segments[s1].a), &b = in_point(c_.in.segments[s1].b);
     const Point &d = in_point(c_.in.segments[s2].a), &e = in_point(c_.in.segments[s2].b);
-    const auto on = [&](const Point& p, const Point& x, const Point& y) {
-      return c_.pred.orient2d(x, y, p) == 0 && std::min(x.x, y.x) <= p.x && p.x <= std::max(x.x, y.x) &&
-             std::min(x.y, y.y) <= p.y && p.y <= std::max(x.y, y.y);
-    };
     std::vector<Point> meet;
     for (const Point* p : {&a, &b})
-      if (on(*p, d, e)) meet.push_back(*p);
+      if (on_closed_segment(c_.pred, d, e, *p)) meet.push_back(*p);
     for (const Point* p : {&d, &e})
-      if (on(*p, a, b) && std::find(meet.begin(), meet.end(), *p) == meet.end()) meet.push_back(*p);
+      if (on_closed_segment(c_.pred, a, b, *p) && std::find(meet.begin(), meet.end(), *p) == meet.end())
+        meet.push_back(*p);
     if (!meet.empty()) return meet;
-    const double o1 = c_.pred.orient2d(a, b, d), o2 = c_.pred.orient2d(a, b, e);
-    const double o3 = c_.pred.orient2d(d, e, a), o4 = c_.pred.orient2d(d, e, b);
-    if (o1 * o2 < 0 && o3 * o4 < 0) {
+    if (properly_cross(c_.pred, a, b, d, e)) {
+      const double o1 = c_.pred.orient2d(a, b, d), o2 = c_.pred.orient2d(a, b, e);
       const double t = o1 / (o1 - o2);
       meet.push_back({d.x + t * (e.x - d.x), d.y + t * (e.y - d.y)});
     }

@@ -34,11 +34,7 @@ std::vector<char> crossing_segments(Context& c) {
   for (std::size_t i = 0; i < segs.size(); ++i)
     for (std::size_t j = i + 1; j < segs.size(); ++j) {
       const Point &a = p[segs[i].a], &b = p[segs[i].b], &d = p[segs[j].a], &e = p[segs[j].b];
-      if (!boxes_meet(a, b, d, e)) continue;
-      const double o1 = c.pred.orient2d(a, b, d), o2 = c.pred.orient2d(a, b, e);
-      const double o3 = c.pred.orient2d(d, e, a), o4 = c.pred.orient2d(d, e, b);
-      if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
-        crosses[i] = crosses[j] = 1;
+      if (boxes_meet(a, b, d, e) && properly_cross(c.pred, a, b, d, e)) crosses[i] = crosses[j] = 1;
     }
   return crosses;
 }
@@ -122,10 +118,7 @@ class SegmentWalk {
     const auto it = c_.topo.used_at.find(p);
     return it == c_.topo.used_at.end() ? -1 : it->second;
   }
-  bool exactly_on(const Point& p) {
-    return c_.pred.orient2d(a_, b_, p) == 0 && std::min(a_.x, b_.x) <= p.x && p.x <= std::max(a_.x, b_.x) &&
-           std::min(a_.y, b_.y) <= p.y && p.y <= std::max(a_.y, b_.y);
-  }
+  bool exactly_on(const Point& p) { return on_closed_segment(c_.pred, a_, b_, p); }
   bool near(const Point& p) const {
     if (!crosses_ || input_.count(p)) return false;
     const long double dx = static_cast<long double>(b_.x) - a_.x, dy = static_cast<long double>(b_.y) - a_.y;
