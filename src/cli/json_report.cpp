@@ -37,7 +37,9 @@ class Json {
     field(key);
     out_ += v ? "true" : "false";
   }
-  void null(const char* key) {
+  // v, or null when there is none (a bound that was not asked for).
+  void optional_number(const char* key, bool present, double v) {
+    if (present) return number(key, v);
     field(key);
     out_ += "null";
   }
@@ -107,12 +109,9 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   j.close();
 
   j.open("quality");
-  if (sw.quality) j.number("min_angle_bound", sw.min_angle);
-  else j.null("min_angle_bound");
-  if (sw.fixed_area) j.number("max_area_bound", sw.max_area);
-  else j.null("max_area_bound");
-  if (sw.user_test) j.number("max_edge_length_bound", sw.max_edge_length);
-  else j.null("max_edge_length_bound");
+  j.optional_number("min_angle_bound", sw.quality, sw.min_angle);
+  j.optional_number("max_area_bound", sw.fixed_area, sw.max_area);
+  j.optional_number("max_edge_length_bound", sw.user_test, sw.max_edge_length);
   j.number("smallest_angle", stats.smallest_angle);
   j.number("largest_angle", stats.largest_angle);
   j.number("smallest_area", stats.smallest_area);
