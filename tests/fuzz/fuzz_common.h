@@ -36,4 +36,14 @@ inline std::string write_input(const std::string& name, const std::uint8_t* data
   return path;
 }
 
+// Every target reads a selector byte first (which reader, which switches), then the file text.
+// False for inputs that are empty or beyond the size the targets accept.
+inline bool take_selector(const std::uint8_t*& data, std::size_t& size, std::uint8_t& selector) {
+  if (size < 1 || size > 8192) return false;
+  selector = data[0];
+  ++data;
+  --size;
+  return true;
+}
+
 }  // namespace deltri::fuzz

@@ -47,10 +47,8 @@ double area_bound(const Pslg& p) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size < 1 || size > 8192) return -1;
-  const std::uint8_t mode = data[0];
-  ++data;
-  --size;
+  std::uint8_t mode = 0;
+  if (!fuzz::take_selector(data, size, mode)) return -1;
   const bool poly = (mode & 1) == 0;
   const int work = (mode >> 1) % 3;             // 0: -p, 1: -pq, 2: -pq -a
   static const char* const angles[] = {"", "25", "30", "33"};

@@ -45,10 +45,8 @@ void check_pslg(const Pslg& p, bool poly) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size < 1 || size > 8192) return -1;
-  const std::uint8_t mode = data[0];
-  ++data;
-  --size;
+  std::uint8_t mode = 0;
+  if (!fuzz::take_selector(data, size, mode)) return -1;
   try {
     switch (mode % 4) {
       case 0: check_pslg(read_node_file(fuzz::write_input("in.node", data, size)), false); break;
