@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <random>
 
+#include "geometry/box.h"
 #include "mesh/operations.h"
 
 namespace deltri {
@@ -66,15 +67,9 @@ std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
 }
 
 std::vector<std::uint32_t> hilbert_keys(const Mesh& mesh, const std::vector<VertexId>& ids) {
-  double lo_x = 0, hi_x = 0, lo_y = 0, hi_y = 0;
-  for (std::size_t i = 0; i < ids.size(); ++i) {
-    const Point& p = mesh.point(ids[i]);
-    lo_x = i == 0 ? p.x : std::min(lo_x, p.x);
-    hi_x = i == 0 ? p.x : std::max(hi_x, p.x);
-    lo_y = i == 0 ? p.y : std::min(lo_y, p.y);
-    hi_y = i == 0 ? p.y : std::max(hi_y, p.y);
-  }
-  const double span = std::max(hi_x - lo_x, hi_y - lo_y);
+  Box box;
+  for (VertexId v : ids) box.add(mesh.point(v));
+  const double span = std::max(box.width(), box.height());
   const double scale = span > 0 ? 65535.0 / span : 0.0;
   std::vector<std::uint32_t> keys(mesh.vertex_count(), 0);
   for (VertexId v : ids) {
@@ -82,7 +77,7 @@ std::vector<std::uint32_t> hilbert_keys(const Mesh& mesh, const std::vector<Vert
     const auto cell = [scale](double d) {
       return static_cast<std::uint32_t>(std::min(65535.0, d * scale));
     };
-    keys[v] = hilbert_index(cell(p.x - lo_x), cell(p.y - lo_y));
+    keys[v] = hilbert_index(cell(p.x - box.lo_x), cell(p.y - box.lo_y));
   }
   return keys;
 }

@@ -6,6 +6,8 @@
 #include <limits>
 #include <string>
 
+#include "geometry/box.h"
+
 namespace deltri {
 namespace {
 
@@ -22,19 +24,16 @@ double angle_at(const Point& p, const Point& q, const Point& r) {
 class Canvas {
  public:
   Canvas(const Mesh& mesh, const VertexNumbering& number, const std::vector<Point>& holes) {
-    double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x, hi_x = -lo_x, hi_y = -lo_x;
-    const auto add = [&](const Point& p) {
-      lo_x = std::min(lo_x, p.x), lo_y = std::min(lo_y, p.y), hi_x = std::max(hi_x, p.x), hi_y = std::max(hi_y, p.y);
-    };
+    Box box;
     for (VertexId v = 0; v < mesh.vertex_count(); ++v)
-      if (number.written(v)) add(mesh.points[v]);
-    for (const Point& h : holes) add(h);
-    if (!(lo_x <= hi_x)) lo_x = lo_y = 0, hi_x = hi_y = 1;
-    const double span = std::max({hi_x - lo_x, hi_y - lo_y, std::numeric_limits<double>::min()});
+      if (number.written(v)) box.add(mesh.points[v]);
+    for (const Point& h : holes) box.add(h);
+    if (box.empty()) box = Box{0, 0, 1, 1};
+    const double span = std::max({box.width(), box.height(), std::numeric_limits<double>::min()});
     scale_ = kCanvas / span;
-    lo_x_ = lo_x, hi_y_ = hi_y;
-    width_ = std::max(1.0, std::ceil((hi_x - lo_x) * scale_));
-    height_ = std::max(1.0, std::ceil((hi_y - lo_y) * scale_));
+    lo_x_ = box.lo_x, hi_y_ = box.hi_y;
+    width_ = std::max(1.0, std::ceil(box.width() * scale_));
+    height_ = std::max(1.0, std::ceil(box.height() * scale_));
   }
   long long x(const Point& p) const { return std::llround((p.x - lo_x_) * scale_); }
   long long y(const Point& p) const { return std::llround((hi_y_ - p.y) * scale_); }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/box.h"
 #include "mesh/operations.h"
 #include "refine/split_permitted.h"
 #include "refine/steiner_point.h"
@@ -25,8 +26,7 @@ double size_floor_of(const Mesh& mesh, const RefineOptions& opt) {
 
 // The guard's edge floor from the input's features, one value for the whole run (floor_at adds the
 // local precision floor): the smallest initial feature estimate scaled down, not an estimate at
-// each new vertex: the
-// Lipschitz extension f(u) + |uc| is an upper bound on lfs that grows without limit away from input
+// each new vertex: the Lipschitz extension f(u) + |uc| is an upper bound on lfs that grows without limit away from input
 // vertices (halfway along a strip 1000 wide and 200000 long it reads 50000), so a floor taken from
 // it refused ordinary insertions that real lfs allows. Any positive floor keeps termination
 // certain; the global one never bites where the Terminator would have stopped anyway.
@@ -38,14 +38,11 @@ double guard_floor_of(const Mesh& mesh, const RefineOptions& opt) {
 
 // The squared diagonal of the bounding box of the vertices.
 double squared_diameter(const Mesh& mesh) {
-  double lo_x = HUGE_VAL, lo_y = HUGE_VAL, hi_x = -HUGE_VAL, hi_y = -HUGE_VAL;
-  for (const Point& p : mesh.points) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-    lo_x = std::min(lo_x, p.x), hi_x = std::max(hi_x, p.x);
-    lo_y = std::min(lo_y, p.y), hi_y = std::max(hi_y, p.y);
-  }
-  if (!(hi_x >= lo_x)) return 1.0;
-  return (hi_x - lo_x) * (hi_x - lo_x) + (hi_y - lo_y) * (hi_y - lo_y);
+  Box box;
+  for (const Point& p : mesh.points)
+    if (std::isfinite(p.x) && std::isfinite(p.y)) box.add(p);
+  if (box.empty()) return 1.0;
+  return box.width() * box.width() + box.height() * box.height();
 }
 
 // Size-bounded refinement ends with about twice as many triangles as its bounds ask for (the unit
