@@ -118,9 +118,12 @@ InsertResult insert_vertex(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hin
   return {InsertStatus::Inserted, leaving(mesh, triangle_of(split.edge), v)};
 }
 
-InsertResult insert_vertex_into_cavity(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint,
-                                       const KnownCavity& cavity) {
-  const InsertResult split = split_at(mesh, pred, v, hint, false);
+InsertResult insert_vertex_into_cavity(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef container,
+                                       bool strictly_inside, const KnownCavity& cavity) {
+  if (strictly_inside)
+    if (const EdgeRef out = detail::fill_star(mesh, pred, v, cavity); out != kNone)
+      return {InsertStatus::Inserted, out};
+  const InsertResult split = split_at(mesh, pred, v, container, false);
   if (split.status != InsertStatus::Inserted) return split;
   // The triangle beyond a link edge never holds v, so its slot still names an original triangle.
   restore_delaunay(mesh, v, split.edge, nullptr, [&](EdgeRef e) {

@@ -1,7 +1,12 @@
 // Helpers shared by the mesh operations in this directory; not part of the public API.
 #pragma once
 
+#include "geometry/predicates.h"
 #include "mesh/mesh.h"
+
+namespace deltri {
+struct KnownCavity;
+}
 
 namespace deltri::detail {
 
@@ -69,5 +74,11 @@ void unflip(Mesh& m, EdgeRef flipped);
 // split (it still holds the new vertex) once every later change has been undone.
 void unsplit_triangle(Mesh& m, TriangleId original);
 void unsplit_edge(Mesh& m, TriangleId original, unsigned vertex_side);
+
+// Replaces the triangles of `cavity` (a disk with no vertex inside, v strictly inside it and
+// seeing every boundary edge from the inside) by the fan of triangles from v to its recorded
+// boundary. Returns an edge leaving v, or kNone, with nothing changed, when the cavity is not
+// such a disk or is too large for the fan's fixed arrays.
+EdgeRef fill_star(Mesh& m, Predicates& pred, VertexId v, const KnownCavity& cavity);
 
 }  // namespace deltri::detail

@@ -69,7 +69,7 @@ struct Mesh {
   // Triangles.
   BigVector<VertexId> corner;
   BigVector<EdgeRef> link;
-  std::vector<SubsegmentId> subseg;
+  BigVector<SubsegmentId> subseg;
   std::vector<TriangleId> free_triangles;
   int num_triangle_attributes = 0;
   std::vector<double> triangle_attributes;  // num_triangle_attributes per triangle

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "geometry/predicates.h"
@@ -63,13 +64,18 @@ InsertResult insert_vertex(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hin
                            bool split_subsegments = true, std::vector<EdgeRef>* flipped = nullptr);
 
 // The triangles an insertion will destroy, found beforehand (refine/candidate_probe.h): either
-// the `count` slots of `list`, or (list null) the slots t < size with stamp[t] == mark.
+// the `count` slots of `list`, or (list null) the slots t < size with stamp[t] == mark. The search
+// also recorded the cavity's `boundary` (its edges with the cavity on their left, whose far side
+// is not in the cavity or which carry a subsegment) and its triangles with no boundary edge.
 struct KnownCavity {
   const TriangleId* list = nullptr;
   std::size_t count = 0;
   const std::uint32_t* stamp = nullptr;
   std::size_t size = 0;
   std::uint32_t mark = 0;
+  std::size_t triangles = 0;
+  std::span<const EdgeRef> boundary;
+  std::span<const TriangleId> inner;
   bool contains(TriangleId t) const {
     if (list == nullptr) return t < size && stamp[t] == mark;
     for (std::size_t i = 0; i < count; ++i)
@@ -80,10 +86,11 @@ struct KnownCavity {
 
 // insert_vertex without subsegment splits, for a vertex whose cavity is already known: in a
 // constrained Delaunay triangulation Lawson's flips remove exactly the triangles reachable from
-// the container across non-subsegment edges whose circumcircles strictly contain v, so each flip
-// decision is a lookup instead of an incircle test. The flips, their order and the slots they
-// use are those of insert_vertex, so the result is the same mesh, slot for slot.
-InsertResult insert_vertex_into_cavity(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint,
-                                       const KnownCavity& cavity);
+// the container across non-subsegment edges whose circumcircles strictly contain v. A small
+// cavity with v strictly inside `container` is replaced by the fan from v to its boundary in one
+// pass (Bowyer-Watson); otherwise Lawson's flips run with each decision a lookup instead of an
+// incircle test. Both give the same triangulation; the slots differ.
+InsertResult insert_vertex_into_cavity(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef container,
+                                       bool strictly_inside, const KnownCavity& cavity);
 
 }  // namespace deltri

@@ -11,7 +11,10 @@ void CavityMarks::begin(std::uint32_t slots) {
   // pages at the peak and raised the 45x45 holes' peak memory by 4 MB.
   if (stamp_.size() < slots) stamp_.resize(slots, 0);
   listed_ = 0;
+  count_ = 0;
   stamped_ = false;
+  boundary_.clear();
+  inner_.clear();
 }
 
 void CavityMarks::spill() {
@@ -29,18 +32,34 @@ bool CavityMarks::mark(TriangleId t) {
       if (list_[i] == t) return false;
     if (listed_ < kListLimit) {
       list_[listed_++] = t;
+      ++count_;
       return true;
     }
     spill();
   }
   if (stamp_[t] == now_) return false;
   stamp_[t] = now_;
+  ++count_;
   return true;
 }
 
+bool CavityMarks::contains(TriangleId t) const {
+  if (stamped_) return stamp_[t] == now_;
+  for (std::size_t i = 0; i < listed_; ++i)
+    if (list_[i] == t) return true;
+  return false;
+}
+
 KnownCavity CavityMarks::marked() const {
-  if (!stamped_) return {list_, listed_, nullptr, 0, 0};
-  return {nullptr, 0, stamp_.data(), stamp_.size(), now_};
+  KnownCavity cavity;
+  if (stamped_) {
+    cavity.stamp = stamp_.data(), cavity.size = stamp_.size(), cavity.mark = now_;
+  } else {
+    cavity.list = list_, cavity.count = listed_;
+  }
+  cavity.triangles = count_;
+  cavity.boundary = boundary_, cavity.inner = inner_;
+  return cavity;
 }
 
 namespace detail {
@@ -88,6 +107,7 @@ WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const 
     if (o[0] >= 0 && o[1] >= 0 && o[2] >= 0) {
       result.container = edge_of(t, 0);
       result.on_vertex = zeros >= 2;
+      result.on_edge = zeros == 1;
       return result;
     }
     const EdgeRef exit = exit_side(mesh, pred, t, q, c, o);
@@ -107,12 +127,14 @@ void cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> s
   out.boundary_subsegments.clear();
   out.nearest2 = HUGE_VAL;
   std::vector<TriangleId>& todo = marks.todo();
+  std::vector<EdgeRef>& boundary = marks.boundary();
   todo.clear();
   for (TriangleId s : seeds)
     if (marks.mark(s)) todo.push_back(s);
   while (!todo.empty()) {
     const TriangleId t = todo.back();
     todo.pop_back();
+    const std::size_t boundary_before = boundary.size();
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
       const VertexId u = mesh.org(e);
@@ -120,16 +142,27 @@ void cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> s
       out.nearest2 = std::min(out.nearest2, d2);
       if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
         out.boundary_subsegments.push_back(e);
+        boundary.push_back(e);
         continue;
       }
       const EdgeRef twin = mesh.link[e];
-      if (twin == kNone) continue;
+      if (twin == kNone) {
+        boundary.push_back(e);
+        continue;
+      }
       const TriangleId n = triangle_of(twin);
+      if (marks.contains(n)) continue;  // an edge inside the cavity, seen from its other side
       const Point& x = mesh.point(mesh.corner[3 * n]);
       const Point& y = mesh.point(mesh.corner[3 * n + 1]);
       const Point& z = mesh.point(mesh.corner[3 * n + 2]);
-      if (pred.incircle(x, y, z, c) > 0 && marks.mark(n)) todo.push_back(n);
+      if (pred.incircle(x, y, z, c) > 0) {
+        marks.mark(n);
+        todo.push_back(n);
+      } else {
+        boundary.push_back(e);
+      }
     }
+    if (boundary.size() == boundary_before) marks.inner().push_back(t);
   }
 }
 

@@ -34,24 +34,30 @@ enum class ProbeStatus {
 struct Probe {
   ProbeStatus status = ProbeStatus::Unusable;
   EdgeRef container = kNone;           // an edge of the triangle containing c (Clear only)
+  bool strictly_inside = false;        // c is inside that triangle, not on its sides (Clear only)
   bool blocked = false;                // the walk stopped at a subsegment or the boundary
   std::vector<EdgeRef> encroached;     // edges carrying the encroached subsegments
   double insertion_radius = 0.0;       // distance from c to the nearest vertex it would join
 };
 
-// Reusable triangle marks for the cavity search, and its work list (reused so that a search,
-// which runs for every candidate point, allocates nothing). A cavity is a handful of triangles, so
-// the marks of a search are a short list first and spill to per-slot stamps only when it grows:
-// the stamp array is one more random access per triangle looked at, in an array as long as the
-// mesh.
+// Reusable triangle marks for the cavity search, its work list and what it found (reused so that
+// a search, which runs for every candidate point, allocates nothing). A cavity is a handful of
+// triangles, so the marks of a search are a short list first and spill to per-slot stamps only
+// when it grows: the stamp array is one more random access per triangle looked at, in an array
+// as long as the mesh.
 class CavityMarks {
  public:
   void begin(std::uint32_t slots);
   void reserve(std::size_t slots) { stamp_.reserve(slots); }
   bool mark(TriangleId t);  // false if already marked in this search
-  // The triangles marked by the latest search, valid until the next begin().
+  bool contains(TriangleId t) const;
+  // The triangles marked by the latest search and the boundary it recorded, valid until the next
+  // begin().
   KnownCavity marked() const;
   std::vector<TriangleId>& todo() { return todo_; }
+  // The search records the cavity's boundary edges and its triangles that have none.
+  std::vector<EdgeRef>& boundary() { return boundary_; }
+  std::vector<TriangleId>& inner() { return inner_; }
 
  private:
   static constexpr std::size_t kListLimit = 32;
@@ -63,6 +69,9 @@ class CavityMarks {
   std::vector<std::uint32_t> stamp_;
   std::uint32_t now_ = 0;
   std::vector<TriangleId> todo_;
+  std::vector<EdgeRef> boundary_;
+  std::vector<TriangleId> inner_;
+  std::size_t count_ = 0;  // triangles marked
 };
 
 // Probes point c for a bad triangle t. `splittable(e)` says whether the subsegment on edge e may
@@ -82,6 +91,7 @@ struct WalkResult {
   EdgeRef container = kNone;  // an edge of the closed triangle containing c
   EdgeRef blocker = kNone;    // the edge the walk could not cross
   bool on_vertex = false;
+  bool on_edge = false;  // c is on a side of the container
 };
 WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const Point& c);
 
@@ -123,6 +133,7 @@ Probe probe_candidate(const Mesh& mesh, Predicates& pred, TriangleId t, const Po
     }
   }
   probe.container = walk.container;
+  probe.strictly_inside = !walk.on_edge;
   probe.status = probe.encroached.empty() ? ProbeStatus::Clear : ProbeStatus::Encroaches;
   return probe;
 }

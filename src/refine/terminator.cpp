@@ -174,7 +174,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
     const VertexId v = add_free_vertex(c, probe.container);
     // The probe's cavity search left exactly the triangles c destroys marked.
     const InsertResult inserted =
-        insert_vertex_into_cavity(mesh_, pred_, v, probe.container, marks_.marked());  // l.16
+        insert_vertex_into_cavity(mesh_, pred_, v, probe.container, probe.strictly_inside, marks_.marked());  // l.16
     if (inserted.status != InsertStatus::Inserted) {  // c sits on an unsplittable subsegment
       drop_last_vertex();
       return;

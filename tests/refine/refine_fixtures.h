@@ -145,7 +145,7 @@ struct Snapshot {
   BigVector<Point> points;
   BigVector<VertexId> corner;
   BigVector<EdgeRef> link;
-  std::vector<SubsegmentId> subseg;
+  BigVector<SubsegmentId> subseg;
   std::size_t subsegments = 0;
   explicit Snapshot(const Mesh& m)
       : points(m.points), corner(m.corner), link(m.link), subseg(m.subseg),
