@@ -2,8 +2,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "harness/check.h"
+#include "mesh/internal.h"
 #include "mesh/operations.h"
 #include "refine/bad_triangles.h"
 #include "refine/candidate_probe.h"
@@ -306,4 +308,102 @@ TEST(steiner_cap_counts_vertices_and_size_bounds) {
   m.area_bound.assign(m.triangle_slots(), 0.5);  // per-triangle bounds of 0.5 on two triangles of 0.5
   CHECK_EQ(steiner_cap(m, {0.0, true, 0.0}), 4 * kCapPerVertex + 8);
   CHECK_EQ(steiner_cap(m, {0.25, true, 0.0}), 4 * kCapPerVertex + 16);
+}
+
+namespace {
+
+// Vertex triples of the live triangles, rotated to start at their smallest id, sorted.
+std::vector<std::array<VertexId, 3>> triangle_triples(const Mesh& m) {
+  std::vector<std::array<VertexId, 3>> s;
+  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+    if (!m.is_live(t)) continue;
+    std::array<VertexId, 3> a{m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]};
+    std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
+    s.push_back(a);
+  }
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+// The area bound of the live triangle holding the directed edge a->b, or -1.
+double bound_on_edge(const Mesh& m, VertexId a, VertexId b) {
+  const EdgeRef e = edge_between(m, a, b);
+  return e == kNone ? -1.0 : m.area_bound[triangle_of(e)];
+}
+
+}  // namespace
+
+// The fan that replaces a probed cavity is the triangulation Lawson's flips reach, triangle for
+// triangle, and each new triangle takes the data of the cavity triangle whose boundary edge it
+// stands on. Random points, the hull and a few inner edges as subsegments, random probes.
+TEST(known_cavity_fan_matches_lawson_flips) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point> pts;
+  for (int i = 0; i < 300; ++i) pts.push_back({u(rng), u(rng)});
+  Mesh m = triangulated(pts);
+  mark_boundary(m);
+  for (EdgeRef e = 0; e < m.corner.size(); e += 37)
+    if (m.corner[e] != kNone && m.link[e] != kNone && m.subseg[e] == kNone) mark_segment(m, m.org(e), m.dest(e));
+  m.area_bound.resize(m.triangle_slots());
+  for (TriangleId t = 0; t < m.triangle_slots(); ++t) m.area_bound[t] = 1.0 + t;
+  Predicates pred;
+  CavityMarks marks;
+  int filled = 0, tried = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Point c{u(rng), u(rng)};
+    const Location at = locate(m, pred, c, 0);
+    if (at.status != LocateStatus::InTriangle) continue;
+    detail::Cavity cavity;
+    const TriangleId seed = triangle_of(at.edge);
+    detail::cavity_of(m, pred, {&seed, 1}, c, marks, cavity);
+    ++tried;
+    Mesh flips = m, fan = m;
+    const VertexId v = flips.add_vertex(c, VertexKind::Free);
+    fan.add_vertex(c, VertexKind::Free);
+    REQUIRE(insert_vertex(flips, pred, v, at.edge, false).status == InsertStatus::Inserted);
+    const EdgeRef out = detail::fill_star(fan, pred, v, marks.marked());
+    if (out == kNone) {
+      CHECK(triangle_triples(fan) == triangle_triples(m));  // refused: nothing changed
+      continue;
+    }
+    ++filled;
+    CHECK_EQ(fan.org(out), v);
+    CHECK(triangle_triples(fan) == triangle_triples(flips));
+    const Facts facts = facts_of(fan);
+    CHECK(facts.all_ccw && facts.links_ok && facts.subsegments_symmetric);
+    for (EdgeRef e = 0; e < fan.corner.size(); ++e) {
+      if (fan.corner[e] == kNone || fan.corner[lprev(e)] != v) continue;
+      CHECK_EQ(fan.area_bound[triangle_of(e)], bound_on_edge(m, fan.org(e), fan.dest(e)));
+      if (fan.link[e] != kNone) CHECK_EQ(fan.subseg[e], m.subseg[edge_between(m, fan.org(e), fan.dest(e))]);
+    }
+  }
+  CHECK(tried > 300);
+  CHECK(filled > tried * 9 / 10);  // refusals are for cavities that are not disks: rare
+}
+
+// A subsegment with an obtuse apex: the point beyond it lies in the triangle's circle but sees the
+// subsegment from outside, so no fan may stand on it.
+TEST(known_cavity_fan_refuses_a_subsegment_seen_from_outside) {
+  // The circle through (0,0), (4,0) and (2,0.5) has centre (2,-3.75) and radius 4.25.
+  Mesh m = triangulated({{0, 0}, {4, 0}, {2, 0.5}, {2, -9}});
+  mark_boundary(m);
+  REQUIRE(mark_segment(m, 0, 1));
+  const EdgeRef base = edge_between(m, 0, 1);
+  REQUIRE(base != kNone && m.apex(base) == 2);
+  const TriangleId t = triangle_of(base);
+  const EdgeRef boundary[3] = {3 * t, 3 * t + 1, 3 * t + 2};
+  KnownCavity cavity;
+  cavity.list = &t, cavity.count = 1, cavity.triangles = 1, cavity.boundary = boundary;
+  Predicates pred;
+  const auto before = triangle_triples(m);
+  const VertexId v = m.add_vertex({2, -0.1}, VertexKind::Free);  // in the circle through 0, 1 and 2
+  CHECK(detail::fill_star(m, pred, v, cavity) == kNone);
+  CHECK(triangle_triples(m) == before);
+  cavity.triangles = 2;  // a count that does not fit the boundary: not a disk
+  const VertexId w = m.add_vertex({2, 0.2}, VertexKind::Free);
+  CHECK(detail::fill_star(m, pred, w, cavity) == kNone);
+  cavity.triangles = 1;
+  CHECK(detail::fill_star(m, pred, w, cavity) != kNone);  // inside: the fan of three
+  CHECK_EQ(m.live_triangles(), 4u);
 }
