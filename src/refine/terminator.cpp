@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <numbers>
 
 #include "geometry/box.h"
@@ -46,23 +47,33 @@ double squared_diameter(const Mesh& mesh) {
 }
 
 // Size-bounded refinement ends with about twice as many triangles as its bounds ask for (the unit
-// square at -a: 1.68 times). Reserving that up front spares the arrays' doublings, each of which
-// copies everything and faults in fresh pages while the old copy is still held (which also set
-// the peak memory); capacity beyond what is used is never touched, so it costs no resident memory.
+// square at -a: 1.68 times); quality alone multiplies the triangles of a fresh constrained
+// triangulation by a few (the 45x45 holes: 5.6 times), a run on an already refined mesh by about
+// one. Reserving that up front spares the arrays' doublings, each of which copies everything and
+// faults in fresh pages while the old copy is still held (which also set the peak memory);
+// capacity beyond what is used is never touched, so a guess too high costs no resident memory,
+// and one too low only leaves the last doublings.
 constexpr double kMaxReservedTriangles = 3.2e7;
+constexpr double kQualityGrowth = 6.0;
 
 // Returns the number of triangle slots reserved, 0 if none.
-std::size_t reserve_for_size_bounds(Mesh& mesh, const RefineOptions& opt) {
+std::size_t reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
   const double wanted =
       triangles_wanted(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
-  if (!(wanted > 0.0) || wanted > kMaxReservedTriangles) return 0;  // let such runs grow as needed
-  const std::size_t triangles = mesh.triangle_slots() + static_cast<std::size_t>(2.0 * wanted);
-  const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(wanted);
-  mesh.corner.reserve(3 * triangles);
-  mesh.link.reserve(3 * triangles);
-  if (mesh.has_subsegments()) mesh.subseg.reserve(3 * triangles);
-  mesh.points.reserve(vertices);
-  mesh.kind.reserve(vertices);
+  const double slots = mesh.triangle_slots();
+  const double added = wanted > 0.0 ? 2.0 * wanted : opt.quality ? (kQualityGrowth - 1.0) * slots : 0.0;
+  if (!(added > 0.0) || slots + added > kMaxReservedTriangles) return 0;  // let such runs grow as needed
+  const std::size_t triangles = static_cast<std::size_t>(slots + added);
+  const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(added / 2.0);
+  try {
+    mesh.corner.reserve(3 * triangles);
+    mesh.link.reserve(3 * triangles);
+    if (mesh.has_subsegments()) mesh.subseg.reserve(3 * triangles);
+    mesh.points.reserve(vertices);
+    mesh.kind.reserve(vertices);
+  } catch (const std::bad_alloc&) {
+    return 0;  // address space is short (a ulimit): grow as needed instead
+  }
   return triangles;
 }
 
@@ -100,7 +111,7 @@ void Terminator::refuse_by_guard() {
 
 // Fig. 38, DELAUNAYTERMINATOR; l.1-2 (the CDT, exterior removed) are the caller's.
 RefineReport Terminator::run() {
-  marks_.reserve(reserve_for_size_bounds(mesh_, opt_));
+  marks_.reserve(reserve_for_refinement(mesh_, opt_));
   if (mesh_.has_subsegments()) {
     for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {  // Fig. 38 l.3-5
       if (mesh_.corner[e] == kNone || mesh_.subseg[e] == kNone) continue;
@@ -226,6 +237,9 @@ Assessment Terminator::assess(TriangleId t) const {
 // rounded.
 bool Terminator::shell_exempt(EdgeRef shortest) const {
   const VertexId a = mesh_.org(shortest), b = mesh_.dest(shortest);
+  // Only segment splits have pieces; the kinds, a byte per vertex, stay in cache where the
+  // pieces would be a miss.
+  if (mesh_.kind[a] != VertexKind::Segment || mesh_.kind[b] != VertexKind::Segment) return false;
   if (a >= pieces_.of_vertex.size() || b >= pieces_.of_vertex.size()) return false;
   const PieceEnds& pa = pieces_.of_vertex[a];
   const PieceEnds& pb = pieces_.of_vertex[b];
