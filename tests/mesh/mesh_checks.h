@@ -1,6 +1,6 @@
 // Facts about a mesh computed independently of the code under test: orientation and circle tests
-// by exact predicates, link consistency, Euler's formula, a monotone-chain hull. Used only by the
-// tests in this directory.
+// by exact predicates, link consistency, Euler's formula, a monotone-chain hull. Used by the tests
+// in this directory and by the refinement tests that compare insertions.
 #pragma once
 
 #include <algorithm>

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "harness/check.h"
+#include "mesh/mesh_checks.h"
 #include "mesh/internal.h"
 #include "mesh/operations.h"
 #include "refine/bad_triangles.h"
@@ -312,19 +313,6 @@ TEST(steiner_cap_counts_vertices_and_size_bounds) {
 
 namespace {
 
-// Vertex triples of the live triangles, rotated to start at their smallest id, sorted.
-std::vector<std::array<VertexId, 3>> triangle_triples(const Mesh& m) {
-  std::vector<std::array<VertexId, 3>> s;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
-    if (!m.is_live(t)) continue;
-    std::array<VertexId, 3> a{m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]};
-    std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
-    s.push_back(a);
-  }
-  std::sort(s.begin(), s.end());
-  return s;
-}
-
 // The area bound of the live triangle holding the directed edge a->b, or -1.
 double bound_on_edge(const Mesh& m, VertexId a, VertexId b) {
   const EdgeRef e = edge_between(m, a, b);
@@ -364,12 +352,12 @@ TEST(known_cavity_fan_matches_lawson_flips) {
     REQUIRE(insert_vertex(flips, pred, v, at.edge, false).status == InsertStatus::Inserted);
     const EdgeRef out = detail::fill_star(fan, pred, v, marks.marked());
     if (out == kNone) {
-      CHECK(triangle_triples(fan) == triangle_triples(m));  // refused: nothing changed
+      CHECK(meshcheck::triangle_set(fan) == meshcheck::triangle_set(m));  // refused: nothing changed
       continue;
     }
     ++filled;
     CHECK_EQ(fan.org(out), v);
-    CHECK(triangle_triples(fan) == triangle_triples(flips));
+    CHECK(meshcheck::triangle_set(fan) == meshcheck::triangle_set(flips));
     const Facts facts = facts_of(fan);
     CHECK(facts.all_ccw && facts.links_ok && facts.subsegments_symmetric);
     for (EdgeRef e = 0; e < fan.corner.size(); ++e) {
@@ -396,10 +384,10 @@ TEST(known_cavity_fan_refuses_a_subsegment_seen_from_outside) {
   KnownCavity cavity;
   cavity.list = &t, cavity.count = 1, cavity.triangles = 1, cavity.boundary = boundary;
   Predicates pred;
-  const auto before = triangle_triples(m);
+  const auto before = meshcheck::triangle_set(m);
   const VertexId v = m.add_vertex({2, -0.1}, VertexKind::Free);  // in the circle through 0, 1 and 2
   CHECK(detail::fill_star(m, pred, v, cavity) == kNone);
-  CHECK(triangle_triples(m) == before);
+  CHECK(meshcheck::triangle_set(m) == before);
   cavity.triangles = 2;  // a count that does not fit the boundary: not a disk
   const VertexId w = m.add_vertex({2, 0.2}, VertexKind::Free);
   CHECK(detail::fill_star(m, pred, w, cavity) == kNone);
