@@ -5,8 +5,8 @@
 #include <random>
 
 #include "harness/check.h"
-#include "mesh/mesh_checks.h"
 #include "mesh/internal.h"
+#include "mesh/mesh_checks.h"
 #include "mesh/operations.h"
 #include "refine/bad_triangles.h"
 #include "refine/candidate_probe.h"
