@@ -1,5 +1,6 @@
 // The subsegment side of the Terminator: Fig. 39, SPLITENCROACHEDSUBSEGMENTS.
 #include <algorithm>
+#include <cmath>
 
 #include "geometry/encroachment.h"
 #include "mesh/delete_vertex.h"
@@ -28,6 +29,24 @@ std::uint64_t Terminator::split_encroached_subsegments(bool queue_triangles) {
 }
 
 bool Terminator::uses_lenses() const { return opt_.lenses && !opt_.conforming_delaunay; }
+
+// The length of the shortest edge that splitting s at p would make, now and once Chew's step (with
+// lenses) has deleted the free vertices inside s's diametral circle: a free vertex a rounding
+// error from s's midpoint once made a split owed to a size bound look like a new edge of 1e-15.
+Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
+  const double now = split_insertion_radius(mesh_, pred_, s, p, marks_);
+  if (!uses_lenses() || marks_.boundary().empty()) return {now, now};
+  const Point& pa = mesh_.point(mesh_.org(s));
+  const Point& pb = mesh_.point(mesh_.dest(s));
+  double nearest2 = HUGE_VAL;
+  for (EdgeRef e : marks_.boundary()) {  // the cavity's vertices are its boundary's
+    const VertexId w = mesh_.org(e);
+    const Point& q = mesh_.point(w);
+    if (mesh_.kind[w] == VertexKind::Free && in_diametral_circle(pa, pb, q)) continue;
+    nearest2 = std::min(nearest2, (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y));
+  }
+  return {now, std::sqrt(nearest2)};
+}
 
 // Fig. 39 l.40-43, Chew's step: the free vertices inside the diametral circle of s that the two
 // triangles beside s can see (a search that never crosses a subsegment) are deleted before s is
@@ -92,14 +111,22 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
   if (!mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
     p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));
   if (p == pa || p == pb) return false;  // out of precision: the subsegment cannot be split
-  if (!split_keeps_orientation(s, p)) return false;  // likewise: a neighbour is flush with s
-  if (split_insertion_radius(mesh_, pred_, s, p, marks_) < floor_at(p)) {
+  // Likewise a neighbour flush with s, unless Chew's step below may delete it (checked after).
+  if (!uses_lenses() && !split_keeps_orientation(s, p)) return false;
+  const double floor = size_splits_ ? precision_floor_at(p) : floor_at(p);
+  const SplitRadius radius = split_radius(s, p);
+  if (radius.after_chew < floor) {
     refuse_by_guard();
     return false;
   }
   if (uses_lenses()) {  // Fig. 39 l.40-43
     s = delete_free_vertices_near(s, queue_triangles);
     if (s == kNone || !split_keeps_orientation(s, p)) return false;
+    // A free vertex in the circle that the deletion's search could not reach is still there.
+    if (radius.now < floor && split_insertion_radius(mesh_, pred_, s, p, marks_) < floor) {
+      refuse_by_guard();
+      return false;
+    }
   }
   const VertexId v = add_segment_vertex(p, s);
   const PieceEnds piece = pieces_.of_subsegment[mesh_.subseg[s]];

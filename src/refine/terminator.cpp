@@ -104,6 +104,15 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
 
 double Terminator::floor_at(const Point& p) const { return std::max(guard_floor_, precision_floor_at(p)); }
 
+// The feature floor is there to stop cascades of quality splits. A triangle over its size bound
+// is split whatever the shapes around it: its circumcentre is at least 0.87 sqrt(area) from
+// every vertex of its own, the Steiner cap (which counts the triangles the bounds ask for) ends
+// size refinement, and only the precision floor applies. (An area-only run of plate.poly at
+// -a0.01 had left one triangle of area 0.015 whose shortest edge was below the floor.)
+double Terminator::floor_for(const Assessment& a, const Point& p) const {
+  return a.too_large ? precision_floor_at(p) : floor_at(p);
+}
+
 void Terminator::refuse_by_guard() {
   ++report_.guard_refusals;
   report_.stopped_by_guard = true;
@@ -160,7 +169,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   const Assessment assessment = assess(t);
   if (!assessment.bad() || !budget_left()) return;
   const double d = std::sqrt(assessment.shape.shortest_length2);
-  if (d < floor_at(mesh_.point(mesh_.org(assessment.shape.shortest)))) {  // could only make shorter edges
+  if (d < floor_for(assessment, mesh_.point(mesh_.org(assessment.shape.shortest)))) {  // could only make shorter edges
     refuse_by_guard();
     return;
   }
@@ -178,7 +187,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   }
   if (probe.status == ProbeStatus::Unusable) return;
   if (probe.status == ProbeStatus::Clear) {  // Fig. 38 l.15-17
-    if (probe.insertion_radius < floor_at(c)) {
+    if (probe.insertion_radius < floor_for(assessment, c)) {
       refuse_by_guard();
       return;
     }
@@ -203,8 +212,12 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
     return;
   }
   // Fig. 38 l.23-25. t goes back only if something was split, so a guard refusal cannot make
-  // the same attempt repeat forever.
-  if (split_encroached_subsegments(true) > 0 && still_exists(entry)) enqueue_if_bad(t);
+  // the same attempt repeat forever. Splits owed to a size bound meet only the precision floor,
+  // as t itself does (floor_for).
+  size_splits_ = assessment.too_large;
+  const std::uint64_t splits = split_encroached_subsegments(true);
+  size_splits_ = false;
+  if (splits > 0 && still_exists(entry)) enqueue_if_bad(t);
 }
 
 // Fig. 39, NEWVERTEX.

@@ -44,6 +44,10 @@ class Terminator {
   // Fig. 39 l.39-45 for one subsegment; false if it was not split.
   bool split_subsegment(EdgeRef s, bool queue_triangles);
   bool uses_lenses() const;
+  struct SplitRadius {
+    double now, after_chew;  // the shortest edge a split at p would make, before and after Chew's step
+  };
+  SplitRadius split_radius(EdgeRef s, const Point& p);
   // Fig. 39 l.40-43; returns the edge of the subsegment afterwards, or kNone.
   EdgeRef delete_free_vertices_near(EdgeRef s, bool queue_triangles);
   static constexpr std::size_t kDeletionSearchLimit = 512;  // triangles looked at per split
@@ -69,6 +73,7 @@ class Terminator {
   void drop_last_vertex();
   void refuse_by_guard();
   double floor_at(const Point& p) const;  // the guard's edge floor where p lies
+  double floor_for(const Assessment& a, const Point& p) const;  // the floor for splitting that triangle
   void survey_remaining();
 
   Mesh& mesh_;
@@ -87,6 +92,7 @@ class Terminator {
   QualityQueue bad_triangles_;       // Q_t
   EncroachedQueue encroached_;       // Q_s
   RefineReport report_;
+  bool size_splits_ = false;  // the subsegment splits under way are owed to a size bound
 };
 
 }  // namespace deltri
