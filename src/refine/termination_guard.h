@@ -10,7 +10,8 @@
 // shorter than the floor is ever created; a constrained Delaunay triangulation joins each vertex to
 // its nearest visible neighbour, so vertices stay that far apart and only finitely many fit in the
 // domain. Meshes within the proven range never come near the floor; size bounds lower it (a user who
-// asks for area A gets edges down to sqrt(A) 2^-kGuardOctaves), so the guard never blocks size
+// asks for area A gets edges down to sqrt(A) 2^-kGuardOctaves), and a triangle over its size bound
+// is split under the precision floor alone (Terminator::floor_for), so the guard never blocks size
 // refinement. (A per-vertex floor from the 1-Lipschitz extension of f was tried and refused
 // ordinary insertions far from the input vertices, where that extension overestimates lfs.)
 #pragma once
