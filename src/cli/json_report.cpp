@@ -127,11 +127,18 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   if (q && q->stopped_by_cap) j.string(nullptr, "the termination guard's cap on Steiner points was reached");
   if (q && q->bad_triangles_left > 0 && sw.no_boundary_steiner > 0) j.string(nullptr, "-Y/-YY: segments were not split");
   j.close(']');
-  if (q && q->bad_triangles_left > 0) {
+  if (q && q->skinny_left > 0) {
     j.open("worst_triangle");
     j.number("smallest_angle", q->worst_min_angle_deg);
     j.number("x", q->worst_location.x);
     j.number("y", q->worst_location.y);
+    j.close();
+  }
+  if (q && q->oversized_left > 0) {
+    j.open("largest_triangle");
+    j.number("times_size_bound", q->worst_size_excess);
+    j.number("x", q->worst_size_location.x);
+    j.number("y", q->worst_size_location.y);
     j.close();
   }
   j.close();

@@ -51,11 +51,16 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
       warn("refinement stopped after " + std::to_string(q->steiner_cap) +
            " Steiner points, the termination guard's cap for this input (the angle bound is beyond what refinement can reach here)");
     if (q->bad_triangles_left > 0) {
-      char where[160];
-      std::snprintf(where, sizeof where, " (worst: smallest angle %.4g degrees near (%.9g, %.9g))",
-                    q->worst_min_angle_deg, q->worst_location.x, q->worst_location.y);
+      char angle[128] = "", size[128] = "";
+      if (q->skinny_left > 0)
+        std::snprintf(angle, sizeof angle, "worst: smallest angle %.4g degrees near (%.9g, %.9g)",
+                      q->worst_min_angle_deg, q->worst_location.x, q->worst_location.y);
+      if (q->oversized_left > 0)
+        std::snprintf(size, sizeof size, "largest: %.4g times its size bound near (%.9g, %.9g)",
+                      q->worst_size_excess, q->worst_size_location.x, q->worst_size_location.y);
+      const std::string both = std::string(angle) + (*angle && *size ? "; " : "") + size;
       warn(plural(q->bad_triangles_left, "triangle misses", "triangles miss") + " the requested bounds" +
-           (q->stopped_by_guard ? ", where the termination guard stopped refinement" : "") + where);
+           (q->stopped_by_guard ? ", where the termination guard stopped refinement" : "") + " (" + both + ")");
     }
   }
   if (mesh.live_triangles() == 0) {

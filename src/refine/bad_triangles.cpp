@@ -1,5 +1,6 @@
 #include "refine/bad_triangles.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -80,6 +81,18 @@ Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& r
       if (len2[i] > limit2) out.too_large = true;
   }
   return out;
+}
+
+double size_excess(const Mesh& mesh, TriangleId t, const TriangleShape& shape, const QualityRules& rules) {
+  double excess = 0.0;
+  if (rules.max_area > 0.0) excess = std::max(excess, shape.area / rules.max_area);
+  if (rules.use_area_bounds && !mesh.area_bound.empty() && mesh.area_bound[t] > 0.0)
+    excess = std::max(excess, shape.area / mesh.area_bound[t]);
+  if (rules.max_edge_length > 0.0) {
+    const double longest2 = std::max({shape.length2[0], shape.length2[1], shape.length2[2]});
+    excess = std::max(excess, longest2 / (rules.max_edge_length * rules.max_edge_length));
+  }
+  return excess;
 }
 
 }  // namespace deltri

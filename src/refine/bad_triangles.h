@@ -40,6 +40,10 @@ struct Assessment {
 // Fig. 38 l.8: "delta(t) or t has an angle less than theta (but not separating two subsegments)".
 Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& rules);
 
+// How many times its size bounds t exceeds: area over the smallest area bound that applies, or
+// (longest edge over the -u edge length) squared; at most 1 when t meets them.
+double size_excess(const Mesh& mesh, TriangleId t, const TriangleShape& shape, const QualityRules& rules);
+
 // True when the angle opposite edge e (at apex(e)) lies between two subsegments.
 bool angle_between_subsegments(const Mesh& mesh, EdgeRef e);
 

@@ -56,9 +56,13 @@ struct RefineReport {
   double guard_length = 0.0;              // the edge-length floor used
   // Triangles still bad afterwards (angle below theta, not between two subsegments, or too large).
   std::uint64_t bad_triangles_left = 0;
-  double worst_ratio = 0.0;               // circumradius / shortest edge of the worst one
+  std::uint64_t skinny_left = 0;          // of those, the ones with an angle below theta
+  double worst_ratio = 0.0;               // circumradius / shortest edge of the worst skinny one
   double worst_min_angle_deg = 0.0;       // its smallest angle
   Point worst_location;                   // its centroid
+  std::uint64_t oversized_left = 0;       // the ones over a size bound
+  double worst_size_excess = 0.0;         // the largest size_excess (refine/bad_triangles.h)
+  Point worst_size_location;              // that triangle's centroid
   std::size_t peak_queue = 0;             // bad-triangle queue
 };
 

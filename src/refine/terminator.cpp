@@ -353,13 +353,21 @@ void Terminator::survey_remaining() {
     const Assessment a = assess(t);
     if (!a.bad()) continue;
     ++report_.bad_triangles_left;
-    // r / l = sqrt(q) B with B = 1 / (2 sin theta); size-only triangles rank by the same measure.
-    const double ratio = sin_theta > 0.0 ? std::sqrt(a.shape.ratio2_over_bound2) / (2.0 * sin_theta)
-                                         : 0.0;
-    if (ratio < report_.worst_ratio || (ratio == 0.0 && report_.bad_triangles_left > 1)) continue;
+    if (a.too_large) {
+      ++report_.oversized_left;
+      const double excess = size_excess(mesh_, t, a.shape, rules_);
+      if (excess > report_.worst_size_excess) {
+        report_.worst_size_excess = excess;
+        report_.worst_size_location = centroid_of(t);
+      }
+    }
+    if (!a.skinny) continue;
+    ++report_.skinny_left;
+    // r / l = sqrt(q) B with B = 1 / (2 sin theta).
+    const double ratio = std::sqrt(a.shape.ratio2_over_bound2) / (2.0 * sin_theta);
+    if (ratio < report_.worst_ratio) continue;
     report_.worst_ratio = ratio;
-    report_.worst_min_angle_deg =
-        ratio > 0.0 ? std::asin(std::min(1.0, 1.0 / (2.0 * ratio))) * 180.0 / std::numbers::pi : 0.0;
+    report_.worst_min_angle_deg = std::asin(std::min(1.0, 1.0 / (2.0 * ratio))) * 180.0 / std::numbers::pi;
     report_.worst_location = centroid_of(t);
   }
 }

@@ -91,6 +91,14 @@ TEST(bad_triangle_test) {
   CHECK(assess_triangle(m, 0, make_quality_rules(0, false, 0, false, 5.0)).too_large);
   m.area_bound.assign(1, 1.0);
   CHECK(assess_triangle(m, 0, make_quality_rules(0, false, 0, true, 0)).too_large);
+  // How far over: the area h against bounds of h / 4 and 2h, the legs' squared length 1 + h^2
+  // against an edge bound of 2; the smallest area bound that applies counts.
+  const TriangleShape shape = measure_triangle(m, 0, 0.0);
+  CHECK_NEAR(size_excess(m, 0, shape, make_quality_rules(0, false, h / 4, false, 0)), 4.0, 1e-12);
+  CHECK_NEAR(size_excess(m, 0, shape, make_quality_rules(0, false, 2 * h, false, 0)), 0.5, 1e-12);
+  m.area_bound.assign(1, h / 8);
+  CHECK_NEAR(size_excess(m, 0, shape, make_quality_rules(0, false, h / 4, true, 0)), 8.0, 1e-12);
+  CHECK_NEAR(size_excess(m, 0, shape, make_quality_rules(0, false, 0, false, 2.0)), (1 + h * h) / 4, 1e-12);
   CHECK(!assess_triangle(m, 0, make_quality_rules(0, false, 0, false, 0)).too_large);
 }
 
