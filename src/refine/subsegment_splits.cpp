@@ -111,8 +111,8 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
   if (!mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
     p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));
   if (p == pa || p == pb) return false;  // out of precision: the subsegment cannot be split
-  // Likewise a neighbour flush with s, unless Chew's step below may delete it (checked after).
-  if (!uses_lenses() && !split_keeps_orientation(s, p)) return false;
+  // Likewise a neighbour flush with s, unless Chew's step below deletes it (checked again after).
+  if (!split_keeps_orientation(s, p, uses_lenses())) return false;
   const double floor = size_splits_ ? precision_floor_at(p) : floor_at(p);
   const SplitRadius radius = split_radius(s, p);
   if (radius.after_chew < floor) {
@@ -121,7 +121,7 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
   }
   if (uses_lenses()) {  // Fig. 39 l.40-43
     s = delete_free_vertices_near(s, queue_triangles);
-    if (s == kNone || !split_keeps_orientation(s, p)) return false;
+    if (s == kNone || !split_keeps_orientation(s, p, false)) return false;
     // A free vertex in the circle that the deletion's search could not reach is still there.
     if (radius.now < floor && split_insertion_radius(mesh_, pred_, s, p, marks_) < floor) {
       refuse_by_guard();
@@ -148,12 +148,14 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
 // when an apex lies within rounding distance of s (a vertex flush with a segment, beyond what
 // doubles resolve), p can land on the far side of the line through that apex and a clockwise
 // triangle would appear. Such a split is refused, like one whose point rounds onto an endpoint.
-bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p) {
+bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pending) {
   for (EdgeRef e : {s, mesh_.link[s]}) {
     if (e == kNone) continue;
     const Point& o = mesh_.point(mesh_.org(e));
     const Point& d = mesh_.point(mesh_.dest(e));
-    const Point& c = mesh_.point(mesh_.apex(e));
+    const VertexId apex = mesh_.apex(e);
+    const Point& c = mesh_.point(apex);
+    if (chew_pending && mesh_.kind[apex] == VertexKind::Free && in_diametral_circle(o, d, c)) continue;
     if (pred_.orient2d(o, p, c) <= 0 || pred_.orient2d(p, d, c) <= 0) return false;
   }
   return true;

@@ -52,7 +52,8 @@ class Terminator {
   EdgeRef delete_free_vertices_near(EdgeRef s, bool queue_triangles);
   static constexpr std::size_t kDeletionSearchLimit = 512;  // triangles looked at per split
   // Would splitting s at p leave every new triangle counter-clockwise?
-  bool split_keeps_orientation(EdgeRef s, const Point& p);
+  // chew_pending: free vertices in s's diametral circle do not count (Chew's step deletes them).
+  bool split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pending);
   // Fig. 39 l.50-55; `out` leaves the new vertex.
   void new_vertex(EdgeRef out, bool queue_triangles);
 
