@@ -126,6 +126,8 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   if (q && q->stopped_by_max_steiner) j.string(nullptr, "the -S limit of Steiner points was reached");
   if (q && q->stopped_by_cap) j.string(nullptr, "the termination guard's cap on Steiner points was reached");
   if (q && q->bad_triangles_left > 0 && sw.no_boundary_steiner > 0) j.string(nullptr, "-Y/-YY: segments were not split");
+  if (q && q->bad_triangles_left > 0 && q->locked_subsegments > 0)
+    j.string(nullptr, "subsegments that doubles cannot split (the split point rounds onto an end or a neighbour is flush) were left whole");
   j.close(']');
   if (q && q->skinny_left > 0) {
     j.open("worst_triangle");

@@ -125,6 +125,9 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
                 static_cast<unsigned long long>(q->guard_refusals), q->guard_length);
     std::fprintf(out_, "  peak bad-triangle queue: %zu; triangles still bad: %llu\n", q->peak_queue,
                 static_cast<unsigned long long>(q->bad_triangles_left));
+    if (q->locked_subsegments > 0)
+      std::fprintf(out_, "  subsegments left whole because doubles cannot split them: %llu\n",
+                  static_cast<unsigned long long>(q->locked_subsegments));
   }
   if (r.check) std::fprintf(out_, "Consistency check (-C): %s", r.check->summary().c_str());
 }

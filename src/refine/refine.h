@@ -49,6 +49,7 @@ struct RefineReport {
   std::uint64_t rejected_candidates = 0;  // Steiner points rejected because they encroach
   std::uint64_t declined_splits = 0;      // rejected points whose subsegments SPLITPERMITTED kept
   std::uint64_t guard_refusals = 0;       // insertions refused by the termination guard
+  std::uint64_t locked_subsegments = 0;   // subsegments left unsplit: doubles could not split them
   bool stopped_by_guard = false;
   bool stopped_by_max_steiner = false;
   bool stopped_by_cap = false;            // the guard's Steiner point cap was reached

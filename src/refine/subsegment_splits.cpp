@@ -110,9 +110,15 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
   Point p;  // Fig. 39 l.39, across a thin wedge aligned with the vertex opposite (mirrored_split.h)
   if (!mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
     p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));
-  if (p == pa || p == pb) return false;  // out of precision: the subsegment cannot be split
+  if (p == pa || p == pb) {  // out of precision: the subsegment cannot be split
+    lock(s);
+    return false;
+  }
   // Likewise a neighbour flush with s, unless Chew's step below deletes it (checked again after).
-  if (!split_keeps_orientation(s, p, uses_lenses())) return false;
+  if (!split_keeps_orientation(s, p, uses_lenses())) {
+    lock(s);
+    return false;
+  }
   const double floor = size_splits_ ? precision_floor_at(p) : floor_at(p);
   const SplitRadius radius = split_radius(s, p);
   if (radius.after_chew < floor) {
@@ -121,7 +127,11 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
   }
   if (uses_lenses()) {  // Fig. 39 l.40-43
     s = delete_free_vertices_near(s, queue_triangles);
-    if (s == kNone || !split_keeps_orientation(s, p, false)) return false;
+    if (s == kNone) return false;
+    if (!split_keeps_orientation(s, p, false)) {
+      lock(s);
+      return false;
+    }
     // A free vertex in the circle that the deletion's search could not reach is still there.
     if (radius.now < floor && split_insertion_radius(mesh_, pred_, s, p, marks_) < floor) {
       refuse_by_guard();
@@ -177,8 +187,21 @@ EdgeRef Terminator::current_edge(const EncroachedSubsegment& entry) {
 
 bool Terminator::is_splittable(EdgeRef e) const {
   if (opt_.no_steiner_on_segments >= 2) return false;
-  if (opt_.no_steiner_on_segments == 1) return mesh_.link[e] != kNone;
-  return true;
+  if (opt_.no_steiner_on_segments == 1 && mesh_.link[e] == kNone) return false;
+  const SubsegmentId id = mesh_.subseg[e];
+  return id >= locked_.size() || !locked_[id];
+}
+
+// A subsegment that doubles cannot split (the split point rounds onto an end, or a neighbour lies
+// flush with it there) is treated as -Y treats the boundary from then on. Trying again only
+// repeated the failure, and where Chew's step had deleted free vertices first, their triangles came
+// back with new ones: robustness1.node at -a0.93 went round that loop 177,000 times, to the Steiner
+// cap (361,425 points, 354,083 deletions).
+void Terminator::lock(EdgeRef s) {
+  const SubsegmentId id = mesh_.subseg[s];
+  if (id >= locked_.size()) locked_.resize(mesh_.subsegments.size(), 0);
+  locked_[id] = 1;
+  ++report_.locked_subsegments;
 }
 
 // A segment vertex takes the segment's marker and attributes interpolated along the subsegment.

@@ -94,6 +94,8 @@ class Terminator {
   EncroachedQueue encroached_;       // Q_s
   RefineReport report_;
   bool size_splits_ = false;  // the subsegment splits under way are owed to a size bound
+  std::vector<char> locked_;  // by subsegment record: a split failed for want of precision
+  void lock(EdgeRef s);
 };
 
 }  // namespace deltri

@@ -7,6 +7,7 @@
 # 4. A .ele with a clockwise triangle is refused: exit 1, "X.1.ele: ..." and no output files.
 set -u
 deltri=$1 verify=$2 input=$3
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d) || exit 1
 trap 'rm -rf "$work"' EXIT
 failed=0
@@ -19,19 +20,7 @@ cd "$work" || exit 1
 "$deltri" -rpQ "$name.1" || fail "-rp failed"
 for ext in node ele poly; do cmp -s "$name.1.$ext" "$name.2.$ext" || fail "-rp changed the .$ext"; done
 
-# Smallest angle and largest area of X.2 (awk, independent of deltri's statistics).
-measure() {
-  awk 'FNR == 1 { file++ } /^[ \t]*#/ || NF == 0 { next }
-       file == 1 && !nh { nh = 1; next } file == 1 { x[$1] = $2; y[$1] = $3; next }
-       file == 2 && !eh { eh = 1; next }
-       file == 2 { a = $2; b = $3; c = $4
-         area = ((x[b]-x[a])*(y[c]-y[a]) - (y[b]-y[a])*(x[c]-x[a])) / 2; if (area > amax) amax = area
-         for (k = 0; k < 3; k++) {
-           p = (k == 0 ? a : k == 1 ? b : c); q = (k == 0 ? b : k == 1 ? c : a); r = (k == 0 ? c : k == 1 ? a : b)
-           ux = x[q]-x[p]; uy = y[q]-y[p]; vx = x[r]-x[p]; vy = y[r]-y[p]
-           ang = atan2(ux*vy - uy*vx, ux*vx + uy*vy) * 45 / atan2(1, 1); if (amin == "" || ang < amin) amin = ang } }
-       END { printf "%.9f %.17g\n", amin, amax }' "$1.node" "$1.ele"
-}
+. "$here/measure.sh"
 
 rm -f "$name".2.*
 "$deltri" -rpq33Q "$name.1" || fail "-rpq33 failed"
