@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace deltri {
 namespace {
@@ -33,6 +34,36 @@ std::vector<double> initial_feature_sizes(const Mesh& mesh) {
     }
   }
   return f;
+}
+
+double smallest_input_angle(const Mesh& mesh) {
+  double smallest = HUGE_VAL;
+  if (!mesh.has_subsegments()) return smallest;
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+    if (mesh.corner[e] == kNone || mesh.subseg[e] == kNone) continue;
+    const Point& v = mesh.point(mesh.org(e));
+    const Point& to = mesh.point(mesh.dest(e));
+    // Turn counter-clockwise around v, through the triangles, to the next subsegment.
+    for (EdgeRef g = e;;) {
+      const EdgeRef in = lprev(g);  // apex(g) -> v
+      if (mesh.subseg[in] != kNone) {
+        const Point& x = mesh.point(mesh.org(in));
+        const double ux = to.x - v.x, uy = to.y - v.y, wx = x.x - v.x, wy = x.y - v.y;
+        double angle = std::atan2(ux * wy - uy * wx, ux * wx + uy * wy);
+        if (angle < 0.0) angle += 2.0 * std::numbers::pi;
+        smallest = std::min(smallest, angle);
+        break;
+      }
+      g = mesh.link[in];
+      if (g == kNone || g == e) break;
+    }
+  }
+  return smallest;
+}
+
+double angle_scale(double angle) {
+  if (!(angle < std::numbers::pi / 3.0)) return 1.0;
+  return std::max(2.0 * std::sin(0.5 * angle), 0.0);
 }
 
 double precision_floor_at(const Point& p) {

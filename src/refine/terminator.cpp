@@ -34,7 +34,10 @@ double size_floor_of(const Mesh& mesh, const RefineOptions& opt) {
 double guard_floor_of(const Mesh& mesh, const RefineOptions& opt) {
   const std::vector<double> features = initial_feature_sizes(mesh);
   const double smallest = features.empty() ? 0.0 : *std::min_element(features.begin(), features.end());
-  return guard_floor(smallest, size_floor_of(mesh, opt));
+  // Beyond the practical range the floor is what stops cascades, so it stays unscaled there.
+  const bool cascading = opt.quality && opt.min_angle_deg > kCascadeAngleDeg;
+  const double scale = cascading ? 1.0 : angle_scale(smallest_input_angle(mesh));
+  return guard_floor(smallest * scale, size_floor_of(mesh, opt));
 }
 
 // The squared diagonal of the bounding box of the vertices.

@@ -303,6 +303,16 @@ TEST(guard_features_and_floor) {
   CHECK_NEAR(f[4], 0.5, 1e-15);  // its height over the bottom subsegment
   CHECK_NEAR(f[2], 4.0, 1e-15);
   CHECK_NEAR(guard_floor(1.0, 0.0), std::ldexp(1.0, -kGuardOctaves), 0.0);
+  // Only the square's 90-degree corners: no scaling.
+  CHECK_NEAR(smallest_input_angle(m), rad(90), 1e-12);
+  CHECK_EQ(angle_scale(smallest_input_angle(m)), 1.0);
+  // A spoke 20 degrees above the base, meeting it at the origin.
+  Mesh fan = triangulated({{0, 0}, {1, 0}, {std::cos(rad(20)), std::sin(rad(20))}, {0, 1}});
+  mark_boundary(fan);
+  REQUIRE(mark_segment(fan, 0, 2) || mark_segment(fan, 2, 0));
+  CHECK_NEAR(smallest_input_angle(fan), rad(20), 1e-12);
+  CHECK_NEAR(angle_scale(rad(20)), 2 * std::sin(rad(10)), 1e-15);
+  CHECK_EQ(angle_scale(rad(60)), 1.0);
   CHECK_NEAR(guard_floor(1.0, 0.5), std::ldexp(0.5, -kGuardOctaves), 0.0);
 }
 
