@@ -76,6 +76,15 @@ class Json {
   bool first_ = true;
 };
 
+// {"<measure>": value, "x": ..., "y": ...}: a triangle named by one figure and where it is.
+void triangle_at(Json& j, const char* key, const char* measure, double value, const Point& at) {
+  j.open(key);
+  j.number(measure, value);
+  j.number("x", at.x);
+  j.number("y", at.y);
+  j.close();
+}
+
 }  // namespace
 
 std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
@@ -129,20 +138,9 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   if (q && q->bad_triangles_left > 0 && q->locked_subsegments > 0)
     j.string(nullptr, "subsegments that doubles cannot split (the split point rounds onto an end or a neighbour is flush) were left whole");
   j.close(']');
-  if (q && q->skinny_left > 0) {
-    j.open("worst_triangle");
-    j.number("smallest_angle", q->worst_min_angle_deg);
-    j.number("x", q->worst_location.x);
-    j.number("y", q->worst_location.y);
-    j.close();
-  }
-  if (q && q->oversized_left > 0) {
-    j.open("largest_triangle");
-    j.number("times_size_bound", q->worst_size_excess);
-    j.number("x", q->worst_size_location.x);
-    j.number("y", q->worst_size_location.y);
-    j.close();
-  }
+  if (q && q->skinny_left > 0) triangle_at(j, "worst_triangle", "smallest_angle", q->worst_min_angle_deg, q->worst_location);
+  if (q && q->oversized_left > 0)
+    triangle_at(j, "largest_triangle", "times_size_bound", q->worst_size_excess, q->worst_size_location);
   j.close();
 
   j.open("repairs");
