@@ -123,9 +123,4 @@ double triangle_area(const Point& a, const Point& b, const Point& c) {
   return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
 }
 
-double squared_distance(const Point& a, const Point& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return dx * dx + dy * dy;
-}
-
 }  // namespace deltri

@@ -29,6 +29,10 @@ Point segment_intersection(const Point& a, const Point& b, const Point& c, const
 // Signed area: positive when a, b, c are counter-clockwise. Plain floating point.
 double triangle_area(const Point& a, const Point& b, const Point& c);
 
-double squared_distance(const Point& a, const Point& b);
+// Inline: the refinement's hot loops (cavity search, triangle shapes) call it for every vertex.
+inline double squared_distance(const Point& a, const Point& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return dx * dx + dy * dy;
+}
 
 }  // namespace deltri

@@ -7,6 +7,8 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/constructions.h"
+
 namespace deltri {
 namespace {
 
@@ -25,11 +27,6 @@ struct TriangleShape {
 double angle_at(const Point& a, const Point& b, const Point& c) {
   const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
   return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * kDegreesPerRadian;
-}
-
-double squared_distance(const Point& a, const Point& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return dx * dx + dy * dy;
 }
 
 TriangleShape shape_of(const Mesh& mesh, TriangleId t) {

@@ -4,13 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/constructions.h"
+
 namespace deltri {
 namespace {
-
-double length2(const Point& a, const Point& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return dx * dx + dy * dy;
-}
 
 bool has_subsegment(const Mesh& mesh, EdgeRef e) {
   return mesh.has_subsegments() && mesh.subseg[e] != kNone;
@@ -43,9 +40,9 @@ TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta
   const Point& b = mesh.point(corners[1]);
   const Point& c = mesh.point(corners[2]);
   double* len2 = shape.length2;
-  len2[0] = length2(a, b);
-  len2[1] = length2(b, c);
-  len2[2] = length2(c, a);
+  len2[0] = squared_distance(a, b);
+  len2[1] = squared_distance(b, c);
+  len2[2] = squared_distance(c, a);
   unsigned s = 0;
   if (len2[1] < len2[s]) s = 1;
   if (len2[2] < len2[s]) s = 2;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/constructions.h"
+
 namespace deltri {
 
 void CavityMarks::begin(std::uint32_t slots) {
@@ -64,11 +66,6 @@ KnownCavity CavityMarks::marked() const {
 
 namespace detail {
 namespace {
-
-double distance2(const Point& a, const Point& b) {
-  const double dx = a.x - b.x, dy = a.y - b.y;
-  return dx * dx + dy * dy;
-}
 
 // The side of T through which the ray from q towards c leaves: its origin on or right of the
 // ray, its destination strictly left, and c strictly beyond it. kNone if no side qualifies
@@ -138,7 +135,7 @@ void cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> s
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
       const VertexId u = mesh.org(e);
-      const double d2 = distance2(c, mesh.point(u));
+      const double d2 = squared_distance(c, mesh.point(u));
       out.nearest2 = std::min(out.nearest2, d2);
       if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
         out.boundary_subsegments.push_back(e);

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/constructions.h"
 #include "geometry/encroachment.h"
 #include "mesh/delete_vertex.h"
 #include "mesh/operations.h"
@@ -43,7 +44,7 @@ Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
     const VertexId w = mesh_.org(e);
     const Point& q = mesh_.point(w);
     if (mesh_.kind[w] == VertexKind::Free && in_diametral_circle(pa, pb, q)) continue;
-    nearest2 = std::min(nearest2, (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y));
+    nearest2 = std::min(nearest2, squared_distance(q, p));
   }
   return {now, std::sqrt(nearest2)};
 }

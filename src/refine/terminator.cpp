@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "geometry/box.h"
+#include "geometry/constructions.h"
 #include "mesh/operations.h"
 #include "refine/split_permitted.h"
 #include "refine/steiner_point.h"
@@ -262,11 +263,8 @@ bool Terminator::shell_exempt(EdgeRef shortest) const {
   if (pa[0] == kNone || pb[0] == kNone) return false;
   const VertexId j = shared_end(pa, pb);
   if (j == kNone) return false;
-  const Point& pj = mesh_.point(j);
-  const Point& qa = mesh_.point(a);
-  const Point& qb = mesh_.point(b);
-  const double da2 = (qa.x - pj.x) * (qa.x - pj.x) + (qa.y - pj.y) * (qa.y - pj.y);
-  const double db2 = (qb.x - pj.x) * (qb.x - pj.x) + (qb.y - pj.y) * (qb.y - pj.y);
+  const double da2 = squared_distance(mesh_.point(a), mesh_.point(j));
+  const double db2 = squared_distance(mesh_.point(b), mesh_.point(j));
   constexpr double k = 0.999 * 0.999;  // the distances within 0.1%, compared squared
   return da2 > k * db2 && db2 > k * da2;
 }
