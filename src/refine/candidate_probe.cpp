@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/constructions.h"
+#include "util/prefetch.h"
 
 namespace deltri {
 
@@ -149,8 +150,8 @@ void cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> s
       }
       const TriangleId n = triangle_of(twin);
       if (marks.contains(n)) continue;  // an edge inside the cavity, seen from its other side
-      __builtin_prefetch(&mesh.link[3 * n]);
-      if (mesh.has_subsegments()) __builtin_prefetch(&mesh.subseg[3 * n]);
+      prefetch(&mesh.link[3 * n]);  // needed when n joins the cavity
+      if (mesh.has_subsegments()) prefetch(&mesh.subseg[3 * n]);
       const Point& x = mesh.point(mesh.corner[3 * n]);
       const Point& y = mesh.point(mesh.corner[3 * n + 1]);
       const Point& z = mesh.point(mesh.corner[3 * n + 2]);

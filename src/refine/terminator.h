@@ -19,17 +19,9 @@
 #include "refine/mirrored_split.h"
 #include "refine/quality_queue.h"
 #include "refine/refine.h"
+#include "util/prefetch.h"
 
 namespace deltri {
-
-// A hint to the processor that *p will be read soon; nothing else.
-inline void prefetch(const void* p) {
-#if defined(__GNUC__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
 
 class Terminator {
  public:
