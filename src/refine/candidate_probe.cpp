@@ -30,20 +30,21 @@ void CavityMarks::spill() {
 }
 
 bool CavityMarks::mark(TriangleId t) {
+  if (contains(t)) return false;
+  add(t);
+  return true;
+}
+
+void CavityMarks::add(TriangleId t) {
+  ++count_;
   if (!stamped_) {
-    for (std::size_t i = 0; i < listed_; ++i)
-      if (list_[i] == t) return false;
     if (listed_ < kListLimit) {
       list_[listed_++] = t;
-      ++count_;
-      return true;
+      return;
     }
     spill();
   }
-  if (stamp_[t] == now_) return false;
   stamp_[t] = now_;
-  ++count_;
-  return true;
 }
 
 bool CavityMarks::contains(TriangleId t) const {
@@ -156,7 +157,7 @@ void cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> s
       const Point& y = mesh.point(mesh.corner[3 * n + 1]);
       const Point& z = mesh.point(mesh.corner[3 * n + 2]);
       if (pred.incircle(x, y, z, c) > 0) {
-        marks.mark(n);
+        marks.add(n);
         todo.push_back(n);
       } else {
         boundary.push_back(e);

@@ -50,6 +50,7 @@ class CavityMarks {
   void begin(std::uint32_t slots);
   void reserve(std::size_t slots) { stamp_.reserve(slots); }
   bool mark(TriangleId t);  // false if already marked in this search
+  void add(TriangleId t);   // mark, for a t known not to be marked yet
   bool contains(TriangleId t) const;
   // The triangles marked by the latest search and the boundary it recorded, valid until the next
   // begin().
