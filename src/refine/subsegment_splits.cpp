@@ -14,7 +14,7 @@
 
 namespace deltri {
 
-std::uint64_t Terminator::split_encroached_subsegments(bool queue_triangles) {
+std::uint64_t Terminator::split_encroached_subsegments(bool queue_triangles, bool owed_to_size) {
   std::uint64_t splits = 0;
   while (!encroached_.empty()) {  // Fig. 39 l.36
     const EncroachedSubsegment entry = encroached_.pop();  // Fig. 39 l.37
@@ -24,7 +24,7 @@ std::uint64_t Terminator::split_encroached_subsegments(bool queue_triangles) {
       encroached_.clear();
       break;
     }
-    if (split_subsegment(s, queue_triangles)) ++splits;
+    if (split_subsegment(s, queue_triangles, owed_to_size)) ++splits;
   }
   return splits;
 }
@@ -104,23 +104,20 @@ EdgeRef Terminator::delete_free_vertices_near(EdgeRef s, bool queue_triangles) {
   return s;
 }
 
-bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles) {
+bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_size) {
   const VertexId a = mesh_.org(s), b = mesh_.dest(s);
   const Point& pa = mesh_.point(a);
   const Point& pb = mesh_.point(b);
   Point p;  // Fig. 39 l.39, across a thin wedge aligned with the vertex opposite (mirrored_split.h)
   if (!mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
     p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));
-  if (p == pa || p == pb) {  // out of precision: the subsegment cannot be split
+  // Out of precision: p rounds onto an end, or a neighbour is flush with s there (unless it is one
+  // that Chew's step below deletes; checked again after).
+  if (p == pa || p == pb || !split_keeps_orientation(s, p, uses_lenses())) {
     lock(s);
     return false;
   }
-  // Likewise a neighbour flush with s, unless Chew's step below deletes it (checked again after).
-  if (!split_keeps_orientation(s, p, uses_lenses())) {
-    lock(s);
-    return false;
-  }
-  const double floor = size_splits_ ? precision_floor_at(p) : floor_at(p);
+  const double floor = owed_to_size ? precision_floor_at(p) : floor_at(p);
   const SplitRadius radius = split_radius(s, p);
   if (radius.after_chew < floor) {
     refuse_by_guard();

@@ -218,10 +218,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   // Fig. 38 l.23-25. t goes back only if something was split, so a guard refusal cannot make
   // the same attempt repeat forever. Splits owed to a size bound meet only the precision floor,
   // as t itself does (floor_for).
-  size_splits_ = assessment.too_large;
-  const std::uint64_t splits = split_encroached_subsegments(true);
-  size_splits_ = false;
-  if (splits > 0 && still_exists(entry)) enqueue_if_bad(t);
+  if (split_encroached_subsegments(true, assessment.too_large) > 0 && still_exists(entry)) enqueue_if_bad(t);
 }
 
 // Fig. 39, NEWVERTEX.

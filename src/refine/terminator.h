@@ -31,10 +31,13 @@ class Terminator {
  private:
   // Fig. 38 l.11-25: one bad triangle from Q_t.
   void split_bad_triangle(const QueuedTriangle& entry);
-  // Fig. 39 l.36-49; returns the number of subsegments split.
-  std::uint64_t split_encroached_subsegments(bool queue_triangles);
+  // Fig. 39 l.36-49; returns the number of subsegments split. owed_to_size: the splits are asked
+  // for by a triangle over its size bound, and meet only the precision floor (floor_for).
+  std::uint64_t split_encroached_subsegments(bool queue_triangles, bool owed_to_size = false);
   // Fig. 39 l.39-45 for one subsegment; false if it was not split.
-  bool split_subsegment(EdgeRef s, bool queue_triangles);
+  bool split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_size);
+  // Leaves s whole from now on, as -Y leaves the boundary: doubles cannot split it.
+  void lock(EdgeRef s);
   bool uses_lenses() const;
   struct SplitRadius {
     double now, after_chew;  // the shortest edge a split at p would make, before and after Chew's step
@@ -85,9 +88,7 @@ class Terminator {
   QualityQueue bad_triangles_;       // Q_t
   EncroachedQueue encroached_;       // Q_s
   RefineReport report_;
-  bool size_splits_ = false;  // the subsegment splits under way are owed to a size bound
   std::vector<char> locked_;  // by subsegment record: a split failed for want of precision
-  void lock(EdgeRef s);
 };
 
 }  // namespace deltri
