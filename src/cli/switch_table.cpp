@@ -1,6 +1,8 @@
 #include "cli/switch_table.h"
 
 #include <array>
+#include <string_view>
+#include <utility>
 
 #include "pslg/errors.h"
 
@@ -104,11 +106,15 @@ void request(Switches::FileRequest& r, const std::string* value, const char* opt
 }
 
 void set_queue(S& s, const std::string* v) {
-  if (*v == "edge") s.queue_order = QueueOrder::EdgeBuckets;
-  else if (*v == "ratio") s.queue_order = QueueOrder::RatioBuckets;
-  else if (*v == "fifo") s.queue_order = QueueOrder::SingleFifo;
-  else if (*v == "heap") s.queue_order = QueueOrder::RatioHeap;
-  else throw UsageError("--queue=" + *v + ": the order is edge, ratio, fifo or heap");
+  static constexpr std::pair<std::string_view, QueueOrder> kOrders[] = {
+      {"ratio", QueueOrder::Ratio}, {"paper", QueueOrder::Paper},         {"edge", QueueOrder::Edge},
+      {"fifo", QueueOrder::Fifo},   {"heap", QueueOrder::RatioHeap}, {"paper-heap", QueueOrder::PaperHeap}};
+  for (const auto& [name, order] : kOrders)
+    if (*v == name) {
+      s.queue_order = order;
+      return;
+    }
+  throw UsageError("--queue=" + *v + ": the order is ratio, paper, edge, fifo, heap or paper-heap");
 }
 
 constexpr std::array kLongOptions = {
@@ -125,8 +131,10 @@ constexpr std::array kLongOptions = {
     LongOption{"strict", "", false, "exit with status 3 when some triangles miss the -q/-a/-u bounds (files are still written)",
                [](S& s, const std::string*) { s.strict = true; }},
     LongOption{"queue", "ORDER", false,
-               "which bad triangle refinement splits first: edge (shortest edge, default), ratio (worst "
-               "radius-edge ratio, the paper's 64 buckets), fifo, or heap (exact worst ratio)",
+               "which bad triangle refinement splits first: ratio (default: worst radius-edge ratio "
+               "first for skinny triangles, shortest edge first for mildly skinny ones), paper (worst "
+               "ratio throughout, as Shewchuk 2001), edge (shortest edge first, as Triangle 1.6), fifo, "
+               "heap or paper-heap (exact heaps of the ratio and paper keys)",
                set_queue},
     LongOption{"decline-cluster-splits", "", false,
                "let SPLITPERMITTED (Shewchuk 2001, Fig. 38) decline to split subsegment clusters",

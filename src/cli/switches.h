@@ -20,7 +20,7 @@ struct Switches {
   bool user_test = false;        // -u<length>: no edge longer than length
   double max_edge_length = -1.0;
   bool circumcenters_only = false;  // -k: Steiner points at circumcentres, no off-centres
-  QueueOrder queue_order = QueueOrder::EdgeBuckets;  // --queue=
+  QueueOrder queue_order = QueueOrder::Ratio;  // --queue=
   bool decline_cluster_splits = false;               // --decline-cluster-splits
   bool regional_attributes = false;  // -A
   bool convex_hull = false;      // -c

@@ -6,24 +6,55 @@
 
 namespace deltri {
 
-unsigned quality_bucket(double q) {
+namespace {
+
+// floor(log2(x)) for a finite x >= 1, from its exponent bits.
+unsigned floor_log2(double x) { return static_cast<unsigned>((std::bit_cast<std::uint64_t>(x) >> 52) - 1023); }
+
+}  // namespace
+
+unsigned paper_bucket(double q) {
   if (!(q >= 1.0)) return q > 0.0 ? 1u : 0u;  // size-only (0) or a ratio at the bound
   if (!std::isfinite(q)) return QualityQueue::kBuckets - 1;
-  const std::uint64_t bits = std::bit_cast<std::uint64_t>(q);
-  const std::uint64_t exponent = (bits >> 52) - 1023;  // q >= 1, so this is log2 floor
-  const std::uint64_t half = (bits >> 51) & 1u;        // first mantissa bit: m >= 1.5
-  const std::uint64_t step = 2 * exponent + half;
+  const std::uint64_t half = (std::bit_cast<std::uint64_t>(q) >> 51) & 1u;  // first mantissa bit: m >= 1.5
+  const std::uint64_t step = 2 * std::uint64_t{floor_log2(q)} + half;
   return static_cast<unsigned>(std::min<std::uint64_t>(1 + step, QualityQueue::kBuckets - 1));
 }
 
-unsigned edge_bucket(double shortest2, double reference2) {
+unsigned edge_bucket(double shortest2, double reference2, unsigned last) {
   const double ratio = reference2 / shortest2;
-  if (!std::isfinite(ratio)) return QualityQueue::kBuckets - 1;
+  if (!std::isfinite(ratio)) return last;
   if (!(ratio >= 1.0)) return 1;
-  int exponent = 0;
-  std::frexp(ratio, &exponent);  // ratio = m 2^exponent, 0.5 <= m < 1
-  const int bucket = std::clamp(exponent, 1, static_cast<int>(QualityQueue::kBuckets) - 1);
-  return static_cast<unsigned>(bucket);
+  return std::min(1 + floor_log2(ratio), last);
+}
+
+unsigned ratio_bucket(const Badness& b, double reference2) {
+  if (!b.skinny) return 0;
+  const double q = b.ratio2_over_bound2;
+  if (!(q >= kSkinnyRatio2)) return edge_bucket(b.shortest2, reference2, kFirstSkinnyBucket - 1);
+  if (!std::isfinite(q)) return QualityQueue::kBuckets - 1;
+  return std::min(kFirstSkinnyBucket + floor_log2(q / kSkinnyRatio2), QualityQueue::kBuckets - 1);
+}
+
+void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
+  switch (order_) {
+    case QueueOrder::Ratio:
+      return push_to_bucket(entry, ratio_bucket(why, reference2_));
+    case QueueOrder::Paper:
+      return push_to_bucket(entry, why.skinny ? paper_bucket(why.ratio2_over_bound2) : 0u);
+    case QueueOrder::Edge:
+      return push_to_bucket(entry, why.skinny ? edge_bucket(why.shortest2, reference2_) : 0u);
+    case QueueOrder::Fifo:
+      return push_to_bucket(entry, 0u);
+    case QueueOrder::RatioHeap: {
+      // The tiers of ratio_bucket, each ordered exactly.
+      if (!why.skinny) return push_keyed(entry, 0, 0.0);
+      if (why.ratio2_over_bound2 >= kSkinnyRatio2) return push_keyed(entry, 2, why.ratio2_over_bound2);
+      return push_keyed(entry, 1, reference2_ / why.shortest2);
+    }
+    case QueueOrder::PaperHeap:
+      return push_keyed(entry, why.skinny ? 1 : 0, why.skinny ? why.ratio2_over_bound2 : 0.0);
+  }
 }
 
 void QualityQueue::note_push() {
@@ -43,7 +74,7 @@ std::uint32_t QualityQueue::take_block() {
 
 void QualityQueue::give_back(std::uint32_t block) { free_blocks_.push_back(block); }
 
-void QualityQueue::push(const QueuedTriangle& entry, unsigned bucket) {
+void QualityQueue::push_to_bucket(const QueuedTriangle& entry, unsigned bucket) {
   Fifo& fifo = buckets_[bucket];
   if (fifo.last == kNoBlock) {
     fifo.first = fifo.last = take_block();
@@ -59,8 +90,8 @@ void QualityQueue::push(const QueuedTriangle& entry, unsigned bucket) {
   note_push();
 }
 
-void QualityQueue::push_keyed(const QueuedTriangle& entry, double key) {
-  heap_.push_back({key, next_age_--, entry});
+void QualityQueue::push_keyed(const QueuedTriangle& entry, unsigned tier, double key) {
+  heap_.push_back({tier, key, next_age_--, entry});
   std::push_heap(heap_.begin(), heap_.end());
   note_push();
 }

@@ -32,7 +32,7 @@ struct RefineOptions {
   long max_steiner = -1;                // -S; -1 unlimited
   bool off_centers = true;              // Ungor's off-centres instead of circumcentres
   double max_edge_length = 0.0;         // <= 0: none; the -u size test
-  QueueOrder queue_order = QueueOrder::EdgeBuckets;  // which bad triangle goes first (quality_queue.h)
+  QueueOrder queue_order = QueueOrder::Ratio;  // which bad triangle goes first (quality_queue.h)
   // Fig. 38 l.21: let SPLITPERMITTED decline cluster splits. That is the Terminator's proof of
   // termination, but a declined triangle keeps its angle (up to Theorem 12's bound) wherever it
   // is, even far out along a long cluster subsegment. Off (the default), every encroached

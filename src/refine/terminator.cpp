@@ -97,11 +97,11 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
       rule_(rule_for(opt)),
       off_constant_(off_center_constant(opt.quality ? opt.min_angle_deg : 0.0, opt.off_centers)),
       guard_floor_(guard_floor_of(mesh, opt)),
-      reference2_(squared_diameter(mesh)),
       steiner_cap_(steiner_cap(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length})),
       pieces_(mesh),
       apices_(mesh),
-      finder_(mesh) {
+      finder_(mesh),
+      bad_triangles_(opt.queue_order, squared_diameter(mesh)) {
   report_.guard_length = guard_floor_;
   report_.steiner_cap = steiner_cap_;
 }
@@ -270,22 +270,7 @@ void Terminator::enqueue_if_bad(TriangleId t) {
   const Assessment a = assess(t);
   if (!a.bad()) return;
   const QueuedTriangle entry{t, mesh_.corner[3 * t], mesh_.corner[3 * t + 1], mesh_.corner[3 * t + 2]};
-  // Triangles that are only too large wait in bucket 0 (or at the heap's bottom): ordering
-  // well-shaped triangles does not pay (Sec. 7).
-  switch (opt_.queue_order) {
-    case QueueOrder::EdgeBuckets:
-      bad_triangles_.push(entry, a.skinny ? edge_bucket(a.shape.shortest_length2, reference2_) : 0u);
-      break;
-    case QueueOrder::RatioBuckets:
-      bad_triangles_.push(entry, a.skinny ? quality_bucket(a.shape.ratio2_over_bound2) : 0u);
-      break;
-    case QueueOrder::SingleFifo:
-      bad_triangles_.push(entry, 0u);
-      break;
-    case QueueOrder::RatioHeap:
-      bad_triangles_.push_keyed(entry, a.skinny ? a.shape.ratio2_over_bound2 : 0.0);
-      break;
-  }
+  bad_triangles_.push(entry, {a.skinny, a.shape.ratio2_over_bound2, a.shape.shortest_length2});
 }
 
 bool Terminator::still_exists(const QueuedTriangle& entry) const {

@@ -79,7 +79,6 @@ class Terminator {
   EncroachRule rule_;
   double off_constant_ = 0.0;
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
-  double reference2_ = 0.0;            // squared diameter of the mesh, the edge buckets' scale
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   SegmentPieces pieces_;  // the piece of each subsegment and refinement split
   SegmentApices apices_;
