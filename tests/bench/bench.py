@@ -4,8 +4,15 @@
 Nothing here asserts anything: benchmarks are measurements, not tests. Each case runs REPEAT
 times and the median wall time is shown; peak memory is the child's maximum resident set size.
 Usage: bench.py BUILD_DIR [--quick] [--only SUBSTRING]
+
+When Triangle 1.6 is installed (a `triangle` on PATH, e.g. Debian's non-free triangle-bin, or
+TRIANGLE=/path/to/triangle), every case also runs it with the same switches, interleaved with
+deltri's runs so that both meet the same host, and the tables add its time, peak and the ratio of
+the two throughputs (triangles per second, end to end with outputs written). Triangle is only
+run, never built or read: it is a measuring stick.
 """
 import os
+import shutil
 import statistics
 import subprocess
 import sys
@@ -19,6 +26,7 @@ gen = os.path.abspath(os.path.join(build, "tests", "deltri_bench_gen"))
 work = os.path.abspath(os.path.join(build, "bench"))
 os.makedirs(work, exist_ok=True)
 REPEAT = 1 if quick else 3
+triangle = os.environ.get("TRIANGLE") or shutil.which("triangle")
 
 
 def workload(kind, size, ext):
@@ -66,15 +74,54 @@ def run(switches, path, verbose):
     return wall, usage.ru_maxrss * 1024, stages, triangles
 
 
+def run_triangle(switches, path):
+    """One run of Triangle 1.6 with the same switches: (wall seconds, peak RSS bytes, triangles)."""
+    remove_outputs(path)
+    start = time.perf_counter()
+    proc = subprocess.Popen([triangle, "-" + switches.lstrip("-") + "Q", os.path.basename(path)],
+                            cwd=os.path.dirname(path), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - start
+    if status != 0:
+        raise SystemExit(f"triangle {switches} {path} failed with status {status}")
+    with open(os.path.splitext(path)[0] + ".1.ele") as f:
+        triangles = int(f.readline().split()[0])
+    return wall, usage.ru_maxrss * 1024, triangles
+
+
 def measure(switches, path):
     """Wall time and peak memory from plain runs; stage timings from -V runs (-V also computes
-    the quality statistics, which would inflate the end-to-end time)."""
-    plain = [run(switches, path, False) for _ in range(REPEAT)]
+    the quality statistics, which would inflate the end-to-end time). With Triangle available,
+    its runs alternate with deltri's plain runs; its figures come back as `reference`, else None."""
+    plain, theirs = [], []
+    for _ in range(REPEAT):
+        plain.append(run(switches, path, False))
+        if triangle:
+            theirs.append(run_triangle(switches, path))
     verbose = [run(switches, path, True) for _ in range(REPEAT)]
     wall = statistics.median(r[0] for r in plain)
     rss = max(r[1] for r in plain)
     stage = {k: statistics.median(r[2].get(k, 0.0) for r in verbose) for k in verbose[0][2]}
-    return wall, rss, stage, verbose[0][3]
+    reference = None
+    if theirs:
+        reference = (statistics.median(r[0] for r in theirs), max(r[1] for r in theirs), theirs[0][2])
+    return wall, rss, stage, verbose[0][3], reference
+
+
+def reference_columns(reference, wall, tris):
+    """The extra cells for Triangle: its triangles, time and peak, and deltri's throughput over its."""
+    if reference is None:
+        return ""
+    t_wall, t_rss, t_tris = reference
+    speedup = (tris / wall) / (t_tris / t_wall) if t_tris and wall else 0.0
+    return f" {t_tris:,} | {t_wall:.3f} | {mib(t_rss)} | {speedup:.2f}x |"
+
+
+def reference_header(header, rule):
+    if not triangle:
+        return header, rule
+    return (header + " Triangle triangles | Triangle s | Triangle peak | throughput ratio |",
+            rule + "---|---|---|---|")
 
 
 def mib(b):
@@ -84,45 +131,52 @@ def mib(b):
 def point_sets():
     sizes = [100_000, 1_000_000] if quick else [100_000, 1_000_000, 4_000_000]
     print("## Delaunay triangulation of point sets (`deltri -V pts.node`, writes .node and .ele)\n")
-    print("| points | kind | triangles | triangulation s | end to end s | peak | bytes/point | bytes/triangle |")
-    print("|---|---|---|---|---|---|---|---|")
+    header, rule = reference_header("| points | kind | triangles | triangulation s | end to end s | peak | bytes/point | bytes/triangle |",
+                                    "|---|---|---|---|---|---|---|---|")
+    print(header)
+    print(rule)
     for size in sizes:
         for kind in ("uniform", "gaussian", "grid", "clustered"):
             if only and only not in kind:
                 continue
             path = workload(kind, size, "node")
-            wall, rss, stage, tris = measure("", path)
+            wall, rss, stage, tris, reference = measure("", path)
             print(f"| {size:,} | {kind} | {tris:,} | {stage.get('Delaunay', 0):.3f} | {wall:.3f} | {mib(rss)} "
-                  f"| {rss / size:.0f} | {rss / max(tris, 1):.0f} |", flush=True)
+                  f"| {rss / size:.0f} | {rss / max(tris, 1):.0f} |{reference_columns(reference, wall, tris)}", flush=True)
     print()
 
 
 def pslgs():
     print("## PSLGs: unit square with k x k circular holes of 64 segments (`deltri -pV`)\n")
-    print("| holes | vertices and segments | switches | triangles | end to end s | peak | bytes/triangle |")
-    print("|---|---|---|---|---|---|---|")
+    header, rule = reference_header("| holes | vertices and segments | switches | triangles | end to end s | peak | bytes/triangle |",
+                                    "|---|---|---|---|---|---|---|")
+    print(header)
+    print(rule)
     for k, switches in ((45, "-p"), (100, "-p"), (45, "-pq30")):
         if only and only not in "holes":
             continue
         path = workload("holes", k, "poly")
-        wall, rss, stage, tris = measure(switches, path)
-        print(f"| {k}x{k} | {4 + 64 * k * k:,} | `{switches}` | {tris:,} | {wall:.3f} | {mib(rss)} | {rss / max(tris, 1):.0f} |", flush=True)
+        wall, rss, stage, tris, reference = measure(switches, path)
+        print(f"| {k}x{k} | {4 + 64 * k * k:,} | `{switches}` | {tris:,} | {wall:.3f} | {mib(rss)} | {rss / max(tris, 1):.0f} |"
+              f"{reference_columns(reference, wall, tris)}", flush=True)
     print()
 
 
 def refinement():
     print("## Quality refinement on the unit square (`deltri -pq30a<A>V square.poly`)\n")
-    print("| switches | triangles | refinement s | end to end s | triangles/s | peak | bytes/triangle |")
-    print("|---|---|---|---|---|---|---|")
+    header, rule = reference_header("| switches | triangles | refinement s | end to end s | triangles/s | peak | bytes/triangle |",
+                                    "|---|---|---|---|---|---|---|")
+    print(header)
+    print(rule)
     areas = ["0.0000016"] if quick else ["0.0000016", "0.00000032"]
     for area in areas:
         if only and only not in "square":
             continue
         path = workload("square", 0, "poly")
         switches = f"-pq30a{area}"
-        wall, rss, stage, tris = measure(switches, path)
+        wall, rss, stage, tris, reference = measure(switches, path)
         print(f"| `{switches}` | {tris:,} | {stage.get('refinement', 0):.3f} | {wall:.3f} | {tris / wall:,.0f} "
-              f"| {mib(rss)} | {rss / max(tris, 1):.0f} |", flush=True)
+              f"| {mib(rss)} | {rss / max(tris, 1):.0f} |{reference_columns(reference, wall, tris)}", flush=True)
     print()
 
 
@@ -145,7 +199,8 @@ def soak():
 
 
 if __name__ == "__main__":
-    print(f"deltri benchmarks on {os.cpu_count()} cores; median of {REPEAT} run(s)\n")
+    print(f"deltri benchmarks on {os.cpu_count()} cores; median of {REPEAT} run(s)"
+          + (f"; Triangle 1.6 from {triangle} alongside" if triangle else "") + "\n")
     point_sets()
     pslgs()
     refinement()
