@@ -132,7 +132,7 @@ constexpr std::array kLongOptions = {
                [](S& s, const std::string*) { s.strict = true; }},
     LongOption{"queue", "ORDER", false,
                "which bad triangle refinement splits first: ratio (default: worst radius-edge ratio "
-               "first for skinny triangles, shortest edge first for mildly skinny ones), paper (worst "
+               "first for slivers, 16 times the bound and more, then shortest edge first), paper (worst "
                "ratio throughout, as Shewchuk 2001), edge (shortest edge first, as Triangle 1.6), fifo, "
                "heap or paper-heap (exact heaps of the ratio and paper keys)",
                set_queue},

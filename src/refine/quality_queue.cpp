@@ -28,18 +28,36 @@ unsigned edge_bucket(double shortest2, double reference2, unsigned last) {
   return std::min(1 + floor_log2(ratio), last);
 }
 
-unsigned ratio_bucket(const Badness& b, double reference2) {
-  if (!b.skinny) return 0;
-  const double q = b.ratio2_over_bound2;
-  if (!(q >= kSkinnyRatio2)) return edge_bucket(b.shortest2, reference2, kFirstSkinnyBucket - 1);
+unsigned skinny_bucket(double q) {
   if (!std::isfinite(q)) return QualityQueue::kBuckets - 1;
   return std::min(kFirstSkinnyBucket + floor_log2(q / kSkinnyRatio2), QualityQueue::kBuckets - 1);
 }
 
+unsigned edge_level(double shortest2, double reference2) {
+  const double x = reference2 / shortest2;
+  if (!std::isfinite(x)) return kTopLevel;
+  if (!(x >= 1.0)) return 0;
+  const unsigned quarter = static_cast<unsigned>((std::bit_cast<std::uint64_t>(x) >> 50) & 3u);
+  return std::min(4 * floor_log2(x) + quarter, kTopLevel);
+}
+
+unsigned QualityQueue::window_bucket(unsigned level) const {
+  const int above = static_cast<int>(level) - window_base_;
+  if (above <= 0) return 1;
+  return std::min(1 + static_cast<unsigned>(above), kMildBuckets);
+}
+
 void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
   switch (order_) {
-    case QueueOrder::Ratio:
-      return push_to_bucket(entry, ratio_bucket(why, reference2_));
+    case QueueOrder::Ratio: {
+      if (!why.skinny) return push_to_bucket(entry, 0);
+      if (why.ratio2_over_bound2 >= kSkinnyRatio2) return push_to_bucket(entry, skinny_bucket(why.ratio2_over_bound2));
+      QueuedTriangle leveled = entry;
+      leveled.level = static_cast<std::uint16_t>(edge_level(why.shortest2, reference2_));
+      if (static_cast<int>(leveled.level) > window_base_ + static_cast<int>(kMildBuckets - 1))
+        raise_window(leveled.level);
+      return push_to_bucket(leveled, window_bucket(leveled.level));
+    }
     case QueueOrder::Paper:
       return push_to_bucket(entry, why.skinny ? paper_bucket(why.ratio2_over_bound2) : 0u);
     case QueueOrder::Edge:
@@ -47,7 +65,7 @@ void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
     case QueueOrder::Fifo:
       return push_to_bucket(entry, 0u);
     case QueueOrder::RatioHeap: {
-      // The tiers of ratio_bucket, each ordered exactly.
+      // The tiers of the Ratio order, each ordered exactly.
       if (!why.skinny) return push_keyed(entry, 0, 0.0);
       if (why.ratio2_over_bound2 >= kSkinnyRatio2) return push_keyed(entry, 2, why.ratio2_over_bound2);
       return push_keyed(entry, 1, reference2_ / why.shortest2);
@@ -55,6 +73,64 @@ void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
     case QueueOrder::PaperHeap:
       return push_keyed(entry, why.skinny ? 1 : 0, why.skinny ? why.ratio2_over_bound2 : 0.0);
   }
+}
+
+// Calls visit(entry) for the entries of `fifo` in FIFO order, and after each block visit_block(block).
+template <class Blocks, class Visit, class VisitBlock>
+void for_each_entry(const Blocks& blocks, std::uint32_t first, std::uint32_t head, std::uint32_t last,
+                    std::uint32_t tail, std::uint32_t block_size, Visit&& visit, VisitBlock&& visit_block) {
+  for (std::uint32_t block = first; block != ~std::uint32_t{0};) {
+    const std::uint32_t from = block == first ? head : 0;
+    const std::uint32_t to = block == last ? tail : block_size;
+    for (std::uint32_t i = from; i < to; ++i) visit(blocks[block]->items[i]);
+    const std::uint32_t next = block == last ? ~std::uint32_t{0} : blocks[block]->next;
+    visit_block(block);
+    block = next;
+  }
+}
+
+// Raises the window so that `level` lies kWindowHeadroom levels below its top. The buckets that
+// stay in the window move down as a whole (their levels are one each); the ones that fall to or
+// below the new base join bucket 1 entry by entry, in FIFO order, their blocks given back as
+// they go.
+void QualityQueue::raise_window(unsigned level) {
+  const int base = static_cast<int>(level + kWindowHeadroom) - static_cast<int>(kMildBuckets - 1);
+  const int shift = base - window_base_;
+  if (shift <= 0) return;
+  const unsigned last = kMildBuckets;
+  const unsigned merged = static_cast<unsigned>(std::min<int>(shift + 1, static_cast<int>(last)));
+  for (unsigned b = 2; b <= merged; ++b) {
+    const Fifo old = buckets_[b];
+    buckets_[b] = Fifo{};
+    for_each_entry(blocks_, old.first, old.head, old.last, old.tail, kBlock,
+                   [&](const QueuedTriangle& e) { append(e, 1); }, [&](std::uint32_t block) { give_back(block); });
+  }
+  for (unsigned b = merged + 1; b <= last; ++b) {
+    buckets_[b - static_cast<unsigned>(shift)] = buckets_[b];
+    buckets_[b] = Fifo{};
+  }
+  window_base_ = base;
+  for (unsigned b = 2; b <= last; ++b) {
+    const std::uint64_t bit = std::uint64_t{1} << b;
+    nonempty_ = buckets_[b].first != kNoBlock ? nonempty_ | bit : nonempty_ & ~bit;
+  }
+}
+
+// Deals bucket 1 out again over a window whose top lies kWindowHeadroom levels above its highest
+// level, in two passes (the highest level, then the moves). Each block of the old chain is given
+// back as soon as its entries have moved, so the new chains can reuse it.
+void QualityQueue::move_window() {
+  const Fifo old = buckets_[1];
+  unsigned highest = 0;
+  for_each_entry(blocks_, old.first, old.head, old.last, old.tail, kBlock,
+                 [&](const QueuedTriangle& e) { highest = std::max<unsigned>(highest, e.level); },
+                 [](std::uint32_t) {});
+  window_base_ = static_cast<int>(highest + kWindowHeadroom) - static_cast<int>(kMildBuckets - 1);
+  buckets_[1] = Fifo{};
+  nonempty_ &= ~(std::uint64_t{1} << 1);
+  for_each_entry(blocks_, old.first, old.head, old.last, old.tail, kBlock,
+                 [&](const QueuedTriangle& e) { append(e, window_bucket(e.level)); },
+                 [&](std::uint32_t block) { give_back(block); });
 }
 
 void QualityQueue::note_push() {
@@ -74,7 +150,7 @@ std::uint32_t QualityQueue::take_block() {
 
 void QualityQueue::give_back(std::uint32_t block) { free_blocks_.push_back(block); }
 
-void QualityQueue::push_to_bucket(const QueuedTriangle& entry, unsigned bucket) {
+void QualityQueue::append(const QueuedTriangle& entry, unsigned bucket) {
   Fifo& fifo = buckets_[bucket];
   if (fifo.last == kNoBlock) {
     fifo.first = fifo.last = take_block();
@@ -87,6 +163,10 @@ void QualityQueue::push_to_bucket(const QueuedTriangle& entry, unsigned bucket) 
   }
   blocks_[fifo.last]->items[fifo.tail++] = entry;
   nonempty_ |= std::uint64_t{1} << bucket;
+}
+
+void QualityQueue::push_to_bucket(const QueuedTriangle& entry, unsigned bucket) {
+  append(entry, bucket);
   note_push();
 }
 
@@ -109,19 +189,9 @@ const QueuedTriangle* QualityQueue::peek(std::size_t ahead) const {
   return at < kBlock ? &blocks_[block]->items[at] : nullptr;
 }
 
-std::optional<QueuedTriangle> QualityQueue::pop() {
-  if (!heap_.empty()) {
-    std::pop_heap(heap_.begin(), heap_.end());
-    const QueuedTriangle entry = heap_.back().entry;
-    heap_.pop_back();
-    --size_;
-    return entry;
-  }
-  if (nonempty_ == 0) return std::nullopt;
-  const unsigned bucket = 63u - static_cast<unsigned>(std::countl_zero(nonempty_));
+QueuedTriangle QualityQueue::take_front(unsigned bucket) {
   Fifo& fifo = buckets_[bucket];
   const QueuedTriangle entry = blocks_[fifo.first]->items[fifo.head++];
-  --size_;
   if (fifo.first == fifo.last && fifo.head == fifo.tail) {  // the bucket is empty
     give_back(fifo.first);
     fifo = Fifo{};
@@ -133,6 +203,24 @@ std::optional<QueuedTriangle> QualityQueue::pop() {
     give_back(used);
   }
   return entry;
+}
+
+std::optional<QueuedTriangle> QualityQueue::pop() {
+  if (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end());
+    const QueuedTriangle entry = heap_.back().entry;
+    heap_.pop_back();
+    --size_;
+    return entry;
+  }
+  if (nonempty_ == 0) return std::nullopt;
+  unsigned bucket = 63u - static_cast<unsigned>(std::countl_zero(nonempty_));
+  if (bucket == 1 && order_ == QueueOrder::Ratio) {
+    move_window();
+    bucket = 63u - static_cast<unsigned>(std::countl_zero(nonempty_));
+  }
+  --size_;
+  return take_front(bucket);
 }
 
 }  // namespace deltri

@@ -7,18 +7,31 @@
 //
 // The key (QueueOrder; measured on the corpus in docs/refinement.md):
 // - Ratio, the default: the circumradius-to-shortest-edge ratio r against the bound
-//   B = 1 / (2 sin theta), in two tiers. Skinny triangles, r >= 4B, take buckets 48..63, one per
-//   factor sqrt(2) in r, worst first, as the paper has it. Mildly skinny ones, B < r < 4B, take
-//   buckets 1..47 by the length l of their shortest edge against the diameter D of the domain,
-//   one bucket per factor sqrt(2) in l, shortest first. With off-centres the paper's order over the
-//   whole range refines 1.4 times as much as Triangle 1.6 at -q33: mildly skinny triangles are
-//   split large ones first, each split a little finer than the last when B < 1 (theta > 30), and
-//   the cascades spread through the domain; served smallest first they settle where they start.
+//   B = 1 / (2 sin theta), in two tiers. Skinny triangles, r >= 16B, take buckets 48..63, one per
+//   factor sqrt(2) in r, worst first, as the paper has it. Mildly skinny ones, B < r < 16B, take
+//   buckets 1..47 by the length l of their shortest edge, shortest first: their edge level
+//   (edge_level, eight levels per octave of l) picks a bucket in a window of 46 levels that slides
+//   towards longer edges as refinement works its way up (below). With off-centres the paper's order
+//   over the whole range refines 1.4 times as much as Triangle 1.6 at -q33: mildly skinny
+//   triangles are split large ones first, each split a little finer than the last when B < 1
+//   (theta > 30), and the cascades spread through the domain; served smallest first they settle
+//   where they start, and the finer the levels the better (one bucket per factor sqrt(2) in l,
+//   over the whole range at once, made 2.1 % more triangles at -q33 on the corpus).
 // - Paper: the ratio over the whole range, as Sec. 7 describes it (buckets 1..63, two per octave
 //   of (r/B)^2, worst first).
-// - Edge: the shortest edge over the whole range (Triangle 1.6's key).
+// - Edge: the shortest edge over the whole range, one bucket per factor sqrt(2) (Triangle 1.6's
+//   key).
 // - Fifo: one bucket for everything. RatioHeap and PaperHeap: exact max-heaps of the Ratio and
 //   Paper keys (oldest first among equal keys), what their buckets approximate.
+//
+// The window of the mildly skinny: bucket 1 holds every level at or below the window's base, and
+// buckets 2..47 one level each above it. When bucket 1 is the worst non-empty bucket left, the
+// window is moved down so that the highest level in bucket 1 lands kWindowHeadroom levels below
+// the top (room for the slightly shorter edges that splitting makes), and bucket 1's entries are
+// dealt out again, in their FIFO order; entries keep their level for that. The first pop places
+// the window the same way. A push above the top raises the window instead: the buckets that stay
+// inside move as a whole, the ones that fall below join bucket 1. So the order is exact by level
+// (FIFO within a level), and each entry moves once per window move that passes it.
 //
 // Each bucket is a chain of fixed-size blocks taken from one pool and given back when emptied, so
 // the queue holds about its live entries (plus one partial block per bucket at each end) instead
@@ -38,7 +51,8 @@ namespace deltri {
 
 struct QueuedTriangle {
   TriangleId triangle;
-  VertexId a, b, c;  // the corners when queued
+  VertexId a, b, c;          // the corners when queued
+  std::uint16_t level = 0;   // Ratio order, mildly skinny: its edge level, kept for window moves
 };
 
 enum class QueueOrder { Ratio, Paper, Edge, Fifo, RatioHeap, PaperHeap };
@@ -50,14 +64,24 @@ struct Badness {
   double shortest2 = 0.0;           // squared length of its shortest edge
 };
 
-// Ratio: (r/B)^2 >= kSkinnyRatio2 (r >= 4B, an angle under 7.2 degrees at -q30) is skinny.
-inline constexpr double kSkinnyRatio2 = 16.0;
+// Ratio: (r/B)^2 >= kSkinnyRatio2 (r >= 16B, an angle under 1.8 degrees at -q30, 1.2 at -q20) is
+// skinny: the slivers, mostly of the initial triangulation.
+inline constexpr double kSkinnyRatio2 = 256.0;
 inline constexpr unsigned kFirstSkinnyBucket = 48;
 
-// The Ratio bucket: 0 size only; 1 + floor(log2(D^2 / l^2)) clamped to 1..47 for the mildly
-// skinny (edges below D / 2^23 share bucket 47); 48 + floor(log2(q / 16)) clamped to 48..63 for the
-// skinny (ratios beyond 4B 2^7.5, about 724 B, share bucket 63). reference2 is D^2.
-unsigned ratio_bucket(const Badness& b, double reference2);
+inline constexpr unsigned kMildBuckets = kFirstSkinnyBucket - 1;  // buckets 1..47
+inline constexpr unsigned kWindowHeadroom = 8;                     // levels: one octave of l
+
+// The Ratio bucket of a skinny triangle (q = (r/B)^2 >= 256): 48 + floor(log2(q / 256)), clamped
+// to 63 (ratios beyond 16B 2^7.5, about 2,900 B, share bucket 63).
+unsigned skinny_bucket(double ratio_squared_over_bound_squared);
+
+// The edge level of a shortest edge with squared length `shortest2` in a domain of squared
+// diameter `reference2`: with x = reference2 / shortest2 = m 2^k (1 <= m < 2), 4k plus the first two
+// mantissa bits of x (m at 1.25, 1.5, 1.75): four levels per octave of l^2, eight per octave of l,
+// higher for shorter edges; 0 for x < 1, kTopLevel for a zero-length edge.
+inline constexpr unsigned kTopLevel = 4 * 1024;
+unsigned edge_level(double shortest2, double reference2);
 
 // The Paper bucket of q = (r/B)^2, or 0 for a triangle that is bad only for its size: writing
 // q = m 2^k with 1 <= m < 2, bucket 1 + 2k + (m >= 1.5), clamped to 63. Two buckets per octave of
@@ -78,6 +102,10 @@ class QualityQueue {
   // reference2: the squared diameter of the domain, the scale of the edge keys.
   explicit QualityQueue(QueueOrder order = QueueOrder::Ratio, double reference2 = 1.0)
       : order_(order), reference2_(reference2) {}
+
+  // The Ratio order's bucket for a mildly skinny triangle of edge level `level` in the current
+  // window.
+  unsigned window_bucket(unsigned level) const;
 
   // Queues a bad triangle where the order puts it.
   void push(const QueuedTriangle& entry, const Badness& why);
@@ -120,8 +148,15 @@ class QualityQueue {
     }
   };
   void note_push();
+  void append(const QueuedTriangle& entry, unsigned bucket);  // push_to_bucket, not counted
+  QueuedTriangle take_front(unsigned bucket);                 // the oldest entry of a non-empty bucket
+  void move_window();
+  void raise_window(unsigned level);
   QueueOrder order_;
   double reference2_;
+  // Levels at or below window_base_ go to bucket 1. Before the first pop the window lies above
+  // every level, so everything waits in bucket 1 until move_window() places it.
+  int window_base_ = static_cast<int>(kTopLevel) + 1;
   std::array<Fifo, kBuckets> buckets_;
   std::vector<std::unique_ptr<Block>> blocks_;
   std::vector<std::uint32_t> free_blocks_;

@@ -1,11 +1,26 @@
 // The bucket function and the queue discipline, checked against direct computation.
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <random>
 
 #include "harness/check.h"
 #include "refine/quality_queue.h"
 
 using namespace deltri;
+
+namespace {
+
+// Pops one entry per id and checks that they come out in exactly that order.
+void expect_pops(QualityQueue& q, std::initializer_list<TriangleId> ids) {
+  for (TriangleId t : ids) {
+    auto e = q.pop();
+    REQUIRE(e.has_value());
+    CHECK_EQ(e->triangle, t);
+  }
+}
+
+}  // namespace
 
 TEST(paper_bucket_zero_is_size_only) { CHECK_EQ(paper_bucket(0.0), 0u); }
 
@@ -48,12 +63,7 @@ TEST(queue_serves_worst_bucket_first_and_fifo_within) {
   q.push_to_bucket({4, 0, 0, 0}, 0);
   q.push_to_bucket({5, 0, 0, 0}, 40);
   CHECK_EQ(q.size(), 5u);
-  const TriangleId expected[] = {2, 5, 1, 3, 4};
-  for (TriangleId t : expected) {
-    auto e = q.pop();
-    REQUIRE(e.has_value());
-    CHECK_EQ(e->triangle, t);
-  }
+  expect_pops(q, {2, 5, 1, 3, 4});
   CHECK(q.empty());
   CHECK(!q.pop().has_value());
   CHECK_EQ(q.peak_size(), 5u);
@@ -113,12 +123,7 @@ TEST(keyed_queue_serves_largest_key_first_and_oldest_among_equals) {
   const double keys[] = {3.0, 0.0, 7.5, 3.0, 1e300, 0.0, 7.5};
   for (TriangleId t = 0; t < 7; ++t) q.push_keyed({t, 0, 0, 0}, 1, keys[t]);
   CHECK_EQ(q.size(), 7u);
-  const TriangleId expected[] = {4, 2, 6, 0, 3, 1, 5};
-  for (TriangleId t : expected) {
-    auto e = q.pop();
-    REQUIRE(e.has_value());
-    CHECK_EQ(e->triangle, t);
-  }
+  expect_pops(q, {4, 2, 6, 0, 3, 1, 5});
   CHECK(q.empty());
   CHECK(!q.pop().has_value());
 }
@@ -129,80 +134,134 @@ TEST(keyed_queue_serves_higher_tiers_first_whatever_the_key) {
   q.push_keyed({2, 0, 0, 0}, 2, 1.0);
   q.push_keyed({3, 0, 0, 0}, 1, 1e300);
   q.push_keyed({4, 0, 0, 0}, 2, 5.0);
-  const TriangleId expected[] = {4, 2, 3, 1};
-  for (TriangleId t : expected) {
-    auto e = q.pop();
-    REQUIRE(e.has_value());
-    CHECK_EQ(e->triangle, t);
-  }
+  expect_pops(q, {4, 2, 3, 1});
 }
 
-// The default key, checked against its definition computed independently: size-only triangles in
-// bucket 0; mildly skinny ones (B < r < 4B) by the count of halvings from D^2 down to l^2, into
-// 1..47; skinny ones (r >= 4B) by the count of doublings of q from 16, into 48..63.
-TEST(ratio_bucket_has_two_tiers_split_at_four_times_the_bound) {
+// The skinny tier: the count of doublings of q from 256 (r from 16B), into 48..63.
+TEST(skinny_bucket_counts_doublings_of_the_ratio_from_sixteen_times_the_bound) {
+  CHECK_EQ(kSkinnyRatio2, 256.0);
   std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> lq(0.0, 30.0), ll(0.0, 60.0);
+  std::uniform_real_distribution<double> lq(8.0, 50.0);
   for (int i = 0; i < 100000; ++i) {
     const double q = std::exp2(lq(rng));
-    const double shortest2 = std::exp2(-ll(rng));  // D^2 = 1
-    const unsigned b = ratio_bucket({true, q, shortest2}, 1.0);
-    if (q < 16.0) {
-      unsigned halvings = 0;
-      for (double r = 1.0 / shortest2; r >= 2.0; r *= 0.5) ++halvings;
-      const unsigned expected = std::min(47u, 1u + halvings);
-      CHECK_EQ(b, expected);
-    } else {
-      unsigned doublings = 0;
-      for (double r = q / 16.0; r >= 2.0; r *= 0.5) ++doublings;
-      const unsigned expected = std::min(63u, 48u + doublings);
-      CHECK_EQ(b, expected);
-    }
+    unsigned doublings = 0;
+    for (double r = q / 256.0; r >= 2.0; r *= 0.5) ++doublings;
+    const unsigned expected = std::min(63u, 48u + doublings);
+    CHECK_EQ(skinny_bucket(q), expected);
   }
-  CHECK_EQ(ratio_bucket({false, 1e6, 1e-20}, 1.0), 0u);           // size only, whatever its shape
-  CHECK_EQ(ratio_bucket({true, 15.999, 1.0}, 1.0), 1u);           // mild, as long as D
-  CHECK_EQ(ratio_bucket({true, 15.999, 1e-30}, 1.0), 47u);        // mild, tiny edge
-  CHECK_EQ(ratio_bucket({true, 16.0, 1e-30}, 1.0), 48u);          // skinny: the edge no longer counts
-  CHECK_EQ(ratio_bucket({true, 16.0 * 3.9, 1.0}, 1.0), 49u);
-  CHECK_EQ(ratio_bucket({true, INFINITY, 1.0}, 1.0), 63u);        // flat
-  CHECK_EQ(ratio_bucket({true, 4.0, 0.0}, 1.0), 47u);             // zero-length shortest edge
+  CHECK_EQ(skinny_bucket(256.0), 48u);
+  CHECK_EQ(skinny_bucket(511.9), 48u);
+  CHECK_EQ(skinny_bucket(512.0), 49u);
+  CHECK_EQ(skinny_bucket(256.0 * 32768.0), 63u);
+  CHECK_EQ(skinny_bucket(INFINITY), 63u);
 }
 
-TEST(ratio_bucket_puts_every_skinny_triangle_above_every_mild_one) {
-  for (double q = 1.0; q < 1e10; q *= 1.07)
-    for (double l2 = 1.0; l2 > 1e-40; l2 *= 0.31) {
-      const unsigned b = ratio_bucket({true, q, l2}, 1.0);
-      CHECK(b >= 1u);
-      CHECK((q >= 16.0) == (b >= 48u));
-    }
-}
-
-// Through the queue itself: with the default order a skinny triangle is served before a mildly
-// skinny one with a far shorter edge, and among the mild ones the shorter edge goes first.
-TEST(ratio_order_serves_skinny_by_ratio_then_mild_by_edge) {
+// Through the queue: a skinny triangle goes before a mildly skinny one with a far shorter edge,
+// the worst ratio first among the skinny, and the tiers meet at r = 16B.
+TEST(ratio_order_serves_skinny_triangles_worst_first_before_the_mild) {
   QualityQueue q(QueueOrder::Ratio, 1.0);
-  q.push({1, 0, 0, 0}, {true, 2.0, 1e-2});    // mild, long edge
-  q.push({2, 0, 0, 0}, {false, 0.5, 1e-9});   // too large only
-  q.push({3, 0, 0, 0}, {true, 2.0, 1e-8});    // mild, short edge
-  q.push({4, 0, 0, 0}, {true, 100.0, 1.0});   // skinny
-  q.push({5, 0, 0, 0}, {true, 1e4, 1.0});     // skinnier
-  const TriangleId expected[] = {5, 4, 3, 1, 2};
-  for (TriangleId t : expected) {
+  q.push({1, 0, 0, 0}, {true, 255.9, 1e-20});  // mild (just under 16B), tiny edge
+  q.push({2, 0, 0, 0}, {false, 0.5, 1e-30});   // too large only
+  q.push({3, 0, 0, 0}, {true, 256.0, 1.0});    // skinny, as long as the domain
+  q.push({4, 0, 0, 0}, {true, 1e6, 1.0});      // skinnier
+  q.push({5, 0, 0, 0}, {true, 2.0, 1e-10});    // mild, longer edge than 1
+  expect_pops(q, {4, 3, 1, 5, 2});
+}
+
+// The edge level: four per octave of D^2 / l^2, checked against halvings and the quarter marks
+// of the mantissa computed by division, not from the bits.
+TEST(edge_level_is_four_per_octave_of_the_squared_length_ratio) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(0.0, 80.0);
+  for (int i = 0; i < 100000; ++i) {
+    const double x = std::exp2(u(rng));
+    unsigned halvings = 0;
+    double m = x;
+    while (m >= 2.0) m *= 0.5, ++halvings;
+    const unsigned quarter = m >= 1.75 ? 3 : m >= 1.5 ? 2 : m >= 1.25 ? 1 : 0;
+    CHECK_EQ(edge_level(1.0 / x, 1.0), 4 * halvings + quarter);
+    CHECK_EQ(edge_level(8.0, 8.0 * x), 4 * halvings + quarter);  // only the ratio matters
+  }
+  CHECK_EQ(edge_level(1.0, 1.0), 0u);
+  CHECK_EQ(edge_level(4.0, 1.0), 0u);              // longer than the reference
+  CHECK_EQ(edge_level(1.0 / 1.25, 1.0), 1u);
+  CHECK_EQ(edge_level(0.5, 1.0), 4u);
+  CHECK_EQ(edge_level(0.0, 1.0), kTopLevel);       // degenerate: the most urgent
+}
+
+TEST(edge_level_ranks_shorter_edges_higher) {
+  unsigned last = 0;
+  for (double l2 = 1.0; l2 > 1e-200; l2 *= 0.93) {
+    const unsigned level = edge_level(l2, 1.0);
+    CHECK(level >= last);
+    last = level;
+  }
+}
+
+// The Ratio order through the queue: skinny before mild whatever their edges, size-only last, and
+// every pop takes the shortest mild edge present (an exact order by level, FIFO within a level),
+// across levels spread over 60 octaves, which takes several moves of the window. Checked against
+// a plain sorted model, not against the buckets.
+TEST(ratio_order_serves_mild_triangles_shortest_first_across_window_moves) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 120.0);
+  QualityQueue q(QueueOrder::Ratio, 1.0);
+  struct Model { unsigned level; TriangleId id; };
+  std::vector<Model> model;
+  for (TriangleId t = 0; t < 20000; ++t) {
+    const double l2 = std::exp2(-u(rng));
+    q.push({t, 0, 0, 0}, {true, 2.0, l2});
+    model.push_back({edge_level(l2, 1.0), t});
+  }
+  q.push({100000, 0, 0, 0}, {false, 0.5, 1e-300});  // too large only
+  q.push({100001, 0, 0, 0}, {true, 300.0, 1.0});    // skinny, long edge
+  std::stable_sort(model.begin(), model.end(), [](const Model& a, const Model& b) { return a.level > b.level; });
+  auto first = q.pop();
+  REQUIRE(first.has_value());
+  CHECK_EQ(first->triangle, 100001u);
+  for (const Model& m : model) {
     auto e = q.pop();
     REQUIRE(e.has_value());
-    CHECK_EQ(e->triangle, t);
+    CHECK_EQ(e->triangle, m.id);
+    CHECK_EQ(e->level, m.level);
   }
-  QualityQueue heap(QueueOrder::RatioHeap, 1.0);
-  heap.push({1, 0, 0, 0}, {true, 2.0, 1e-2});
-  heap.push({2, 0, 0, 0}, {false, 0.5, 1e-9});
-  heap.push({3, 0, 0, 0}, {true, 2.0, 1.1e-2});  // the same bucket as 1, but exactly shorter
-  heap.push({4, 0, 0, 0}, {true, 100.0, 1.0});
-  heap.push({5, 0, 0, 0}, {true, 101.0, 1.0});
-  const TriangleId exact[] = {5, 4, 1, 3, 2};
-  for (TriangleId t : exact) {
-    auto e = heap.pop();
+  auto last = q.pop();
+  REQUIRE(last.has_value());
+  CHECK_EQ(last->triangle, 100000u);
+  CHECK(q.empty());
+  CHECK(q.nonempty_mask() == 0);
+}
+
+// Pushes while popping, as refinement does: a split makes triangles at most kWindowHeadroom levels
+// shorter than the one it split. Every pop must still take a shortest edge present.
+TEST(ratio_order_stays_exact_while_refinement_pushes_shorter_edges) {
+  std::mt19937_64 rng(6);
+  std::uniform_real_distribution<double> start(0.0, 60.0);
+  std::uniform_int_distribution<int> offset(-40, static_cast<int>(kWindowHeadroom) - 1);
+  QualityQueue q(QueueOrder::Ratio, 1.0);
+  std::vector<std::pair<unsigned, TriangleId>> live;  // the model: levels of the queued triangles
+  TriangleId next = 0;
+  const auto push_level = [&](double l2) {
+    q.push({next, 0, 0, 0}, {true, 3.0, l2});
+    live.push_back({edge_level(l2, 1.0), next++});
+  };
+  for (int i = 0; i < 2000; ++i) push_level(std::exp2(-start(rng)));
+  for (int step = 0; step < 30000 && !live.empty(); ++step) {
+    auto e = q.pop();
     REQUIRE(e.has_value());
-    CHECK_EQ(e->triangle, t);
+    unsigned best = 0;
+    for (const auto& [level, id] : live) best = std::max(best, level);
+    CHECK_EQ(static_cast<unsigned>(e->level), best);
+    const auto it = std::find_if(live.begin(), live.end(), [&](const auto& m) { return m.second == e->triangle; });
+    REQUIRE(it != live.end());
+    live.erase(it);
+    if (step < 20000)
+      for (int k = 0; k < 2; ++k) {  // children near the popped scale, a few levels finer at most
+        const int level = std::max(static_cast<int>(e->level) + offset(rng), 0);
+        // A squared length whose level is exactly `level`: x = (1 + quarter / 4 + 1/8) 2^(level / 4).
+        const double x = (1.0 + 0.25 * (level % 4) + 0.125) * std::exp2(level / 4);
+        push_level(1.0 / x);
+      }
   }
 }
 
@@ -211,10 +270,5 @@ TEST(paper_order_serves_worst_ratio_first_whatever_the_edge) {
   q.push({1, 0, 0, 0}, {true, 2.0, 1e-30});
   q.push({2, 0, 0, 0}, {true, 100.0, 1.0});
   q.push({3, 0, 0, 0}, {false, 0.0, 1e-30});
-  const TriangleId expected[] = {2, 1, 3};
-  for (TriangleId t : expected) {
-    auto e = q.pop();
-    REQUIRE(e.has_value());
-    CHECK_EQ(e->triangle, t);
-  }
+  expect_pops(q, {2, 1, 3});
 }
