@@ -28,6 +28,15 @@ QualityRules make_quality_rules(double min_angle_deg, bool quality, double max_a
   return rules;
 }
 
+bool is_current(const Mesh& mesh, const QueuedTriangle& entry) {
+  const TriangleId t = entry.triangle;
+  if (t >= mesh.triangle_slots() || !mesh.is_live(t)) return false;
+  const VertexId* c = &mesh.corner[3 * t];
+  for (VertexId v : {entry.a, entry.b, entry.c})
+    if (c[0] != v && c[1] != v && c[2] != v) return false;
+  return true;
+}
+
 bool angle_between_subsegments(const Mesh& mesh, EdgeRef e) {
   return has_subsegment(mesh, lnext(e)) && has_subsegment(mesh, lprev(e));
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "mesh/mesh.h"
+#include "refine/quality_queue.h"
 
 namespace deltri {
 
@@ -43,6 +44,11 @@ Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& r
 // How many times its size bounds t exceeds: area over the smallest area bound that applies, or
 // (longest edge over the -u edge length) squared; at most 1 when t meets them.
 double size_excess(const Mesh& mesh, TriangleId t, const TriangleShape& shape, const QualityRules& rules);
+
+// Whether a queue entry still names a triangle of the mesh: its slot is live and holds the three
+// vertices the entry remembers (in any rotation). A slot reused or rewritten by a flip since holds
+// other vertices, and the entry is stale (Fig. 38 l.12: "if t still exists").
+bool is_current(const Mesh& mesh, const QueuedTriangle& entry);
 
 // True when the angle opposite edge e (at apex(e)) lies between two subsegments.
 bool angle_between_subsegments(const Mesh& mesh, EdgeRef e);

@@ -273,15 +273,7 @@ void Terminator::enqueue_if_bad(TriangleId t) {
   bad_triangles_.push(entry, {a.skinny, a.shape.ratio2_over_bound2, a.shape.shortest_length2});
 }
 
-bool Terminator::still_exists(const QueuedTriangle& entry) const {
-  const TriangleId t = entry.triangle;
-  if (t >= mesh_.triangle_slots() || !mesh_.is_live(t)) return false;
-  for (VertexId v : {entry.a, entry.b, entry.c}) {
-    const VertexId* c = &mesh_.corner[3 * t];
-    if (c[0] != v && c[1] != v && c[2] != v) return false;
-  }
-  return true;
-}
+bool Terminator::still_exists(const QueuedTriangle& entry) const { return is_current(mesh_, entry); }
 
 bool Terminator::budget_left() {
   const std::uint64_t used = report_.interior_steiner + report_.segment_steiner;

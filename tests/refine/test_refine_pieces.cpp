@@ -74,6 +74,39 @@ TEST(subsegment_encroached_by_either_apex) {
   CHECK_EQ(encroached, 1);
 }
 
+// Stale queue entries: a flip rewrites the two slots beside an edge, so entries made before it no
+// longer match them; a rotated entry still matches; a killed slot matches nothing.
+TEST(queue_entries_go_stale_when_their_slot_changes) {
+  Mesh m = triangulated({{0, 0}, {3, 0}, {3.2, 2}, {0.1, 2.1}, {1.5, 0.9}});
+  std::vector<QueuedTriangle> entries;
+  for (TriangleId t = 0; t < m.triangle_slots(); ++t)
+    if (m.is_live(t)) entries.push_back({t, m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]});
+  for (const QueuedTriangle& e : entries) {
+    CHECK(is_current(m, e));
+    CHECK(is_current(m, {e.triangle, e.b, e.c, e.a}));   // the same triangle, another rotation
+    CHECK(!is_current(m, {e.triangle, e.a, e.b, 9999}));  // another third vertex
+  }
+  // Flip one interior edge whose quadrilateral is convex; exactly its two slots go stale.
+  Predicates pred;
+  EdgeRef flipped = kNone;
+  for (EdgeRef e = 0; e < m.corner.size() && flipped == kNone; ++e) {
+    const EdgeRef twin = m.link[e];
+    if (m.corner[e] == kNone || twin == kNone) continue;
+    const Point &a = m.point(m.org(e)), &b = m.point(m.dest(e));
+    const Point &c = m.point(m.apex(e)), &d = m.point(m.apex(twin));
+    if (pred.orient2d(c, d, b) > 0 && pred.orient2d(d, c, a) > 0) flipped = e;
+  }
+  REQUIRE(flipped != kNone);
+  const TriangleId t1 = triangle_of(flipped), t2 = triangle_of(m.link[flipped]);
+  flip(m, flipped);
+  for (const QueuedTriangle& e : entries) CHECK_EQ(is_current(m, e), e.triangle != t1 && e.triangle != t2);
+  const QueuedTriangle survivor = entries[0].triangle != t1 && entries[0].triangle != t2 ? entries[0] : entries.back();
+  REQUIRE(is_current(m, survivor));
+  m.kill_triangle(survivor.triangle);
+  CHECK(!is_current(m, survivor));
+  CHECK(!is_current(m, {m.triangle_slots() + 5, survivor.a, survivor.b, survivor.c}));  // beyond the mesh
+}
+
 TEST(bad_triangle_test) {
   // Isosceles triangle with apex angle 20 degrees: skinny at 30, fine at 19.
   const double h = 1.0 / std::tan(rad(10));
