@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "cdt/convex_hull.h"
 #include "quality/statistics.h"
 
 namespace deltri {
@@ -117,6 +118,9 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
               static_cast<unsigned long long>(c.incircle_adaptive), static_cast<unsigned long long>(c.incircle_exact));
   if (const auto& q = r.refine) {
     std::fprintf(out_, "Refinement:\n");
+    if (r.hull_absorbed > 0)
+      std::fprintf(out_, "  vertices within %g ulps of the hull taken into its chain: %zu\n", kHullAbsorbUlps,
+                  r.hull_absorbed);
     std::fprintf(out_, "  Steiner points: %llu interior, %llu on segments; %llu subsegment splits; %llu free vertices deleted\n",
                 static_cast<unsigned long long>(q->interior_steiner), static_cast<unsigned long long>(q->segment_steiner),
                 static_cast<unsigned long long>(q->encroached_splits), static_cast<unsigned long long>(q->vertices_deleted));
