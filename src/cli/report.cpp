@@ -129,6 +129,13 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
                 static_cast<unsigned long long>(q->guard_refusals), q->guard_length);
     std::fprintf(out_, "  peak bad-triangle queue: %zu; triangles still bad: %llu\n", q->peak_queue,
                 static_cast<unsigned long long>(q->bad_triangles_left));
+    if (q->hopeless_edges > 0)
+      std::fprintf(out_, "  initial edges no double can give a good triangle: %llu\n",
+                  static_cast<unsigned long long>(q->hopeless_edges));
+    if (q->bottom_scale_searches > 0)
+      std::fprintf(out_, "  Steiner points sought among nearby doubles: %llu times, %llu with none better\n",
+                  static_cast<unsigned long long>(q->bottom_scale_searches),
+                  static_cast<unsigned long long>(q->bottom_scale_refusals));
     if (q->locked_subsegments > 0)
       std::fprintf(out_, "  subsegments left whole because doubles cannot split them: %llu\n",
                   static_cast<unsigned long long>(q->locked_subsegments));
