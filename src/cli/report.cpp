@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "cdt/convex_hull.h"
 #include "quality/statistics.h"
 
 namespace deltri {
@@ -117,6 +118,9 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
               static_cast<unsigned long long>(c.incircle_adaptive), static_cast<unsigned long long>(c.incircle_exact));
   if (const auto& q = r.refine) {
     std::fprintf(out_, "Refinement:\n");
+    if (r.hull_absorbed > 0)
+      std::fprintf(out_, "  vertices within %g ulps of the hull taken into its chain: %zu\n", kHullAbsorbUlps,
+                  r.hull_absorbed);
     std::fprintf(out_, "  Steiner points: %llu interior, %llu on segments; %llu subsegment splits; %llu free vertices deleted\n",
                 static_cast<unsigned long long>(q->interior_steiner), static_cast<unsigned long long>(q->segment_steiner),
                 static_cast<unsigned long long>(q->encroached_splits), static_cast<unsigned long long>(q->vertices_deleted));
@@ -125,6 +129,13 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
                 static_cast<unsigned long long>(q->guard_refusals), q->guard_length);
     std::fprintf(out_, "  peak bad-triangle queue: %zu; triangles still bad: %llu\n", q->peak_queue,
                 static_cast<unsigned long long>(q->bad_triangles_left));
+    if (q->hopeless_edges > 0)
+      std::fprintf(out_, "  initial edges no double can give a good triangle: %llu\n",
+                  static_cast<unsigned long long>(q->hopeless_edges));
+    if (q->bottom_scale_searches > 0)
+      std::fprintf(out_, "  Steiner points sought among nearby doubles: %llu times, %llu with none better\n",
+                  static_cast<unsigned long long>(q->bottom_scale_searches),
+                  static_cast<unsigned long long>(q->bottom_scale_refusals));
     if (q->locked_subsegments > 0)
       std::fprintf(out_, "  subsegments left whole because doubles cannot split them: %llu\n",
                   static_cast<unsigned long long>(q->locked_subsegments));

@@ -34,6 +34,7 @@ struct RunReport {
   std::optional<HoleReport> holes;
   std::optional<CheckReport> check;
   std::optional<RefineReport> refine;
+  std::size_t hull_absorbed = 0;  // vertices taken into the hull chain (absorb_near_hull_vertices)
   PredicateCounters counters;
   std::vector<std::string> written;
   double total_seconds = 0.0;

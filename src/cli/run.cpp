@@ -326,6 +326,7 @@ int run(const Switches& sw) {
   if (refinement_wanted(sw, in)) {
     if (!in.is_poly && !sw.convex_hull && !in.refine) enclose_convex_hull(mesh);  // a point set is bounded by its hull
     Predicates pred;
+    if (!in.refine && (sw.convex_hull || !in.is_poly)) report.hull_absorbed = absorb_near_hull_vertices(mesh, pred);
     report.refine = refine_mesh(mesh, pred, refine_options(sw, in));
     report.counters.add(pred.counters);
     mesh.compact_triangles();

@@ -50,6 +50,9 @@ struct RefineReport {
   std::uint64_t declined_splits = 0;      // rejected points whose subsegments SPLITPERMITTED kept
   std::uint64_t guard_refusals = 0;       // insertions refused by the termination guard
   std::uint64_t locked_subsegments = 0;   // subsegments left unsplit: doubles could not split them
+  std::uint64_t bottom_scale_searches = 0;  // Steiner points chosen among nearby doubles (bottom_scale.h)
+  std::uint64_t bottom_scale_refusals = 0;  // of those, triangles no nearby double improved
+  std::uint64_t hopeless_edges = 0;         // initial edges no double can give a good triangle
   bool stopped_by_guard = false;
   bool stopped_by_max_steiner = false;
   bool stopped_by_cap = false;            // the guard's Steiner point cap was reached

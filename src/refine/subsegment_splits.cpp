@@ -6,6 +6,7 @@
 #include "geometry/encroachment.h"
 #include "mesh/delete_vertex.h"
 #include "mesh/operations.h"
+#include "refine/bottom_scale.h"
 #include "refine/concentric_shells.h"
 #include "refine/lawson.h"
 #include "refine/mirrored_split.h"
@@ -112,12 +113,19 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_
   if (!mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
     p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));
   // Out of precision: p rounds onto an end, or a neighbour is flush with s there (unless it is one
-  // that Chew's step below deletes; checked again after).
-  if (p == pa || p == pb || !split_keeps_orientation(s, p, uses_lenses())) {
-    lock(s);
-    return false;
+  // that Chew's step below deletes; checked again after). Then, and at the bottom of double
+  // precision, the doubles near p are tried (bottom_scale_split); if none will do, s is locked.
+  const auto out_of_precision = [&](const Point& q) {
+    return q == pa || q == pb || !split_keeps_orientation(s, q, uses_lenses());
+  };
+  if ((bottom_possible_ && at_bottom_scale(squared_distance(pa, pb), pa)) || out_of_precision(p)) {
+    p = bottom_scale_split(s, p, uses_lenses());
+    if (out_of_precision(p)) {
+      lock(s);
+      return false;
+    }
   }
-  const double floor = owed_to_size ? precision_floor_at(p) : floor_at(p);
+  const double floor = owed_to_size ? precision_floor(p) : floor_at(p);
   const SplitRadius radius = split_radius(s, p);
   if (radius.after_chew < floor) {
     refuse_by_guard();
@@ -126,6 +134,7 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_
   if (uses_lenses()) {  // Fig. 39 l.40-43
     s = delete_free_vertices_near(s, queue_triangles);
     if (s == kNone) return false;
+    if (!split_keeps_orientation(s, p, false)) p = bottom_scale_split(s, p, false);
     if (!split_keeps_orientation(s, p, false)) {
       lock(s);
       return false;

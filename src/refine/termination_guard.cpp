@@ -70,6 +70,10 @@ double precision_floor_at(const Point& p) {
   return std::ldexp(std::max(std::fabs(p.x), std::fabs(p.y)), -kPrecisionOctaves);
 }
 
+double coarse_precision_floor_at(const Point& p) {
+  return std::ldexp(std::max(std::fabs(p.x), std::fabs(p.y)), -kCoarsePrecisionOctaves);
+}
+
 double guard_floor(double feature, double size_floor) {
   const double scale = size_floor > 0.0 ? std::min(feature, size_floor) : feature;
   return std::ldexp(scale, -kGuardOctaves);

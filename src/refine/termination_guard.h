@@ -33,7 +33,8 @@ std::vector<double> initial_feature_sizes(const Mesh& mesh);
 // edges shorter than the features by about sin(phi / 2) (Sec. 6, Theorem 12), so the floor is
 // scaled by angle_scale(phi) = min(1, 2 sin(phi / 2)): 1 from 60 degrees up. VVingerfly's
 // test.poly, whose segments cross at 2e-6 radians, kept 222 triangles under -q30 with the floor
-// unscaled and 45 (all at the precision floor) with it scaled.
+// unscaled and 45 (all at the then precision floor of 2^-36) with it scaled, and none since the
+// floor is a quarter ulp.
 // The scaling applies up to kCascadeAngleDeg: above it refinement can cascade (Sec. 7.3) and the
 // unscaled floor stops it sooner (fan120 at -q40: 173,577 triangles left in 0.86 s unscaled,
 // 302,722 in 1.22 s scaled, both at the Steiner cap).
@@ -41,15 +42,22 @@ inline constexpr double kCascadeAngleDeg = 34.0;
 double smallest_input_angle(const Mesh& mesh);
 double angle_scale(double angle);
 
-// Edges shorter than this many units in the last place of the coordinates where they lie are not
-// worth making: the points that bound them are rounded by about an ulp, so the shapes of their
-// triangles, and whether a split point even lands between its endpoints, are decided by rounding
-// error. An input with vertices that close (robustness tests with points an ulp apart, a vertex an
-// ulp from a hull edge) cannot be meshed to an angle bound there anyway. The floor is local: a
-// hole 2e-6 wide at the origin of a square 2e6 wide is meshed at its own scale, where doubles are
-// a trillion times finer than at the square's corners.
-inline constexpr int kPrecisionOctaves = 36;  // 2^-36 relative: about 2^16 ulps
+// No edge shorter than a quarter of an ulp of the coordinates where it lies: 2^-kPrecisionOctaves
+// of the larger coordinate, between an eighth and a quarter of its ulp, a positive length wherever
+// a coordinate is not zero. Below kBottomScaleUlps (refine/bottom_scale.h) Steiner points and
+// split points are chosen among the doubles near the ideal ones, so that inputs with vertices an
+// ulp apart (robustness tests of other triangulators) are meshed down to that scale; a point can
+// only go where a double is, so the floor itself only keeps insertions off existing vertices. The
+// floor is local: a hole 2e-6 wide at the origin of a square 2e6 wide is meshed at its own scale.
+inline constexpr int kPrecisionOctaves = 54;
 double precision_floor_at(const Point& p);
+// The floor before the bottom scale was meshed: 2^-36 relative, about 2^16 ulps. It still applies
+// everywhere when the initial mesh has an edge that no double can give a good triangle
+// (hopeless_edge in geometry/lattice.h): the bound cannot be met there, and grading the mesh down
+// to the ulp scale at every other close pair would cost dozens of triangles per octave for
+// nothing (robustness2.node at -pq30: 1,030,697 triangles in 3.4 s, against 6,910 in 0.03 s).
+inline constexpr int kCoarsePrecisionOctaves = 36;
+double coarse_precision_floor_at(const Point& p);
 
 // The edge-length floor for a smallest feature estimate `feature`; size_floor (<= 0: none) is the
 // edge length a size bound asks for.

@@ -7,7 +7,9 @@
 
 #include "geometry/box.h"
 #include "geometry/constructions.h"
+#include "geometry/lattice.h"
 #include "mesh/operations.h"
+#include "refine/bottom_scale.h"
 #include "refine/split_permitted.h"
 #include "refine/steiner_point.h"
 #include "refine/termination_guard.h"
@@ -103,10 +105,21 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
       finder_(mesh),
       bad_triangles_(opt.queue_order, squared_diameter(mesh)) {
   report_.guard_length = guard_floor_;
+  double largest = 0.0;
+  for (const Point& q : mesh_.points)
+    if (std::isfinite(q.x) && std::isfinite(q.y)) largest = std::max({largest, std::fabs(q.x), std::fabs(q.y)});
+  const bool size_bounds = opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0;
+  bottom_possible_ = size_bounds || guard_floor_ < kBottomScaleUlps * 0x1p-52 * largest;
+  if (bottom_possible_) find_hopeless_edges();
+  if (!bottom_reachable_) precision_scale_ = std::ldexp(1.0, kPrecisionOctaves - kCoarsePrecisionOctaves);
   report_.steiner_cap = steiner_cap_;
 }
 
-double Terminator::floor_at(const Point& p) const { return std::max(guard_floor_, precision_floor_at(p)); }
+// coarse_precision_floor_at is precision_floor_at times 2^(kPrecisionOctaves -
+// kCoarsePrecisionOctaves), exactly: one multiplication instead of a branch on the hot path.
+double Terminator::precision_floor(const Point& p) const { return precision_floor_at(p) * precision_scale_; }
+
+double Terminator::floor_at(const Point& p) const { return std::max(guard_floor_, precision_floor(p)); }
 
 // The feature floor is there to stop cascades of quality splits. A triangle over its size bound
 // is split whatever the shapes around it: its circumcentre is at least 0.87 sqrt(area) from
@@ -114,7 +127,7 @@ double Terminator::floor_at(const Point& p) const { return std::max(guard_floor_
 // size refinement, and only the precision floor applies. (An area-only run of plate.poly at
 // -a0.01 had left one triangle of area 0.015 whose shortest edge was below the floor.)
 double Terminator::floor_for(const Assessment& a, const Point& p) const {
-  return a.too_large ? precision_floor_at(p) : floor_at(p);
+  return a.too_large ? precision_floor(p) : floor_at(p);
 }
 
 void Terminator::refuse_by_guard() {
@@ -181,6 +194,22 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   // A triangle flat to rounding (its measured area 0) has no usable circumcentre: the walk
   // towards a NaN point has no exit side.
   if (!std::isfinite(c.x) || !std::isfinite(c.y)) return;
+  // At the bottom of double precision the point is chosen among the doubles near c; if none
+  // improves t's neighbourhood, c may still ask for subsegment splits, but is not inserted.
+  bool no_better_double = false;
+  const EdgeRef shortest = assessment.shape.shortest;
+  if (bottom_possible_ && at_bottom_scale(assessment.shape.shortest_length2, mesh_.point(mesh_.org(shortest)))) {
+    // A shortest edge that no double can make a good triangle with stays bad: refuse at once
+    // rather than grade the mesh down around it.
+    if (assessment.skinny && !assessment.too_large &&
+        hopeless_edge(mesh_.point(mesh_.org(shortest)), mesh_.point(mesh_.dest(shortest)), rules_.sin2_theta)) {
+      ++report_.bottom_scale_refusals;
+      refuse_by_guard();
+      return;
+    }
+    if (const std::optional<Point> better = bottom_scale_point(t, c, assessment)) c = *better;
+    else no_better_double = true;
+  }
   const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
   Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, splittable);  // Fig. 38 l.14
   if (probe.status == ProbeStatus::Unusable && probe.blocked && assessment.too_large) {
@@ -191,7 +220,8 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   }
   if (probe.status == ProbeStatus::Unusable) return;
   if (probe.status == ProbeStatus::Clear) {  // Fig. 38 l.15-17
-    if (probe.insertion_radius < floor_for(assessment, c)) {
+    if (no_better_double || probe.insertion_radius < floor_for(assessment, c)) {
+      report_.bottom_scale_refusals += no_better_double;
       refuse_by_guard();
       return;
     }

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "geometry/predicates.h"
@@ -71,6 +72,10 @@ class Terminator {
   double floor_at(const Point& p) const;  // the guard's edge floor where p lies
   double floor_for(const Assessment& a, const Point& p) const;  // the floor for splitting that triangle
   void survey_remaining();
+  // At the bottom scale (bottom_scale.h): the double near `ideal` whose insertion makes the best
+  // triangles, if they beat the worst one it destroys; t must be among those.
+  std::optional<Point> bottom_scale_point(TriangleId t, const Point& ideal, const Assessment& a);
+  Point bottom_scale_split(EdgeRef s, const Point& ideal, bool chew_pending);
 
   Mesh& mesh_;
   Predicates& pred_;
@@ -88,6 +93,17 @@ class Terminator {
   EncroachedQueue encroached_;       // Q_s
   RefineReport report_;
   std::vector<char> locked_;  // by subsegment record: a split failed for want of precision
+  std::vector<Point> lattice_scratch_;  // bottom_scale_point's candidates
+  // False when an initial edge is one that no double can give a good triangle (bottom_scale.h):
+  // then the coarse precision floor applies everywhere, as the bottom scale cannot meet the bound.
+  bool bottom_reachable_ = true;
+  // Whether any split can come within kBottomScaleUlps of the coordinates: false when the feature
+  // floor is above that everywhere and no size bound is given, and then the bottom-scale code is
+  // skipped altogether (ordinary meshes).
+  bool bottom_possible_ = false;
+  double precision_scale_ = 1.0;  // 2^18 when !bottom_reachable_ (precision_floor)
+  void find_hopeless_edges();
+  double precision_floor(const Point& p) const;  // precision_floor_at, or coarse_precision_floor_at
 };
 
 }  // namespace deltri

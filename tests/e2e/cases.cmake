@@ -160,6 +160,22 @@ e2e_case(guitar.pa0.003 ${E2E_DATA}/guitar.poly -pa0.003 --no-warning --verify "
 # Steiner cap. Locked after the first failure, the area-only run meets its bound at once.
 add_test(NAME e2e.area_bound.robustness1.a0.93
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/area_bound.sh $<TARGET_FILE:deltri> ${E2E_DATA}/robustness1.node -a0.93 0.93)
+# At the bottom of double precision (refine/bottom_scale.h, cdt/convex_hull.h): robustness1 and 3
+# have vertices one or two ulps apart (at -q30 some of those pairs have no representable good
+# triangle, and they fail), robustness4's grid points lie within an ulp of its hull edges, and
+# near_hull.node has vertices 1e-11 inside a hull edge and others a fraction of an ulp inside.
+# With the precision floor at 2^-36 of the coordinates all of these had kept 1e-13 degree angles.
+set(QUALITY_BOUND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/quality_bound.sh $<TARGET_FILE:deltri>)
+add_test(NAME e2e.bottom_scale.robustness1.pq20 COMMAND ${QUALITY_BOUND} ${E2E_DATA}/robustness1.node -pq20 20)
+add_test(NAME e2e.bottom_scale.robustness3.pq20 COMMAND ${QUALITY_BOUND} ${E2E_DATA}/robustness3.node -pq20 20)
+foreach(q 30 33)
+  add_test(NAME e2e.bottom_scale.robustness4.pq${q} COMMAND ${QUALITY_BOUND} ${E2E_DATA}/robustness4.node -pq${q} ${q})
+endforeach()
+add_test(NAME e2e.bottom_scale.robustness4.pq30a0.0019
+         COMMAND ${QUALITY_BOUND} ${E2E_DATA}/robustness4.node -pq30a0.0019 30 0.0019)
+foreach(q 20 30)
+  add_test(NAME e2e.bottom_scale.near_hull.pq${q} COMMAND ${QUALITY_BOUND} ${E2E_INPUTS}/near_hull.node -pq${q} ${q})
+endforeach()
 # Stopped by -S, an area-only run reports its worst triangle by size, not by an angle it never asked for.
 e2e_case(plate.pa0.001S10 ${E2E_INPUTS}/plate.poly -pa0.001S10 --verify --refined
          --warning "triangles miss the requested bounds (largest: " --warning "times its size bound near")

@@ -1,0 +1,119 @@
+// The Terminator at the bottom of double precision (bottom_scale.h).
+#include "refine/bottom_scale.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "geometry/constructions.h"
+#include "geometry/lattice.h"
+#include "refine/terminator.h"
+#include "refine/termination_guard.h"
+
+namespace deltri {
+
+namespace {
+
+double triangle_sine2(const Mesh& mesh, TriangleId t) {
+  return smallest_angle_sine2(mesh.point(mesh.corner[3 * t]), mesh.point(mesh.corner[3 * t + 1]),
+                              mesh.point(mesh.corner[3 * t + 2]));
+}
+
+}  // namespace
+
+std::optional<Point> Terminator::bottom_scale_point(TriangleId t, const Point& ideal, const Assessment& a) {
+  ++report_.bottom_scale_searches;
+  std::vector<Point>& candidates = lattice_scratch_;
+  candidates.clear();
+  lattice_neighbourhood(ideal, kBottomScaleSteps, candidates);
+  const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
+  const double l2 = a.shape.shortest_length2;
+  const double t_sine2 = triangle_sine2(mesh_, t);
+  const double good2 = rules_.sin2_theta;
+  std::optional<Point> best;
+  double best_near = 0.0, best_all = 0.0;
+  for (const Point& c : candidates) {
+    const Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, splittable);
+    if (probe.status != ProbeStatus::Clear) continue;
+    const double r = probe.insertion_radius;
+    if (r < floor_for(a, c) || r * r < kBottomRadius2 * l2) continue;
+    const KnownCavity cavity = marks_.marked();
+    if (!cavity.contains(t)) continue;  // c would leave t as it is
+    // The new triangles join c to the cavity's boundary. Those no longer-edged than t must be good,
+    // better than t, or no worse than the triangle they replace on their edge; the others are
+    // scored too, those up to twice t's scale first.
+    double near = HUGE_VAL, all = HUGE_VAL;
+    bool usable = true;
+    for (EdgeRef e : cavity.boundary) {
+      const Point& p = mesh_.point(mesh_.org(e));
+      const Point& q = mesh_.point(mesh_.dest(e));
+      if (pred_.orient2d(p, q, c) <= 0) {
+        usable = false;
+        break;
+      }
+      const double s2 = smallest_angle_sine2(p, q, c);
+      const double shortest2 = std::min({squared_distance(p, q), squared_distance(p, c), squared_distance(q, c)});
+      if (shortest2 <= l2 && s2 < good2 && !(s2 > t_sine2) && s2 < triangle_sine2(mesh_, triangle_of(e))) {
+        usable = false;
+        break;
+      }
+      if (shortest2 <= 4.0 * l2) near = std::min(near, s2);
+      all = std::min(all, s2);
+    }
+    if (!usable) continue;
+    if (!best || near > best_near || (near == best_near && all > best_all)) {
+      best = c;
+      best_near = near;
+      best_all = all;
+    }
+  }
+  return best;
+}
+
+// The double near `ideal` that splits s best at the bottom scale: in the middle half of s, with
+// the triangles on both sides still counter-clockwise, and nearest the line of s's segment piece
+// (the subsegment of the initial mesh s lies on), so that a chain of such splits never wanders off
+// its segment; the ideal point itself if none qualifies.
+Point Terminator::bottom_scale_split(EdgeRef s, const Point& ideal, bool chew_pending) {
+  std::vector<Point>& candidates = lattice_scratch_;
+  candidates.clear();
+  lattice_neighbourhood(ideal, kBottomScaleSteps, candidates);
+  const Point& pa = mesh_.point(mesh_.org(s));
+  const Point& pb = mesh_.point(mesh_.dest(s));
+  const PieceEnds& piece = pieces_.of_subsegment[mesh_.subseg[s]];
+  const Point& A = mesh_.point(piece[0]);
+  const Point& B = mesh_.point(piece[1]);
+  const double ux = B.x - A.x, uy = B.y - A.y;
+  const double ex = pb.x - pa.x, ey = pb.y - pa.y, length2 = ex * ex + ey * ey;
+  Point best = ideal;
+  double best_off = HUGE_VAL, best_balance = 0.0;
+  for (const Point& c : candidates) {
+    if (c == pa || c == pb) continue;
+    const double along = (c.x - pa.x) * ex + (c.y - pa.y) * ey;  // |s| times the distance from pa along s
+    const double balance = std::min(along, length2 - along) / length2;
+    if (!(balance >= 0.25)) continue;
+    const double off = std::fabs(ux * (c.y - A.y) - uy * (c.x - A.x));  // |AB| times the distance
+    if (off > best_off || (off == best_off && balance <= best_balance)) continue;
+    if (!split_keeps_orientation(s, c, chew_pending)) continue;
+    best = c;
+    best_off = off;
+    best_balance = balance;
+  }
+  return best;
+}
+
+void Terminator::find_hopeless_edges() {
+  if (!(rules_.sin2_theta > 0.0)) return;
+  for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {
+    if (mesh_.corner[e] == kNone) continue;
+    const VertexId a = mesh_.org(e), b = mesh_.dest(e);
+    if (a > b && mesh_.link[e] != kNone) continue;  // each interior edge once
+    const Point& pa = mesh_.point(a);
+    const Point& pb = mesh_.point(b);
+    if (at_bottom_scale(squared_distance(pa, pb), pa) && hopeless_edge(pa, pb, rules_.sin2_theta))
+      ++report_.hopeless_edges;
+  }
+  bottom_reachable_ = report_.hopeless_edges == 0;
+}
+
+}  // namespace deltri
