@@ -7,12 +7,7 @@ set -u
 deltri=$1 input=$2 switches=$3 area=$4
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/measure.sh"
-work=$(mktemp -d) || exit 1
-trap 'rm -rf "$work"' EXIT
-file=$(basename "$input")
-cp "$input" "$work/$file"
-cd "$work" || exit 1
-"$deltri" "$switches" "$file" >out 2>err || { echo "FAIL: deltri $switches $file exited $?"; cat err; exit 1; }
+run_in_scratch "$deltri" "$input" "$switches"
 [ -s err ] && { echo "FAIL: deltri $switches $file warned:"; cat err; exit 1; }
 set -- $(measure "${file%.*}.1")
 awk -v a="$2" -v bound="$area" 'BEGIN { exit !(a <= bound) }' || { echo "FAIL: largest area $2 > $area"; exit 1; }

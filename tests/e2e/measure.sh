@@ -1,4 +1,18 @@
-# Sourced by the e2e scripts: `measure BASE` prints the smallest angle (degrees) and the largest
+# Sourced by the e2e scripts.
+#
+# `run_in_scratch DELTRI INPUT SWITCHES` copies INPUT into a scratch directory (removed on exit),
+# changes to it and runs deltri there, its stdout in `out` and stderr in `err`; the test fails if
+# deltri exits non-zero. Sets `file` to INPUT's name.
+run_in_scratch() {
+  work=$(mktemp -d) || exit 1
+  trap 'rm -rf "$work"' EXIT
+  file=$(basename "$2")
+  cp "$2" "$work/$file"
+  cd "$work" || exit 1
+  "$1" "$3" "$file" >out 2>err || { echo "FAIL: deltri $3 $file exited $?"; cat err; exit 1; }
+}
+
+# `measure BASE` prints the smallest angle (degrees) and the largest
 # area of the triangles in BASE.node and BASE.ele, computed here in awk, independently of
 # deltri's own statistics.
 measure() {

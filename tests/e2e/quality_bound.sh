@@ -8,12 +8,7 @@ set -u
 deltri=$1 input=$2 switches=$3 angle=$4 area=${5:-}
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/measure.sh"
-work=$(mktemp -d) || exit 1
-trap 'rm -rf "$work"' EXIT
-file=$(basename "$input")
-cp "$input" "$work/$file"
-cd "$work" || exit 1
-"$deltri" "$switches" "$file" >out 2>err || { echo "FAIL: deltri $switches $file exited $?"; cat err; exit 1; }
+run_in_scratch "$deltri" "$input" "$switches"
 grep -q "miss the requested bounds" err && { echo "FAIL: deltri $switches $file left triangles:"; cat err; exit 1; }
 set -- $(measure "${file%.*}.1")
 awk -v a="$1" -v bound="$angle" 'BEGIN { exit !(a >= bound) }' || { echo "FAIL: smallest angle $1 < $angle"; exit 1; }
