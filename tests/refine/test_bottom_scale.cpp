@@ -12,6 +12,24 @@
 using namespace deltri;
 using namespace refine_test;
 
+namespace {
+
+struct Refined {
+  RefineReport report;
+  Facts facts;
+};
+
+// The Delaunay triangulation of `points`, its hull protected, refined to the angle bound theta.
+Refined refined_in_hull(const std::vector<Point>& points, double theta) {
+  Mesh m = triangulated(points);
+  mark_boundary(m);
+  Predicates pred;
+  const RefineReport report = refine_mesh(m, pred, quality(theta));
+  return {report, facts_of(m)};
+}
+
+}  // namespace
+
 TEST(at_bottom_scale_compares_with_the_ulps_of_the_larger_coordinate) {
   const Point p{3.0, -32.0};  // an ulp of 32 is 2^-47
   CHECK(at_bottom_scale(std::pow(63 * 0x1p-47, 2), p));
@@ -27,34 +45,27 @@ TEST(at_bottom_scale_compares_with_the_ulps_of_the_larger_coordinate) {
 // 26.57 degrees are left: the choice is greedy, and an earlier point two ulps from the pair
 // cannot be undone, although a right isosceles triangle on it would be representable.)
 TEST(a_pair_one_ulp_apart_is_meshed_to_the_bound) {
-  for (double theta : {20.0}) {
-    Mesh m = triangulated({{32, 32}, {64, 32}, {64, 64}, {32, 64},
-                           {41.77377931209348, 55.45235951180828}, {41.77377931209348, 55.45235951180829}});
-    mark_boundary(m);
-    Predicates pred;
-    const RefineReport r = refine_mesh(m, pred, quality(theta));
-    const Facts f = facts_of(m);
-    CHECK(f.all_ccw);
-    CHECK(f.links_ok);
-    CHECK_EQ(f.non_delaunay_edges, std::size_t{0});
-    CHECK(f.min_angle >= theta - 1e-9);
-    CHECK_EQ(r.bad_triangles_left, std::uint64_t{0});
-    CHECK(r.bottom_scale_searches > 0);
-    CHECK_EQ(r.hopeless_edges, std::uint64_t{0});
-    CHECK(f.triangles < 20000);
-  }
+  const double theta = 20.0;
+  const auto [r, f] = refined_in_hull({{32, 32}, {64, 32}, {64, 64}, {32, 64},
+                                       {41.77377931209348, 55.45235951180828}, {41.77377931209348, 55.45235951180829}},
+                                      theta);
+  CHECK(f.all_ccw);
+  CHECK(f.links_ok);
+  CHECK_EQ(f.non_delaunay_edges, std::size_t{0});
+  CHECK(f.min_angle >= theta - 1e-9);
+  CHECK_EQ(r.bad_triangles_left, std::uint64_t{0});
+  CHECK(r.bottom_scale_searches > 0);
+  CHECK_EQ(r.hopeless_edges, std::uint64_t{0});
+  CHECK(f.triangles < 20000);
 }
 
 // robustness2.node's pair one x-ulp apart where a y-ulp is 512 x-ulps: no double makes a
 // triangle with it that is not a sliver. Grading the mesh down to it would buy nothing; the
 // coarse floor stays, and refinement stops at once around it.
 TEST(a_pair_no_double_can_mesh_keeps_the_coarse_floor) {
-  Mesh m = triangulated({{-1, -1}, {1, -1}, {1, 1}, {-1, 1},
-                         {0.001739080834353146, 0.7050842932559666}, {0.0017390808343531463, 0.7050842932559666}});
-  mark_boundary(m);
-  Predicates pred;
-  const RefineReport r = refine_mesh(m, pred, quality(30));
-  const Facts f = facts_of(m);
+  const auto [r, f] = refined_in_hull({{-1, -1}, {1, -1}, {1, 1}, {-1, 1},
+                                       {0.001739080834353146, 0.7050842932559666}, {0.0017390808343531463, 0.7050842932559666}},
+                                      30);
   CHECK(f.all_ccw);
   CHECK(f.links_ok);
   CHECK_EQ(r.hopeless_edges, std::uint64_t{1});
@@ -68,13 +79,10 @@ TEST(a_pair_no_double_can_mesh_keeps_the_coarse_floor) {
 // wrong side, so the edge had been locked, and the bottom-scale points placed next to it made
 // 1e-27 degree slivers with it. A double near the midpoint that keeps C on the right side splits it.
 TEST(a_hull_edge_next_to_a_flush_vertex_is_split_at_a_nearby_double) {
-  Mesh m = triangulated({{142.89780553229295, 117.89780553229292}, {146.68071346210041, 121.6807134621004},
-                         {146.68071346210041, 121.68071346210043}, {139.7557862165142, 124.98797731494555},
-                         {150.0, 130.0}, {141.0, 127.5}});
-  mark_boundary(m);
-  Predicates pred;
-  const RefineReport r = refine_mesh(m, pred, quality(20));
-  const Facts f = facts_of(m);
+  const auto [r, f] = refined_in_hull({{142.89780553229295, 117.89780553229292}, {146.68071346210041, 121.6807134621004},
+                                       {146.68071346210041, 121.68071346210043}, {139.7557862165142, 124.98797731494555},
+                                       {150.0, 130.0}, {141.0, 127.5}},
+                                      20);
   CHECK(f.all_ccw);
   CHECK(f.boundary_protected);
   CHECK_EQ(r.locked_subsegments, std::uint64_t{0});

@@ -11,6 +11,15 @@ using namespace deltri;
 
 namespace {
 
+// How many times x >= 1 halves before it drops below 2 (floor(log2 x) by counting, not from the
+// bits); `mantissa` gets what is left, in [1, 2).
+unsigned halvings(double x, double* mantissa = nullptr) {
+  unsigned count = 0;
+  for (; x >= 2.0; x *= 0.5) ++count;
+  if (mantissa) *mantissa = x;
+  return count;
+}
+
 // Pops one entry per id and checks that they come out in exactly that order.
 void expect_pops(QualityQueue& q, std::initializer_list<TriangleId> ids) {
   for (TriangleId t : ids) {
@@ -93,9 +102,7 @@ TEST(edge_bucket_is_one_plus_log2_of_the_squared_length_ratio) {
   std::uniform_real_distribution<double> u(0.0, 70.0);
   for (int i = 0; i < 100000; ++i) {
     const double ratio = std::exp2(u(rng));
-    unsigned halvings = 0;
-    for (double r = ratio; r >= 2.0; r *= 0.5) ++halvings;
-    const unsigned expected = std::min(63u, 1u + halvings);
+    const unsigned expected = std::min(63u, 1u + halvings(ratio));
     CHECK_EQ(edge_bucket(1.0 / ratio, 1.0), expected);
     CHECK_EQ(edge_bucket(4.0, 4.0 * ratio), expected);  // only the ratio matters
   }
@@ -144,9 +151,7 @@ TEST(skinny_bucket_counts_doublings_of_the_ratio_from_sixteen_times_the_bound) {
   std::uniform_real_distribution<double> lq(8.0, 50.0);
   for (int i = 0; i < 100000; ++i) {
     const double q = std::exp2(lq(rng));
-    unsigned doublings = 0;
-    for (double r = q / 256.0; r >= 2.0; r *= 0.5) ++doublings;
-    const unsigned expected = std::min(63u, 48u + doublings);
+    const unsigned expected = std::min(63u, 48u + halvings(q / 256.0));
     CHECK_EQ(skinny_bucket(q), expected);
   }
   CHECK_EQ(skinny_bucket(256.0), 48u);
@@ -175,12 +180,11 @@ TEST(edge_level_is_four_per_octave_of_the_squared_length_ratio) {
   std::uniform_real_distribution<double> u(0.0, 80.0);
   for (int i = 0; i < 100000; ++i) {
     const double x = std::exp2(u(rng));
-    unsigned halvings = 0;
-    double m = x;
-    while (m >= 2.0) m *= 0.5, ++halvings;
+    double m = 0.0;
+    const unsigned octaves = halvings(x, &m);
     const unsigned quarter = m >= 1.75 ? 3 : m >= 1.5 ? 2 : m >= 1.25 ? 1 : 0;
-    CHECK_EQ(edge_level(1.0 / x, 1.0), 4 * halvings + quarter);
-    CHECK_EQ(edge_level(8.0, 8.0 * x), 4 * halvings + quarter);  // only the ratio matters
+    CHECK_EQ(edge_level(1.0 / x, 1.0), 4 * octaves + quarter);
+    CHECK_EQ(edge_level(8.0, 8.0 * x), 4 * octaves + quarter);  // only the ratio matters
   }
   CHECK_EQ(edge_level(1.0, 1.0), 0u);
   CHECK_EQ(edge_level(4.0, 1.0), 0u);              // longer than the reference
