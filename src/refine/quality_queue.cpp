@@ -21,11 +21,11 @@ unsigned paper_bucket(double q) {
   return static_cast<unsigned>(std::min<std::uint64_t>(1 + step, QualityQueue::kBuckets - 1));
 }
 
-unsigned edge_bucket(double shortest2, double reference2, unsigned last) {
+unsigned edge_bucket(double shortest2, double reference2) {
   const double ratio = reference2 / shortest2;
-  if (!std::isfinite(ratio)) return last;
+  if (!std::isfinite(ratio)) return QualityQueue::kBuckets - 1;
   if (!(ratio >= 1.0)) return 1;
-  return std::min(1 + floor_log2(ratio), last);
+  return std::min(1 + floor_log2(ratio), QualityQueue::kBuckets - 1);
 }
 
 unsigned skinny_bucket(double q) {
@@ -75,16 +75,14 @@ void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
   }
 }
 
-// Calls visit(entry) for the entries of `fifo` in FIFO order, and after each block visit_block(block).
-template <class Blocks, class Visit, class VisitBlock>
-void for_each_entry(const Blocks& blocks, std::uint32_t first, std::uint32_t head, std::uint32_t last,
-                    std::uint32_t tail, std::uint32_t block_size, Visit&& visit, VisitBlock&& visit_block) {
-  for (std::uint32_t block = first; block != ~std::uint32_t{0};) {
-    const std::uint32_t from = block == first ? head : 0;
-    const std::uint32_t to = block == last ? tail : block_size;
-    for (std::uint32_t i = from; i < to; ++i) visit(blocks[block]->items[i]);
-    const std::uint32_t next = block == last ? ~std::uint32_t{0} : blocks[block]->next;
-    visit_block(block);
+template <class Visit, class Done>
+void QualityQueue::for_each_entry(const Fifo& fifo, Visit&& visit, Done&& done) {
+  for (std::uint32_t block = fifo.first; block != kNoBlock;) {
+    const std::uint32_t from = block == fifo.first ? fifo.head : 0;
+    const std::uint32_t to = block == fifo.last ? fifo.tail : kBlock;
+    for (std::uint32_t i = from; i < to; ++i) visit(blocks_[block]->items[i]);
+    const std::uint32_t next = block == fifo.last ? kNoBlock : blocks_[block]->next;
+    done(block);
     block = next;
   }
 }
@@ -102,8 +100,7 @@ void QualityQueue::raise_window(unsigned level) {
   for (unsigned b = 2; b <= merged; ++b) {
     const Fifo old = buckets_[b];
     buckets_[b] = Fifo{};
-    for_each_entry(blocks_, old.first, old.head, old.last, old.tail, kBlock,
-                   [&](const QueuedTriangle& e) { append(e, 1); }, [&](std::uint32_t block) { give_back(block); });
+    for_each_entry(old, [&](const QueuedTriangle& e) { append(e, 1); }, [&](std::uint32_t block) { give_back(block); });
   }
   for (unsigned b = merged + 1; b <= last; ++b) {
     buckets_[b - static_cast<unsigned>(shift)] = buckets_[b];
@@ -122,14 +119,12 @@ void QualityQueue::raise_window(unsigned level) {
 void QualityQueue::move_window() {
   const Fifo old = buckets_[1];
   unsigned highest = 0;
-  for_each_entry(blocks_, old.first, old.head, old.last, old.tail, kBlock,
-                 [&](const QueuedTriangle& e) { highest = std::max<unsigned>(highest, e.level); },
+  for_each_entry(old, [&](const QueuedTriangle& e) { highest = std::max<unsigned>(highest, e.level); },
                  [](std::uint32_t) {});
   window_base_ = static_cast<int>(highest + kWindowHeadroom) - static_cast<int>(kMildBuckets - 1);
   buckets_[1] = Fifo{};
   nonempty_ &= ~(std::uint64_t{1} << 1);
-  for_each_entry(blocks_, old.first, old.head, old.last, old.tail, kBlock,
-                 [&](const QueuedTriangle& e) { append(e, window_bucket(e.level)); },
+  for_each_entry(old, [&](const QueuedTriangle& e) { append(e, window_bucket(e.level)); },
                  [&](std::uint32_t block) { give_back(block); });
 }
 

@@ -92,8 +92,9 @@ unsigned paper_bucket(double ratio_squared_over_bound_squared);
 
 // The Edge bucket for a skinny triangle whose shortest edge has squared length `shortest2`, in a
 // domain of squared diameter `reference2`: 1 + floor(log2(reference2 / shortest2)), clamped to
-// 1..`last`, so each bucket spans a factor of sqrt(2) in length and shorter edges rank higher.
-unsigned edge_bucket(double shortest2, double reference2, unsigned last = 63);
+// 1..63, so each bucket spans a factor of sqrt(2) in length and shorter edges rank higher. Edges
+// below reference / 2^31 share bucket 63.
+unsigned edge_bucket(double shortest2, double reference2);
 
 class QualityQueue {
  public:
@@ -102,10 +103,6 @@ class QualityQueue {
   // reference2: the squared diameter of the domain, the scale of the edge keys.
   explicit QualityQueue(QueueOrder order = QueueOrder::Ratio, double reference2 = 1.0)
       : order_(order), reference2_(reference2) {}
-
-  // The Ratio order's bucket for a mildly skinny triangle of edge level `level` in the current
-  // window.
-  unsigned window_bucket(unsigned level) const;
 
   // Queues a bad triangle where the order puts it.
   void push(const QueuedTriangle& entry, const Badness& why);
@@ -150,8 +147,15 @@ class QualityQueue {
   void note_push();
   void append(const QueuedTriangle& entry, unsigned bucket);  // push_to_bucket, not counted
   QueuedTriangle take_front(unsigned bucket);                 // the oldest entry of a non-empty bucket
+  // The Ratio order's bucket for a mildly skinny triangle of edge level `level` in the current
+  // window.
+  unsigned window_bucket(unsigned level) const;
   void move_window();
   void raise_window(unsigned level);
+  // Calls visit(entry) for the entries of `fifo` in FIFO order, then done(block) for each of its
+  // blocks once its entries have been visited.
+  template <class Visit, class Done>
+  void for_each_entry(const Fifo& fifo, Visit&& visit, Done&& done);
   QueueOrder order_;
   double reference2_;
   // Levels at or below window_base_ go to bucket 1. Before the first pop the window lies above

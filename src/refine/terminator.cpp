@@ -43,13 +43,24 @@ double guard_floor_of(const Mesh& mesh, const RefineOptions& opt) {
   return guard_floor(smallest * scale, size_floor_of(mesh, opt));
 }
 
-// The squared diagonal of the bounding box of the vertices.
-double squared_diameter(const Mesh& mesh) {
+// The bounding box of the vertices.
+Box extent_of(const Mesh& mesh) {
   Box box;
   for (const Point& p : mesh.points)
     if (std::isfinite(p.x) && std::isfinite(p.y)) box.add(p);
+  return box;
+}
+
+// The squared diagonal of a box, 1 for an empty one.
+double squared_diameter(const Box& box) {
   if (box.empty()) return 1.0;
   return box.width() * box.width() + box.height() * box.height();
+}
+
+// The largest magnitude of a coordinate in a box, 0 for an empty one.
+double largest_coordinate(const Box& box) {
+  if (box.empty()) return 0.0;
+  return std::max({std::fabs(box.lo_x), std::fabs(box.hi_x), std::fabs(box.lo_y), std::fabs(box.hi_y)});
 }
 
 // Size-bounded refinement ends with about twice as many triangles as its bounds ask for (the unit
@@ -103,13 +114,11 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
       pieces_(mesh),
       apices_(mesh),
       finder_(mesh),
-      bad_triangles_(opt.queue_order, squared_diameter(mesh)) {
+      extent_(extent_of(mesh)),
+      bad_triangles_(opt.queue_order, squared_diameter(extent_)) {
   report_.guard_length = guard_floor_;
-  double largest = 0.0;
-  for (const Point& q : mesh_.points)
-    if (std::isfinite(q.x) && std::isfinite(q.y)) largest = std::max({largest, std::fabs(q.x), std::fabs(q.y)});
   const bool size_bounds = opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0;
-  bottom_possible_ = size_bounds || guard_floor_ < kBottomScaleUlps * 0x1p-52 * largest;
+  bottom_possible_ = size_bounds || guard_floor_ < kBottomScaleUlps * 0x1p-52 * largest_coordinate(extent_);
   if (bottom_possible_) find_hopeless_edges();
   if (!bottom_reachable_) precision_scale_ = std::ldexp(1.0, kPrecisionOctaves - kCoarsePrecisionOctaves);
   report_.steiner_cap = steiner_cap_;
@@ -151,7 +160,7 @@ RefineReport Terminator::run() {
   while (!bad_triangles_.empty()) {  // Fig. 38 l.10
     prefetch_queued();
     const QueuedTriangle entry = *bad_triangles_.pop();  // Fig. 38 l.11
-    if (still_exists(entry)) split_bad_triangle(entry);  // Fig. 38 l.12
+    if (is_current(mesh_, entry)) split_bad_triangle(entry);  // Fig. 38 l.12
   }
   report_.peak_queue = bad_triangles_.peak_size();
   survey_remaining();
@@ -248,7 +257,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   // Fig. 38 l.23-25. t goes back only if something was split, so a guard refusal cannot make
   // the same attempt repeat forever. Splits owed to a size bound meet only the precision floor,
   // as t itself does (floor_for).
-  if (split_encroached_subsegments(true, assessment.too_large) > 0 && still_exists(entry)) enqueue_if_bad(t);
+  if (split_encroached_subsegments(true, assessment.too_large) > 0 && is_current(mesh_, entry)) enqueue_if_bad(t);
 }
 
 // Fig. 39, NEWVERTEX.
@@ -302,8 +311,6 @@ void Terminator::enqueue_if_bad(TriangleId t) {
   const QueuedTriangle entry{t, mesh_.corner[3 * t], mesh_.corner[3 * t + 1], mesh_.corner[3 * t + 2]};
   bad_triangles_.push(entry, {a.skinny, a.shape.ratio2_over_bound2, a.shape.shortest_length2});
 }
-
-bool Terminator::still_exists(const QueuedTriangle& entry) const { return is_current(mesh_, entry); }
 
 bool Terminator::budget_left() {
   const std::uint64_t used = report_.interior_steiner + report_.segment_steiner;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "geometry/box.h"
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
 #include "refine/bad_triangles.h"
@@ -60,7 +61,6 @@ class Terminator {
   bool shell_exempt(EdgeRef shortest) const;
   void enqueue_if_bad(TriangleId t);
   void enqueue_subsegment(EdgeRef e);
-  bool still_exists(const QueuedTriangle& entry) const;
   EdgeRef current_edge(const EncroachedSubsegment& entry);
   bool is_splittable(EdgeRef e) const;  // -Y / -YY
   bool budget_left();                   // -S
@@ -88,6 +88,7 @@ class Terminator {
   SegmentPieces pieces_;  // the piece of each subsegment and refinement split
   SegmentApices apices_;
   EdgeFinder finder_;
+  Box extent_;  // the bounding box of the vertices: the queue's scale, the bottom scale's coordinates
   CavityMarks marks_;
   QualityQueue bad_triangles_;       // Q_t
   EncroachedQueue encroached_;       // Q_s
