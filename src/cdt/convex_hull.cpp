@@ -6,6 +6,8 @@
 #include <unordered_set>
 #include <vector>
 
+#include "geometry/constructions.h"
+
 namespace deltri {
 
 std::size_t enclose_convex_hull(Mesh& mesh) {
@@ -53,10 +55,6 @@ struct Run {
   VertexId a, b;  // the strictly convex hull vertices at the ends of a collinear run of hull edges
 };
 
-double largest_coordinate(const Point& p, const Point& q) {
-  return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y)});
-}
-
 }  // namespace
 
 std::size_t absorb_near_hull_vertices(Mesh& mesh, Predicates& pred) {
@@ -102,7 +100,7 @@ std::size_t absorb_near_hull_vertices(Mesh& mesh, Predicates& pred) {
     const double dx = rb.x - ra.x, dy = rb.y - ra.y;
     const double length = std::hypot(dx, dy);
     const double off = std::fabs(dx * (pv.y - ra.y) - dy * (pv.x - ra.x)) / length;
-    if (!(off <= kHullAbsorbUlps * 0x1p-52 * largest_coordinate(ra, rb))) continue;
+    if (!(off <= kHullAbsorbUlps * 0x1p-52 * std::max(magnitude(ra), magnitude(rb)))) continue;
     // v must lie between a and b along the edge, and inside the hull (not on its boundary).
     const double ex = pb.x - pa.x, ey = pb.y - pa.y;
     if (!((pv.x - pa.x) * ex + (pv.y - pa.y) * ey > 0.0) || !((pb.x - pv.x) * ex + (pb.y - pv.y) * ey > 0.0))

@@ -3,6 +3,9 @@
 // the mesher takes about a constructed point must go through the exact predicates afterwards.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "geometry/point.h"
 
 namespace deltri {
@@ -34,5 +37,9 @@ inline double squared_distance(const Point& a, const Point& b) {
   const double dx = b.x - a.x, dy = b.y - a.y;
   return dx * dx + dy * dy;
 }
+
+// The larger magnitude of p's coordinates: the scale of the doubles where p lies (its ulp is
+// about 2^-52 of this).
+inline double magnitude(const Point& p) { return std::max(std::fabs(p.x), std::fabs(p.y)); }
 
 }  // namespace deltri

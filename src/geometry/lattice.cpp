@@ -5,13 +5,10 @@
 #include <cstdlib>
 #include <vector>
 
+#include "geometry/constructions.h"
+
 namespace deltri {
 namespace {
-
-double squared_length(const Point& a, const Point& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return dx * dx + dy * dy;
-}
 
 // The double `k` steps from x (negative: downwards).
 double step(double x, int k) {
@@ -67,7 +64,7 @@ bool doubles_within(double x, double radius, int limit, std::vector<double>& out
 
 bool hopeless_edge(const Point& p, const Point& q, double sin2_theta) {
   if (!(sin2_theta > 0.0)) return false;
-  const double length = std::sqrt(squared_length(p, q));
+  const double length = std::sqrt(squared_distance(p, q));
   const double radius = length * (1.0 / std::sqrt(sin2_theta) + 0.5);
   const Point mid{p.x + 0.5 * (q.x - p.x), p.y + 0.5 * (q.y - p.y)};
   std::vector<double> xs, ys;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/constructions.h"
+
 namespace deltri {
 namespace {
 
@@ -67,11 +69,7 @@ double angle_scale(double angle) {
 }
 
 double precision_floor_at(const Point& p) {
-  return std::ldexp(std::max(std::fabs(p.x), std::fabs(p.y)), -kPrecisionOctaves);
-}
-
-double coarse_precision_floor_at(const Point& p) {
-  return std::ldexp(std::max(std::fabs(p.x), std::fabs(p.y)), -kCoarsePrecisionOctaves);
+  return std::ldexp(magnitude(p), -kPrecisionOctaves);
 }
 
 double guard_floor(double feature, double size_floor) {

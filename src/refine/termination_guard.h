@@ -57,7 +57,6 @@ double precision_floor_at(const Point& p);
 // to the ulp scale at every other close pair would cost dozens of triangles per octave for
 // nothing (robustness2.node at -pq30: 1,030,697 triangles in 3.4 s, against 6,910 in 0.03 s).
 inline constexpr int kCoarsePrecisionOctaves = 36;
-double coarse_precision_floor_at(const Point& p);
 
 // The edge-length floor for a smallest feature estimate `feature`; size_floor (<= 0: none) is the
 // edge length a size bound asks for.

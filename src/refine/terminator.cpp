@@ -60,7 +60,7 @@ double squared_diameter(const Box& box) {
 // The largest magnitude of a coordinate in a box, 0 for an empty one.
 double largest_coordinate(const Box& box) {
   if (box.empty()) return 0.0;
-  return std::max({std::fabs(box.lo_x), std::fabs(box.hi_x), std::fabs(box.lo_y), std::fabs(box.hi_y)});
+  return std::max(magnitude({box.lo_x, box.lo_y}), magnitude({box.hi_x, box.hi_y}));
 }
 
 // Size-bounded refinement ends with about twice as many triangles as its bounds ask for (the unit
@@ -124,8 +124,9 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
   report_.steiner_cap = steiner_cap_;
 }
 
-// coarse_precision_floor_at is precision_floor_at times 2^(kPrecisionOctaves -
-// kCoarsePrecisionOctaves), exactly: one multiplication instead of a branch on the hot path.
+// The coarse floor (2^-kCoarsePrecisionOctaves of the coordinates) is precision_floor_at times
+// 2^(kPrecisionOctaves - kCoarsePrecisionOctaves), exactly: one multiplication instead of a branch
+// on the hot path.
 double Terminator::precision_floor(const Point& p) const { return precision_floor_at(p) * precision_scale_; }
 
 double Terminator::floor_at(const Point& p) const { return std::max(guard_floor_, precision_floor(p)); }

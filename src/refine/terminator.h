@@ -104,7 +104,7 @@ class Terminator {
   bool bottom_possible_ = false;
   double precision_scale_ = 1.0;  // 2^18 when !bottom_reachable_ (precision_floor)
   void find_hopeless_edges();
-  double precision_floor(const Point& p) const;  // precision_floor_at, or coarse_precision_floor_at
+  double precision_floor(const Point& p) const;  // precision_floor_at, or the coarse floor
 };
 
 }  // namespace deltri
