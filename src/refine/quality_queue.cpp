@@ -91,10 +91,11 @@ void QualityQueue::for_each_entry(const Fifo& fifo, Visit&& visit, Done&& done) 
 // stay in the window move down as a whole (their levels are one each); the ones that fall to or
 // below the new base join bucket 1 entry by entry, in FIFO order, their blocks given back as
 // they go.
+// Called only for a level above the window's top, so the window moves up by more than
+// kWindowHeadroom levels.
 void QualityQueue::raise_window(unsigned level) {
   const int base = static_cast<int>(level + kWindowHeadroom) - static_cast<int>(kMildBuckets - 1);
   const int shift = base - window_base_;
-  if (shift <= 0) return;
   const unsigned last = kMildBuckets;
   const unsigned merged = static_cast<unsigned>(std::min<int>(shift + 1, static_cast<int>(last)));
   for (unsigned b = 2; b <= merged; ++b) {
