@@ -14,9 +14,11 @@ void CavityMarks::begin(std::uint32_t slots) {
   // pages at the peak and raised the 45x45 holes' peak memory by 4 MB.
   if (stamp_.size() < slots) stamp_.resize(slots, 0);
   listed_ = 0;
+  listed_bits_ = 0;
   count_ = 0;
   stamped_ = false;
   boundary_.clear();
+  boundary_subsegments_.clear();
   inner_.clear();
 }
 
@@ -40,6 +42,7 @@ void CavityMarks::add(TriangleId t) {
   if (!stamped_) {
     if (listed_ < kListLimit) {
       list_[listed_++] = t;
+      listed_bits_ |= std::uint64_t{1} << (t % 64);
       return;
     }
     spill();
@@ -49,6 +52,7 @@ void CavityMarks::add(TriangleId t) {
 
 bool CavityMarks::contains(TriangleId t) const {
   if (stamped_) return stamp_[t] == now_;
+  if ((listed_bits_ >> (t % 64) & 1) == 0) return false;
   for (std::size_t i = 0; i < listed_; ++i)
     if (list_[i] == t) return true;
   return false;
@@ -120,13 +124,12 @@ WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const 
   return result;
 }
 
-void cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> seeds,
-               const Point& c, CavityMarks& marks, Cavity& out) {
+double cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> seeds,
+                 const Point& c, CavityMarks& marks) {
   marks.begin(mesh.triangle_slots());
-  out.boundary_subsegments.clear();
-  out.nearest2 = HUGE_VAL;
   std::vector<TriangleId>& todo = marks.todo();
   std::vector<EdgeRef>& boundary = marks.boundary();
+  std::vector<EdgeRef>& subsegments = marks.boundary_subsegments();
   todo.clear();
   for (TriangleId s : seeds)
     if (marks.mark(s)) todo.push_back(s);
@@ -136,11 +139,8 @@ void cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> s
     const std::size_t boundary_before = boundary.size();
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
-      const VertexId u = mesh.org(e);
-      const double d2 = squared_distance(c, mesh.point(u));
-      out.nearest2 = std::min(out.nearest2, d2);
       if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
-        out.boundary_subsegments.push_back(e);
+        subsegments.push_back(e);
         boundary.push_back(e);
         continue;
       }
@@ -165,6 +165,11 @@ void cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> s
     }
     if (boundary.size() == boundary_before) marks.inner().push_back(t);
   }
+  // The cavity's vertices are its boundary's: no vertex lies inside the union of the triangles
+  // whose circumcircles contain c (the region is star-shaped from c).
+  double nearest2 = HUGE_VAL;
+  for (EdgeRef e : boundary) nearest2 = std::min(nearest2, squared_distance(c, mesh.point(mesh.org(e))));
+  return nearest2;
 }
 
 }  // namespace detail
@@ -173,9 +178,7 @@ double split_insertion_radius(const Mesh& mesh, Predicates& pred, EdgeRef s, con
                               CavityMarks& marks) {
   const TriangleId seeds[2] = {triangle_of(s), triangle_of(mesh.link[s])};
   const std::size_t count = mesh.link[s] == kNone ? 1 : 2;
-  detail::Cavity cavity;
-  detail::cavity_of(mesh, pred, {seeds, count}, c, marks, cavity);
-  return std::sqrt(cavity.nearest2);
+  return std::sqrt(detail::cavity_of(mesh, pred, {seeds, count}, c, marks));
 }
 
 }  // namespace deltri

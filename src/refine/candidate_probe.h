@@ -56,8 +56,10 @@ class CavityMarks {
   // begin().
   KnownCavity marked() const;
   std::vector<TriangleId>& todo() { return todo_; }
-  // The search records the cavity's boundary edges and its triangles that have none.
+  // The search records the cavity's boundary edges (and apart those that carry subsegments) and
+  // its triangles that have none.
   std::vector<EdgeRef>& boundary() { return boundary_; }
+  std::vector<EdgeRef>& boundary_subsegments() { return boundary_subsegments_; }
   std::vector<TriangleId>& inner() { return inner_; }
 
  private:
@@ -65,12 +67,14 @@ class CavityMarks {
   void spill();
   TriangleId list_[kListLimit];
   std::size_t listed_ = 0;
+  std::uint64_t listed_bits_ = 0;  // bit t % 64 set for each listed t: most lookups miss, in one test
   bool stamped_ = false;  // this search has spilled to the stamps
   std::uint32_t slots_ = 0;
   std::vector<std::uint32_t> stamp_;
   std::uint32_t now_ = 0;
   std::vector<TriangleId> todo_;
   std::vector<EdgeRef> boundary_;
+  std::vector<EdgeRef> boundary_subsegments_;
   std::vector<TriangleId> inner_;
   std::size_t count_ = 0;  // triangles marked
 };
@@ -96,12 +100,10 @@ struct WalkResult {
 };
 WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const Point& c);
 
-struct Cavity {
-  std::vector<EdgeRef> boundary_subsegments;  // cavity edges carrying subsegments
-  double nearest2 = 0.0;                      // squared distance to the nearest cavity vertex
-};
-void cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> seeds,
-               const Point& c, CavityMarks& marks, Cavity& out);
+// Marks the triangles that inserting c destroys and records the cavity's boundary; returns the
+// squared distance from c to the nearest cavity vertex.
+double cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> seeds,
+                 const Point& c, CavityMarks& marks);
 
 }  // namespace detail
 
@@ -119,11 +121,9 @@ Probe probe_candidate(const Mesh& mesh, Predicates& pred, TriangleId t, const Po
     probe.encroached.push_back(walk.blocker);
     return probe;
   }
-  detail::Cavity cavity;
   const TriangleId seed = triangle_of(walk.container);
-  detail::cavity_of(mesh, pred, {&seed, 1}, c, marks, cavity);
-  probe.insertion_radius = std::sqrt(cavity.nearest2);
-  for (EdgeRef e : cavity.boundary_subsegments) {
+  probe.insertion_radius = std::sqrt(detail::cavity_of(mesh, pred, {&seed, 1}, c, marks));
+  for (EdgeRef e : marks.boundary_subsegments()) {
     const Point& a = mesh.point(mesh.org(e));
     const Point& b = mesh.point(mesh.dest(e));
     if (splittable(e)) {
