@@ -26,7 +26,9 @@ bool sees_boundary(const Mesh& m, Predicates& pred, VertexId v, std::span<const 
 // one loop, so that the boundary does not touch itself.
 bool chain(const VertexId* org, const VertexId* dest, std::size_t n, std::uint8_t* next) {
   for (std::size_t j = 0; j < n; ++j) {
-    std::size_t i = 0;
+    // The search lists each triangle's boundary edges together, in order: the next edge is often
+    // the next one listed.
+    std::size_t i = j + 1 < n && org[j + 1] == dest[j] ? j + 1 : 0;
     while (i < n && org[i] != dest[j]) ++i;
     if (i == n) return false;
     next[j] = static_cast<std::uint8_t>(i);
@@ -47,8 +49,14 @@ EdgeRef fill_star(Mesh& m, Predicates& pred, VertexId v, const KnownCavity& cavi
   for (std::size_t j = 0; j < n; ++j) org[j] = m.org(boundary[j]), dest[j] = m.dest(boundary[j]);
   std::uint8_t next[kMaxFan];
   if (!chain(org, dest, n, next) || !sees_boundary(m, pred, v, boundary)) return kNone;
-  EdgeSurround outside[kMaxFan];
-  for (std::size_t j = 0; j < n; ++j) outside[j] = surround_of(m, boundary[j]);
+  // Plain arrays: an array of EdgeSurround would spend kMaxFan default initialisations on a fan
+  // of about 7.
+  EdgeRef outside_link[kMaxFan];
+  SubsegmentId outside_seg[kMaxFan];
+  for (std::size_t j = 0; j < n; ++j) {
+    const EdgeSurround around = surround_of(m, boundary[j]);
+    outside_link[j] = around.link, outside_seg[j] = around.seg;
+  }
   // Each cavity triangle's first boundary edge keeps its slot, and with it the triangle's
   // attributes; the other edges take the slots of the triangles without boundary edges, then two
   // new ones, and copy their owners' attributes (owners keep their slots, so those are intact).
@@ -65,7 +73,7 @@ EdgeRef fill_star(Mesh& m, Predicates& pred, VertexId v, const KnownCavity& cavi
     m.corner[e] = org[j];
     m.corner[e + 1] = dest[j];
     m.corner[e + 2] = v;
-    attach(m, e, outside[j]);
+    attach(m, e, {outside_link[j], outside_seg[j]});
     if (!first) copy_triangle_data(m, owner, slot[j]);
   }
   for (std::size_t j = 0; j < n; ++j) bond_inner(m, 3 * slot[j] + 1, 3 * slot[next[j]] + 2);
