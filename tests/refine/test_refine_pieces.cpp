@@ -4,6 +4,7 @@
 #include <numbers>
 #include <random>
 
+#include "geometry/constructions.h"
 #include "harness/check.h"
 #include "mesh/internal.h"
 #include "mesh/mesh_checks.h"
@@ -393,14 +394,18 @@ TEST(known_cavity_fan_matches_lawson_flips) {
     const Point c{u(rng), u(rng)};
     const Location at = locate(m, pred, c, 0);
     if (at.status != LocateStatus::InTriangle) continue;
-    detail::Cavity cavity;
     const TriangleId seed = triangle_of(at.edge);
-    detail::cavity_of(m, pred, {&seed, 1}, c, marks, cavity);
+    const double nearest2 = detail::cavity_of(m, pred, {&seed, 1}, c, marks);
     ++tried;
     Mesh flips = m, fan = m;
     const VertexId v = flips.add_vertex(c, VertexKind::Free);
     fan.add_vertex(c, VertexKind::Free);
     REQUIRE(insert_vertex(flips, pred, v, at.edge, false).status == InsertStatus::Inserted);
+    // The search's nearest cavity vertex is the nearest vertex that the insertion joins to c.
+    double joined2 = HUGE_VAL;
+    for (EdgeRef e = 0; e < flips.corner.size(); ++e)
+      if (flips.corner[e] == v) joined2 = std::min(joined2, squared_distance(c, flips.point(flips.dest(e))));
+    CHECK_EQ(nearest2, joined2);
     const EdgeRef out = detail::fill_star(fan, pred, v, marks.marked());
     if (out == kNone) {
       CHECK(meshcheck::triangle_set(fan) == meshcheck::triangle_set(m));  // refused: nothing changed
