@@ -280,6 +280,7 @@ RefineOptions refine_options(const Switches& sw, const InputFiles& in) {
   opt.queue_order = sw.queue_order;
   opt.decline_cluster_splits = sw.decline_cluster_splits;
   opt.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
+  opt.threads = sw.threads;
   return opt;
 }
 

@@ -39,6 +39,7 @@ struct RefineOptions {
   // subsegment is split as in Triangle; the isosceles shell triangles at a junction are exempt
   // instead (Miller-Pav-Walkington), and the guard still bounds every new edge.
   bool decline_cluster_splits = false;
+  int threads = 1;  // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h)
 };
 
 struct RefineReport {

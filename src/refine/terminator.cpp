@@ -115,7 +115,8 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
       apices_(mesh),
       finder_(mesh),
       extent_(extent_of(mesh)),
-      bad_triangles_(opt.queue_order, squared_diameter(extent_)) {
+      bad_triangles_(opt.queue_order, squared_diameter(extent_)),
+      warmer_(opt.threads > 1) {
   report_.guard_length = guard_floor_;
   const bool size_bounds = opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0;
   bottom_possible_ = size_bounds || guard_floor_ < kBottomScaleUlps * 0x1p-52 * largest_coordinate(extent_);
@@ -158,7 +159,8 @@ RefineReport Terminator::run() {
   }
   for (TriangleId t = 0; t < mesh_.triangle_slots(); ++t)  // Fig. 38 l.7-9
     if (mesh_.is_live(t)) enqueue_if_bad(t);
-  while (!bad_triangles_.empty()) {  // Fig. 38 l.10
+  for (unsigned pops = 0; !bad_triangles_.empty(); ++pops) {  // Fig. 38 l.10
+    if (pops % kWarmInterval == 0) warm_pages();
     prefetch_queued();
     const QueuedTriangle entry = *bad_triangles_.pop();  // Fig. 38 l.11
     if (is_current(mesh_, entry)) split_bad_triangle(entry);  // Fig. 38 l.12
@@ -166,6 +168,20 @@ RefineReport Terminator::run() {
   report_.peak_queue = bad_triangles_.peak_size();
   survey_remaining();
   return report_;
+}
+
+template <class Array>
+static void note_array(PageWarmer& warmer, unsigned slot, const Array& a) {
+  using T = typename Array::value_type;
+  warmer.note(slot, a.data(), a.size() * sizeof(T), a.capacity() * sizeof(T));
+}
+
+void Terminator::warm_pages() {
+  note_array(warmer_, 0, mesh_.corner);
+  note_array(warmer_, 1, mesh_.link);
+  note_array(warmer_, 2, mesh_.subseg);
+  note_array(warmer_, 3, mesh_.points);
+  note_array(warmer_, 4, marks_.stamps());
 }
 
 // The queue serves triangles in size order across the whole domain, so nearly every popped

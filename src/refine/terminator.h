@@ -21,6 +21,7 @@
 #include "refine/mirrored_split.h"
 #include "refine/quality_queue.h"
 #include "refine/refine.h"
+#include "util/page_warmer.h"
 #include "util/prefetch.h"
 
 namespace deltri {
@@ -56,6 +57,9 @@ class Terminator {
 
   void prefetch_queued() const;
   static constexpr std::size_t kPrefetchDistance = 8;  // queue entries ahead
+  // Tells the page warmer how far the mesh arrays are used (every kWarmInterval pops).
+  void warm_pages();
+  static constexpr unsigned kWarmInterval = 256;
   // assess_triangle plus the equal-shell exemption (shell_exempt).
   Assessment assess(TriangleId t) const;
   bool shell_exempt(EdgeRef shortest) const;
@@ -103,6 +107,7 @@ class Terminator {
   // skipped altogether (ordinary meshes).
   bool bottom_possible_ = false;
   double precision_scale_ = 1.0;  // 2^18 when !bottom_reachable_ (precision_floor)
+  PageWarmer warmer_;  // last: its thread stops first
   void find_hopeless_edges();
   double precision_floor(const Point& p) const;  // precision_floor_at, or the coarse floor
 };
