@@ -49,7 +49,6 @@ class CavityMarks {
  public:
   void begin(std::uint32_t slots);
   void reserve(std::size_t slots) { stamp_.reserve(slots); }
-  const std::vector<std::uint32_t>& stamps() const { return stamp_; }  // for the page warmer
   bool mark(TriangleId t);  // false if already marked in this search
   void add(TriangleId t);   // mark, for a t known not to be marked yet
   bool contains(TriangleId t) const;

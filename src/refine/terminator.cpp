@@ -181,7 +181,6 @@ void Terminator::warm_pages() {
   note_array(warmer_, 1, mesh_.link);
   note_array(warmer_, 2, mesh_.subseg);
   note_array(warmer_, 3, mesh_.points);
-  note_array(warmer_, 4, marks_.stamps());
 }
 
 // The queue serves triangles in size order across the whole domain, so nearly every popped

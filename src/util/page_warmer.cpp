@@ -52,13 +52,20 @@ void PageWarmer::note(unsigned slot, const void* data, std::size_t used, std::si
   if (!enabled_ || slot >= kSlots) return;
   Watched& w = watched_[slot];
   const char* base = static_cast<const char*>(data);
-  if (w.data != base) w = Watched{base, used};  // a new block (the array was reallocated)
-  // Ask again only once half of the populated margin is used up: one request per 2 MiB.
-  if (w.warmed >= capacity || w.warmed > used + kAhead / 2) return;
-  const std::size_t to = std::min(capacity, used + kAhead);
-  if (to <= w.warmed) return;
-  const Range range{const_cast<char*>(base) + w.warmed, to - w.warmed};
+  if (w.data != base) w = Watched{base, 0};  // a new block (the array was reallocated)
+  if (used + kLead <= w.warmed || w.warmed >= capacity) return;
+  // Page boundaries are absolute addresses (big blocks start on one; others need not).
+  const auto at = reinterpret_cast<std::uintptr_t>(base);
+  const std::uintptr_t end = (at + used + kLead + kHugePage - 1) & ~std::uintptr_t{kHugePage - 1};
+  // Past the block's last whole huge page the pages are small (big_allocator.h): there only the
+  // next 2 kLead bytes are asked for, so a block that ends partly used wastes little.
+  const std::uintptr_t last_huge = (at + capacity) & ~std::uintptr_t{kHugePage - 1};
+  const std::size_t to = end <= last_huge ? static_cast<std::size_t>(end - at)
+                                           : std::min(capacity, used + 2 * kLead);
+  const std::size_t from = std::max(w.warmed, used);
   w.warmed = to;
+  if (to <= from) return;
+  const Range range{const_cast<char*>(base) + from, to - from};
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     pending_.push_back(range);

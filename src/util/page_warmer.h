@@ -4,10 +4,10 @@
 // never touched (so a generous guess costs no resident memory). Each first touch of a 2 MiB page
 // then stops refinement while the kernel zeroes it: on the 45x45-hole workload about 6% of the
 // run went to that. A PageWarmer, told now and then how far each array is used, asks the kernel
-// on its own thread to populate the next few megabytes of each (madvise MADV_POPULATE_WRITE),
+// on its own thread to populate the next huge page of each (madvise MADV_POPULATE_WRITE),
 // so the pages are there when the appends arrive. The contents of memory are never touched, so
-// there is nothing to race on; only pages within kAhead of use are populated, so the resident
-// memory stays what the arrays use plus at most kAhead each. Where the advice or threads are
+// there is nothing to race on; only the huge page after the one in use is populated, and only
+// shortly before it is needed, so the resident memory stays about what the arrays use. Where the advice or threads are
 // unavailable, nothing happens and the arrays fault in as before.
 #pragma once
 
@@ -21,8 +21,11 @@ namespace deltri {
 
 class PageWarmer {
  public:
-  // Bytes populated beyond the used part of each array.
-  static constexpr std::size_t kAhead = std::size_t{4} << 20;
+  // Populating works in huge pages (2 MiB): the next one is asked for once the used part of an
+  // array comes within kLead of it, some milliseconds of refinement before the appends arrive,
+  // so an array ends with an extra page resident only when it stops that close to one.
+  static constexpr std::size_t kHugePage = std::size_t{2} << 20;
+  static constexpr std::size_t kLead = std::size_t{128} << 10;
   // No thread (and no effect) unless `enabled`.
   explicit PageWarmer(bool enabled);
   ~PageWarmer();

@@ -30,25 +30,33 @@ std::size_t resident_pages(const void* p, std::size_t bytes) {
 
 }  // namespace
 
-TEST(page_warmer_populates_ahead_of_use_and_no_further) {
+// Asks `warmer` about an array using `used` bytes of `v`'s capacity and waits (up to a second)
+// for [from, to) to become resident; returns how many of its pages are.
+std::size_t warmed_pages(PageWarmer& warmer, const BigVector<std::uint32_t>& v, std::size_t used,
+                         std::size_t from, std::size_t to) {
+  const char* base = reinterpret_cast<const char*>(v.data());
+  warmer.note(0, v.data(), used, v.capacity() * sizeof(std::uint32_t));
+  for (int i = 0; i < 200 && resident_pages(base + from, to - from) < (to - from) / 4096; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  return resident_pages(base + from, to - from);
+}
+
+TEST(page_warmer_populates_the_next_huge_page_shortly_before_use_and_no_further) {
+  constexpr std::size_t huge = PageWarmer::kHugePage;
   BigVector<std::uint32_t> v;
-  v.reserve(16u << 20);  // 64 MiB of untouched capacity
-  v.resize(1024);         // 4 KiB used
+  v.reserve(16u << 20);  // 64 MiB of untouched capacity, starting on a huge-page boundary
   const std::size_t capacity = v.capacity() * sizeof(std::uint32_t);
   const char* base = reinterpret_cast<const char*>(v.data());
-  const std::size_t ahead = PageWarmer::kAhead;
-  CHECK(resident_pages(base + ahead, capacity - ahead) == 0);
-  {
-    PageWarmer warmer(true);
-    warmer.note(0, v.data(), v.size() * sizeof(std::uint32_t), capacity);
-    // The work is asynchronous; the destructor would drop a request not yet taken.
-    for (int i = 0; i < 200 && resident_pages(base + 8192, ahead - 8192) < (ahead - 8192) / 4096; ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  CHECK_EQ(resident_pages(base + 8192, ahead - 8192), (ahead - 8192) / 4096);
-  // Beyond kAhead (plus a huge page the kernel may round up to) nothing was touched.
-  const std::size_t beyond = ahead + (std::size_t{2} << 20);
-  CHECK_EQ(resident_pages(base + beyond, capacity - beyond), 0u);
+  CHECK_EQ(reinterpret_cast<std::uintptr_t>(base) % huge, 0u);
+  PageWarmer warmer(true);
+  // Far from the end of the first huge page: nothing beyond it is populated.
+  warmed_pages(warmer, v, 4096, huge, 2 * huge);
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  CHECK_EQ(resident_pages(base + huge, capacity - huge), 0u);
+  // Within kLead of it: the second huge page is populated, and nothing after it.
+  const std::size_t used = huge - PageWarmer::kLead / 2;
+  CHECK_EQ(warmed_pages(warmer, v, used, huge, 2 * huge), huge / 4096);
+  CHECK_EQ(resident_pages(base + 2 * huge, capacity - 2 * huge), 0u);
 }
 #endif
 
