@@ -8,8 +8,11 @@ Usage: bench.py BUILD_DIR [--quick] [--only SUBSTRING]
 When Triangle 1.6 is installed (a `triangle` on PATH, e.g. Debian's non-free triangle-bin, or
 TRIANGLE=/path/to/triangle), every case also runs it with the same switches, interleaved with
 deltri's runs so that both meet the same host, and the tables add its time, peak and the ratio of
-the two throughputs (triangles per second, end to end with outputs written). Triangle is only
-run, never built or read: it is a measuring stick.
+the two throughputs (triangles per second, end to end with outputs written). The ratio is the
+median over the rounds of each round's ratio (a deltri run and the Triangle run right after it),
+which a host whose speed drifts from minute to minute disturbs less than a ratio of medians.
+Triangle is only run, never built or read: it is a measuring stick. BENCH_REPEAT=n sets the
+number of rounds (default 3, 1 with --quick).
 """
 import os
 import shutil
@@ -25,7 +28,7 @@ deltri = os.path.abspath(os.path.join(build, "deltri"))
 gen = os.path.abspath(os.path.join(build, "tests", "deltri_bench_gen"))
 work = os.path.abspath(os.path.join(build, "bench"))
 os.makedirs(work, exist_ok=True)
-REPEAT = 1 if quick else 3
+REPEAT = int(os.environ.get("BENCH_REPEAT", "1" if quick else "3"))
 triangle = os.environ.get("TRIANGLE") or shutil.which("triangle")
 
 
@@ -104,7 +107,8 @@ def measure(switches, path):
     stage = {k: statistics.median(r[2].get(k, 0.0) for r in verbose) for k in verbose[0][2]}
     reference = None
     if theirs:
-        reference = (statistics.median(r[0] for r in theirs), max(r[1] for r in theirs), theirs[0][2])
+        rounds = statistics.median(t[0] / d[0] for d, t in zip(plain, theirs) if d[0] > 0)
+        reference = (statistics.median(r[0] for r in theirs), max(r[1] for r in theirs), theirs[0][2], rounds)
     return wall, rss, stage, verbose[0][3], reference
 
 
@@ -112,8 +116,8 @@ def reference_columns(reference, wall, tris):
     """The extra cells for Triangle: its triangles, time and peak, and deltri's throughput over its."""
     if reference is None:
         return ""
-    t_wall, t_rss, t_tris = reference
-    speedup = (tris / wall) / (t_tris / t_wall) if t_tris and wall else 0.0
+    t_wall, t_rss, t_tris, time_ratio = reference
+    speedup = tris / t_tris * time_ratio if t_tris else 0.0
     return f" {t_tris:,} | {t_wall:.3f} | {mib(t_rss)} | {speedup:.2f}x |"
 
 
