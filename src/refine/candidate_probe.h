@@ -56,8 +56,8 @@ class CavityMarks {
   // begin().
   KnownCavity marked() const;
   std::vector<TriangleId>& todo() { return todo_; }
-  // The search records the cavity's boundary edges (and apart those that carry subsegments) and
-  // its triangles that have none.
+  // The search records the cavity's boundary edges, separately those of them that carry
+  // subsegments, and the cavity's triangles that have no boundary edge.
   std::vector<EdgeRef>& boundary() { return boundary_; }
   std::vector<EdgeRef>& boundary_subsegments() { return boundary_subsegments_; }
   std::vector<TriangleId>& inner() { return inner_; }

@@ -4,11 +4,11 @@
 // never touched (so a generous guess costs no resident memory). Each first touch of a 2 MiB page
 // then stops refinement while the kernel zeroes it: on the 45x45-hole workload about 6% of the
 // run went to that. A PageWarmer, told now and then how far each array is used, asks the kernel
-// on its own thread to populate the next huge page of each (madvise MADV_POPULATE_WRITE),
-// so the pages are there when the appends arrive. The contents of memory are never touched, so
-// there is nothing to race on; only the huge page after the one in use is populated, and only
-// shortly before it is needed, so the resident memory stays about what the arrays use. Where the advice or threads are
-// unavailable, nothing happens and the arrays fault in as before.
+// on its own thread to populate the next huge page of each (madvise MADV_POPULATE_WRITE), so the
+// pages are there when the appends arrive. The contents of memory are never read or written, so
+// there is nothing to race on. Only the huge page after the one in use is populated, and only
+// shortly before it is needed, so the resident memory stays about what the arrays use. Where the
+// advice or threads are unavailable, nothing happens and the arrays fault in as before.
 #pragma once
 
 #include <condition_variable>
