@@ -20,6 +20,19 @@ unsigned halvings(double x, double* mantissa = nullptr) {
   return count;
 }
 
+// Checks that key(l2, 1) never falls as l2 shrinks from 1 by `factor` per step down to `floor`;
+// returns the key at the end.
+template <class Key>
+unsigned check_rises_as_edges_shorten(Key key, double floor, double factor) {
+  unsigned last = 0;
+  for (double l2 = 1.0; l2 > floor; l2 *= factor) {
+    const unsigned k = key(l2, 1.0);
+    CHECK(k >= last);
+    last = k;
+  }
+  return last;
+}
+
 // Pops one entry per id and checks that they come out in exactly that order.
 void expect_pops(QualityQueue& q, std::initializer_list<TriangleId> ids) {
   for (TriangleId t : ids) {
@@ -116,13 +129,7 @@ TEST(edge_bucket_is_one_plus_log2_of_the_squared_length_ratio) {
 }
 
 TEST(edge_bucket_ranks_shorter_edges_higher) {
-  unsigned last = 0;
-  for (double l2 = 1.0; l2 > 1e-25; l2 *= 0.97) {
-    const unsigned b = edge_bucket(l2, 1.0);
-    CHECK(b >= last);
-    last = b;
-  }
-  CHECK_EQ(last, 63u);
+  CHECK_EQ(check_rises_as_edges_shorten(edge_bucket, 1e-25, 0.97), 63u);
 }
 
 TEST(keyed_queue_serves_largest_key_first_and_oldest_among_equals) {
@@ -193,14 +200,7 @@ TEST(edge_level_is_four_per_octave_of_the_squared_length_ratio) {
   CHECK_EQ(edge_level(0.0, 1.0), kTopLevel);       // degenerate: the most urgent
 }
 
-TEST(edge_level_ranks_shorter_edges_higher) {
-  unsigned last = 0;
-  for (double l2 = 1.0; l2 > 1e-200; l2 *= 0.93) {
-    const unsigned level = edge_level(l2, 1.0);
-    CHECK(level >= last);
-    last = level;
-  }
-}
+TEST(edge_level_ranks_shorter_edges_higher) { check_rises_as_edges_shorten(edge_level, 1e-200, 0.93); }
 
 // The Ratio order through the queue: skinny before mild whatever their edges, size-only last, and
 // every pop takes the shortest mild edge present (an exact order by level, FIFO within a level),
