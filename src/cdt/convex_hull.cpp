@@ -100,7 +100,7 @@ std::size_t absorb_near_hull_vertices(Mesh& mesh, Predicates& pred) {
     const double dx = rb.x - ra.x, dy = rb.y - ra.y;
     const double length = std::hypot(dx, dy);
     const double off = std::fabs(dx * (pv.y - ra.y) - dy * (pv.x - ra.x)) / length;
-    if (!(off <= kHullAbsorbUlps * 0x1p-52 * std::max(magnitude(ra), magnitude(rb)))) continue;
+    if (!(off <= ulps_at(std::max(magnitude(ra), magnitude(rb)), kHullAbsorbUlps))) continue;
     // v must lie between a and b along the edge, and inside the hull (not on its boundary).
     const double ex = pb.x - pa.x, ey = pb.y - pa.y;
     if (!((pv.x - pa.x) * ex + (pv.y - pa.y) * ey > 0.0) || !((pb.x - pv.x) * ex + (pb.y - pv.y) * ey > 0.0))

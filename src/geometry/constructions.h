@@ -42,4 +42,7 @@ inline double squared_distance(const Point& a, const Point& b) {
 // about 2^-52 of this).
 inline double magnitude(const Point& p) { return std::max(std::fabs(p.x), std::fabs(p.y)); }
 
+// n units in the last place (2^-52 relative) of coordinates of magnitude `scale`.
+inline double ulps_at(double scale, double n) { return n * 0x1p-52 * scale; }
+
 }  // namespace deltri

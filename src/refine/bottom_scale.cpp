@@ -113,7 +113,6 @@ void Terminator::find_hopeless_edges() {
     if (at_bottom_scale(squared_distance(pa, pb), pa) && hopeless_edge(pa, pb, rules_.sin2_theta))
       ++report_.hopeless_edges;
   }
-  bottom_reachable_ = report_.hopeless_edges == 0;
 }
 
 }  // namespace deltri

@@ -39,7 +39,7 @@ inline constexpr double kBottomRadius2 = 0.5;
 // Is an edge of squared length `length2` at p shorter than kBottomScaleUlps units in the last
 // place of p's larger coordinate (within a factor of two)?
 inline bool at_bottom_scale(double length2, const Point& p) {
-  const double bottom = kBottomScaleUlps * 0x1p-52 * magnitude(p);
+  const double bottom = ulps_at(magnitude(p), kBottomScaleUlps);
   return length2 < bottom * bottom;
 }
 

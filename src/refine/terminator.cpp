@@ -94,6 +94,12 @@ std::size_t reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
   return triangles;
 }
 
+template <class Array>
+void note_array(PageWarmer& warmer, unsigned slot, const Array& a) {
+  using T = typename Array::value_type;
+  warmer.note(slot, a.data(), a.size() * sizeof(T), a.capacity() * sizeof(T));
+}
+
 EncroachRule rule_for(const RefineOptions& opt) {
   if (!opt.lenses || opt.conforming_delaunay) return diametral_circle_rule();
   return diametral_lens_rule(opt.quality ? opt.min_angle_deg : 0.0);
@@ -119,9 +125,9 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
       warmer_(opt.threads > 1) {
   report_.guard_length = guard_floor_;
   const bool size_bounds = opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0;
-  bottom_possible_ = size_bounds || guard_floor_ < kBottomScaleUlps * 0x1p-52 * largest_coordinate(extent_);
+  bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
   if (bottom_possible_) find_hopeless_edges();
-  if (!bottom_reachable_) precision_scale_ = std::ldexp(1.0, kPrecisionOctaves - kCoarsePrecisionOctaves);
+  if (report_.hopeless_edges > 0) precision_scale_ = std::ldexp(1.0, kPrecisionOctaves - kCoarsePrecisionOctaves);
   report_.steiner_cap = steiner_cap_;
 }
 
@@ -168,12 +174,6 @@ RefineReport Terminator::run() {
   report_.peak_queue = bad_triangles_.peak_size();
   survey_remaining();
   return report_;
-}
-
-template <class Array>
-static void note_array(PageWarmer& warmer, unsigned slot, const Array& a) {
-  using T = typename Array::value_type;
-  warmer.note(slot, a.data(), a.size() * sizeof(T), a.capacity() * sizeof(T));
 }
 
 void Terminator::warm_pages() {

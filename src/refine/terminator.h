@@ -80,6 +80,8 @@ class Terminator {
   // triangles, if they beat the worst one it destroys; t must be among those.
   std::optional<Point> bottom_scale_point(TriangleId t, const Point& ideal, const Assessment& a);
   Point bottom_scale_split(EdgeRef s, const Point& ideal, bool chew_pending);
+  void find_hopeless_edges();  // counts them into report_.hopeless_edges
+  double precision_floor(const Point& p) const;  // precision_floor_at, or the coarse floor
 
   Mesh& mesh_;
   Predicates& pred_;
@@ -99,17 +101,14 @@ class Terminator {
   RefineReport report_;
   std::vector<char> locked_;  // by subsegment record: a split failed for want of precision
   std::vector<Point> lattice_scratch_;  // bottom_scale_point's candidates
-  // False when an initial edge is one that no double can give a good triangle (bottom_scale.h):
-  // then the coarse precision floor applies everywhere, as the bottom scale cannot meet the bound.
-  bool bottom_reachable_ = true;
   // Whether any split can come within kBottomScaleUlps of the coordinates: false when the feature
   // floor is above that everywhere and no size bound is given, and then the bottom-scale code is
   // skipped altogether (ordinary meshes).
   bool bottom_possible_ = false;
-  double precision_scale_ = 1.0;  // 2^18 when !bottom_reachable_ (precision_floor)
+  // 2^18 when an initial edge is one that no double can give a good triangle (report_.hopeless_edges):
+  // then the coarse precision floor applies everywhere, as the bottom scale cannot meet the bound.
+  double precision_scale_ = 1.0;
   PageWarmer warmer_;  // last: its thread stops first
-  void find_hopeless_edges();
-  double precision_floor(const Point& p) const;  // precision_floor_at, or the coarse floor
 };
 
 }  // namespace deltri
