@@ -174,7 +174,7 @@ void QualityQueue::push_keyed(const QueuedTriangle& entry, unsigned tier, double
 
 const QueuedTriangle* QualityQueue::peek(std::size_t ahead) const {
   if (!heap_.empty() || nonempty_ == 0) return nullptr;
-  const Fifo& fifo = buckets_[63u - static_cast<unsigned>(std::countl_zero(nonempty_))];
+  const Fifo& fifo = buckets_[top_bucket()];
   std::uint32_t block = fifo.first;
   std::size_t at = fifo.head + ahead;
   while (at >= kBlock && block != fifo.last) {
@@ -210,11 +210,8 @@ std::optional<QueuedTriangle> QualityQueue::pop() {
     return entry;
   }
   if (nonempty_ == 0) return std::nullopt;
-  unsigned bucket = 63u - static_cast<unsigned>(std::countl_zero(nonempty_));
-  if (bucket == 1 && order_ == QueueOrder::Ratio) {
-    move_window();
-    bucket = 63u - static_cast<unsigned>(std::countl_zero(nonempty_));
-  }
+  if (top_bucket() == 1 && order_ == QueueOrder::Ratio) move_window();
+  const unsigned bucket = top_bucket();
   --size_;
   return take_front(bucket);
 }

@@ -40,6 +40,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -145,6 +146,8 @@ class QualityQueue {
     }
   };
   void note_push();
+  // The most urgent non-empty bucket (nonempty_ must not be 0): the mask's highest set bit.
+  unsigned top_bucket() const { return 63u - static_cast<unsigned>(std::countl_zero(nonempty_)); }
   void append(const QueuedTriangle& entry, unsigned bucket);  // push_to_bucket, not counted
   QueuedTriangle take_front(unsigned bucket);                 // the oldest entry of a non-empty bucket
   // The Ratio order's bucket for a mildly skinny triangle of edge level `level` in the current
