@@ -121,11 +121,13 @@ def reference_columns(reference, wall, tris):
     return f" {t_tris:,} | {t_wall:.3f} | {mib(t_rss)} | {speedup:.2f}x |"
 
 
-def reference_header(header, rule):
-    if not triangle:
-        return header, rule
-    return (header + " Triangle triangles | Triangle s | Triangle peak | throughput ratio |",
-            rule + "---|---|---|---|")
+def print_table_header(header, rule):
+    """The table's header and rule lines, with Triangle's columns when it runs alongside."""
+    if triangle:
+        header += " Triangle triangles | Triangle s | Triangle peak | throughput ratio |"
+        rule += "---|---|---|---|"
+    print(header)
+    print(rule)
 
 
 def mib(b):
@@ -135,10 +137,8 @@ def mib(b):
 def point_sets():
     sizes = [100_000, 1_000_000] if quick else [100_000, 1_000_000, 4_000_000]
     print("## Delaunay triangulation of point sets (`deltri -V pts.node`, writes .node and .ele)\n")
-    header, rule = reference_header("| points | kind | triangles | triangulation s | end to end s | peak | bytes/point | bytes/triangle |",
-                                    "|---|---|---|---|---|---|---|---|")
-    print(header)
-    print(rule)
+    print_table_header("| points | kind | triangles | triangulation s | end to end s | peak | bytes/point | bytes/triangle |",
+                       "|---|---|---|---|---|---|---|---|")
     for size in sizes:
         for kind in ("uniform", "gaussian", "grid", "clustered"):
             if only and only not in kind:
@@ -152,10 +152,8 @@ def point_sets():
 
 def pslgs():
     print("## PSLGs: unit square with k x k circular holes of 64 segments (`deltri -pV`)\n")
-    header, rule = reference_header("| holes | vertices and segments | switches | triangles | end to end s | peak | bytes/triangle |",
-                                    "|---|---|---|---|---|---|---|")
-    print(header)
-    print(rule)
+    print_table_header("| holes | vertices and segments | switches | triangles | end to end s | peak | bytes/triangle |",
+                       "|---|---|---|---|---|---|---|")
     for k, switches in ((45, "-p"), (100, "-p"), (45, "-pq30")):
         if only and only not in "holes":
             continue
@@ -168,10 +166,8 @@ def pslgs():
 
 def refinement():
     print("## Quality refinement on the unit square (`deltri -pq30a<A>V square.poly`)\n")
-    header, rule = reference_header("| switches | triangles | refinement s | end to end s | triangles/s | peak | bytes/triangle |",
-                                    "|---|---|---|---|---|---|---|")
-    print(header)
-    print(rule)
+    print_table_header("| switches | triangles | refinement s | end to end s | triangles/s | peak | bytes/triangle |",
+                       "|---|---|---|---|---|---|---|")
     areas = ["0.0000016"] if quick else ["0.0000016", "0.00000032"]
     for area in areas:
         if only and only not in "square":
