@@ -17,6 +17,22 @@ double step(double x, int k) {
   return x;
 }
 
+// The doubles within `radius` of x, x itself included, if there are at most `limit` on each side.
+bool doubles_within(double x, double radius, int limit, std::vector<double>& out) {
+  out.clear();
+  out.push_back(x);
+  for (const double towards : {-HUGE_VAL, HUGE_VAL}) {
+    double y = x;
+    for (int i = 0;; ++i) {
+      y = std::nextafter(y, towards);
+      if (!(std::fabs(y - x) <= radius)) break;
+      if (i == limit) return false;
+      out.push_back(y);
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 void lattice_neighbourhood(const Point& c, int steps, std::vector<Point>& out) {
@@ -41,26 +57,6 @@ double smallest_angle_sine2(const Point& a, const Point& b, const Point& c) {
   std::sort(l, l + 3);
   return twice_area * twice_area / (l[1] * l[2]);
 }
-
-namespace {
-
-// The doubles within `radius` of x, x itself included, if there are at most `limit` on each side.
-bool doubles_within(double x, double radius, int limit, std::vector<double>& out) {
-  out.clear();
-  out.push_back(x);
-  for (const double towards : {-HUGE_VAL, HUGE_VAL}) {
-    double y = x;
-    for (int i = 0;; ++i) {
-      y = std::nextafter(y, towards);
-      if (!(std::fabs(y - x) <= radius)) break;
-      if (i == limit) return false;
-      out.push_back(y);
-    }
-  }
-  return true;
-}
-
-}  // namespace
 
 bool hopeless_edge(const Point& p, const Point& q, double sin2_theta) {
   if (!(sin2_theta > 0.0)) return false;
