@@ -102,17 +102,20 @@ Point Terminator::bottom_scale_split(EdgeRef s, const Point& ideal, bool chew_pe
   return best;
 }
 
-void Terminator::find_hopeless_edges() {
-  if (!(rules_.sin2_theta > 0.0)) return;
-  for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {
-    if (mesh_.corner[e] == kNone) continue;
-    const VertexId a = mesh_.org(e), b = mesh_.dest(e);
-    if (a > b && mesh_.link[e] != kNone) continue;  // each interior edge once
-    const Point& pa = mesh_.point(a);
-    const Point& pb = mesh_.point(b);
-    if (at_bottom_scale(squared_distance(pa, pb), pa) && hopeless_edge(pa, pb, rules_.sin2_theta))
-      ++report_.hopeless_edges;
+std::uint64_t count_hopeless_edges(const Mesh& mesh, double sin2_theta) {
+  if (!(sin2_theta > 0.0)) return 0;
+  std::uint64_t count = 0;
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+    if (mesh.corner[e] == kNone) continue;
+    const VertexId a = mesh.org(e), b = mesh.dest(e);
+    if (a > b && mesh.link[e] != kNone) continue;  // each interior edge once
+    const Point& pa = mesh.point(a);
+    const Point& pb = mesh.point(b);
+    count += at_bottom_scale(squared_distance(pa, pb), pa) && hopeless_edge(pa, pb, sin2_theta);
   }
+  return count;
 }
+
+void Terminator::find_hopeless_edges() { report_.hopeless_edges = count_hopeless_edges(mesh_, rules_.sin2_theta); }
 
 }  // namespace deltri

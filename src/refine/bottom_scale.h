@@ -23,9 +23,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "geometry/constructions.h"
 #include "geometry/point.h"
+#include "mesh/mesh.h"
 
 namespace deltri {
 
@@ -42,5 +44,9 @@ inline bool at_bottom_scale(double length2, const Point& p) {
   const double bottom = ulps_at(magnitude(p), kBottomScaleUlps);
   return length2 < bottom * bottom;
 }
+
+// The edges of `mesh` at the bottom scale that no double can give a triangle with angles of at
+// least theta (sin2_theta = sin^2 theta; 0 counts none).
+std::uint64_t count_hopeless_edges(const Mesh& mesh, double sin2_theta);
 
 }  // namespace deltri

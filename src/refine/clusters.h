@@ -15,6 +15,7 @@ namespace deltri {
 // subsegments. Only these carry concentric shells and clusters; refinement never adds one.
 class SegmentApices {
  public:
+  SegmentApices() = default;
   explicit SegmentApices(const Mesh& mesh);
   bool is_apex(VertexId v) const { return v < apex_.size() && apex_[v]; }
 

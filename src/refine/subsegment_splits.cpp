@@ -196,6 +196,7 @@ bool Terminator::is_splittable(EdgeRef e) const {
   if (opt_.no_steiner_on_segments >= 2) return false;
   if (opt_.no_steiner_on_segments == 1 && mesh_.link[e] == kNone) return false;
   const SubsegmentId id = mesh_.subseg[e];
+  if (id == kSeamEdge) return false;
   return id >= locked_.size() || !locked_[id];
 }
 

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <new>
 #include <numbers>
+#include <system_error>
+#include <thread>
+#include <utility>
 
 #include "geometry/box.h"
 #include "geometry/constructions.h"
@@ -107,7 +110,19 @@ EncroachRule rule_for(const RefineOptions& opt) {
 
 }  // namespace
 
+TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) {
+  TerminatorStart start;
+  start.guard_floor = guard_floor_of(mesh, opt);
+  start.steiner_cap = deltri::steiner_cap(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
+  start.pieces = SegmentPieces(mesh);
+  start.apices = SegmentApices(mesh);
+  return start;
+}
+
 Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
+    : Terminator(mesh, pred, opt, TerminatorStart::of(mesh, opt)) {}
+
+Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, TerminatorStart start)
     : mesh_(mesh),
       pred_(pred),
       opt_(opt),
@@ -115,18 +130,22 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
                                 opt.use_triangle_area_bounds, opt.max_edge_length)),
       rule_(rule_for(opt)),
       off_constant_(off_center_constant(opt.quality ? opt.min_angle_deg : 0.0, opt.off_centers)),
-      guard_floor_(guard_floor_of(mesh, opt)),
-      steiner_cap_(steiner_cap(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length})),
-      pieces_(mesh),
-      apices_(mesh),
+      guard_floor_(start.guard_floor),
+      steiner_cap_(start.steiner_cap),
+      pieces_(std::move(start.pieces)),
+      apices_(std::move(start.apices)),
       finder_(mesh),
       extent_(extent_of(mesh)),
       bad_triangles_(opt.queue_order, squared_diameter(extent_)),
+      locked_(std::move(start.locked)),
       warmer_(opt.threads > 1) {
   report_.guard_length = guard_floor_;
   const bool size_bounds = opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0;
   bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
-  if (bottom_possible_) find_hopeless_edges();
+  if (bottom_possible_) {
+    if (start.hopeless_edges >= 0) report_.hopeless_edges = static_cast<std::uint64_t>(start.hopeless_edges);
+    else find_hopeless_edges();
+  }
   if (report_.hopeless_edges > 0) precision_scale_ = std::ldexp(1.0, kPrecisionOctaves - kCoarsePrecisionOctaves);
   report_.steiner_cap = steiner_cap_;
 }
@@ -154,6 +173,18 @@ void Terminator::refuse_by_guard() {
 
 // Fig. 38, DELAUNAYTERMINATOR; l.1-2 (the CDT, exterior removed) are the caller's.
 RefineReport Terminator::run() {
+  refine_all();
+  return finish();
+}
+
+void Terminator::refine_all() {
+  split_initial_encroachments();
+  for (TriangleId t = 0; t < mesh_.triangle_slots(); ++t)  // Fig. 38 l.7-9
+    if (mesh_.is_live(t)) enqueue_if_bad(t);
+  drain_queue();
+}
+
+void Terminator::split_initial_encroachments() {
   marks_.reserve(reserve_for_refinement(mesh_, opt_));
   if (mesh_.has_subsegments()) {
     for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {  // Fig. 38 l.3-5
@@ -163,17 +194,47 @@ RefineReport Terminator::run() {
     }
     split_encroached_subsegments(false);  // Fig. 38 l.6
   }
-  for (TriangleId t = 0; t < mesh_.triangle_slots(); ++t)  // Fig. 38 l.7-9
-    if (mesh_.is_live(t)) enqueue_if_bad(t);
+}
+
+// Triangles split on the way are queued as they are made (queue_triangles), as after l.10 starts.
+void Terminator::refine_around(std::span<const TriangleId> triangles) {
+  marks_.reserve(mesh_.triangle_slots());
+  for (TriangleId t : triangles) {
+    if (t >= mesh_.triangle_slots() || !mesh_.is_live(t)) continue;
+    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e)
+      if (mesh_.subseg[e] != kNone && is_splittable(e) && is_encroached(mesh_, pred_, e, rule_))
+        enqueue_subsegment(e);
+  }
+  split_encroached_subsegments(true);
+  for (TriangleId t : triangles)
+    if (t < mesh_.triangle_slots() && mesh_.is_live(t)) enqueue_if_bad(t);
+  drain_queue();
+}
+
+void Terminator::drain_queue() {
   for (unsigned pops = 0; !bad_triangles_.empty(); ++pops) {  // Fig. 38 l.10
     if (pops % kWarmInterval == 0) warm_pages();
     prefetch_queued();
     const QueuedTriangle entry = *bad_triangles_.pop();  // Fig. 38 l.11
-    if (is_current(mesh_, entry)) split_bad_triangle(entry);  // Fig. 38 l.12
+    if (!is_current(mesh_, entry)) continue;
+    split_bad_triangle(entry);  // Fig. 38 l.12
+    if (track_unsplit_ && is_current(mesh_, entry)) unsplit_.push_back(entry.triangle);
   }
-  report_.peak_queue = bad_triangles_.peak_size();
+  report_.peak_queue = std::max(report_.peak_queue, bad_triangles_.peak_size());
+}
+
+RefineReport Terminator::finish() {
   survey_remaining();
   return report_;
+}
+
+// A bad triangle stays bad only where its turn came and it was not split (a guard refusal, or a
+// Steiner point it could not have), or where the subsegments at its small angle exempt it.
+std::vector<TriangleId> Terminator::unsplit_triangles() && { return std::move(unsplit_); }
+
+TerminatorStart Terminator::hand_over() && {
+  return {guard_floor_, steiner_cap_, std::move(pieces_), std::move(apices_), std::move(locked_),
+          static_cast<std::int64_t>(report_.hopeless_edges)};
 }
 
 void Terminator::warm_pages() {
@@ -374,29 +435,63 @@ void Terminator::drop_last_vertex() {
   if (mesh_.num_attributes > 0) mesh_.attributes.resize(mesh_.attributes.size() - mesh_.num_attributes);
 }
 
-void Terminator::survey_remaining() {
+// The closing survey of slots [from, to) into `into`, whose survey fields start at zero.
+void Terminator::survey(TriangleId from, TriangleId to, RefineReport& into) const {
   const double sin_theta = std::sqrt(rules_.sin2_theta);
-  for (TriangleId t = 0; t < mesh_.triangle_slots(); ++t) {
+  for (TriangleId t = from; t < to; ++t) {
     if (!mesh_.is_live(t)) continue;
     const Assessment a = assess(t);
     if (!a.bad()) continue;
-    ++report_.bad_triangles_left;
+    ++into.bad_triangles_left;
     if (a.too_large) {
-      ++report_.oversized_left;
+      ++into.oversized_left;
       const double excess = size_excess(mesh_, t, a.shape, rules_);
-      if (excess > report_.worst_size_excess) {
-        report_.worst_size_excess = excess;
-        report_.worst_size_location = centroid_of(t);
+      if (excess > into.worst_size_excess) {
+        into.worst_size_excess = excess;
+        into.worst_size_location = centroid_of(t);
       }
     }
     if (!a.skinny) continue;
-    ++report_.skinny_left;
+    ++into.skinny_left;
     // r / l = sqrt(q) B with B = 1 / (2 sin theta).
     const double ratio = std::sqrt(a.shape.ratio2_over_bound2) / (2.0 * sin_theta);
-    if (ratio < report_.worst_ratio) continue;
-    report_.worst_ratio = ratio;
-    report_.worst_min_angle_deg = std::asin(std::min(1.0, 1.0 / (2.0 * ratio))) * 180.0 / std::numbers::pi;
-    report_.worst_location = centroid_of(t);
+    if (ratio < into.worst_ratio) continue;
+    into.worst_ratio = ratio;
+    into.worst_min_angle_deg = std::asin(std::min(1.0, 1.0 / (2.0 * ratio))) * 180.0 / std::numbers::pi;
+    into.worst_location = centroid_of(t);
+  }
+}
+
+// Assessing every triangle is about 4% of a large run: with a second thread, each takes half of
+// the slots, and the upper half's findings are merged as a scan of all would have found them (the
+// last of equally skinny triangles, the first of equally oversized ones).
+void Terminator::survey_remaining() {
+  const TriangleId slots = mesh_.triangle_slots();
+  if (opt_.threads < 2 || slots < kParallelSurveySlots) {
+    survey(0, slots, report_);
+    return;
+  }
+  const TriangleId middle = slots / 2;
+  RefineReport upper;
+  std::thread worker;
+  try {
+    worker = std::thread([&] { survey(middle, slots, upper); });
+  } catch (const std::system_error&) {
+  }
+  survey(0, middle, report_);
+  if (worker.joinable()) worker.join();
+  else survey(middle, slots, upper);
+  report_.bad_triangles_left += upper.bad_triangles_left;
+  report_.oversized_left += upper.oversized_left;
+  report_.skinny_left += upper.skinny_left;
+  if (upper.worst_size_excess > report_.worst_size_excess) {
+    report_.worst_size_excess = upper.worst_size_excess;
+    report_.worst_size_location = upper.worst_size_location;
+  }
+  if (upper.skinny_left > 0 && upper.worst_ratio >= report_.worst_ratio) {
+    report_.worst_ratio = upper.worst_ratio;
+    report_.worst_min_angle_deg = upper.worst_min_angle_deg;
+    report_.worst_location = upper.worst_location;
   }
 }
 

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "geometry/box.h"
@@ -26,10 +27,48 @@
 
 namespace deltri {
 
+// The subsegment id of a seam edge (refine/halves.h): an edge that refinement treats as a
+// subsegment it may neither split nor cross, and which has no subsegment record.
+inline constexpr SubsegmentId kSeamEdge = kNone - 1;
+
+// What a Terminator takes from the initial mesh: the guard's edge floor and Steiner cap, the
+// segment pieces, and the subsegments to leave whole. of() derives them; refine/halves.cpp computes
+// them once on the whole mesh, hands them to the Terminators of its two halves, and hands theirs
+// on to the one that refines the seam.
+struct TerminatorStart {
+  double guard_floor = 0.0;
+  std::uint64_t steiner_cap = 0;
+  SegmentPieces pieces;
+  SegmentApices apices;
+  std::vector<char> locked;  // by subsegment record
+  // The initial edges no double can give a good triangle (report.hopeless_edges), or -1 to count
+  // them on the mesh when the bottom scale is within reach.
+  std::int64_t hopeless_edges = -1;
+  static TerminatorStart of(const Mesh& mesh, const RefineOptions& opt);
+};
+
 class Terminator {
  public:
   Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt);
-  RefineReport run();
+  Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, TerminatorStart start);
+  RefineReport run();  // refine_all, then finish
+
+  // Fig. 38 l.3-10 on the whole mesh: split_initial_encroachments (l.3-6), then the bad triangles.
+  void refine_all();
+  void split_initial_encroachments();
+  // Fig. 38 l.3-10 with Q_s and Q_t filled from `triangles` and their subsegments only: the rest of
+  // the mesh is known to meet the bounds (refine/halves.cpp).
+  void refine_around(std::span<const TriangleId> triangles);
+  // The closing survey of the triangles still bad.
+  RefineReport finish();
+  // The counts so far, without the closing survey.
+  const RefineReport& report() const { return report_; }
+  // With track_unsplit(), before refining: the triangles whose turn came and which were left as
+  // they were (some may have been split or replaced since).
+  void track_unsplit() { track_unsplit_ = true; }
+  std::vector<TriangleId> unsplit_triangles() &&;
+  // The segment pieces and locked subsegments so far, for a Terminator that goes on from here.
+  TerminatorStart hand_over() &&;
 
  private:
   // Fig. 38 l.11-25: one bad triangle from Q_t.
@@ -55,6 +94,8 @@ class Terminator {
   // Fig. 39 l.50-55; `out` leaves the new vertex.
   void new_vertex(EdgeRef out, bool queue_triangles);
 
+  // Fig. 38 l.10-12: serve Q_t until it is empty.
+  void drain_queue();
   void prefetch_queued() const;
   static constexpr std::size_t kPrefetchDistance = 8;  // queue entries ahead
   // Tells the page warmer how far the mesh arrays are used (every kWarmInterval pops).
@@ -76,6 +117,8 @@ class Terminator {
   double floor_at(const Point& p) const;  // the guard's edge floor where p lies
   double floor_for(const Assessment& a, const Point& p) const;  // the floor for splitting that triangle
   void survey_remaining();
+  void survey(TriangleId from, TriangleId to, RefineReport& into) const;
+  static constexpr TriangleId kParallelSurveySlots = 100000;
   // At the bottom scale (bottom_scale.h): the double near `ideal` whose insertion makes the best
   // triangles, if they beat the worst one it destroys; t must be among those.
   std::optional<Point> bottom_scale_point(TriangleId t, const Point& ideal, const Assessment& a);
@@ -108,6 +151,8 @@ class Terminator {
   // 2^18 when an initial edge is one that no double can give a good triangle (report_.hopeless_edges):
   // then the coarse precision floor applies everywhere, as the bottom scale cannot meet the bound.
   double precision_scale_ = 1.0;
+  bool track_unsplit_ = false;
+  std::vector<TriangleId> unsplit_;
   PageWarmer warmer_;  // last: its thread stops first
 };
 

@@ -1,0 +1,378 @@
+#include "refine/halves.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <numbers>
+#include <stdexcept>
+#include <system_error>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "geometry/box.h"
+#include "mesh/operations.h"
+#include "refine/bottom_scale.h"
+#include "refine/termination_guard.h"
+#include "refine/terminator.h"
+
+namespace deltri {
+namespace {
+
+constexpr std::uint8_t kLeft = 0, kRight = 1, kDeadSlot = 2;
+
+double sin2_theta_of(const RefineOptions& opt) {
+  if (!opt.quality) return 0.0;
+  const double s = std::sin(opt.min_angle_deg * std::numbers::pi / 180.0);
+  return s * s;
+}
+
+// Each triangle slot's side of the cut, a line across the longer side of the bounding box at the
+// median of the live triangles' centroids along it, so that both halves start with as many
+// triangles; empty when one side would be nearly empty (many centroids on the median).
+std::vector<std::uint8_t> cut_in_two(const Mesh& mesh) {
+  Box box;
+  for (const Point& p : mesh.points)
+    if (std::isfinite(p.x) && std::isfinite(p.y)) box.add(p);
+  const bool along_x = box.width() >= box.height();
+  std::vector<double> key(mesh.triangle_slots(), 0.0);
+  std::vector<double> keys;
+  keys.reserve(mesh.live_triangles());
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) key[t] += along_x ? mesh.point(mesh.corner[e]).x : mesh.point(mesh.corner[e]).y;
+    keys.push_back(key[t]);
+  }
+  const auto middle = keys.begin() + static_cast<std::ptrdiff_t>(keys.size() / 2);
+  std::nth_element(keys.begin(), middle, keys.end());
+  const double median = *middle;
+  std::vector<std::uint8_t> side(mesh.triangle_slots(), kDeadSlot);
+  std::size_t left = 0;
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+    if (mesh.is_live(t)) left += (side[t] = key[t] < median ? kLeft : kRight) == kLeft;
+  if (4 * left < keys.size() || 4 * (keys.size() - left) < keys.size()) return {};
+  return side;
+}
+
+// What the cut leaves: the right half in a mesh of its own, which keeps every vertex and
+// subsegment record of the whole so that their ids stay the same, and which records the right
+// half owns (so that its splits of them are the ones kept) and which lie on the seam.
+struct Cut {
+  Mesh right;
+  std::vector<char> right_records;
+  std::vector<char> seam_records;
+};
+
+// Moves the right side's triangles into cut.right and marks the seam on both sides: seam edges
+// without a subsegment get kSeamEdge, the others keep their record, which both halves lock.
+Cut cut_off_right(Mesh& mesh, const std::vector<std::uint8_t>& side) {
+  Cut cut;
+  Mesh& r = cut.right;
+  r.points = mesh.points;
+  r.kind = mesh.kind;
+  r.marker = mesh.marker;
+  r.num_attributes = mesh.num_attributes;
+  r.attributes = mesh.attributes;
+  r.num_triangle_attributes = mesh.num_triangle_attributes;
+  r.subsegments = mesh.subsegments;
+  cut.right_records.assign(mesh.subsegments.size(), 0);
+  cut.seam_records.assign(mesh.subsegments.size(), 0);
+  std::vector<TriangleId> slot(mesh.triangle_slots(), kNone);
+  TriangleId n = 0;
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+    if (side[t] == kRight) slot[t] = n++;
+  r.corner.resize(3 * static_cast<std::size_t>(n));
+  r.link.resize(r.corner.size());
+  r.subseg.resize(r.corner.size());
+  const std::size_t na = static_cast<std::size_t>(mesh.num_triangle_attributes);
+  r.triangle_attributes.resize(n * na);
+  if (!mesh.area_bound.empty()) r.area_bound.resize(n);
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (side[t] != kRight) continue;
+    for (unsigned i = 0; i < 3; ++i) {
+      const EdgeRef e = 3 * t + i, f = 3 * slot[t] + i;
+      const EdgeRef twin = mesh.link[e];
+      const bool seam = twin != kNone && side[triangle_of(twin)] == kLeft;
+      r.corner[f] = mesh.corner[e];
+      r.link[f] = twin == kNone || seam ? kNone : 3 * slot[triangle_of(twin)] + twin % 3;
+      SubsegmentId s = mesh.subseg[e];
+      if (s != kNone) (seam ? cut.seam_records : cut.right_records)[s] = 1;
+      if (seam && s == kNone) mesh.subseg[twin] = s = kSeamEdge;
+      r.subseg[f] = s;
+    }
+    std::copy_n(mesh.triangle_attributes.begin() + static_cast<std::ptrdiff_t>(t * na), na,
+                r.triangle_attributes.begin() + static_cast<std::ptrdiff_t>(slot[t] * na));
+    if (!mesh.area_bound.empty()) r.area_bound[slot[t]] = mesh.area_bound[t];
+  }
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+    if (side[t] == kRight) mesh.kill_triangle(t);  // unlinks the left's seam edges
+  return cut;
+}
+
+// Where the right half's ids land in the joined mesh: its vertices from v0 on and its records
+// from s0 on (the ones refinement added) follow the left's, and its triangle slots follow the
+// left's slots.
+struct RightIds {
+  VertexId v0, vertex_base;
+  SubsegmentId s0, record_base;
+  TriangleId triangle_base;
+  VertexId vertex(VertexId v) const { return v == kNone || v < v0 ? v : vertex_base + (v - v0); }
+  SubsegmentId record(SubsegmentId s) const {
+    return s == kNone || s == kSeamEdge || s < s0 ? s : record_base + (s - s0);
+  }
+  EdgeRef edge(EdgeRef e) const { return e == kNone ? kNone : 3 * triangle_base + e; }
+};
+
+void append_vertices(Mesh& l, const Mesh& r, const RightIds& ids) {
+  const std::size_t na = static_cast<std::size_t>(r.num_attributes);
+  for (VertexId v = ids.v0; v < r.vertex_count(); ++v) {
+    l.points.push_back(r.points[v]);
+    l.kind.push_back(r.kind[v]);
+    if (!r.marker.empty()) l.marker.push_back(r.marker[v]);
+  }
+  l.attributes.insert(l.attributes.end(), r.attributes.begin() + static_cast<std::ptrdiff_t>(ids.v0 * na),
+                      r.attributes.end());
+}
+
+void append_records(Mesh& l, const Mesh& r, const RightIds& ids, const std::vector<char>& right_records) {
+  const auto moved = [&](Subsegment s) {
+    s.a = ids.vertex(s.a);
+    s.b = ids.vertex(s.b);
+    return s;
+  };
+  for (SubsegmentId s = 0; s < ids.s0; ++s)
+    if (right_records[s]) l.subsegments[s] = moved(r.subsegments[s]);
+  for (SubsegmentId s = ids.s0; s < r.subsegments.size(); ++s) l.subsegments.push_back(moved(r.subsegments[s]));
+}
+
+void append_triangles(Mesh& l, const Mesh& r, const RightIds& ids) {
+  for (EdgeRef e = 0; e < r.corner.size(); ++e) {
+    l.corner.push_back(ids.vertex(r.corner[e]));
+    l.link.push_back(ids.edge(r.link[e]));
+    l.subseg.push_back(ids.record(r.subseg[e]));
+  }
+  l.triangle_attributes.insert(l.triangle_attributes.end(), r.triangle_attributes.begin(), r.triangle_attributes.end());
+  l.area_bound.insert(l.area_bound.end(), r.area_bound.begin(), r.area_bound.end());
+  for (TriangleId t : r.free_triangles) l.free_triangles.push_back(ids.triangle_base + t);
+}
+
+// Bonds the seam edges of the two halves (each still a boundary edge on its side) and takes the
+// seam marks off them; returns them, on the left side.
+std::vector<EdgeRef> sew_seam(Mesh& mesh, const RightIds& ids, const std::vector<char>& seam_records) {
+  struct Side {
+    std::uint64_t key;
+    EdgeRef edge;
+    bool operator<(const Side& o) const { return key < o.key; }
+  };
+  std::vector<Side> left, right;
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+    if (mesh.link[e] != kNone || mesh.corner[e] == kNone) continue;
+    const SubsegmentId s = mesh.subseg[e];
+    if (s != kSeamEdge && (s >= seam_records.size() || !seam_records[s])) continue;
+    const bool on_left = e < 3 * ids.triangle_base;
+    // Keyed by the left's orientation of the edge.
+    const VertexId a = on_left ? mesh.org(e) : mesh.dest(e), b = on_left ? mesh.dest(e) : mesh.org(e);
+    (on_left ? left : right).push_back({static_cast<std::uint64_t>(a) << 32 | b, e});
+  }
+  std::sort(left.begin(), left.end());
+  std::sort(right.begin(), right.end());
+  if (left.size() != right.size()) throw std::logic_error("the halves' seams do not match");
+  std::vector<EdgeRef> seam;
+  seam.reserve(left.size());
+  for (std::size_t k = 0; k < left.size(); ++k) {
+    if (left[k].key != right[k].key) throw std::logic_error("the halves' seams do not match");
+    const EdgeRef e = left[k].edge, f = right[k].edge;
+    mesh.bond(e, f);
+    if (mesh.subseg[e] == kSeamEdge) mesh.subseg[e] = mesh.subseg[f] = kNone;
+    seam.push_back(e);
+  }
+  return seam;
+}
+
+// Lawson's flips from the seam edges until every edge is locally Delaunay. Each half is
+// constrained Delaunay, so only the seam edges, and the sides of the quadrilaterals flipped, can
+// fail the test. The triangles the flips make go to `touched`.
+void flip_seam(Mesh& mesh, Predicates& pred, std::vector<EdgeRef> stack, std::vector<TriangleId>& touched) {
+  while (!stack.empty()) {
+    const EdgeRef e = stack.back();
+    stack.pop_back();
+    const EdgeRef twin = mesh.link[e];
+    if (twin == kNone || mesh.subseg[e] != kNone) continue;
+    if (pred.incircle(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e)), mesh.point(mesh.apex(e)),
+                      mesh.point(mesh.apex(twin))) <= 0)
+      continue;
+    const EdgeRef g = flip(mesh, e);  // a quadrilateral with a non-Delaunay diagonal is convex
+    const EdgeRef h = mesh.link[g];
+    touched.push_back(triangle_of(g));
+    touched.push_back(triangle_of(h));
+    for (EdgeRef x : {lnext(g), lprev(g), lnext(h), lprev(h)}) stack.push_back(x);
+  }
+}
+
+// The seam's Terminator goes on from both halves' segment pieces and locks, in the joined ids;
+// the seam's own records are free again.
+TerminatorStart join_starts(TerminatorStart left, const TerminatorStart& right, const std::vector<char>& whole_locked,
+                            const Mesh& joined, const RightIds& ids, const Cut& cut) {
+  TerminatorStart start = std::move(left);
+  SegmentPieces& pieces = start.pieces;
+  pieces.of_vertex.resize(joined.vertex_count(), {kNone, kNone});
+  for (VertexId v = ids.v0; v < right.pieces.of_vertex.size(); ++v)
+    pieces.of_vertex[ids.vertex(v)] = right.pieces.of_vertex[v];
+  pieces.of_subsegment.resize(ids.record_base, {kNone, kNone});
+  for (SubsegmentId s = ids.s0; s < right.pieces.of_subsegment.size(); ++s)
+    pieces.of_subsegment.push_back(right.pieces.of_subsegment[s]);
+  pieces.of_subsegment.resize(joined.subsegments.size(), {kNone, kNone});
+  std::vector<char>& locked = start.locked;
+  locked.resize(joined.subsegments.size(), 0);
+  const auto locked_right = [&](SubsegmentId s) { return s < right.locked.size() && right.locked[s]; };
+  for (SubsegmentId s = 0; s < ids.s0; ++s) {
+    if (cut.right_records[s]) locked[s] = locked_right(s);
+    if (cut.seam_records[s]) locked[s] = s < whole_locked.size() && whole_locked[s];
+  }
+  for (SubsegmentId s = ids.s0; s < joined.subsegments.size() - ids.record_base + ids.s0; ++s)
+    locked[ids.record(s)] = locked_right(s);
+  return start;
+}
+
+void add_counts(RefineReport& to, const RefineReport& from) {
+  to.interior_steiner += from.interior_steiner;
+  to.segment_steiner += from.segment_steiner;
+  to.vertices_deleted += from.vertices_deleted;
+  to.encroached_splits += from.encroached_splits;
+  to.rejected_candidates += from.rejected_candidates;
+  to.declined_splits += from.declined_splits;
+  to.guard_refusals += from.guard_refusals;
+  to.locked_subsegments += from.locked_subsegments;
+  to.bottom_scale_searches += from.bottom_scale_searches;
+  to.bottom_scale_refusals += from.bottom_scale_refusals;
+  to.stopped_by_guard = to.stopped_by_guard || from.stopped_by_guard;
+  to.stopped_by_max_steiner = to.stopped_by_max_steiner || from.stopped_by_max_steiner;
+  to.stopped_by_cap = to.stopped_by_cap || from.stopped_by_cap;
+}
+
+// One half's refinement: its Terminator runs Fig. 38 to the end, and leaves what the seam's
+// Terminator needs from it.
+struct HalfResult {
+  RefineReport report;
+  std::vector<TriangleId> bad;
+  TerminatorStart end;
+};
+
+HalfResult refine_half(Mesh& mesh, Predicates& pred, const RefineOptions& opt, TerminatorStart start) {
+  Terminator terminator(mesh, pred, opt, std::move(start));
+  terminator.track_unsplit();
+  terminator.refine_all();
+  HalfResult result{terminator.report(), std::move(terminator).unsplit_triangles(), {}};
+  result.end = std::move(terminator).hand_over();  // unsplit_triangles took only its list
+  return result;
+}
+
+}  // namespace
+
+bool halves_apply(const Mesh& mesh, const RefineOptions& opt) {
+  if (opt.threads < 2 || !mesh.has_subsegments()) return false;
+  const bool bounded = opt.quality || opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0;
+  if (!bounded || opt.max_steiner >= 0 || opt.no_steiner_on_segments != 0 || opt.conforming_delaunay ||
+      opt.decline_cluster_splits || opt.queue_order != QueueOrder::Ratio)
+    return false;
+  if (opt.quality && opt.min_angle_deg > kCascadeAngleDeg) return false;
+  if (mesh.live_triangles() < kHalvesMinTriangles) return false;
+  return count_hopeless_edges(mesh, sin2_theta_of(opt)) == 0;
+}
+
+RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
+  RefineOptions one_thread = opt;
+  one_thread.threads = 1;
+  // The subsegments the initial mesh encroaches upon are split first, on the whole mesh (Fig. 38
+  // l.3-6): the long boundary segments of a fresh triangulation make long thin triangles, which
+  // would put long edges in the seam, and the halves could not refine near them.
+  TerminatorStart whole = TerminatorStart::of(mesh, opt);
+  whole.hopeless_edges = 0;  // halves_apply
+  RefineReport initial;
+  {
+    Terminator terminator(mesh, pred, one_thread, std::move(whole));
+    terminator.split_initial_encroachments();
+    initial = terminator.report();
+    whole = std::move(terminator).hand_over();
+  }
+  const std::vector<std::uint8_t> side = cut_in_two(mesh);
+  if (side.empty()) {
+    RefineReport report = Terminator(mesh, pred, opt, std::move(whole)).run();
+    add_counts(report, initial);
+    return report;
+  }
+
+  const VertexId v0 = mesh.vertex_count();
+  const SubsegmentId s0 = static_cast<SubsegmentId>(mesh.subsegments.size());
+  Cut cut = cut_off_right(mesh, side);
+  const auto half_start = [&] {
+    TerminatorStart start{whole.guard_floor, whole.steiner_cap / 2, whole.pieces, whole.apices, whole.locked, 0};
+    start.locked.resize(s0, 0);
+    for (SubsegmentId s = 0; s < s0; ++s) start.locked[s] |= cut.seam_records[s];
+    return start;
+  };
+  TerminatorStart left_start = half_start(), right_start = half_start();
+
+  // The right half on a thread of its own (or after the left when there is none to be had).
+  Predicates right_pred;
+  HalfResult right;
+  std::exception_ptr right_failure;
+  const auto refine_right = [&] {
+    try {
+      right = refine_half(cut.right, right_pred, one_thread, std::move(right_start));
+    } catch (...) {
+      right_failure = std::current_exception();
+    }
+  };
+  std::thread worker;
+  try {
+    worker = std::thread(refine_right);
+  } catch (const std::system_error&) {
+  }
+  HalfResult left;
+  try {
+    left = refine_half(mesh, pred, one_thread, std::move(left_start));
+  } catch (...) {
+    if (worker.joinable()) worker.join();
+    throw;
+  }
+  if (worker.joinable()) worker.join();
+  else refine_right();
+  if (right_failure) std::rethrow_exception(right_failure);
+  pred.counters.add(right_pred.counters);
+
+  const RightIds ids{v0, mesh.vertex_count(), s0, static_cast<SubsegmentId>(mesh.subsegments.size()),
+                     mesh.triangle_slots()};
+  append_vertices(mesh, cut.right, ids);
+  append_records(mesh, cut.right, ids, cut.right_records);
+  append_triangles(mesh, cut.right, ids);
+  cut.right = Mesh{};
+  const std::vector<EdgeRef> seam = sew_seam(mesh, ids, cut.seam_records);
+
+  std::vector<TriangleId> seeds = std::move(left.bad);
+  for (TriangleId t : right.bad) seeds.push_back(ids.triangle_base + t);
+  for (EdgeRef e : seam) {
+    seeds.push_back(triangle_of(e));
+    seeds.push_back(triangle_of(mesh.link[e]));
+  }
+  flip_seam(mesh, pred, seam, seeds);
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+
+  TerminatorStart seam_start = join_starts(std::move(left.end), right.end, whole.locked, mesh, ids, cut);
+  const std::uint64_t used = initial.segment_steiner + left.report.interior_steiner + left.report.segment_steiner +
+                             right.report.interior_steiner + right.report.segment_steiner;
+  seam_start.steiner_cap = whole.steiner_cap > used ? whole.steiner_cap - used : 0;
+  seam_start.apices = std::move(whole.apices);
+  Terminator seam_terminator(mesh, pred, opt, std::move(seam_start));
+  seam_terminator.refine_around(seeds);
+  RefineReport report = seam_terminator.finish();
+  add_counts(report, left.report);
+  add_counts(report, right.report);
+  add_counts(report, initial);
+  report.steiner_cap = whole.steiner_cap;
+  report.peak_queue = std::max(report.peak_queue, left.report.peak_queue + right.report.peak_queue);
+  return report;
+}
+
+}  // namespace deltri
