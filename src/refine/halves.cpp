@@ -2,11 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <numbers>
 #include <stdexcept>
-#include <system_error>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -15,6 +12,7 @@
 #include "refine/bottom_scale.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"
+#include "util/run_both.h"
 
 namespace deltri {
 namespace {
@@ -145,12 +143,18 @@ void append_records(Mesh& l, const Mesh& r, const RightIds& ids, const std::vect
   for (SubsegmentId s = ids.s0; s < r.subsegments.size(); ++s) l.subsegments.push_back(moved(r.subsegments[s]));
 }
 
-void append_triangles(Mesh& l, const Mesh& r, const RightIds& ids) {
-  for (EdgeRef e = 0; e < r.corner.size(); ++e) {
-    l.corner.push_back(ids.vertex(r.corner[e]));
-    l.link.push_back(ids.edge(r.link[e]));
-    l.subseg.push_back(ids.record(r.subseg[e]));
-  }
+// The appends fault in fresh pages, most of their cost: the links and vertices on a second
+// thread, the corners and subsegments on this one.
+void append_right(Mesh& l, const Mesh& r, const RightIds& ids) {
+  const auto links_and_vertices = [&] {
+    for (EdgeRef e : r.link) l.link.push_back(ids.edge(e));
+    append_vertices(l, r, ids);
+  };
+  const auto corners_and_subsegments = [&] {
+    for (VertexId v : r.corner) l.corner.push_back(ids.vertex(v));
+    for (SubsegmentId s : r.subseg) l.subseg.push_back(ids.record(s));
+  };
+  run_both(links_and_vertices, corners_and_subsegments);
   l.triangle_attributes.insert(l.triangle_attributes.end(), r.triangle_attributes.begin(), r.triangle_attributes.end());
   l.area_bound.insert(l.area_bound.end(), r.area_bound.begin(), r.area_bound.end());
   for (TriangleId t : r.free_triangles) l.free_triangles.push_back(ids.triangle_base + t);
@@ -267,6 +271,53 @@ HalfResult refine_half(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
   return result;
 }
 
+// The whole mesh's start once the subsegments the initial mesh encroaches upon are split, on the
+// whole mesh (Fig. 38 l.3-6): the long boundary segments of a fresh triangulation make long thin
+// triangles, which would put long edges into the seam, and the halves could not refine near them.
+TerminatorStart split_initial_encroachments(Mesh& mesh, Predicates& pred, const RefineOptions& opt,
+                                            RefineReport& counts) {
+  TerminatorStart start = TerminatorStart::of(mesh, opt);
+  start.hopeless_edges = 0;  // halves_apply
+  RefineOptions one_thread = opt;
+  one_thread.threads = 1;
+  Terminator terminator(mesh, pred, one_thread, std::move(start));
+  terminator.split_initial_encroachments();
+  counts = terminator.report();
+  return std::move(terminator).hand_over();
+}
+
+// Both halves at once, the right on a thread of its own. Each gets half the Steiner cap and locks
+// the subsegments on the seam.
+void refine_both(Mesh& mesh, Cut& cut, Predicates& pred, const RefineOptions& one_thread, TerminatorStart whole,
+                 HalfResult& left, HalfResult& right) {
+  whole.steiner_cap /= 2;
+  whole.locked.resize(cut.seam_records.size(), 0);
+  for (SubsegmentId s = 0; s < cut.seam_records.size(); ++s) whole.locked[s] |= cut.seam_records[s];
+  TerminatorStart left_start = whole;
+  Predicates right_pred;
+  run_both([&] { right = refine_half(cut.right, right_pred, one_thread, std::move(whole)); },
+           [&] { left = refine_half(mesh, pred, one_thread, std::move(left_start)); });
+  pred.counters.add(right_pred.counters);
+}
+
+// Sews the seam and flips it Delaunay; returns what the seam's Terminator starts from: the
+// triangles the halves left unsplit, those on the seam and those the flips made.
+std::vector<TriangleId> sew_and_flip(Mesh& mesh, Predicates& pred, const RightIds& ids, const Cut& cut,
+                                     const std::vector<TriangleId>& left_unsplit,
+                                     const std::vector<TriangleId>& right_unsplit) {
+  const std::vector<EdgeRef> seam = sew_seam(mesh, ids, cut.seam_records);
+  std::vector<TriangleId> seeds = left_unsplit;
+  for (TriangleId t : right_unsplit) seeds.push_back(ids.triangle_base + t);
+  for (EdgeRef e : seam) {
+    seeds.push_back(triangle_of(e));
+    seeds.push_back(triangle_of(mesh.link[e]));
+  }
+  flip_seam(mesh, pred, seam, seeds);
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+  return seeds;
+}
+
 }  // namespace
 
 bool halves_apply(const Mesh& mesh, const RefineOptions& opt) {
@@ -283,94 +334,38 @@ bool halves_apply(const Mesh& mesh, const RefineOptions& opt) {
 RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
   RefineOptions one_thread = opt;
   one_thread.threads = 1;
-  // The subsegments the initial mesh encroaches upon are split first, on the whole mesh (Fig. 38
-  // l.3-6): the long boundary segments of a fresh triangulation make long thin triangles, which
-  // would put long edges in the seam, and the halves could not refine near them.
-  TerminatorStart whole = TerminatorStart::of(mesh, opt);
-  whole.hopeless_edges = 0;  // halves_apply
   RefineReport initial;
-  {
-    Terminator terminator(mesh, pred, one_thread, std::move(whole));
-    terminator.split_initial_encroachments();
-    initial = terminator.report();
-    whole = std::move(terminator).hand_over();
-  }
+  TerminatorStart whole = split_initial_encroachments(mesh, pred, opt, initial);
   const std::vector<std::uint8_t> side = cut_in_two(mesh);
   if (side.empty()) {
     RefineReport report = Terminator(mesh, pred, opt, std::move(whole)).run();
     add_counts(report, initial);
     return report;
   }
-
   const VertexId v0 = mesh.vertex_count();
   const SubsegmentId s0 = static_cast<SubsegmentId>(mesh.subsegments.size());
   Cut cut = cut_off_right(mesh, side);
-  const auto half_start = [&] {
-    TerminatorStart start{whole.guard_floor, whole.steiner_cap / 2, whole.pieces, whole.apices, whole.locked, 0};
-    start.locked.resize(s0, 0);
-    for (SubsegmentId s = 0; s < s0; ++s) start.locked[s] |= cut.seam_records[s];
-    return start;
-  };
-  TerminatorStart left_start = half_start(), right_start = half_start();
-
-  // The right half on a thread of its own (or after the left when there is none to be had).
-  Predicates right_pred;
-  HalfResult right;
-  std::exception_ptr right_failure;
-  const auto refine_right = [&] {
-    try {
-      right = refine_half(cut.right, right_pred, one_thread, std::move(right_start));
-    } catch (...) {
-      right_failure = std::current_exception();
-    }
-  };
-  std::thread worker;
-  try {
-    worker = std::thread(refine_right);
-  } catch (const std::system_error&) {
-  }
-  HalfResult left;
-  try {
-    left = refine_half(mesh, pred, one_thread, std::move(left_start));
-  } catch (...) {
-    if (worker.joinable()) worker.join();
-    throw;
-  }
-  if (worker.joinable()) worker.join();
-  else refine_right();
-  if (right_failure) std::rethrow_exception(right_failure);
-  pred.counters.add(right_pred.counters);
+  const std::uint64_t cap = whole.steiner_cap;
+  const std::vector<char> whole_locked = whole.locked;
+  HalfResult left, right;
+  refine_both(mesh, cut, pred, one_thread, std::move(whole), left, right);
 
   const RightIds ids{v0, mesh.vertex_count(), s0, static_cast<SubsegmentId>(mesh.subsegments.size()),
                      mesh.triangle_slots()};
-  append_vertices(mesh, cut.right, ids);
   append_records(mesh, cut.right, ids, cut.right_records);
-  append_triangles(mesh, cut.right, ids);
+  append_right(mesh, cut.right, ids);
   cut.right = Mesh{};
-  const std::vector<EdgeRef> seam = sew_seam(mesh, ids, cut.seam_records);
+  const std::vector<TriangleId> seeds = sew_and_flip(mesh, pred, ids, cut, left.bad, right.bad);
 
-  std::vector<TriangleId> seeds = std::move(left.bad);
-  for (TriangleId t : right.bad) seeds.push_back(ids.triangle_base + t);
-  for (EdgeRef e : seam) {
-    seeds.push_back(triangle_of(e));
-    seeds.push_back(triangle_of(mesh.link[e]));
-  }
-  flip_seam(mesh, pred, seam, seeds);
-  std::sort(seeds.begin(), seeds.end());
-  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-
-  TerminatorStart seam_start = join_starts(std::move(left.end), right.end, whole.locked, mesh, ids, cut);
+  TerminatorStart seam_start = join_starts(std::move(left.end), right.end, whole_locked, mesh, ids, cut);
   const std::uint64_t used = initial.segment_steiner + left.report.interior_steiner + left.report.segment_steiner +
                              right.report.interior_steiner + right.report.segment_steiner;
-  seam_start.steiner_cap = whole.steiner_cap > used ? whole.steiner_cap - used : 0;
-  seam_start.apices = std::move(whole.apices);
+  seam_start.steiner_cap = cap > used ? cap - used : 0;
   Terminator seam_terminator(mesh, pred, opt, std::move(seam_start));
   seam_terminator.refine_around(seeds);
   RefineReport report = seam_terminator.finish();
-  add_counts(report, left.report);
-  add_counts(report, right.report);
-  add_counts(report, initial);
-  report.steiner_cap = whole.steiner_cap;
+  for (const RefineReport* part : {&left.report, &right.report, &initial}) add_counts(report, *part);
+  report.steiner_cap = cap;
   report.peak_queue = std::max(report.peak_queue, left.report.peak_queue + right.report.peak_queue);
   return report;
 }

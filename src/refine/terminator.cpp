@@ -4,8 +4,6 @@
 #include <cmath>
 #include <new>
 #include <numbers>
-#include <system_error>
-#include <thread>
 #include <utility>
 
 #include "geometry/box.h"
@@ -16,6 +14,7 @@
 #include "refine/split_permitted.h"
 #include "refine/steiner_point.h"
 #include "refine/termination_guard.h"
+#include "util/run_both.h"
 
 namespace deltri {
 namespace {
@@ -110,12 +109,22 @@ EncroachRule rule_for(const RefineOptions& opt) {
 
 }  // namespace
 
+// The guard's floor takes a pass over every edge, the rest a pass over the subsegments and a sort;
+// with a second thread and a large mesh they are computed at once.
 TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) {
   TerminatorStart start;
-  start.guard_floor = guard_floor_of(mesh, opt);
-  start.steiner_cap = deltri::steiner_cap(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
-  start.pieces = SegmentPieces(mesh);
-  start.apices = SegmentApices(mesh);
+  const auto floor = [&] { start.guard_floor = guard_floor_of(mesh, opt); };
+  const auto rest = [&] {
+    start.steiner_cap = deltri::steiner_cap(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
+    start.pieces = SegmentPieces(mesh);
+    start.apices = SegmentApices(mesh);
+  };
+  if (opt.threads > 1 && mesh.triangle_slots() >= kParallelStartSlots) {
+    run_both(floor, rest);
+  } else {
+    floor();
+    rest();
+  }
   return start;
 }
 
@@ -473,14 +482,7 @@ void Terminator::survey_remaining() {
   }
   const TriangleId middle = slots / 2;
   RefineReport upper;
-  std::thread worker;
-  try {
-    worker = std::thread([&] { survey(middle, slots, upper); });
-  } catch (const std::system_error&) {
-  }
-  survey(0, middle, report_);
-  if (worker.joinable()) worker.join();
-  else survey(middle, slots, upper);
+  run_both([&] { survey(middle, slots, upper); }, [&] { survey(0, middle, report_); });
   report_.bad_triangles_left += upper.bad_triangles_left;
   report_.oversized_left += upper.oversized_left;
   report_.skinny_left += upper.skinny_left;

@@ -45,6 +45,7 @@ struct TerminatorStart {
   // them on the mesh when the bottom scale is within reach.
   std::int64_t hopeless_edges = -1;
   static TerminatorStart of(const Mesh& mesh, const RefineOptions& opt);
+  static constexpr std::uint32_t kParallelStartSlots = 50000;
 };
 
 class Terminator {
