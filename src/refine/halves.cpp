@@ -59,6 +59,7 @@ struct Cut {
   Mesh right;
   std::vector<char> right_records;
   std::vector<char> seam_records;
+  std::uint64_t seam_edges = 0;
 };
 
 // Moves the right side's triangles into cut.right and marks the seam on both sides: seam edges
@@ -94,6 +95,7 @@ Cut cut_off_right(Mesh& mesh, const std::vector<std::uint8_t>& side) {
       r.corner[f] = mesh.corner[e];
       r.link[f] = twin == kNone || seam ? kNone : 3 * slot[triangle_of(twin)] + twin % 3;
       SubsegmentId s = mesh.subseg[e];
+      cut.seam_edges += seam;
       if (s != kNone) (seam ? cut.seam_records : cut.right_records)[s] = 1;
       if (seam && s == kNone) mesh.subseg[twin] = s = kSeamEdge;
       r.subseg[f] = s;
@@ -278,9 +280,7 @@ TerminatorStart split_initial_encroachments(Mesh& mesh, Predicates& pred, const 
                                             RefineReport& counts) {
   TerminatorStart start = TerminatorStart::of(mesh, opt);
   start.hopeless_edges = 0;  // halves_apply
-  RefineOptions one_thread = opt;
-  one_thread.threads = 1;
-  Terminator terminator(mesh, pred, one_thread, std::move(start));
+  Terminator terminator(mesh, pred, opt, std::move(start));
   terminator.split_initial_encroachments();
   counts = terminator.report();
   return std::move(terminator).hand_over();
@@ -364,6 +364,9 @@ RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions&
   Terminator seam_terminator(mesh, pred, opt, std::move(seam_start));
   seam_terminator.refine_around(seeds);
   RefineReport report = seam_terminator.finish();
+  report.seam_steiner = report.interior_steiner + report.segment_steiner;
+  report.seam_seeds = seeds.size();
+  report.seam_edges = cut.seam_edges;
   for (const RefineReport* part : {&left.report, &right.report, &initial}) add_counts(report, *part);
   report.steiner_cap = cap;
   report.peak_queue = std::max(report.peak_queue, left.report.peak_queue + right.report.peak_queue);

@@ -195,14 +195,34 @@ void Terminator::refine_all() {
 
 void Terminator::split_initial_encroachments() {
   marks_.reserve(reserve_for_refinement(mesh_, opt_));
-  if (mesh_.has_subsegments()) {
-    for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {  // Fig. 38 l.3-5
+  if (!mesh_.has_subsegments()) return;
+  for (EdgeRef e : initially_encroached()) enqueue_subsegment(e);  // Fig. 38 l.3-5
+  split_encroached_subsegments(false);  // Fig. 38 l.6
+}
+
+// Each subsegment tested once, from its edge with the smaller id; on a large mesh with a second
+// thread the two halves of the slots at once. The list is in slot order either way.
+std::vector<EdgeRef> Terminator::initially_encroached() {
+  const auto scan = [this](EdgeRef from, EdgeRef to, Predicates& pred, std::vector<EdgeRef>& out) {
+    for (EdgeRef e = from; e < to; ++e) {
       if (mesh_.corner[e] == kNone || mesh_.subseg[e] == kNone) continue;
       if (mesh_.link[e] != kNone && mesh_.link[e] < e) continue;
-      if (is_splittable(e) && is_encroached(mesh_, pred_, e, rule_)) enqueue_subsegment(e);
+      if (is_splittable(e) && is_encroached(mesh_, pred, e, rule_)) out.push_back(e);
     }
-    split_encroached_subsegments(false);  // Fig. 38 l.6
+  };
+  const EdgeRef edges = static_cast<EdgeRef>(mesh_.corner.size());
+  std::vector<EdgeRef> found;
+  if (opt_.threads < 2 || mesh_.triangle_slots() < TerminatorStart::kParallelStartSlots) {
+    scan(0, edges, pred_, found);
+    return found;
   }
+  const EdgeRef middle = edges / 2;
+  std::vector<EdgeRef> upper;
+  Predicates upper_pred;
+  run_both([&] { scan(middle, edges, upper_pred, upper); }, [&] { scan(0, middle, pred_, found); });
+  pred_.counters.add(upper_pred.counters);
+  found.insert(found.end(), upper.begin(), upper.end());
+  return found;
 }
 
 // Triangles split on the way are queued as they are made (queue_triangles), as after l.10 starts.
@@ -448,6 +468,9 @@ void Terminator::drop_last_vertex() {
 void Terminator::survey(TriangleId from, TriangleId to, RefineReport& into) const {
   const double sin_theta = std::sqrt(rules_.sin2_theta);
   for (TriangleId t = from; t < to; ++t) {
+    // The corners come in slot order, their points from anywhere: fetch those a few slots ahead.
+    if (const TriangleId ahead = t + kSurveyPrefetch; ahead < to && mesh_.is_live(ahead))
+      for (EdgeRef e = 3 * ahead; e < 3 * ahead + 3; ++e) prefetch(&mesh_.points[mesh_.corner[e]]);
     if (!mesh_.is_live(t)) continue;
     const Assessment a = assess(t);
     if (!a.bad()) continue;

@@ -95,6 +95,7 @@ class Terminator {
   // Fig. 39 l.50-55; `out` leaves the new vertex.
   void new_vertex(EdgeRef out, bool queue_triangles);
 
+  std::vector<EdgeRef> initially_encroached();  // Fig. 38 l.3-4
   // Fig. 38 l.10-12: serve Q_t until it is empty.
   void drain_queue();
   void prefetch_queued() const;
@@ -120,6 +121,7 @@ class Terminator {
   void survey_remaining();
   void survey(TriangleId from, TriangleId to, RefineReport& into) const;
   static constexpr TriangleId kParallelSurveySlots = 100000;
+  static constexpr TriangleId kSurveyPrefetch = 16;
   // At the bottom scale (bottom_scale.h): the double near `ideal` whose insertion makes the best
   // triangles, if they beat the worst one it destroys; t must be among those.
   std::optional<Point> bottom_scale_point(TriangleId t, const Point& ideal, const Assessment& a);
