@@ -101,7 +101,7 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   j.integer("vertices", r.input_vertices);
   j.integer("duplicate_vertices", r.duplicates);
   if (r.pslg && r.pslg->has_segment_section) {
-    j.integer("segments", r.pslg->segments.size());
+    j.integer("segments", r.input_segments);
     j.integer("holes", r.pslg->holes.size());
     j.integer("regions", r.pslg->regions.size());
   }

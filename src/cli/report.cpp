@@ -88,7 +88,7 @@ void Messages::finished(const Mesh& mesh, const RunReport& r) const {
     used += mesh.kind[v] != VertexKind::Duplicate && mesh.kind[v] != VertexKind::Dead;
   std::string input = plural(r.input_vertices, "vertex", "vertices");
   if (r.pslg->has_segment_section) {
-    input += ", " + plural(r.pslg->segments.size(), "segment", "segments");
+    input += ", " + plural(r.input_segments, "segment", "segments");
     input += ", " + plural(r.pslg->holes.size(), "hole", "holes");
   }
   std::fprintf(out_, "%s: %s -> %s, %s; wrote%s (%.3f s)\n", r.input_name.c_str(), input.c_str(),
@@ -104,7 +104,7 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
   std::fprintf(out_, "  %-20s %10.4f s\n", "total", r.total_seconds);
   std::fprintf(out_, "Input: %zu vertices (%zu duplicates)", r.input_vertices, r.duplicates);
   if (r.pslg->has_segment_section)
-    std::fprintf(out_, ", %s, %s, %s", plural(r.pslg->segments.size(), "segment", "segments").c_str(),
+    std::fprintf(out_, ", %s, %s, %s", plural(r.input_segments, "segment", "segments").c_str(),
                 plural(r.pslg->holes.size(), "hole", "holes").c_str(),
                 plural(r.pslg->regions.size(), "region", "regions").c_str());
   std::fprintf(out_, "\n");

@@ -28,6 +28,7 @@ struct RunReport {
   const Pslg* pslg = nullptr;
   std::string input_name;
   std::size_t input_vertices = 0;
+  std::size_t input_segments = 0;  // pslg's, whose list is released once the segments are in
   std::vector<Stage> stages;
   std::size_t duplicates = 0;
   std::optional<SegmentReport> segments;

@@ -302,6 +302,7 @@ int run(const Switches& sw) {
   check_coordinate_range(pslg, pslg.source_name.empty() ? in.path : pslg.source_name);
   report.pslg = &pslg;
   report.input_vertices = pslg.points.size();
+  report.input_segments = pslg.segments.size();
   timer.stage("read");
 
   Mesh mesh = mesh_from_pslg(pslg);
@@ -317,6 +318,7 @@ int run(const Switches& sw) {
     check_stage(mesh, "Delaunay");
     if (in.is_poly) {
       constrain(mesh, pslg, dt, sw, report);
+      std::vector<Pslg::Segment>().swap(pslg.segments);  // in the mesh now; refinement's peak is later
       timer.stage("segments and holes");
       check_stage(mesh, "segments and holes");
     } else if (sw.convex_hull) {

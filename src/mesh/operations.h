@@ -68,21 +68,36 @@ InsertResult insert_vertex(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hin
 // also recorded the cavity's `boundary` (its edges with the cavity on their left, whose far side
 // is not in the cavity or which carry a subsegment) and its triangles with no boundary edge.
 struct KnownCavity {
+  // The cavity's triangles: a list, or, for a large cavity, an open-addressing hash set of
+  // 2^table_bits slots (kNone = empty) probed from cavity_slot(t).
   const TriangleId* list = nullptr;
   std::size_t count = 0;
-  const std::uint32_t* stamp = nullptr;
-  std::size_t size = 0;
-  std::uint32_t mark = 0;
+  const TriangleId* table = nullptr;
+  unsigned table_bits = 0;
   std::size_t triangles = 0;
   std::span<const EdgeRef> boundary;
   std::span<const TriangleId> inner;
-  bool contains(TriangleId t) const {
-    if (list == nullptr) return t < size && stamp[t] == mark;
-    for (std::size_t i = 0; i < count; ++i)
-      if (list[i] == t) return true;
-    return false;
-  }
+  bool contains(TriangleId t) const;
 };
+
+// Fibonacci hashing: the top `bits` bits of t times 2^32 / phi.
+inline std::uint32_t cavity_slot(TriangleId t, unsigned bits) {
+  return static_cast<std::uint32_t>((static_cast<std::uint64_t>(t) * 2654435769u & 0xFFFFFFFFu) >> (32 - bits));
+}
+
+inline bool KnownCavity::contains(TriangleId t) const {
+  if (list == nullptr) {
+    if (table == nullptr) return false;
+    const std::uint32_t mask = (std::uint32_t{1} << table_bits) - 1;
+    for (std::uint32_t i = cavity_slot(t, table_bits);; i = (i + 1) & mask) {
+      if (table[i] == t) return true;
+      if (table[i] == kNone) return false;
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i)
+    if (list[i] == t) return true;
+  return false;
+}
 
 // insert_vertex without subsegment splits, for a vertex whose cavity is already known: in a
 // constrained Delaunay triangulation Lawson's flips remove exactly the triangles reachable from

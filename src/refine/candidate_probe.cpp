@@ -10,9 +10,15 @@ namespace deltri {
 
 void CavityMarks::begin(std::uint32_t slots) {
   slots_ = slots;
-  // Grown along with the mesh rather than at the first spill: a late jump in size landed on fresh
-  // pages at the peak and raised the 45x45 holes' peak memory by 4 MB.
-  if (stamp_.size() < slots) stamp_.resize(slots, 0);
+  if (stamped_) {
+    for (TriangleId t : spilled_) {
+      const std::uint32_t mask = (std::uint32_t{1} << table_bits_) - 1;
+      std::uint32_t i = cavity_slot(t, table_bits_);
+      while (table_[i] != t) i = (i + 1) & mask;
+      table_[i] = kNone;
+    }
+    spilled_.clear();
+  }
   listed_ = 0;
   listed_bits_ = 0;
   count_ = 0;
@@ -22,12 +28,24 @@ void CavityMarks::begin(std::uint32_t slots) {
   inner_.clear();
 }
 
-void CavityMarks::spill() {
-  if (++now_ == 0) {  // wrapped: forget every old mark
-    std::fill(stamp_.begin(), stamp_.end(), 0);
-    now_ = 1;
+void CavityMarks::insert_spilled(TriangleId t) {
+  if (2 * (spilled_.size() + 1) > table_.size()) {
+    table_bits_ = std::max(table_bits_ + 1, 8u);
+    table_.assign(std::size_t{1} << table_bits_, kNone);
+    for (TriangleId u : spilled_) {
+      std::uint32_t i = cavity_slot(u, table_bits_);
+      while (table_[i] != kNone) i = (i + 1) & ((std::uint32_t{1} << table_bits_) - 1);
+      table_[i] = u;
+    }
   }
-  for (std::size_t i = 0; i < listed_; ++i) stamp_[list_[i]] = now_;
+  std::uint32_t i = cavity_slot(t, table_bits_);
+  while (table_[i] != kNone) i = (i + 1) & ((std::uint32_t{1} << table_bits_) - 1);
+  table_[i] = t;
+  spilled_.push_back(t);
+}
+
+void CavityMarks::spill() {
+  for (std::size_t i = 0; i < listed_; ++i) insert_spilled(list_[i]);
   stamped_ = true;
 }
 
@@ -47,11 +65,11 @@ void CavityMarks::add(TriangleId t) {
     }
     spill();
   }
-  stamp_[t] = now_;
+  insert_spilled(t);
 }
 
 bool CavityMarks::contains(TriangleId t) const {
-  if (stamped_) return stamp_[t] == now_;
+  if (stamped_) return marked().contains(t);
   if ((listed_bits_ >> (t % 64) & 1) == 0) return false;
   for (std::size_t i = 0; i < listed_; ++i)
     if (list_[i] == t) return true;
@@ -61,7 +79,7 @@ bool CavityMarks::contains(TriangleId t) const {
 KnownCavity CavityMarks::marked() const {
   KnownCavity cavity;
   if (stamped_) {
-    cavity.stamp = stamp_.data(), cavity.size = stamp_.size(), cavity.mark = now_;
+    cavity.table = table_.data(), cavity.table_bits = table_bits_;
   } else {
     cavity.list = list_, cavity.count = listed_;
   }

@@ -42,13 +42,12 @@ struct Probe {
 
 // Reusable triangle marks for the cavity search, its work list and what it found (reused so that
 // a search, which runs for every candidate point, allocates nothing). A cavity is a handful of
-// triangles, so the marks of a search are a short list first and spill to per-slot stamps only
-// when it grows: the stamp array is one more random access per triangle looked at, in an array
-// as long as the mesh.
+// triangles, so the marks of a search are a short list first and spill to a hash set only when it
+// grows (per-slot stamps, an array as long as the mesh, cost 4 bytes per triangle at the peak).
 class CavityMarks {
  public:
   void begin(std::uint32_t slots);
-  void reserve(std::size_t slots) { stamp_.reserve(slots); }
+  void reserve(std::size_t) {}
   bool mark(TriangleId t);  // false if already marked in this search
   void add(TriangleId t);   // mark, for a t known not to be marked yet
   bool contains(TriangleId t) const;
@@ -65,13 +64,15 @@ class CavityMarks {
  private:
   static constexpr std::size_t kListLimit = 32;
   void spill();
+  void insert_spilled(TriangleId t);  // into the hash set, growing it past half full
   TriangleId list_[kListLimit];
   std::size_t listed_ = 0;
   std::uint64_t listed_bits_ = 0;  // bit t % 64 set for each listed t: most lookups miss, in one test
-  bool stamped_ = false;  // this search has spilled to the stamps
+  bool stamped_ = false;  // this search has spilled to the hash set
   std::uint32_t slots_ = 0;
-  std::vector<std::uint32_t> stamp_;
-  std::uint32_t now_ = 0;
+  std::vector<TriangleId> table_;    // the hash set (KnownCavity), all kNone between searches
+  unsigned table_bits_ = 0;
+  std::vector<TriangleId> spilled_;  // its members, to empty it and to grow it
   std::vector<TriangleId> todo_;
   std::vector<EdgeRef> boundary_;
   std::vector<EdgeRef> boundary_subsegments_;

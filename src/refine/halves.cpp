@@ -123,13 +123,26 @@ struct RightIds {
   EdgeRef edge(EdgeRef e) const { return e == kNone ? kNone : 3 * triangle_base + e; }
 };
 
-void append_vertices(Mesh& l, const Mesh& r, const RightIds& ids) {
+// Appends f(x) for every x of `from` to `to` and frees `from`, giving its pages back as they are
+// copied, so that the two arrays never hold their whole size at once (that set the peak memory).
+template <class T, class U, class F>
+void move_appending(BigVector<T>& from, BigVector<U>& to, F f, std::size_t first = 0) {
+  constexpr std::size_t kChunk = std::size_t{1} << 16;
+  for (std::size_t i = first; i < from.size(); i += kChunk) {
+    const std::size_t end = std::min(from.size(), i + kChunk);
+    for (std::size_t k = i; k < end; ++k) to.push_back(f(from[k]));
+    release_pages(from.data() + i, (end - i) * sizeof(T));
+  }
+  BigVector<T>().swap(from);
+}
+
+void append_vertices(Mesh& l, Mesh& r, const RightIds& ids) {
   const std::size_t na = static_cast<std::size_t>(r.num_attributes);
   for (VertexId v = ids.v0; v < r.vertex_count(); ++v) {
-    l.points.push_back(r.points[v]);
     l.kind.push_back(r.kind[v]);
     if (!r.marker.empty()) l.marker.push_back(r.marker[v]);
   }
+  move_appending(r.points, l.points, [](const Point& p) { return p; }, ids.v0);
   l.attributes.insert(l.attributes.end(), r.attributes.begin() + static_cast<std::ptrdiff_t>(ids.v0 * na),
                       r.attributes.end());
 }
@@ -145,16 +158,16 @@ void append_records(Mesh& l, const Mesh& r, const RightIds& ids, const std::vect
   for (SubsegmentId s = ids.s0; s < r.subsegments.size(); ++s) l.subsegments.push_back(moved(r.subsegments[s]));
 }
 
-// The appends fault in fresh pages, most of their cost: the links and vertices on a second
-// thread, the corners and subsegments on this one.
-void append_right(Mesh& l, const Mesh& r, const RightIds& ids) {
+// The right half's triangles and vertices after the left's. The appends fault in fresh pages,
+// most of their cost: the links and vertices on a second thread, the rest on this one.
+void append_right(Mesh& l, Mesh& r, const RightIds& ids) {
   const auto links_and_vertices = [&] {
-    for (EdgeRef e : r.link) l.link.push_back(ids.edge(e));
+    move_appending(r.link, l.link, [&](EdgeRef e) { return ids.edge(e); });
     append_vertices(l, r, ids);
   };
   const auto corners_and_subsegments = [&] {
-    for (VertexId v : r.corner) l.corner.push_back(ids.vertex(v));
-    for (SubsegmentId s : r.subseg) l.subseg.push_back(ids.record(s));
+    move_appending(r.corner, l.corner, [&](VertexId v) { return ids.vertex(v); });
+    move_appending(r.subseg, l.subseg, [&](SubsegmentId s) { return ids.record(s); });
   };
   run_both(links_and_vertices, corners_and_subsegments);
   l.triangle_attributes.insert(l.triangle_attributes.end(), r.triangle_attributes.begin(), r.triangle_attributes.end());
@@ -221,9 +234,8 @@ TerminatorStart join_starts(TerminatorStart left, const TerminatorStart& right, 
                             const Mesh& joined, const RightIds& ids, const Cut& cut) {
   TerminatorStart start = std::move(left);
   SegmentPieces& pieces = start.pieces;
-  pieces.of_vertex.resize(joined.vertex_count(), {kNone, kNone});
-  for (VertexId v = ids.v0; v < right.pieces.of_vertex.size(); ++v)
-    pieces.of_vertex[ids.vertex(v)] = right.pieces.of_vertex[v];
+  for (const SegmentPieces::Split& split : right.pieces.splits)
+    if (split.vertex >= ids.v0) pieces.splits.push_back({ids.vertex(split.vertex), split.piece});
   pieces.of_subsegment.resize(ids.record_base, {kNone, kNone});
   for (SubsegmentId s = ids.s0; s < right.pieces.of_subsegment.size(); ++s)
     pieces.of_subsegment.push_back(right.pieces.of_subsegment[s]);
@@ -294,6 +306,7 @@ void refine_both(Mesh& mesh, Cut& cut, Predicates& pred, const RefineOptions& on
   whole.locked.resize(cut.seam_records.size(), 0);
   for (SubsegmentId s = 0; s < cut.seam_records.size(); ++s) whole.locked[s] |= cut.seam_records[s];
   TerminatorStart left_start = whole;
+  whole.small_pages = true;
   Predicates right_pred;
   run_both([&] { right = refine_half(cut.right, right_pred, one_thread, std::move(whole)); },
            [&] { left = refine_half(mesh, pred, one_thread, std::move(left_start)); });

@@ -4,6 +4,8 @@
 #include <bit>
 #include <cmath>
 
+#include "util/big_allocator.h"
+
 namespace deltri {
 
 namespace {
@@ -133,10 +135,12 @@ void QualityQueue::note_push() {
   if (++size_ > peak_) peak_ = size_;
 }
 
+// Spare blocks whose pages are still there first; a released one faults its pages in again.
 std::uint32_t QualityQueue::take_block() {
-  if (!free_blocks_.empty()) {
-    const std::uint32_t block = free_blocks_.back();
-    free_blocks_.pop_back();
+  for (std::vector<std::uint32_t>* spares : {&free_blocks_, &released_blocks_}) {
+    if (spares->empty()) continue;
+    const std::uint32_t block = spares->back();
+    spares->pop_back();
     blocks_[block]->next = kNoBlock;
     return block;
   }
@@ -144,7 +148,17 @@ std::uint32_t QualityQueue::take_block() {
   return static_cast<std::uint32_t>(blocks_.size() - 1);
 }
 
-void QualityQueue::give_back(std::uint32_t block) { free_blocks_.push_back(block); }
+// Beyond kSpareBlocks, a block given back returns its pages to the system: the queue then holds
+// about its live entries rather than the most it ever held. It peaks halfway through refinement,
+// the mesh at the end, and the pool at its peak size had set the peak memory there.
+void QualityQueue::give_back(std::uint32_t block) {
+  if (free_blocks_.size() < kSpareBlocks) {
+    free_blocks_.push_back(block);
+    return;
+  }
+  release_pages(blocks_[block].get(), sizeof(Block));
+  released_blocks_.push_back(block);
+}
 
 void QualityQueue::append(const QueuedTriangle& entry, unsigned bucket) {
   Fifo& fifo = buckets_[bucket];

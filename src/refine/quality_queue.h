@@ -166,7 +166,9 @@ class QualityQueue {
   int window_base_ = static_cast<int>(kTopLevel) + 1;
   std::array<Fifo, kBuckets> buckets_;
   std::vector<std::unique_ptr<Block>> blocks_;
-  std::vector<std::uint32_t> free_blocks_;
+  std::vector<std::uint32_t> free_blocks_;      // given back, pages resident
+  std::vector<std::uint32_t> released_blocks_;  // given back, pages returned (give_back)
+  static constexpr std::size_t kSpareBlocks = 32;
   std::vector<Keyed> heap_;
   std::uint64_t next_age_ = ~std::uint64_t{0};
   std::uint64_t nonempty_ = 0;

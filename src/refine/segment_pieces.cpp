@@ -1,6 +1,7 @@
 #include "refine/segment_pieces.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <utility>
 
 namespace deltri {
@@ -13,22 +14,35 @@ VertexId shared_end(const PieceEnds& mine, const PieceEnds& other) {
   return kNone;
 }
 
-SegmentPieces::SegmentPieces(const Mesh& mesh) : of_vertex(mesh.vertex_count(), {kNone, kNone}) {
+SegmentPieces::SegmentPieces(const Mesh& mesh) {
+  std::vector<std::uint64_t> keys;
+  keys.reserve(mesh.subsegments.size());
   for (const Subsegment& sub : mesh.subsegments) {
     of_subsegment.push_back({sub.a, sub.b});
-    initial.push_back(piece_key(sub.a, sub.b));
+    keys.push_back(piece_key(sub.a, sub.b));
   }
-  std::sort(initial.begin(), initial.end());
+  set_initial(std::move(keys));
+}
+
+void SegmentPieces::set_initial(std::vector<std::uint64_t> keys) {
+  std::sort(keys.begin(), keys.end());
+  initial = std::make_shared<const std::vector<std::uint64_t>>(std::move(keys));
 }
 
 void SegmentPieces::record_split(const Mesh& mesh, VertexId v, const PieceEnds& piece) {
-  of_vertex.resize(mesh.vertex_count(), {kNone, kNone});
-  of_vertex[v] = piece;
+  if (!splits.empty() && splits.back().vertex >= v) throw std::logic_error("segment splits recorded out of order");
+  splits.push_back({v, piece});
   of_subsegment.resize(mesh.subsegments.size(), piece);  // the new half's record
 }
 
+const PieceEnds* SegmentPieces::piece_of(VertexId v) const {
+  const auto at = std::lower_bound(splits.begin(), splits.end(), v,
+                                   [](const Split& s, VertexId u) { return s.vertex < u; });
+  return at != splits.end() && at->vertex == v ? &at->piece : nullptr;
+}
+
 VertexId SegmentPieces::end_shared_with(const PieceEnds& mine, VertexId c) const {
-  if (c < of_vertex.size() && of_vertex[c][0] != kNone) return shared_end(mine, of_vertex[c]);
+  if (const PieceEnds* p = piece_of(c)) return shared_end(mine, *p);
   if (c == mine[0] || c == mine[1]) return kNone;
   for (VertexId o : mine)
     if (is_initial_piece(o, c)) return o;
@@ -41,7 +55,7 @@ std::uint64_t SegmentPieces::piece_key(VertexId a, VertexId b) {
 }
 
 bool SegmentPieces::is_initial_piece(VertexId a, VertexId b) const {
-  return std::binary_search(initial.begin(), initial.end(), piece_key(a, b));
+  return initial && std::binary_search(initial->begin(), initial->end(), piece_key(a, b));
 }
 
 }  // namespace deltri

@@ -147,6 +147,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       extent_(extent_of(mesh)),
       bad_triangles_(opt.queue_order, squared_diameter(extent_)),
       locked_(std::move(start.locked)),
+      small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
   report_.guard_length = guard_floor_;
   const bool size_bounds = opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0;
@@ -195,6 +196,12 @@ void Terminator::refine_all() {
 
 void Terminator::split_initial_encroachments() {
   marks_.reserve(reserve_for_refinement(mesh_, opt_));
+  if (small_pages_) {
+    prefer_small_pages(mesh_.corner.data(), mesh_.corner.capacity() * sizeof(VertexId));
+    prefer_small_pages(mesh_.link.data(), mesh_.link.capacity() * sizeof(EdgeRef));
+    prefer_small_pages(mesh_.subseg.data(), mesh_.subseg.capacity() * sizeof(SubsegmentId));
+    prefer_small_pages(mesh_.points.data(), mesh_.points.capacity() * sizeof(Point));
+  }
   if (!mesh_.has_subsegments()) return;
   for (EdgeRef e : initially_encroached()) enqueue_subsegment(e);  // Fig. 38 l.3-5
   split_encroached_subsegments(false);  // Fig. 38 l.6
@@ -263,7 +270,7 @@ std::vector<TriangleId> Terminator::unsplit_triangles() && { return std::move(un
 
 TerminatorStart Terminator::hand_over() && {
   return {guard_floor_, steiner_cap_, std::move(pieces_), std::move(apices_), std::move(locked_),
-          static_cast<std::int64_t>(report_.hopeless_edges)};
+          static_cast<std::int64_t>(report_.hopeless_edges), false};
 }
 
 void Terminator::warm_pages() {
@@ -399,11 +406,10 @@ bool Terminator::shell_exempt(EdgeRef shortest) const {
   // Only segment splits have pieces; the kinds, a byte per vertex, stay in cache where the
   // pieces would be a miss.
   if (mesh_.kind[a] != VertexKind::Segment || mesh_.kind[b] != VertexKind::Segment) return false;
-  if (a >= pieces_.of_vertex.size() || b >= pieces_.of_vertex.size()) return false;
-  const PieceEnds& pa = pieces_.of_vertex[a];
-  const PieceEnds& pb = pieces_.of_vertex[b];
-  if (pa[0] == kNone || pb[0] == kNone) return false;
-  const VertexId j = shared_end(pa, pb);
+  const PieceEnds* pa = pieces_.piece_of(a);
+  const PieceEnds* pb = pieces_.piece_of(b);
+  if (pa == nullptr || pb == nullptr) return false;
+  const VertexId j = shared_end(*pa, *pb);
   if (j == kNone) return false;
   const double da2 = squared_distance(mesh_.point(a), mesh_.point(j));
   const double db2 = squared_distance(mesh_.point(b), mesh_.point(j));

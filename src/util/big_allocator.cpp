@@ -59,4 +59,26 @@ void release_big(void* p, std::size_t bytes) noexcept {
   ::operator delete(p);
 }
 
+void release_pages(void* p, std::size_t bytes) noexcept {
+#ifdef __linux__
+  const long page = sysconf(_SC_PAGESIZE);
+  const std::uintptr_t small = page > 0 ? static_cast<std::uintptr_t>(page) : 4096;
+  const auto at = reinterpret_cast<std::uintptr_t>(p);
+  const std::uintptr_t from = (at + small - 1) & ~(small - 1), to = (at + bytes) & ~(small - 1);
+  if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+#else
+  (void)p, (void)bytes;
+#endif
+}
+
+void prefer_small_pages(void* p, std::size_t bytes) noexcept {
+#ifdef __linux__
+  const auto at = reinterpret_cast<std::uintptr_t>(p);
+  const std::uintptr_t from = at & ~(std::uintptr_t{4095}), to = (at + bytes + 4095) & ~(std::uintptr_t{4095});
+  if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_NOHUGEPAGE);
+#else
+  (void)p, (void)bytes;
+#endif
+}
+
 }  // namespace deltri

@@ -19,6 +19,14 @@ inline constexpr std::size_t kBigBlock = std::size_t{4} << 20;
 void* allocate_big(std::size_t bytes);
 void release_big(void* p, std::size_t bytes) noexcept;
 
+// Gives the whole pages inside [p, p + bytes) back to the system, for memory that will not be read
+// again before it is freed (a block being copied elsewhere piece by piece); nothing elsewhere.
+void release_pages(void* p, std::size_t bytes) noexcept;
+
+// Asks that [p, p + bytes) be backed by small pages only (refine/halves.cpp: a second mesh whose
+// last, partly used huge pages would add to the peak).
+void prefer_small_pages(void* p, std::size_t bytes) noexcept;
+
 template <class T>
 struct BigAllocator {
   using value_type = T;

@@ -207,25 +207,23 @@ TEST(mirrored_split_lines_up_with_the_vertex_across_the_wedge) {
   REQUIRE(s != kNone);
   REQUIRE(m.apex(s) == 3 || (m.link[s] != kNone && m.apex(m.link[s]) == 3));
   SegmentPieces pieces;
-  pieces.of_vertex.assign(4, PieceEnds{kNone, kNone});
-  pieces.of_vertex[3] = {0, 2};
+  pieces.splits = {{3, {0, 2}}};
   Point p{-1, -1};
   CHECK(mirrored_split_point(m, s, {0, 1}, pieces, p));
   CHECK_NEAR(p.x, 0.45, 1e-15);
   CHECK_EQ(p.y, 0.0);
   // Not across the wedge: a vertex of the same piece, or one that is on no piece.
-  pieces.of_vertex[3] = {1, 0};
+  pieces.splits = {{3, {1, 0}}};
   CHECK(!mirrored_split_point(m, s, {0, 1}, pieces, p));
-  pieces.of_vertex[3] = {kNone, kNone};
+  pieces.splits.clear();
   CHECK(!mirrored_split_point(m, s, {0, 1}, pieces, p));
   // Vertex 3 as the far end of an initial piece 0-3: the same point.
-  pieces.initial = {SegmentPieces::piece_key(0, 1), SegmentPieces::piece_key(3, 0)};
-  std::sort(pieces.initial.begin(), pieces.initial.end());
+  pieces.set_initial({SegmentPieces::piece_key(0, 1), SegmentPieces::piece_key(3, 0)});
   p = {-1, -1};
   CHECK(mirrored_split_point(m, s, {0, 1}, pieces, p));
   CHECK_NEAR(p.x, 0.45, 1e-15);
   // Outside the middle third of s (at 0.2 of it): the shells or the midpoint decide instead.
-  pieces.of_vertex[3] = {0, 2};
+  pieces.splits = {{3, {0, 2}}};
   m.points[3] = {0.2 * dir.x, 0.2 * dir.y};
   CHECK(!mirrored_split_point(m, s, {0, 1}, pieces, p));
 }
