@@ -155,6 +155,10 @@ foreach(area 0.01 0.003 0.001)
            --verify "--refined --max-area ${area}")
 endforeach()
 e2e_case(guitar.pa0.003 ${E2E_DATA}/guitar.poly -pa0.003 --no-warning --verify "--refined --max-area 0.003")
+# Refined in two halves at once (refine/halves.h; -V says "then a seam of 370 edges" for -pq30):
+# the seam must leave no trace, and both runs the same mesh whatever the threads' timing.
+e2e_case(halves.holes24.pq30 gen:holes24.poly -pq30C --no-warning --verify "--refined --min-angle 30")
+e2e_case(halves.holes24.pq33a gen:holes24.poly -pq33a0.0001C --no-warning --verify "--refined --min-angle 33 --max-area 0.0001")
 # robustness1's hull has vertices an ulp from its edges: a hull subsegment there cannot be split in
 # doubles, and retrying it (after Chew's step had deleted free vertices) once went round to the
 # Steiner cap. Locked after the first failure, the area-only run meets its bound at once.

@@ -100,6 +100,19 @@ gen_input() {  # gen_input NAME.EXT DIR
     bom.node) printf '\357\273\277# UTF-8 byte order mark\n3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n' >"$2/$1" ;;
     nul.node) printf '3 2 0 0\n1 0 0\n2 1 \0000\n3 0 1\n' >"$2/$1" ;;
     no_newline.node) printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1' >"$2/$1" ;;
+    holes24.poly)  # unit square with 24 x 24 holes, each a 40-gon: large enough to refine in halves
+      awk 'BEGIN { k = 24; n = 40; pi = atan2(0, -1)
+        printf "%d 2 0 1\n1 0 0 1\n2 1 0 1\n3 1 1 1\n4 0 1 1\n", 4 + k * k * n
+        v = 4
+        for (i = 0; i < k; i++) for (j = 0; j < k; j++) for (s = 0; s < n; s++)
+          printf "%d %.17g %.17g 2\n", ++v, (i + 0.5) / k + 0.3 / k * cos(2 * pi * s / n), (j + 0.5) / k + 0.3 / k * sin(2 * pi * s / n)
+        printf "%d 1\n1 1 2 1\n2 2 3 1\n3 3 4 1\n4 4 1 1\n", 4 + k * k * n
+        e = 4
+        for (h = 0; h < k * k; h++) for (s = 0; s < n; s++)
+          printf "%d %d %d 2\n", ++e, 5 + h * n + s, 5 + h * n + (s + 1) % n
+        printf "%d\n", k * k
+        for (i = 0; i < k; i++) for (j = 0; j < k; j++) printf "%d %.17g %.17g\n", i * k + j + 1, (i + 0.5) / k, (j + 0.5) / k
+      }' >"$2/$1" ;;
     *) echo "run_case.sh: unknown generated input $1" >&2; exit 2 ;;
   esac
 }
