@@ -38,7 +38,10 @@ std::vector<std::uint8_t> cut_in_two(const Mesh& mesh) {
   keys.reserve(mesh.live_triangles());
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) key[t] += along_x ? mesh.point(mesh.corner[e]).x : mesh.point(mesh.corner[e]).y;
+    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
+      const Point& p = mesh.point(mesh.corner[e]);
+      key[t] += along_x ? p.x : p.y;
+    }
     keys.push_back(key[t]);
   }
   const auto middle = keys.begin() + static_cast<std::ptrdiff_t>(keys.size() / 2);
@@ -170,7 +173,8 @@ void append_right(Mesh& l, Mesh& r, const RightIds& ids) {
     move_appending(r.subseg, l.subseg, [&](SubsegmentId s) { return ids.record(s); });
   };
   run_both(links_and_vertices, corners_and_subsegments);
-  l.triangle_attributes.insert(l.triangle_attributes.end(), r.triangle_attributes.begin(), r.triangle_attributes.end());
+  const auto& attributes = r.triangle_attributes;
+  l.triangle_attributes.insert(l.triangle_attributes.end(), attributes.begin(), attributes.end());
   l.area_bound.insert(l.area_bound.end(), r.area_bound.begin(), r.area_bound.end());
   for (TriangleId t : r.free_triangles) l.free_triangles.push_back(ids.triangle_base + t);
 }
@@ -247,8 +251,8 @@ TerminatorStart join_starts(TerminatorStart left, const TerminatorStart& right, 
     if (cut.right_records[s]) locked[s] = locked_right(s);
     if (cut.seam_records[s]) locked[s] = s < whole_locked.size() && whole_locked[s];
   }
-  for (SubsegmentId s = ids.s0; s < joined.subsegments.size() - ids.record_base + ids.s0; ++s)
-    locked[ids.record(s)] = locked_right(s);
+  const std::size_t right_records = joined.subsegments.size() - ids.record_base + ids.s0;  // its own count
+  for (SubsegmentId s = ids.s0; s < right_records; ++s) locked[ids.record(s)] = locked_right(s);
   return start;
 }
 
@@ -272,7 +276,7 @@ void add_counts(RefineReport& to, const RefineReport& from) {
 // Terminator needs from it.
 struct HalfResult {
   RefineReport report;
-  std::vector<TriangleId> bad;
+  std::vector<TriangleId> unsplit;  // Terminator::unsplit_triangles
   TerminatorStart end;
 };
 
@@ -368,7 +372,7 @@ RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions&
   append_records(mesh, cut.right, ids, cut.right_records);
   append_right(mesh, cut.right, ids);
   cut.right = Mesh{};
-  const std::vector<TriangleId> seeds = sew_and_flip(mesh, pred, ids, cut, left.bad, right.bad);
+  const std::vector<TriangleId> seeds = sew_and_flip(mesh, pred, ids, cut, left.unsplit, right.unsplit);
 
   TerminatorStart seam_start = join_starts(std::move(left.end), right.end, whole_locked, mesh, ids, cut);
   const std::uint64_t used = initial.segment_steiner + left.report.interior_steiner + left.report.segment_steiner +
