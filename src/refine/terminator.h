@@ -44,8 +44,8 @@ struct TerminatorStart {
   // The initial edges no double can give a good triangle (report.hopeless_edges), or -1 to count
   // them on the mesh when the bottom scale is within reach.
   std::int64_t hopeless_edges = -1;
-  // Keep the arrays' growth in small pages (prefer_small_pages): for the second of two meshes
-  // refined at once, whose partly used last huge pages would add to the peak memory.
+  // Keep the arrays' growth in small pages (prefer_small_pages): for two meshes refined at once,
+  // whose partly used last huge pages would add to the peak memory.
   bool small_pages = false;
   static TerminatorStart of(const Mesh& mesh, const RefineOptions& opt);
   static constexpr std::uint32_t kParallelStartSlots = 50000;

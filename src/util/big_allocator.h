@@ -23,8 +23,8 @@ void release_big(void* p, std::size_t bytes) noexcept;
 // again before it is freed (a block being copied elsewhere piece by piece); nothing elsewhere.
 void release_pages(void* p, std::size_t bytes) noexcept;
 
-// Asks that [p, p + bytes) be backed by small pages only (refine/halves.cpp: a second mesh whose
-// last, partly used huge pages would add to the peak).
+// Asks that the pages of [p, p + bytes) not yet touched be small ones (refine/halves.cpp: two
+// meshes growing at once, whose last, partly used huge pages would add to the peak).
 void prefer_small_pages(void* p, std::size_t bytes) noexcept;
 
 template <class T>
