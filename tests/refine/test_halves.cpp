@@ -64,6 +64,12 @@ double interior_segment_length(const Mesh& m) {
   return length;
 }
 
+double length_of(const Mesh& m, EdgeRef e) {
+  const Point& a = m.point(m.org(e));
+  const Point& b = m.point(m.dest(e));
+  return std::hypot(b.x - a.x, b.y - a.y);
+}
+
 std::uint32_t vertices_in_triangles(const Mesh& m) {
   std::vector<char> used(m.vertex_count(), 0);
   for (EdgeRef e = 0; e < m.corner.size(); ++e)
@@ -146,3 +152,53 @@ TEST(halves_are_deterministic_and_close_to_the_whole) {
   CHECK(Snapshot(a) != Snapshot(whole));  // the halves did run
   CHECK(std::fabs(n - w) <= 0.01 * w);
 }
+
+// Random interior edges as segments: subsegments meeting at every angle, many of them across the
+// cut, so clusters, shells and the small-angle exemption all meet the seam. Whatever the seed, the
+// result is a valid constrained Delaunay mesh of the same domain with the same segments.
+TEST(halves_keep_random_segments_and_the_constrained_delaunay_property) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    std::uint64_t state = seed * 0x9E3779B97F4A7C15ULL;
+    const auto next = [&] {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      return state >> 11;
+    };
+    std::vector<Point> pts = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    while (pts.size() < 12000) pts.push_back({static_cast<double>(next()) * 0x1p-53, static_cast<double>(next()) * 0x1p-53});
+    Mesh m = triangulated(pts);
+    mark_boundary(m, 1);
+    double segment_length = 0.0;
+    for (int k = 0; k < 1500; ++k) {
+      const EdgeRef e = static_cast<EdgeRef>(next() % m.corner.size());
+      if (m.corner[e] == kNone || m.link[e] == kNone || m.subseg[e] != kNone) continue;
+      const SubsegmentId id = static_cast<SubsegmentId>(m.subsegments.size());
+      m.subsegments.push_back({m.org(e), m.dest(e), 5, id});
+      m.set_subsegment(e, id);
+      segment_length += length_of(m, e);
+    }
+    REQUIRE(halves_apply(m, quality(28)) == false);  // one thread by default
+    RefineOptions opt = quality(28);
+    opt.threads = 2;
+    REQUIRE(halves_apply(m, opt));
+    Predicates pred;
+    const RefineReport r = refine_mesh(m, pred, opt);
+    const Facts f = facts_of(m);
+    std::printf("  seed %llu: %u triangles, seam %llu edges, %llu bad left\n", static_cast<unsigned long long>(seed),
+                m.live_triangles(), static_cast<unsigned long long>(r.seam_edges),
+                static_cast<unsigned long long>(r.bad_triangles_left));
+    CHECK(r.seam_edges > 0);
+    CHECK(f.all_ccw);
+    CHECK(f.links_ok);
+    CHECK(f.subsegments_symmetric);
+    CHECK(f.boundary_protected);
+    CHECK_EQ(f.non_delaunay_edges, std::size_t{0});
+    CHECK_NEAR(f.total_area, 1.0, 1e-12);
+    CHECK_NEAR(f.boundary_length, 4.0, 1e-12);
+    double after = 0.0;
+    for (EdgeRef e = 0; e < m.corner.size(); ++e)
+      if (m.corner[e] != kNone && m.subseg[e] != kNone && m.link[e] != kNone && m.link[e] > e)
+        after += length_of(m, e);
+    CHECK_NEAR(after, segment_length, 1e-9 * segment_length);
+  }
+}
+
