@@ -129,7 +129,7 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
                 static_cast<unsigned long long>(q->guard_refusals), q->guard_length);
     std::fprintf(out_, "  peak bad-triangle queue: %zu; triangles still bad: %llu\n", q->peak_queue,
                 static_cast<unsigned long long>(q->bad_triangles_left));
-    if (q->seam_edges > 0)
+    if (q->in_halves)
       std::fprintf(out_, "  refined in two halves at once, then a seam of %llu edges: %llu Steiner points from %llu triangles\n",
                   static_cast<unsigned long long>(q->seam_edges), static_cast<unsigned long long>(q->seam_steiner),
                   static_cast<unsigned long long>(q->seam_seeds));

@@ -382,6 +382,7 @@ RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions&
   Terminator seam_terminator(mesh, pred, opt, std::move(seam_start));
   seam_terminator.refine_around(seeds);
   RefineReport report = seam_terminator.finish();
+  report.in_halves = true;
   report.seam_steiner = report.interior_steiner + report.segment_steiner;
   report.seam_seeds = seeds.size();
   report.seam_edges = cut.seam_edges;

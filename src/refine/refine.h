@@ -69,8 +69,9 @@ struct RefineReport {
   double worst_size_excess = 0.0;         // the largest size_excess (refine/bad_triangles.h)
   Point worst_size_location;              // that triangle's centroid
   std::size_t peak_queue = 0;             // bad-triangle queue
-  // Refined in two halves at once (refine/halves.h): the seam's edges, its Terminator's Steiner
-  // points and the triangles it started from; all 0 when refined whole.
+  // Refined in two halves at once (refine/halves.h): the seam's edges (none when the halves do not
+  // touch), its Terminator's Steiner points and the triangles it started from.
+  bool in_halves = false;
   std::uint64_t seam_edges = 0;
   std::uint64_t seam_steiner = 0;
   std::uint64_t seam_seeds = 0;
