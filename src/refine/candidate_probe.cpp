@@ -8,8 +8,7 @@
 
 namespace deltri {
 
-void CavityMarks::begin(std::uint32_t slots) {
-  slots_ = slots;
+void CavityMarks::begin() {
   if (stamped_) {
     for (TriangleId t : spilled_) {
       const std::uint32_t mask = (std::uint32_t{1} << table_bits_) - 1;
@@ -144,7 +143,7 @@ WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const 
 
 double cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> seeds,
                  const Point& c, CavityMarks& marks) {
-  marks.begin(mesh.triangle_slots());
+  marks.begin();
   std::vector<TriangleId>& todo = marks.todo();
   std::vector<EdgeRef>& boundary = marks.boundary();
   std::vector<EdgeRef>& subsegments = marks.boundary_subsegments();

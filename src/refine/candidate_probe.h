@@ -46,8 +46,7 @@ struct Probe {
 // grows (per-slot stamps, an array as long as the mesh, cost 4 bytes per triangle at the peak).
 class CavityMarks {
  public:
-  void begin(std::uint32_t slots);
-  void reserve(std::size_t) {}
+  void begin();
   bool mark(TriangleId t);  // false if already marked in this search
   void add(TriangleId t);   // mark, for a t known not to be marked yet
   bool contains(TriangleId t) const;
@@ -69,7 +68,6 @@ class CavityMarks {
   std::size_t listed_ = 0;
   std::uint64_t listed_bits_ = 0;  // bit t % 64 set for each listed t: most lookups miss, in one test
   bool stamped_ = false;  // this search has spilled to the hash set
-  std::uint32_t slots_ = 0;
   std::vector<TriangleId> table_;    // the hash set (KnownCavity), all kNone between searches
   unsigned table_bits_ = 0;
   std::vector<TriangleId> spilled_;  // its members, to empty it and to grow it

@@ -59,7 +59,7 @@ EdgeRef Terminator::delete_free_vertices_near(EdgeRef s, bool queue_triangles) {
   const Point& pa = mesh_.point(a);
   const Point& pb = mesh_.point(b);
   const auto inside = [&](VertexId w) { return in_diametral_circle(pa, pb, mesh_.point(w)); };
-  marks_.begin(mesh_.triangle_slots());
+  marks_.begin();
   std::vector<TriangleId> todo{triangle_of(s)};
   marks_.mark(todo[0]);
   if (mesh_.link[s] != kNone && marks_.mark(triangle_of(mesh_.link[s]))) todo.push_back(triangle_of(mesh_.link[s]));

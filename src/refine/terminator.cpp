@@ -75,13 +75,12 @@ double largest_coordinate(const Box& box) {
 constexpr double kMaxReservedTriangles = 3.2e7;
 constexpr double kQualityGrowth = 6.0;
 
-// Returns the number of triangle slots reserved, 0 if none.
-std::size_t reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
+void reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
   const double wanted =
       triangles_wanted(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
   const double slots = mesh.triangle_slots();
   const double added = wanted > 0.0 ? 2.0 * wanted : opt.quality ? (kQualityGrowth - 1.0) * slots : 0.0;
-  if (!(added > 0.0) || slots + added > kMaxReservedTriangles) return 0;  // let such runs grow as needed
+  if (!(added > 0.0) || slots + added > kMaxReservedTriangles) return;  // let such runs grow as needed
   const std::size_t triangles = static_cast<std::size_t>(slots + added);
   const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(added / 2.0);
   try {
@@ -91,9 +90,8 @@ std::size_t reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
     mesh.points.reserve(vertices);
     mesh.kind.reserve(vertices);
   } catch (const std::bad_alloc&) {
-    return 0;  // address space is short (a ulimit): grow as needed instead
+    // address space is short (a ulimit): grow as needed instead
   }
-  return triangles;
 }
 
 template <class Array>
@@ -195,7 +193,7 @@ void Terminator::refine_all() {
 }
 
 void Terminator::split_initial_encroachments() {
-  marks_.reserve(reserve_for_refinement(mesh_, opt_));
+  reserve_for_refinement(mesh_, opt_);
   if (small_pages_) {
     prefer_small_pages(mesh_.corner.data(), mesh_.corner.capacity() * sizeof(VertexId));
     prefer_small_pages(mesh_.link.data(), mesh_.link.capacity() * sizeof(EdgeRef));
@@ -234,7 +232,6 @@ std::vector<EdgeRef> Terminator::initially_encroached() {
 
 // Triangles split on the way are queued as they are made (queue_triangles), as after l.10 starts.
 void Terminator::refine_around(std::span<const TriangleId> triangles) {
-  marks_.reserve(mesh_.triangle_slots());
   for (TriangleId t : triangles) {
     if (t >= mesh_.triangle_slots() || !mesh_.is_live(t)) continue;
     for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e)
