@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "geometry/box.h"
 #include "mesh/operations.h"
+#include "refine/bad_triangles.h"
 #include "refine/bottom_scale.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"
@@ -18,12 +18,6 @@ namespace deltri {
 namespace {
 
 constexpr std::uint8_t kLeft = 0, kRight = 1, kDeadSlot = 2;
-
-double sin2_theta_of(const RefineOptions& opt) {
-  if (!opt.quality) return 0.0;
-  const double s = std::sin(opt.min_angle_deg * std::numbers::pi / 180.0);
-  return s * s;
-}
 
 // Each triangle slot's side of the cut, a line across the longer side of the bounding box at the
 // median of the live triangles' centroids along it, so that both halves start with as many
@@ -346,7 +340,9 @@ bool halves_apply(const Mesh& mesh, const RefineOptions& opt) {
     return false;
   if (opt.quality && opt.min_angle_deg > kCascadeAngleDeg) return false;
   if (mesh.live_triangles() < kHalvesMinTriangles) return false;
-  return count_hopeless_edges(mesh, sin2_theta_of(opt)) == 0;
+  const QualityRules rules = make_quality_rules(opt.min_angle_deg, opt.quality, opt.max_area,
+                                                opt.use_triangle_area_bounds, opt.max_edge_length);
+  return count_hopeless_edges(mesh, rules.sin2_theta) == 0;
 }
 
 RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
