@@ -133,7 +133,7 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   j.open("why_missed", '[');
   if (q && q->stopped_by_guard) j.string(nullptr, "termination guard: points that would have made edges far below the local feature size were refused");
   if (q && q->stopped_by_max_steiner) j.string(nullptr, "the -S limit of Steiner points was reached");
-  if (q && q->stopped_by_cap) j.string(nullptr, "the termination guard's cap on Steiner points was reached");
+  if (q && q->stopped_by_cap) j.string(nullptr, cap_explanation(*q));
   if (q && q->bad_triangles_left > 0 && sw.no_boundary_steiner > 0) j.string(nullptr, "-Y/-YY: segments were not split");
   if (q && q->bad_triangles_left > 0 && q->locked_subsegments > 0)
     j.string(nullptr, "subsegments that doubles cannot split (the split point rounds onto an end or a neighbour is flush) were left whole");

@@ -30,6 +30,9 @@ int main(int argc, char** argv) {
   } catch (const OutputError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return kExitOutput;
+  } catch (const MemoryError& e) {
+    std::fprintf(stderr, "deltri: %s\n", e.what());
+    return kExitInternal;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "deltri: out of memory\n");
     return kExitInternal;

@@ -4,6 +4,7 @@
 
 #include "cdt/convex_hull.h"
 #include "quality/statistics.h"
+#include "refine/termination_guard.h"
 
 namespace deltri {
 namespace {
@@ -48,9 +49,7 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
   }
   if (const auto& q = r.refine) {
     if (q->stopped_by_max_steiner) warn("refinement stopped at the -S limit of Steiner points");
-    if (q->stopped_by_cap)
-      warn("refinement stopped after " + std::to_string(q->steiner_cap) +
-           " Steiner points, the termination guard's cap for this input (the angle bound is beyond what refinement can reach here)");
+    if (q->stopped_by_cap) warn(cap_explanation(*q));
     if (q->bad_triangles_left > 0) {
       char angle[128] = "", size[128] = "";
       if (q->skinny_left > 0)
@@ -145,6 +144,25 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
                   static_cast<unsigned long long>(q->locked_subsegments));
   }
   if (r.check) std::fprintf(out_, "Consistency check (-C): %s", r.check->summary().c_str());
+}
+
+std::string cap_explanation(const RefineReport& q) {
+  const std::string stopped = "refinement stopped after " + std::to_string(q.interior_steiner + q.segment_steiner) +
+                              " Steiner points, the termination guard's cap";
+  switch (q.cap_kind) {
+    case CapKind::Cascade:
+      return "refinement cannot reach this angle bound here: beyond " + std::to_string(static_cast<int>(kCascadeAngleDeg)) +
+             " degrees it ran on for " + std::to_string(q.cascade_steiner_taken_back) +
+             " Steiner points, the termination guard's cap, without converging; the mesh is the one that meets " +
+             std::to_string(static_cast<int>(kCascadeAngleDeg)) + " degrees (" + std::to_string(q.first_stage_steiner) +
+             " Steiner points)";
+    case CapKind::Memory:
+      return stopped + " from the memory available: a finer mesh would not fit";
+    case CapKind::Work:
+      break;
+  }
+  return stopped + " for this input (" + std::to_string(static_cast<int>(kCapPerWork)) +
+         " times the points a quality mesh of its features needs): refinement is not converging here";
 }
 
 }  // namespace deltri

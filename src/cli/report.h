@@ -48,6 +48,10 @@ std::vector<const char*> unsupported_switches(const Switches& sw);
 // prefix (the JSON report lists the same lines).
 std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& report);
 
+// Why the termination guard's Steiner cap stopped refinement, in one line (the warning, and the
+// JSON report's why_missed).
+std::string cap_explanation(const RefineReport& q);
+
 class Messages {
  public:
   // The summary and -V report go to standard output, unless a file goes there.

@@ -34,6 +34,7 @@
 #include "pslg/errors.h"
 #include "quality/check_mesh.h"
 #include "refine/refine.h"
+#include "util/memory_budget.h"
 
 namespace deltri {
 namespace {
@@ -281,6 +282,7 @@ RefineOptions refine_options(const Switches& sw, const InputFiles& in) {
   opt.decline_cluster_splits = sw.decline_cluster_splits;
   opt.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
   opt.threads = sw.threads;
+  opt.memory_budget = memory_budget();
   return opt;
 }
 

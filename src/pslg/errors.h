@@ -35,4 +35,11 @@ class OutputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A job that cannot fit in the memory available: what() says what was asked and what it would
+// need, before any of it is attempted.
+class MemoryError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace deltri

@@ -28,6 +28,15 @@ QualityRules make_quality_rules(double min_angle_deg, bool quality, double max_a
   return rules;
 }
 
+double area_bound_of(const Mesh& mesh, TriangleId t, const QualityRules& rules) {
+  if (!rules.use_area_bounds || mesh.area_bound.empty()) return 0.0;
+  if (rules.area_field == nullptr || rules.area_field->empty()) return mesh.area_bound[t];
+  const Point& a = mesh.point(mesh.corner[3 * t]);
+  const Point& b = mesh.point(mesh.corner[3 * t + 1]);
+  const Point& c = mesh.point(mesh.corner[3 * t + 2]);
+  return rules.area_field->bound_at({(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0});
+}
+
 bool is_current(const Mesh& mesh, const QueuedTriangle& entry) {
   const TriangleId t = entry.triangle;
   if (t >= mesh.triangle_slots() || !mesh.is_live(t)) return false;
@@ -78,9 +87,7 @@ Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& r
   }
   const double area = out.shape.area;
   if (rules.max_area > 0.0 && area > rules.max_area) out.too_large = true;
-  if (rules.use_area_bounds && !mesh.area_bound.empty() && mesh.area_bound[t] > 0.0 &&
-      area > mesh.area_bound[t])
-    out.too_large = true;
+  if (const double bound = area_bound_of(mesh, t, rules); bound > 0.0 && area > bound) out.too_large = true;
   if (rules.max_edge_length > 0.0) {
     const double limit2 = rules.max_edge_length * rules.max_edge_length;
     for (unsigned i = 0; i < 3; ++i)
@@ -92,8 +99,7 @@ Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& r
 double size_excess(const Mesh& mesh, TriangleId t, const TriangleShape& shape, const QualityRules& rules) {
   double excess = 0.0;
   if (rules.max_area > 0.0) excess = std::max(excess, shape.area / rules.max_area);
-  if (rules.use_area_bounds && !mesh.area_bound.empty() && mesh.area_bound[t] > 0.0)
-    excess = std::max(excess, shape.area / mesh.area_bound[t]);
+  if (const double bound = area_bound_of(mesh, t, rules); bound > 0.0) excess = std::max(excess, shape.area / bound);
   if (rules.max_edge_length > 0.0) {
     const double longest2 = std::max({shape.length2[0], shape.length2[1], shape.length2[2]});
     excess = std::max(excess, longest2 / (rules.max_edge_length * rules.max_edge_length));

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "mesh/mesh.h"
+#include "refine/area_field.h"
 #include "refine/quality_queue.h"
 
 namespace deltri {
@@ -13,7 +14,13 @@ struct QualityRules {
   double max_area = 0.0;          // <= 0: none
   bool use_area_bounds = false;   // also honour mesh.area_bound[t] when positive
   double max_edge_length = 0.0;   // <= 0: none
+  // With bounds that vary within a region (-r with an .area file), the field gives each triangle
+  // its bound instead of mesh.area_bound (refine/area_field.h); null or empty: not used.
+  const AreaField* area_field = nullptr;
 };
+
+// The area bound that applies to t (<= 0: none), as rules say.
+double area_bound_of(const Mesh& mesh, TriangleId t, const QualityRules& rules);
 
 QualityRules make_quality_rules(double min_angle_deg, bool quality, double max_area,
                                 bool use_area_bounds, double max_edge_length);

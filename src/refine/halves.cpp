@@ -250,22 +250,6 @@ TerminatorStart join_starts(TerminatorStart left, const TerminatorStart& right, 
   return start;
 }
 
-void add_counts(RefineReport& to, const RefineReport& from) {
-  to.interior_steiner += from.interior_steiner;
-  to.segment_steiner += from.segment_steiner;
-  to.vertices_deleted += from.vertices_deleted;
-  to.encroached_splits += from.encroached_splits;
-  to.rejected_candidates += from.rejected_candidates;
-  to.declined_splits += from.declined_splits;
-  to.guard_refusals += from.guard_refusals;
-  to.locked_subsegments += from.locked_subsegments;
-  to.bottom_scale_searches += from.bottom_scale_searches;
-  to.bottom_scale_refusals += from.bottom_scale_refusals;
-  to.stopped_by_guard = to.stopped_by_guard || from.stopped_by_guard;
-  to.stopped_by_max_steiner = to.stopped_by_max_steiner || from.stopped_by_max_steiner;
-  to.stopped_by_cap = to.stopped_by_cap || from.stopped_by_cap;
-}
-
 // One half's refinement: its Terminator runs Fig. 38 to the end, and leaves what the seam's
 // Terminator needs from it.
 struct HalfResult {
@@ -360,6 +344,7 @@ RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions&
   const SubsegmentId s0 = static_cast<SubsegmentId>(mesh.subsegments.size());
   Cut cut = cut_off_right(mesh, side);
   const std::uint64_t cap = whole.steiner_cap;
+  const CapKind cap_kind = whole.cap_kind;
   const std::vector<char> whole_locked = whole.locked;
   HalfResult left, right;
   refine_both(mesh, cut, pred, one_thread, std::move(whole), left, right);
@@ -375,6 +360,7 @@ RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions&
   const std::uint64_t used = initial.segment_steiner + left.report.interior_steiner + left.report.segment_steiner +
                              right.report.interior_steiner + right.report.segment_steiner;
   seam_start.steiner_cap = cap > used ? cap - used : 0;
+  seam_start.cap_kind = cap_kind;
   Terminator seam_terminator(mesh, pred, opt, std::move(seam_start));
   seam_terminator.refine_around(seeds);
   RefineReport report = seam_terminator.finish();

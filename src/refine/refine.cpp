@@ -1,14 +1,118 @@
 #include "refine/refine.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "pslg/errors.h"
+#include "refine/area_field.h"
 #include "refine/halves.h"
+#include "refine/termination_guard.h"
 #include "refine/terminator.h"
 
 namespace deltri {
+namespace {
 
-RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
+// Size refinement ends with about twice the triangles its bounds ask for (Terminator's
+// reserve_for_refinement): a job whose bounds need more than the memory budget can hold is refused
+// before it starts, instead of refining until the memory runs out.
+void refuse_impossible_size_bounds(const Mesh& mesh, const RefineOptions& opt) {
+  if (!(opt.memory_budget > 0.0)) return;
+  const double wanted = 2.0 * triangles_wanted(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
+  const double bytes = wanted * kBytesPerTriangle;
+  if (!(bytes > opt.memory_budget)) return;
+  constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+  char text[240];
+  std::snprintf(text, sizeof text,
+                "the size bounds ask for about %.3g triangles, about %.3g GiB of memory; %.3g GiB are available",
+                wanted, bytes / kGiB, opt.memory_budget / kGiB);
+  throw MemoryError(text);
+}
+
+RefineReport refine_within_reach(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
   if (halves_apply(mesh, opt)) return refine_in_halves(mesh, pred, opt);
   Terminator terminator(mesh, pred, opt);
   return terminator.run();
+}
+
+bool can_cascade(const RefineOptions& opt) { return opt.quality && opt.min_angle_deg > kCascadeAngleDeg; }
+
+std::uint64_t steiner_of(const RefineReport& r) { return r.interior_steiner + r.segment_steiner; }
+
+// opt with what is left of its -S budget after `used` Steiner points.
+RefineOptions after(const RefineOptions& opt, std::uint64_t used) {
+  RefineOptions rest = opt;
+  if (opt.max_steiner >= 0) rest.max_steiner = std::max<long>(0, opt.max_steiner - static_cast<long>(used));
+  return rest;
+}
+
+// On at opt's bound from a mesh that meets kCascadeAngleDeg, with at most kCascadeAllowance Steiner
+// points per vertex.
+RefineReport refine_beyond_reach(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
+  TerminatorStart start = TerminatorStart::of(mesh, opt);
+  const auto allowance = static_cast<std::uint64_t>(kCascadeAllowance * mesh.vertex_count());
+  if (allowance < start.steiner_cap) {
+    start.steiner_cap = allowance;
+    start.cap_kind = CapKind::Cascade;
+  }
+  return Terminator(mesh, pred, opt, std::move(start)).run();
+}
+
+}  // namespace
+
+// Above kCascadeAngleDeg refinement can cascade (Sec. 7.3, Fig. 37): each generation of vertices
+// closer together than the last. So the mesh is first refined to kCascadeAngleDeg, which refinement
+// reaches, then on at the asked bound with at most kCascadeAllowance Steiner points per vertex of
+// that mesh: where the bound can be met that is room enough. Where the cap stops it, the cascade
+// was cut short somewhere in the middle, with triangles far worse than those it started from; a
+// higher bound must not give a worse mesh, so the first stage's mesh is taken back, and the report
+// counts its triangles that miss the asked bound. Either way the run ends within a small multiple
+// of the first stage's size, time and memory (the copy kept is one more first-stage mesh).
+RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& asked) {
+  refuse_impossible_size_bounds(mesh, asked);
+  const AreaField field = asked.use_triangle_area_bounds ? AreaField::of(mesh) : AreaField{};
+  RefineOptions opt = asked;
+  opt.area_field = &field;
+  if (!can_cascade(opt)) return refine_within_reach(mesh, pred, opt);
+  RefineOptions reach = opt;
+  reach.min_angle_deg = kCascadeAngleDeg;
+  const RefineReport first = refine_within_reach(mesh, pred, reach);
+  Mesh first_mesh = mesh;
+  RefineReport report = refine_beyond_reach(mesh, pred, after(opt, steiner_of(first)));
+  if (report.stopped_by_cap) {
+    mesh = std::move(first_mesh);
+    RefineReport taken_back = Terminator(mesh, pred, opt).finish();  // the first stage's mesh against opt's bound
+    add_counts(taken_back, first);
+    taken_back.stopped_by_cap = true;
+    taken_back.steiner_cap = report.steiner_cap;
+    taken_back.cap_kind = report.cap_kind;
+    taken_back.cascade_steiner_taken_back = steiner_of(report);
+    report = taken_back;
+  } else {
+    add_counts(report, first);
+  }
+  report.in_two_stages = true;
+  report.first_stage_steiner = steiner_of(first);
+  return report;
+}
+
+void add_counts(RefineReport& to, const RefineReport& from) {
+  to.interior_steiner += from.interior_steiner;
+  to.segment_steiner += from.segment_steiner;
+  to.vertices_deleted += from.vertices_deleted;
+  to.encroached_splits += from.encroached_splits;
+  to.rejected_candidates += from.rejected_candidates;
+  to.declined_splits += from.declined_splits;
+  to.guard_refusals += from.guard_refusals;
+  to.kept_boundary_refusals += from.kept_boundary_refusals;
+  to.locked_subsegments += from.locked_subsegments;
+  to.bottom_scale_searches += from.bottom_scale_searches;
+  to.bottom_scale_refusals += from.bottom_scale_refusals;
+  to.hopeless_edges = std::max(to.hopeless_edges, from.hopeless_edges);  // both count the same initial edges
+  to.stopped_by_guard = to.stopped_by_guard || from.stopped_by_guard;
+  to.stopped_by_max_steiner = to.stopped_by_max_steiner || from.stopped_by_max_steiner;
+  to.stopped_by_cap = to.stopped_by_cap || from.stopped_by_cap;
 }
 
 }  // namespace deltri

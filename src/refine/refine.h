@@ -21,6 +21,8 @@
 
 namespace deltri {
 
+class AreaField;
+
 struct RefineOptions {
   double min_angle_deg = 20.0;          // theta (-q)
   bool quality = false;                 // apply the angle bound at all
@@ -40,6 +42,19 @@ struct RefineOptions {
   // instead (Miller-Pav-Walkington), and the guard still bounds every new edge.
   bool decline_cluster_splits = false;
   int threads = 1;  // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h)
+  // The memory refinement may use, in bytes (0: no limit): size bounds that need more are refused
+  // before refinement starts (MemoryError), and the Steiner cap never allows more
+  // (termination_guard.h). The command line sets it from the machine (util/memory_budget.h).
+  double memory_budget = 0.0;
+  // Set by refine_mesh: the field of bounds that vary within a region (refine/area_field.h).
+  const AreaField* area_field = nullptr;
+};
+
+// What set the Steiner cap (termination_guard.h).
+enum class CapKind : std::uint8_t {
+  Work,     // the feature work of the input and the size bounds
+  Cascade,  // beyond kCascadeAngleDeg: an allowance per vertex of the mesh refined to that angle
+  Memory,   // the memory budget
 };
 
 struct RefineReport {
@@ -50,6 +65,7 @@ struct RefineReport {
   std::uint64_t rejected_candidates = 0;  // Steiner points rejected because they encroach
   std::uint64_t declined_splits = 0;      // rejected points whose subsegments SPLITPERMITTED kept
   std::uint64_t guard_refusals = 0;       // insertions refused by the termination guard
+  std::uint64_t kept_boundary_refusals = 0;  // points refused: they encroach upon a subsegment -Y/-YY keep
   std::uint64_t locked_subsegments = 0;   // subsegments left unsplit: doubles could not split them
   std::uint64_t bottom_scale_searches = 0;  // Steiner points chosen among nearby doubles (bottom_scale.h)
   std::uint64_t bottom_scale_refusals = 0;  // of those, triangles no nearby double improved
@@ -58,6 +74,14 @@ struct RefineReport {
   bool stopped_by_max_steiner = false;
   bool stopped_by_cap = false;            // the guard's Steiner point cap was reached
   std::uint64_t steiner_cap = 0;
+  CapKind cap_kind = CapKind::Work;
+  // Refined to kCascadeAngleDeg first, then on at the asked bound (refine.cpp): the Steiner points
+  // of that first stage.
+  // If the cap stopped the second stage, its mesh was dropped for the first's: the Steiner points
+  // it had inserted.
+  bool in_two_stages = false;
+  std::uint64_t first_stage_steiner = 0;
+  std::uint64_t cascade_steiner_taken_back = 0;
   double guard_length = 0.0;              // the edge-length floor used
   // Triangles still bad afterwards (angle below theta, not between two subsegments, or too large).
   std::uint64_t bad_triangles_left = 0;
@@ -77,6 +101,12 @@ struct RefineReport {
   std::uint64_t seam_seeds = 0;
 };
 
+// Throws MemoryError (pslg/errors.h) when the size bounds ask for more triangles than
+// opt.memory_budget can hold.
 RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& opt);
+
+// Adds from's counts of work done (Steiner points, splits, refusals, stops) to to's; the closing
+// survey's counts are not added (they describe one mesh).
+void add_counts(RefineReport& to, const RefineReport& from);
 
 }  // namespace deltri

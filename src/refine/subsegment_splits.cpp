@@ -193,11 +193,23 @@ EdgeRef Terminator::current_edge(const EncroachedSubsegment& entry) {
 }
 
 bool Terminator::is_splittable(EdgeRef e) const {
-  if (opt_.no_steiner_on_segments >= 2) return false;
-  if (opt_.no_steiner_on_segments == 1 && mesh_.link[e] == kNone) return false;
+  if (kept_by_switch(e)) return false;
   const SubsegmentId id = mesh_.subseg[e];
   if (id == kSeamEdge) return false;
   return id >= locked_.size() || !locked_[id];
+}
+
+bool Terminator::kept_by_switch(EdgeRef e) const {
+  return opt_.no_steiner_on_segments >= 2 || (opt_.no_steiner_on_segments == 1 && mesh_.link[e] == kNone);
+}
+
+// The probe just made recorded the subsegments on the cavity's boundary (CavityMarks).
+bool Terminator::encroaches_kept_boundary(const Point& c) {
+  if (opt_.no_steiner_on_segments == 0) return false;
+  for (EdgeRef e : marks_.boundary_subsegments())
+    if (kept_by_switch(e) && encroaches(pred_, mesh_.point(mesh_.org(e)), mesh_.point(mesh_.dest(e)), c, rule_))
+      return true;
+  return false;
 }
 
 // A subsegment that doubles cannot split (the split point rounds onto an end, or a neighbour lies

@@ -11,13 +11,15 @@ namespace {
 
 double distance(const Point& a, const Point& b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
+double twice_area_of(const Point& a, const Point& b, const Point& c) {
+  return std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+}
+
 // Distance from the apex of e to the line of e: twice the area over the base.
 double apex_height(const Mesh& mesh, EdgeRef e) {
   const Point& a = mesh.point(mesh.org(e));
   const Point& b = mesh.point(mesh.dest(e));
-  const Point& c = mesh.point(mesh.apex(e));
-  const double twice_area = std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
-  return twice_area / distance(a, b);
+  return twice_area_of(a, b, mesh.point(mesh.apex(e))) / distance(a, b);
 }
 
 }  // namespace
@@ -87,7 +89,7 @@ double triangles_wanted(const Mesh& mesh, const SizeBounds& bounds) {
     const Point& a = mesh.point(mesh.corner[3 * t]);
     const Point& b = mesh.point(mesh.corner[3 * t + 1]);
     const Point& c = mesh.point(mesh.corner[3 * t + 2]);
-    const double area = 0.5 * std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    const double area = 0.5 * twice_area_of(a, b, c);
     double bound = std::min(bounds.max_area > 0.0 ? bounds.max_area : HUGE_VAL, edge_area);
     if (bounds.triangle_bounds && t < mesh.area_bound.size() && mesh.area_bound[t] > 0.0)
       bound = std::min(bound, mesh.area_bound[t]);
@@ -96,10 +98,50 @@ double triangles_wanted(const Mesh& mesh, const SizeBounds& bounds) {
   return wanted;
 }
 
+namespace {
+
+std::uint64_t to_count(double x) { return x < 1.8e19 ? static_cast<std::uint64_t>(x) : UINT64_MAX; }
+
+}  // namespace
+
+double feature_work(const Mesh& mesh) {
+  const std::vector<double> f = initial_feature_sizes(mesh);
+  std::vector<double> longest(mesh.vertex_count(), 0.0);
+  double work = 0.0;
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    const VertexId v[3] = {mesh.corner[3 * t], mesh.corner[3 * t + 1], mesh.corner[3 * t + 2]};
+    const Point* p[3] = {&mesh.point(v[0]), &mesh.point(v[1]), &mesh.point(v[2])};
+    const double twice_area = twice_area_of(*p[0], *p[1], *p[2]);
+    const double smallest_f = std::min({f[v[0]], f[v[1]], f[v[2]]});
+    double longest_edge = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      const double edge = distance(*p[i], *p[j]);
+      longest_edge = std::max(longest_edge, edge);
+      longest[v[i]] = std::max(longest[v[i]], edge);
+      longest[v[j]] = std::max(longest[v[j]], edge);
+      const double across = std::max(edge > 0.0 ? twice_area / edge : 0.0, std::min(f[v[i]], f[v[j]]));
+      if (across > 0.0 && std::isfinite(across)) work += 0.5 * edge / across;
+    }
+    const double s = std::max(longest_edge > 0.0 ? twice_area / longest_edge : 0.0, smallest_f);
+    if (s > 0.0 && std::isfinite(s)) work += 0.5 * twice_area / (s * s);
+  }
+  for (VertexId u = 0; u < mesh.vertex_count(); ++u)
+    if (f[u] > 0.0 && std::isfinite(f[u])) work += std::log2(1.0 + longest[u] / f[u]);
+  return work;
+}
+
 std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds) {
-  const double wanted = triangles_wanted(mesh, bounds);
-  const double cap = static_cast<double>(kCapPerVertex) * mesh.vertex_count() + 4.0 * wanted;
-  return cap < 1.8e19 ? static_cast<std::uint64_t>(cap) : UINT64_MAX;
+  const double cap = kCapPerWork * feature_work(mesh) +
+                     static_cast<double>(kCapPerVertex) * mesh.vertex_count() + 4.0 * triangles_wanted(mesh, bounds);
+  return to_count(cap);
+}
+
+std::uint64_t memory_cap(const Mesh& mesh, double memory_budget) {
+  if (!(memory_budget > 0.0)) return UINT64_MAX;
+  const double used = kBytesPerTriangle * mesh.triangle_slots();
+  return memory_budget > used ? to_count((memory_budget - used) / kBytesPerSteiner) : 0;
 }
 
 }  // namespace deltri

@@ -62,14 +62,35 @@ inline constexpr int kCoarsePrecisionOctaves = 36;
 // edge length a size bound asks for.
 double guard_floor(double feature, double size_floor);
 
-// The last line of defence, for angle bounds far beyond the proven range (above about 34 degrees
-// refinement can cascade: each generation of vertices closer together than the last, down to the
-// floor, which is far too many vertices to reach): refinement stops and reports once it has added
-// this many Steiner points. kCapPerVertex for each vertex of the initial mesh, plus four times the
-// number of triangles the size bounds ask for (the initial triangles' areas over their area bounds,
-// or over the area of an equilateral triangle with the -u edge length). Meshes within the proven
-// range use a few dozen Steiner points per input vertex (the corpus: at most 65 at -q33).
-inline constexpr std::uint64_t kCapPerVertex = 4096;
+// The cap on Steiner points: the last line of defence against refinement that runs away.
+//
+// What a good mesh needs grows with the integral of 1/lfs^2 over the domain (Sec. 3.3 and 4.3,
+// size optimality), not with the number of input vertices: a rectangle 1 x 1e-6 has four vertices
+// and needs two million triangles at -q30. feature_work() estimates that integral from the initial
+// triangulation (one unit is about one triangle of a quality mesh), and the cap is
+// kCapPerWork Steiner points per unit, plus kCapPerVertex per vertex, plus four times the
+// triangles the size bounds ask for (triangles_wanted). On the corpus and the benchmarks a mesh at
+// -q34 has at most 4.2 triangles per unit of work (kevinsudo's A.poly, long strips 1,000 wide and
+// 200,000 long), 0.1-1.2 elsewhere, so the cap is 15 times what the worst of them needs: it does not
+// stop refinement that makes progress, and it stops runaway refinement long before the machine's
+// memory is gone. Above kCascadeAngleDeg the cap is tighter (refine/refine.cpp: the mesh is first
+// refined to kCascadeAngleDeg, then at most kCascadeAllowance Steiner points per vertex of that
+// mesh are added), and every cap is clamped to the memory budget (RefineOptions::memory_budget).
+inline constexpr double kCapPerWork = 32.0;
+inline constexpr std::uint64_t kCapPerVertex = 64;
+inline constexpr double kCascadeAllowance = 2.0;
+// Bytes a Steiner point costs at the peak, with its two triangles (86 bytes a triangle on the
+// 45x45 holes, docs/benchmarks.md), its queue entries and the vertex: a generous figure, since the
+// budget only has to keep deltri from growing until the kernel kills it.
+inline constexpr double kBytesPerSteiner = 256.0;
+inline constexpr double kBytesPerTriangle = kBytesPerSteiner / 2.0;
+
+// The estimate of the integral of 1/lfs^2 over the domain, in triangles: each triangle adds its
+// area over s^2, s its smallest altitude or the smallest feature size f of its corners, whichever
+// is larger (a thin triangle between two segments is as wide as the strip); each edge adds half
+// its length over the distance across it (a strip's neighbours grade down to its width); each
+// vertex adds log2(1 + longest edge / f), the octaves the mesh grades over around it.
+double feature_work(const Mesh& mesh);
 
 struct SizeBounds {
   double max_area = 0.0;        // <= 0: none
@@ -77,6 +98,9 @@ struct SizeBounds {
   double max_edge_length = 0.0; // <= 0: none
 };
 std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds);
+// The Steiner points that fit in `memory_budget` bytes beside the mesh (UINT64_MAX for a budget of 0:
+// none).
+std::uint64_t memory_cap(const Mesh& mesh, double memory_budget);
 // The number of triangles the size bounds ask for (0 without size bounds), as in steiner_cap.
 double triangles_wanted(const Mesh& mesh, const SizeBounds& bounds);
 

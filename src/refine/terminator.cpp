@@ -114,6 +114,10 @@ TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) 
   const auto floor = [&] { start.guard_floor = guard_floor_of(mesh, opt); };
   const auto rest = [&] {
     start.steiner_cap = deltri::steiner_cap(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
+    if (const std::uint64_t memory = memory_cap(mesh, opt.memory_budget); memory < start.steiner_cap) {
+      start.steiner_cap = memory;
+      start.cap_kind = CapKind::Memory;
+    }
     start.pieces = SegmentPieces(mesh);
     start.apices = SegmentApices(mesh);
   };
@@ -139,6 +143,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       off_constant_(off_center_constant(opt.quality ? opt.min_angle_deg : 0.0, opt.off_centers)),
       guard_floor_(start.guard_floor),
       steiner_cap_(start.steiner_cap),
+      cap_kind_(start.cap_kind),
       pieces_(std::move(start.pieces)),
       apices_(std::move(start.apices)),
       finder_(mesh),
@@ -147,6 +152,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       locked_(std::move(start.locked)),
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
+  rules_.area_field = opt.area_field;
   report_.guard_length = guard_floor_;
   const bool size_bounds = opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0;
   bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
@@ -156,6 +162,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
   }
   if (report_.hopeless_edges > 0) precision_scale_ = std::ldexp(1.0, kPrecisionOctaves - kCoarsePrecisionOctaves);
   report_.steiner_cap = steiner_cap_;
+  report_.cap_kind = cap_kind_;
 }
 
 // The coarse floor (2^-kCoarsePrecisionOctaves of the coordinates) is precision_floor_at times
@@ -266,7 +273,7 @@ RefineReport Terminator::finish() {
 std::vector<TriangleId> Terminator::unsplit_triangles() && { return std::move(unsplit_); }
 
 TerminatorStart Terminator::hand_over() && {
-  return {guard_floor_, steiner_cap_, std::move(pieces_), std::move(apices_), std::move(locked_),
+  return {guard_floor_, steiner_cap_, cap_kind_, std::move(pieces_), std::move(apices_), std::move(locked_),
           static_cast<std::int64_t>(report_.hopeless_edges), false};
 }
 
@@ -330,14 +337,15 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
     else no_better_double = true;
   }
   const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
-  Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, splittable);  // Fig. 38 l.14
-  if (probe.status == ProbeStatus::Unusable && probe.blocked && assessment.too_large) {
-    // On or behind a subsegment that may not be split (-Y): a size bound is still owed, and
-    // the centroid always lies inside t.
-    c = centroid_of(t);
-    probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, splittable);
-  }
+  const Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, splittable);  // Fig. 38 l.14
   if (probe.status == ProbeStatus::Unusable) return;
+  if (probe.status == ProbeStatus::Clear && encroaches_kept_boundary(c)) {
+    // Fig. 38 l.18 with a subsegment that -Y/-YY keeps whole: c is rejected and, as nothing may be
+    // split, t stays as it is (counted by the closing survey). Inserting c anyway would make a
+    // sliver against the subsegment.
+    ++report_.kept_boundary_refusals;
+    return;
+  }
   if (probe.status == ProbeStatus::Clear) {  // Fig. 38 l.15-17
     if (no_better_double || probe.insertion_radius < floor_for(assessment, c)) {
       report_.bottom_scale_refusals += no_better_double;

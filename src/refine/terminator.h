@@ -38,6 +38,7 @@ inline constexpr SubsegmentId kSeamEdge = kNone - 1;
 struct TerminatorStart {
   double guard_floor = 0.0;
   std::uint64_t steiner_cap = 0;
+  CapKind cap_kind = CapKind::Work;
   SegmentPieces pieces;
   SegmentApices apices;
   std::vector<char> locked;  // by subsegment record
@@ -112,7 +113,11 @@ class Terminator {
   void enqueue_if_bad(TriangleId t);
   void enqueue_subsegment(EdgeRef e);
   EdgeRef current_edge(const EncroachedSubsegment& entry);
-  bool is_splittable(EdgeRef e) const;  // -Y / -YY
+  bool is_splittable(EdgeRef e) const;  // not kept by -Y / -YY, not a seam edge, not locked
+  bool kept_by_switch(EdgeRef e) const;  // -Y / -YY keep the subsegment on e whole
+  // Whether c encroaches upon a subsegment on the boundary of the cavity just probed that -Y / -YY
+  // keep whole.
+  bool encroaches_kept_boundary(const Point& c);
   bool budget_left();                   // -S
   VertexId add_free_vertex(const Point& p, EdgeRef container);
   VertexId add_segment_vertex(const Point& p, EdgeRef s);
@@ -140,6 +145,7 @@ class Terminator {
   double off_constant_ = 0.0;
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
+  CapKind cap_kind_ = CapKind::Work;
   SegmentPieces pieces_;  // the piece of each subsegment and refinement split
   SegmentApices apices_;
   EdgeFinder finder_;

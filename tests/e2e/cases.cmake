@@ -144,6 +144,21 @@ foreach(name fan120 star50 fan5)
 endforeach()
 e2e_case(fan5.pq40 ${E2E_INPUTS}/fan5.poly -pq40 --verify --refined --warning "the termination guard's cap"
          --warning "triangles miss the requested bounds")
+# Above 34 degrees a run that cannot converge gives back the mesh that meets 34 degrees (no worse
+# mesh for a higher bound: a cascade cut short had left triangles of 2 degrees away from the spokes).
+foreach(name fan120 star50)
+  e2e_case(${name}.pq40 ${E2E_INPUTS}/${name}.poly -pq40 --verify "--refined --min-angle 34"
+           --warning "refinement cannot reach this angle bound here")
+endforeach()
+
+# ---- thin domains: four vertices, and as many triangles as the length over the width asks for. The
+# Steiner cap once counted input vertices (4,096 each) and stopped these at 16,384 points with angles
+# of 15 and 0.5 degrees; it now follows the integral of 1/lfs^2 (termination_guard.h). ----
+e2e_case(strip_3.3e-5.pq30 ${E2E_INPUTS}/strip_3.3e-5.poly -pq30 --no-warning --verify "--refined --min-angle 30")
+e2e_case(strip_1e-5.pq33 ${E2E_INPUTS}/strip_1e-5.poly -pq33 --no-warning --verify "--refined --min-angle 33")
+e2e_case(channel_bend.pq30 ${E2E_INPUTS}/channel_bend.poly -pq30 --no-warning --verify "--refined --min-angle 30")
+# Size bounds no machine can meet are refused at once, with the estimate (exit 6, as out of memory).
+e2e_case(error.area_too_small ${E2E_INPUTS}/plate.poly -pa1e-30 --exit 6 --error "deltri: the size bounds ask for about")
 
 # ---- size bounds alone (no -q) keep skinny triangles, and every triangle must still meet the bound:
 # the guard's feature floor once refused the split of a too-large triangle with a short edge (plate

@@ -348,17 +348,48 @@ TEST(guard_features_and_floor) {
   CHECK_NEAR(guard_floor(1.0, 0.5), std::ldexp(0.5, -kGuardOctaves), 0.0);
 }
 
-// The guard's Steiner cap: kCapPerVertex per vertex plus four times the triangles the size bounds
-// ask for, computed here from the square's area by hand.
-TEST(steiner_cap_counts_vertices_and_size_bounds) {
+// The guard's Steiner cap: kCapPerWork per unit of feature work, kCapPerVertex per vertex, plus four
+// times the triangles the size bounds ask for; the square's feature work by hand. Its two triangles
+// (0,0),(1,0),(1,1) and (0,0),(1,1),(0,1): every corner's feature size is 1 (shortest edge, height
+// over the opposite side); each triangle adds its area 1/2 over 1^2, and per edge half its length
+// over max(height across, 1) = 1, so 1 + 1 + sqrt(2)/2; the two corners on the diagonal grade
+// over log2(1 + sqrt(2)) octaves, the other two over log2(2) = 1.
+TEST(steiner_cap_counts_feature_work_vertices_and_size_bounds) {
   Mesh m = refine_test::unit_square();
-  CHECK_EQ(steiner_cap(m, {}), 4 * kCapPerVertex);
-  CHECK_EQ(steiner_cap(m, {0.01, false, 0.0}), 4 * kCapPerVertex + 400);
+  const double work = 2 * 0.5 + 2 * (1.0 + std::sqrt(2.0) / 2) + 2 * std::log2(1 + std::sqrt(2.0)) + 2;
+  CHECK_NEAR(feature_work(m), work, 1e-12);
+  const auto cap = [&](double wanted) {
+    return static_cast<std::uint64_t>(kCapPerWork * work + 4.0 * kCapPerVertex + 4.0 * wanted);
+  };
+  CHECK_EQ(steiner_cap(m, {}), cap(0));
+  CHECK_EQ(steiner_cap(m, {0.01, false, 0.0}), cap(100));
   // An edge bound L asks for area / (sqrt(3)/4 L^2) triangles: 1 / (0.4330127 * 0.01) = 230.94.
-  CHECK_EQ(steiner_cap(m, {0.0, false, 0.1}), 4 * kCapPerVertex + 923);
+  CHECK_EQ(steiner_cap(m, {0.0, false, 0.1}), cap(1 / (std::sqrt(3.0) / 4 * 0.01)));
   m.area_bound.assign(m.triangle_slots(), 0.5);  // per-triangle bounds of 0.5 on two triangles of 0.5
-  CHECK_EQ(steiner_cap(m, {0.0, true, 0.0}), 4 * kCapPerVertex + 8);
-  CHECK_EQ(steiner_cap(m, {0.25, true, 0.0}), 4 * kCapPerVertex + 16);
+  CHECK_EQ(steiner_cap(m, {0.0, true, 0.0}), cap(2));
+  CHECK_EQ(steiner_cap(m, {0.25, true, 0.0}), cap(4));
+}
+
+// The integral of 1/lfs^2 over a strip L x h grows as L / h (lfs is h/2 across the middle): the
+// estimate must follow it within a small factor for every aspect ratio, or the cap would cut off a
+// thin domain (a 1 x 3.3e-5 rectangle needs 65,536 triangles at -q30) or let runaway refinement of
+// a wide one go far.
+TEST(feature_work_follows_the_strip_integral) {
+  for (double h : {1e-2, 1e-4, 1e-6}) {
+    Mesh m = triangulated({{0, 0}, {1, 0}, {1, h}, {0, h}});
+    mark_boundary(m);
+    const double work = feature_work(m);
+    CHECK(work > 1.0 / h && work < 4.0 / h);
+  }
+}
+
+// Memory: what fits beside the mesh, at kBytesPerSteiner each.
+TEST(memory_cap_fits_the_budget) {
+  const Mesh m = refine_test::unit_square();
+  CHECK_EQ(memory_cap(m, 0.0), UINT64_MAX);
+  const double used = kBytesPerTriangle * m.triangle_slots();
+  CHECK_EQ(memory_cap(m, used + 1000 * kBytesPerSteiner), std::uint64_t{1000});
+  CHECK_EQ(memory_cap(m, used / 2), std::uint64_t{0});
 }
 
 namespace {
