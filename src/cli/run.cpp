@@ -33,6 +33,7 @@
 #include "io/vtu_file.h"
 #include "pslg/errors.h"
 #include "quality/check_mesh.h"
+#include "refine/area_field.h"
 #include "refine/refine.h"
 #include "util/memory_budget.h"
 
@@ -255,14 +256,19 @@ bool refinement_wanted(const Switches& sw, const InputFiles& in) {
 
 // -r: the previous mesh's triangles, its .poly segments (with -p) and its .area bounds. Holes
 // are not carved again and regions are not read, as in Triangle.
-void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, RunReport& report) {
+// The .area bounds are kept as a field over the triangles as read (refine/area_field.h), before
+// the flips that make the mesh constrained Delaunay re-cut them.
+void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, RunReport& report, AreaField& area_field) {
   Predicates pred;
   const std::string ele_path = in.base + ".ele";
   const EleData ele = read_ele_file(ele_path, pslg.first_index, mesh.vertex_count());
   rebuild_mesh(mesh, pred, ele, ele_path);
   if (in.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {});
   protect_boundary(mesh);
-  if (in.area_file) mesh.area_bound = read_area_file(in.base + ".area", ele.triangle_count());
+  if (in.area_file) {
+    mesh.area_bound = read_area_file(in.base + ".area", ele.triangle_count());
+    area_field = AreaField::of(mesh);
+  }
   make_constrained_delaunay(mesh, pred);
   report.counters.add(pred.counters);
 }
@@ -308,8 +314,9 @@ int run(const Switches& sw) {
   timer.stage("read");
 
   Mesh mesh = mesh_from_pslg(pslg);
+  AreaField area_field;
   if (in.refine) {
-    rebuild(mesh, pslg, in, report);
+    rebuild(mesh, pslg, in, report, area_field);
     timer.stage("mesh reconstruction");
     check_stage(mesh, "mesh reconstruction");
   } else {
@@ -332,7 +339,9 @@ int run(const Switches& sw) {
     if (!in.is_poly && !sw.convex_hull && !in.refine) enclose_convex_hull(mesh);  // a point set is bounded by its hull
     Predicates pred;
     if (!in.refine && (sw.convex_hull || !in.is_poly)) report.hull_absorbed = absorb_near_hull_vertices(mesh, pred);
-    report.refine = refine_mesh(mesh, pred, refine_options(sw, in));
+    RefineOptions opt = refine_options(sw, in);
+    opt.area_field = &area_field;
+    report.refine = refine_mesh(mesh, pred, opt);
     report.counters.add(pred.counters);
     mesh.compact_triangles();
     timer.stage("refinement");

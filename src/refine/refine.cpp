@@ -71,9 +71,10 @@ RefineReport refine_beyond_reach(Mesh& mesh, Predicates& pred, const RefineOptio
 // of the first stage's size, time and memory (the copy kept is one more first-stage mesh).
 RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& asked) {
   refuse_impossible_size_bounds(mesh, asked);
-  const AreaField field = asked.use_triangle_area_bounds ? AreaField::of(mesh) : AreaField{};
+  const bool given = asked.area_field != nullptr && !asked.area_field->empty();
+  const AreaField field = asked.use_triangle_area_bounds && !given ? AreaField::of(mesh) : AreaField{};
   RefineOptions opt = asked;
-  opt.area_field = &field;
+  if (!given) opt.area_field = &field;
   if (!can_cascade(opt)) return refine_within_reach(mesh, pred, opt);
   RefineOptions reach = opt;
   reach.min_angle_deg = kCascadeAngleDeg;

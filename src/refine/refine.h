@@ -46,7 +46,9 @@ struct RefineOptions {
   // before refinement starts (MemoryError), and the Steiner cap never allows more
   // (termination_guard.h). The command line sets it from the machine (util/memory_budget.h).
   double memory_budget = 0.0;
-  // Set by refine_mesh: the field of bounds that vary within a region (refine/area_field.h).
+  // The field of bounds that vary within a region (refine/area_field.h), built from the mesh as
+  // the caller read it (-r: before it was made constrained Delaunay); if null or empty,
+  // refine_mesh builds one from the mesh it is given.
   const AreaField* area_field = nullptr;
 };
 

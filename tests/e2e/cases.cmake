@@ -252,3 +252,15 @@ add_test(NAME e2e.refine.triangle_counts
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/triangle_counts.sh $<TARGET_FILE:deltri>
                  $<TARGET_FILE:deltri_mesh_verify> ${E2E_DATA} ${CMAKE_CURRENT_SOURCE_DIR}/e2e/triangle_counts.md)
 set_tests_properties(e2e.refine.triangle_counts PROPERTIES TIMEOUT 300)
+
+# ---- -r with an .area file: every triangle meets the bound of the input triangle its centroid
+# lies in (exact rational lookup in tests/e2e/area_inheritance.py), sparse and full files ----
+foreach(input ${E2E_INPUTS}/plate.poly ${E2E_DATA}/guitar.poly ${E2E_DATA}/water.poly)
+  get_filename_component(stem ${input} NAME_WE)
+  foreach(mode sparse full)
+    add_test(NAME e2e.area_inheritance.${stem}.${mode}
+             COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/e2e/area_inheritance.py $<TARGET_FILE:deltri>
+                     ${CMAKE_CURRENT_BINARY_DIR}/area_inheritance/${stem}.${mode} ${input} -pq30 ${mode})
+    set_tests_properties(e2e.area_inheritance.${stem}.${mode} PROPERTIES TIMEOUT 600)
+  endforeach()
+endforeach()

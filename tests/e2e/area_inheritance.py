@@ -1,0 +1,95 @@
+#!/usr/bin/env python3
+"""-r with an .area file: every triangle of the result must meet the bound of the input triangle its
+centroid lies in (the input triangle is found with exact rational arithmetic, independent of
+deltri's predicates).
+
+    area_inheritance.py DELTRI WORKDIR INPUT.poly SWITCHES MODE
+
+deltri meshes INPUT.poly with SWITCHES (e.g. -pq30) into INPUT.1, an .area file is written for it
+(MODE sparse: a bound on every seventh triangle, a tenth of its area; full: every triangle, a
+third to a twentieth of its area), deltri -rqa refines it, and the check runs over INPUT.2.
+"""
+import os, shutil, subprocess, sys
+from fractions import Fraction
+
+deltri, work, poly, switches, mode = sys.argv[1:6]
+os.makedirs(work, exist_ok=True)
+base = os.path.splitext(os.path.basename(poly))[0]
+shutil.copy(poly, work)
+
+
+def run(*args):
+    r = subprocess.run([deltri, *args], cwd=work, capture_output=True, text=True, timeout=600)
+    if r.returncode != 0:
+        sys.exit(f"deltri {' '.join(args)} failed ({r.returncode}): {r.stderr}")
+
+
+def read(stem):
+    def rows(path):
+        out = []
+        with open(os.path.join(work, path)) as f:
+            for line in f:
+                w = line.split('#')[0].split()
+                if w: out.append(w)
+        return out
+    nodes = rows(stem + '.node')
+    first = int(nodes[1][0])
+    pts = {int(w[0]) - first: (float(w[1]), float(w[2])) for w in nodes[1:]}
+    eles = rows(stem + '.ele')
+    tris = [[int(x) - first for x in w[1:4]] for w in eles[1:]]
+    return pts, tris
+
+
+def area(p, q, r):
+    return abs((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])) / 2
+
+
+run(switches + 'Q', base + '.poly')
+pts, tris = read(base + '.1')
+bounds = []
+for i, t in enumerate(tris):
+    a = area(*(pts[v] for v in t))
+    if mode == 'sparse':
+        bounds.append(a / 10 if i % 7 == 3 else -1.0)
+    else:
+        bounds.append(a / (3 + i % 18))
+with open(os.path.join(work, base + '.1.area'), 'w') as f:
+    f.write(f"{len(tris)}\n")
+    for i, b in enumerate(bounds):
+        f.write(f"{i + 1} {b!r}\n")
+run('-rqaQ', base + '.1')
+out_pts, out_tris = read(base + '.2')
+
+# A grid of the input triangles' boxes for lookups.
+F = [(Fraction(x), Fraction(y)) for x, y in (pts[i] for i in range(len(pts)))]
+xs = [p[0] for p in pts.values()]; ys = [p[1] for p in pts.values()]
+lo_x, lo_y, size = min(xs), min(ys), max(max(xs) - min(xs), max(ys) - min(ys)) / 64 or 1.0
+grid = {}
+for i, t in enumerate(tris):
+    bx = [pts[v][0] for v in t]; by = [pts[v][1] for v in t]
+    for gx in range(int((min(bx) - lo_x) / size), int((max(bx) - lo_x) / size) + 1):
+        for gy in range(int((min(by) - lo_y) / size), int((max(by) - lo_y) / size) + 1):
+            grid.setdefault((gx, gy), []).append(i)
+
+
+def orient(a, b, c):
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+
+bad = checked = 0
+for t in out_tris:
+    p = [out_pts[v] for v in t]
+    g = tuple(sum(Fraction(q[k]) for q in p) / 3 for k in (0, 1))
+    cell = (int((float(g[0]) - lo_x) / size), int((float(g[1]) - lo_y) / size))
+    owners = [i for i in grid.get(cell, [])
+              if all(orient(F[tris[i][k]], F[tris[i][(k + 1) % 3]], g) >= 0 for k in range(3))]
+    if not owners:
+        sys.exit(f"centroid {tuple(map(float, g))} lies in no input triangle")
+    bound = min((bounds[i] for i in owners if bounds[i] > 0), default=-1.0)
+    if bound <= 0: continue
+    checked += 1
+    if area(*p) > bound * (1 + 1e-12):
+        bad += 1
+        if bad <= 5: print(f"triangle {t}: area {area(*p):.6g} over the bound {bound:.6g} of input triangle {owners}")
+print(f"{base} {mode}: {len(tris)} -> {len(out_tris)} triangles, {checked} in bounded input triangles, {bad} over their bound")
+sys.exit(1 if bad or checked == 0 else 0)
