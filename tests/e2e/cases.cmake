@@ -131,6 +131,10 @@ e2e_case(error.empty gen:empty.node none --exit 1 --error "empty.node: ")
 e2e_case(error.directory gen:dir.node none --exit 1 --error "dir.node: ")
 # ---- bad switches: exit 2 (-k is a valid switch, so -t stands for an unknown letter) ----
 e2e_case(error.switch ${G} -pt --exit 2 --error "deltri: -t: unknown switch")
+# The exact text of --version, -a-1, a bare -a with nothing to apply, -h on -s, the JSON's version,
+# Steiner counts and empty-mesh angle (tests/e2e/messages.sh).
+add_test(NAME e2e.messages COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/messages.sh $<TARGET_FILE:deltri> ${E2E_DATA}
+         ${E2E_INPUTS} ${PROJECT_VERSION})
 
 # ---- -r: refine a previous mesh (round trip, refinement of a refined mesh, a bad .ele) ----
 add_test(NAME e2e.refine_chain.guitar
