@@ -24,9 +24,9 @@ demo: configure
 # The test readers and solvers are installed first where possible (tests/setup/install_test_deps.sh);
 # the tests that need one that is missing are reported as skipped.
 test: build
-	@sh tests/setup/install_test_deps.sh
+	@sh tests/setup/install_test_deps.sh $(BUILD)/test-deps-missing
 	@cd $(BUILD) && status=0 && ctest --output-on-failure -j $(JOBS) || status=$$?; \
-	  sh "$(CURDIR)/tests/setup/install_test_deps.sh" --hint; exit $$status
+	  sh "$(CURDIR)/tests/setup/install_test_deps.sh" --hint test-deps-missing; exit $$status
 
 bench: build
 	@python3 tests/bench/bench.py $(BUILD) $(BENCH_FLAGS)

@@ -1,9 +1,11 @@
 #!/bin/sh
 # The test readers and solvers that some tests run (formats.*, the solver tests): installed once by
 # `make test` before CTest, so that the README's two commands are the whole set-up on Debian.
-#   install_test_deps.sh          check each; install the missing ones with apt-get (as root, or
-#                                 through sudo when it needs no password); say what it does
-#   install_test_deps.sh --hint   only say what is still missing and the command that installs it
+#   install_test_deps.sh [STATE]         check each; install the missing ones with apt-get (as root,
+#                                        or through sudo when it needs no password); say what it
+#                                        does; write what is still missing into the file STATE
+#   install_test_deps.sh --hint [STATE]  only say what is still missing (as STATE says, else as
+#                                        checked now) and the command that installs it
 # A package already there costs one quick check (command -v, a Python import, dpkg-query), so a
 # second run does nothing. Where installing is not possible the tests that need the package exit
 # 77 and CTest reports them as skipped; the rest still run. DELTRI_NO_INSTALL=1 never installs.
@@ -33,13 +35,17 @@ missing() {
   done
 }
 
-todo=$(missing)
-todo=${todo% }
-if [ -z "$todo" ]; then
+if [ "${1:-}" = --hint ]; then
+  if [ -n "${2:-}" ] && [ -f "$2" ]; then todo=$(cat "$2"); else todo=$(missing); fi
+  todo=${todo% }
+  [ -z "$todo" ] || echo "tests: skipped where these are missing: $todo; install them with: sudo apt-get install -y $todo"
   exit 0
 fi
-if [ "${1:-}" = --hint ]; then
-  echo "tests: skipped where these are missing: $todo; install them with: sudo apt-get install -y $todo"
+state=${1:-/dev/null}
+todo=$(missing)
+todo=${todo% }
+echo "$todo" >"$state"
+if [ -z "$todo" ]; then
   exit 0
 fi
 
@@ -72,6 +78,7 @@ if ! apt_install; then
 fi
 left=$(missing)
 left=${left% }
+echo "$left" >"$state"
 if [ -n "$left" ]; then
   tail -n 5 "$log"
   echo "tests: still missing: $left; the tests that need them will be skipped (sudo apt-get install -y $left)"
