@@ -54,9 +54,12 @@ void parse_word(std::string_view word, Switches& s) {
     double value = 0.0;
     if (row->arg != ArgKind::None) {
       // Triangle has no negative bounds, and "-a-1" must not turn into a bare -a and a stray "-".
-      if (i + 1 < word.size() && word[i] == '-' && number_length(word.substr(i + 1), false) > 0)
-        throw UsageError(std::string("-") + letter + std::string(word.substr(i, 1 + number_length(word.substr(i + 1), false))) +
-                         ": " + negative_number_message(letter));
+      if (i + 1 < word.size() && word[i] == '-') {
+        const std::size_t digits = number_length(word.substr(i + 1), false);
+        if (digits > 0)
+          throw UsageError(std::string("-") + letter + std::string(word.substr(i, 1 + digits)) + ": " +
+                           negative_number_message(letter));
+      }
       const std::size_t n = number_length(word.substr(i), row->arg == ArgKind::OptionalInt);
       if (n == 0 && row->arg == ArgKind::RequiredReal)
         throw UsageError(std::string("-") + letter + ": a number must follow, e.g. -" + letter + "0.05");
