@@ -2,26 +2,53 @@
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
+PREFIX ?= /usr/local
+DESTDIR ?=
 
-.PHONY: all build demo test bench clean check-sanitize fuzz
+.PHONY: all build configure demo test bench clean check-sanitize check-fresh fuzz install uninstall
 
 all: build
 
-build:
+configure:
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) >/dev/null
+
+build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-demo: build
-	@sh tests/demo.sh $(BUILD)/deltri data
+# Only the program (the test binaries are built by `make test`), then every sample in data/ meshed
+# with quality into $(BUILD)/demo/, one line and one SVG picture per file.
+demo: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target deltri
+	@sh tests/demo.sh $(BUILD)/deltri data $(BUILD)/demo
 
+# The test readers and solvers are installed first where possible (tests/setup/install_test_deps.sh);
+# the tests that need one that is missing are reported as skipped.
 test: build
-	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	@sh tests/setup/install_test_deps.sh $(BUILD)/test-deps-missing
+	@cd $(BUILD) && status=0 && ctest --output-on-failure -j $(JOBS) || status=$$?; \
+	  sh "$(CURDIR)/tests/setup/install_test_deps.sh" --hint test-deps-missing; exit $$status
 
 bench: build
 	@python3 tests/bench/bench.py $(BUILD) $(BENCH_FLAGS)
 
 check-sanitize:
 	@$(MAKE) --no-print-directory test BUILD=build-sanitize CMAKE_FLAGS="-DDELTRI_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo"
+
+# The README's two commands in a fresh clone of this checkout's HEAD, from a clean environment,
+# with MAKEFLAGS unset and then set to -s (tests/setup/check_fresh.sh). Not part of `make test`.
+check-fresh:
+	@sh tests/setup/check_fresh.sh "$(CURDIR)"
+
+# deltri in $(PREFIX)/bin and its man page in $(PREFIX)/share/man/man1 (CMake's install rules).
+# (An existing build is installed as configured, e.g. build-sanitize; a new one is a Release build.)
+install:
+	@test -f $(BUILD)/CMakeCache.txt || cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS) --target deltri
+	@DESTDIR="$(DESTDIR)" cmake --install $(BUILD) --prefix "$(PREFIX)"
+
+# Removes exactly what `make install` with the same PREFIX and DESTDIR put there.
+uninstall:
+	rm -f "$(DESTDIR)$(PREFIX)/bin/deltri" "$(DESTDIR)$(PREFIX)/share/man/man1/deltri.1"
 
 # libFuzzer with clang, separate from the g++ build; see docs/reliability.md. Not part of CI.
 FUZZ_SECONDS ?= 60

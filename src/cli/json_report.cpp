@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "cli/version.h"
 #include "quality/statistics.h"
 
 namespace deltri {
@@ -93,6 +94,7 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   Json j;
   j.open();
   j.string("program", "deltri");
+  j.string("version", version());
   j.string("command", sw.command_line);
   j.string("input", r.input_name);
   j.integer("exit_status", static_cast<unsigned long long>(exit_status));
@@ -114,20 +116,28 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   j.integer("edges", stats.edges);
   j.integer("boundary_edges", stats.exterior_boundary_edges);
   j.integer("subsegments", stats.subsegments);
-  j.integer("steiner_points", r.refine ? r.refine->interior_steiner + r.refine->segment_steiner : 0);
+  // Refinement inserts Steiner points and may delete some of them again (free vertices near a
+  // segment it splits): both counts, and what is left of them in the mesh.
+  const unsigned long long inserted = r.refine ? r.refine->interior_steiner + r.refine->segment_steiner : 0;
+  const unsigned long long deleted = r.refine ? r.refine->vertices_deleted : 0;
+  j.integer("steiner_points", inserted);
+  j.integer("steiner_points_deleted", deleted);
+  j.integer("steiner_points_kept", inserted - deleted);
   j.close();
 
   j.open("quality");
   j.optional_number("min_angle_bound", sw.quality, sw.min_angle);
   j.optional_number("max_area_bound", sw.fixed_area, sw.max_area);
   j.optional_number("max_edge_length_bound", sw.user_test, sw.max_edge_length);
-  j.number("smallest_angle", stats.smallest_angle);
-  j.number("largest_angle", stats.largest_angle);
-  j.number("smallest_area", stats.smallest_area);
-  j.number("largest_area", stats.largest_area);
-  j.number("shortest_edge", stats.shortest_edge);
-  j.number("longest_edge", stats.longest_edge);
-  j.number("largest_aspect_ratio", stats.largest_aspect_ratio);
+  // An empty mesh has no shapes: null, not 0 (which would be a real, and terrible, angle).
+  const bool shapes = stats.triangles > 0;
+  j.optional_number("smallest_angle", shapes, stats.smallest_angle);
+  j.optional_number("largest_angle", shapes, stats.largest_angle);
+  j.optional_number("smallest_area", shapes, stats.smallest_area);
+  j.optional_number("largest_area", shapes, stats.largest_area);
+  j.optional_number("shortest_edge", shapes, stats.shortest_edge);
+  j.optional_number("longest_edge", shapes, stats.longest_edge);
+  j.optional_number("largest_aspect_ratio", shapes, stats.largest_aspect_ratio);
   const auto& q = r.refine;
   j.integer("triangles_missing_bounds", q ? q->bad_triangles_left : 0);
   j.open("why_missed", '[');

@@ -6,12 +6,17 @@
 
 #include "cli/run.h"
 #include "cli/switches.h"
+#include "cli/version.h"
 #include "pslg/errors.h"
 
 int main(int argc, char** argv) {
   using namespace deltri;
   try {
     const Switches switches = parse_switches(argc, argv);
+    if (switches.version) {
+      std::printf("deltri %s\n", version());
+      return kExitOk;
+    }
     if (switches.man) {
       std::fputs(man_page().c_str(), stdout);
       return kExitOk;

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "cdt/convex_hull.h"
+#include "cli/version.h"
 #include "quality/statistics.h"
 #include "refine/termination_guard.h"
 
@@ -11,6 +12,14 @@ namespace {
 
 std::string plural(std::size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// Whether some region of the .poly bounds the area of its triangles (a bare -a uses them).
+bool has_regional_area_bounds(const Pslg* pslg) {
+  if (!pslg) return false;
+  for (const Pslg::Region& region : pslg->regions)
+    if (region.max_area > 0.0) return true;
+  return false;
 }
 
 }  // namespace
@@ -63,6 +72,8 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
            (q->stopped_by_guard ? ", where the termination guard stopped refinement" : "") + " (" + both + ")");
     }
   }
+  if (r.switches && r.switches->variable_area && !r.area_file && !has_regional_area_bounds(r.pslg))
+    warn("bare -a has no effect: the input has no regional area bounds (-a<area> bounds every triangle)");
   if (mesh.live_triangles() == 0) {
     if (r.pslg && r.pslg->has_segment_section && mesh.vertex_count() >= 3 && r.holes && r.holes->triangles_removed > 0)
       warn("every triangle lies outside the segments or in a hole: the mesh is empty (try -c or -O)");
@@ -98,6 +109,7 @@ void Messages::finished(const Mesh& mesh, const RunReport& r) const {
 }
 
 void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
+  std::fprintf(out_, "deltri %s\n", version());
   std::fprintf(out_, "Stage timings:\n");
   for (const auto& s : r.stages) std::fprintf(out_, "  %-20s %10.4f s\n", s.name, s.seconds);
   std::fprintf(out_, "  %-20s %10.4f s\n", "total", r.total_seconds);

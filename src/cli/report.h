@@ -35,6 +35,7 @@ struct RunReport {
   std::optional<HoleReport> holes;
   std::optional<CheckReport> check;
   std::optional<RefineReport> refine;
+  bool area_file = false;         // per-triangle area bounds were read (-r with a bare -a, or a .area)
   std::size_t hull_absorbed = 0;  // vertices taken into the hull chain (absorb_near_hull_vertices)
   PredicateCounters counters;
   std::vector<std::string> written;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -249,6 +250,22 @@ void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
   }
 }
 
+// A long option may name any file, also the one this run reads (--msh=box.poly for box.poly):
+// replacing the input is never what was meant. (Triangle's own names cannot clash with this run's
+// input, -rI aside, which parse_switches refuses; an older output under them is replaced, as in
+// Triangle.)
+void refuse_overwriting_inputs(const RunReport& report, const InputFiles& in, const Pslg& pslg) {
+  std::vector<std::string> inputs = {in.path, pslg.source_name};
+  if (in.refine) inputs.push_back(in.base + ".ele");
+  if (in.area_file) inputs.push_back(in.base + ".area");
+  for (const std::string& output : report.written)
+    for (const std::string& input : inputs) {
+      std::error_code ec;
+      if (!input.empty() && input != "-" && std::filesystem::equivalent(output, input, ec))
+        throw OutputError(output + ": is an input of this run, not overwritten (no files written)");
+    }
+}
+
 bool refinement_wanted(const Switches& sw, const InputFiles& in) {
   return sw.quality || sw.fixed_area || sw.variable_area || in.area_file || sw.user_test ||
          sw.conforming_delaunay;
@@ -306,6 +323,7 @@ int run(const Switches& sw) {
 
   const InputFiles in = input_files(sw);
   report.input_name = in.path == "-" ? kStandardInputName : in.path;
+  report.area_file = in.area_file;
   Pslg pslg = in.is_poly ? read_poly_file(in.path) : read_node_file(in.path);
   check_coordinate_range(pslg, pslg.source_name.empty() ? in.path : pslg.source_name);
   report.pslg = &pslg;
@@ -374,6 +392,7 @@ int run(const Switches& sw) {
   OutputSet outputs;
   schedule_outputs(outputs, {mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering,
                              sw.order == 2 ? &midpoints : nullptr, report, status});
+  refuse_overwriting_inputs(report, in, pslg);
   outputs.commit();
   timer.stage("write");
   report.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

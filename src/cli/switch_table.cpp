@@ -20,7 +20,7 @@ void set_a(S& s, bool has, double v) {
     s.variable_area = true;
     return;
   }
-  if (!(v > 0.0)) throw UsageError("-a: the maximum area must be positive");
+  if (!(v > 0.0)) throw UsageError("-a: the maximum area must be a positive number, e.g. -a0.1");
   s.fixed_area = true;
   s.max_area = v;
 }
@@ -87,7 +87,7 @@ constexpr std::array kTable = {
               [](S& s, bool, double) { s.sweepline = true; }},
     SwitchRow{'l', ArgKind::None, "", "divide and conquer with vertical cuts only",
               [](S& s, bool, double) { s.algorithm = DelaunayAlgorithm::VerticalCuts; }},
-    SwitchRow{'s', ArgKind::None, "", "insert segments by splitting them (conforming)",
+    SwitchRow{'s', ArgKind::None, "", "accepted and ignored for now (Triangle: insert segments by splitting them)",
               [](S& s, bool, double) { s.split_segments = true; }},
     SwitchRow{'C', ArgKind::None, "", "check the final mesh for consistency and the Delaunay property",
               [](S& s, bool, double) { s.check = true; }},
@@ -141,6 +141,8 @@ constexpr std::array kLongOptions = {
                [](S& s, const std::string*) { s.decline_cluster_splits = true; }},
     LongOption{"man", "", false, "print the manual page (roff) and exit",
                [](S& s, const std::string*) { s.man = true; }},
+    LongOption{"version", "", false, "print the version and exit",
+               [](S& s, const std::string*) { s.version = true; }},
     LongOption{"help", "", false, "print this help and exit (as -h)",
                [](S& s, const std::string*) { s.help = true; }},
 };

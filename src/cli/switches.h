@@ -56,6 +56,7 @@ struct Switches {
   bool svg_numbers = false;      // --svg-numbers: vertex numbers in the picture
   bool strict = false;           // --strict: exit status 3 when triangles miss the bounds
   bool man = false;              // --man: print the manual page (roff) and exit
+  bool version = false;          // --version: print the version and exit
 
   // How to run.
   bool check = false;            // -C

@@ -24,6 +24,27 @@ import zlib
 DELTRI, DATA, INPUTS = (os.path.abspath(a) for a in sys.argv[1:4])
 WHAT = sys.argv[4:]
 
+# What each check reads its files with, and the Debian package that has it.
+NEEDS = {"msh": ["meshio", "gmsh"], "vtu": ["meshio"], "svg": ["rsvg-convert"], "pipe": ["meshio", "gmsh"]}
+PACKAGE = {"meshio": "python3-meshio", "gmsh": "gmsh", "rsvg-convert": "librsvg2-bin"}
+
+
+def skip_when_missing():
+    """Exit 77 (CTest: skipped) naming what is missing and how to install it."""
+    missing = []
+    for tool in sorted({t for w in WHAT for t in NEEDS.get(w, [])}):
+        if tool == "meshio":
+            try:
+                import meshio  # noqa: F401
+            except ImportError:
+                missing.append(tool)
+        elif shutil.which(tool) is None:
+            missing.append(tool)
+    if missing:
+        packages = " ".join(PACKAGE[t] for t in missing)
+        print(f"SKIP: missing {', '.join(missing)}; install with: sudo apt-get install -y {packages}")
+        sys.exit(77)
+
 
 def fail(message):
     print("FAIL:", message)
@@ -297,6 +318,7 @@ def check_json(r, extra_files):
 
 
 def main():
+    skip_when_missing()
     guitar, plate = os.path.join(DATA, "guitar.poly"), os.path.join(INPUTS, "plate.poly")
     water, ukraine = os.path.join(DATA, "water.poly"), os.path.join(DATA, "ukraine.node")
     attrs = os.path.join(INPUTS, "sq_attr.node")

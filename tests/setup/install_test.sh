@@ -1,0 +1,40 @@
+#!/bin/sh
+# `make install` and `make uninstall` (Makefile, CMake's install rules) into scratch folders:
+#   install_test.sh SOURCE_DIR BUILD_DIR
+# 1. PREFIX=<tmp>/prefix; 2. DESTDIR=<tmp>/dest with the default PREFIX (/usr/local). Each time the
+# installed deltri must run (its --version equals the build's; it meshes data/box.poly), the man
+# page must be docs/deltri.1, and uninstall must remove both and nothing else.
+set -u
+# How the surrounding make was called must not matter here.
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES GNUMAKEFLAGS
+src=$1 build=$2
+work=$(mktemp -d) || exit 1
+trap 'rm -rf "$work"' EXIT
+failed=0
+fail() { echo "FAIL: $*"; failed=1; }
+
+check_installed() {  # ROOT: the folder bin/ and share/ are in
+  root=$1
+  [ -x "$root/bin/deltri" ] || { fail "$root/bin/deltri missing"; return; }
+  [ "$("$root/bin/deltri" --version)" = "$("$build/deltri" --version)" ] || fail "the installed deltri's --version differs"
+  cmp -s "$root/share/man/man1/deltri.1" "$src/docs/deltri.1" || fail "$root/share/man/man1/deltri.1 is not docs/deltri.1"
+  mkdir -p "$work/run" && cp "$src/data/box.poly" "$work/run/"
+  (cd "$work/run" && "$root/bin/deltri" -pq30Q box.poly) || fail "the installed deltri could not mesh box.poly"
+  [ -s "$work/run/box.1.ele" ] || fail "the installed deltri wrote no box.1.ele"
+  rm -rf "$work/run"
+}
+files() { (cd "$1" && find . -type f | LC_ALL=C sort | tr '\n' ' '); }
+
+make -s -C "$src" install BUILD="$build" PREFIX="$work/prefix" >"$work/log" 2>&1 || fail "make install PREFIX=...: $(cat "$work/log")"
+check_installed "$work/prefix"
+[ "$(files "$work/prefix")" = "./bin/deltri ./share/man/man1/deltri.1 " ] || fail "installed: $(files "$work/prefix")"
+make -s -C "$src" uninstall PREFIX="$work/prefix" >"$work/log" 2>&1 || fail "make uninstall PREFIX=...: $(cat "$work/log")"
+[ -z "$(files "$work/prefix")" ] || fail "left after uninstall: $(files "$work/prefix")"
+
+make -s -C "$src" install BUILD="$build" DESTDIR="$work/dest" >"$work/log" 2>&1 || fail "make install DESTDIR=...: $(cat "$work/log")"
+check_installed "$work/dest/usr/local"
+make -s -C "$src" uninstall DESTDIR="$work/dest" >"$work/log" 2>&1 || fail "make uninstall DESTDIR=...: $(cat "$work/log")"
+[ -z "$(files "$work/dest")" ] || fail "left after uninstall: $(files "$work/dest")"
+
+[ $failed = 0 ] && echo "install: deltri in PREFIX/bin and deltri.1 in PREFIX/share/man/man1 (PREFIX=... and DESTDIR=...), both run/match, uninstall removes them"
+exit $failed
