@@ -231,8 +231,12 @@ void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
   if (sw.neighbors) add(out + ".neigh", [&mesh, first](ByteSink& s) { write_neigh_file(s, mesh, first); });
   if (sw.geomview) add(out + ".off", [&mesh, numbering](ByteSink& s) { write_off_file(s, mesh, numbering); });
   const ExportOptions exp{numbering, c.midpoints, markers};
-  if (sw.msh.wanted) add(requested_path(sw.msh, out, "msh"), [&mesh, exp](ByteSink& s) { write_msh_file(s, mesh, exp); });
-  if (sw.vtu.wanted) add(requested_path(sw.vtu, out, "vtu"), [&mesh, exp](ByteSink& s) { write_vtu_file(s, mesh, exp); });
+  const MshFormat msh_format{sw.msh_version, sw.msh_binary};
+  if (sw.msh.wanted)
+    add(requested_path(sw.msh, out, "msh"), [&mesh, exp, msh_format](ByteSink& s) { write_msh_file(s, mesh, exp, msh_format); });
+  const bool vtu_binary = sw.vtu_binary;
+  if (sw.vtu.wanted)
+    add(requested_path(sw.vtu, out, "vtu"), [&mesh, exp, vtu_binary](ByteSink& s) { write_vtu_file(s, mesh, exp, vtu_binary); });
   if (sw.svg.wanted) {
     const SvgOptions opt{exp, first, sw.svg_numbers, holes};
     add(requested_path(sw.svg, out, "svg"), [&mesh, opt](ByteSink& s) { write_svg_file(s, mesh, opt); });
