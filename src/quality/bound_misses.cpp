@@ -13,6 +13,10 @@ namespace {
 // by the same bound in its own rounding is not counted for a last-bit difference.
 constexpr double kMargin = 1e-12;
 
+// Input angles under this are "small": the region near them is exempt (as in Triangle and in
+// Miller, Pav and Walkington's analysis, refinement cannot be asked to do better there).
+constexpr double kSmallInputAngle = 60.0;
+
 double length(const Point& a, const Point& b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
 double angle_at(const Point& a, const Point& b, const Point& c) {
@@ -51,21 +55,21 @@ bool at_precision_limit(const Mesh& m, TriangleId t) {
 
 // The segments at each vertex: direction angles and input segment numbers.
 struct Spoke {
-  double direction;  // radians, atan2
+  double direction;  // radians, atan2, in (-pi, pi]
   VertexId to;
   std::uint32_t segment;
 };
 
 struct SegmentVertices {
-  std::vector<std::vector<Spoke>> spokes;               // per vertex, by direction
-  std::vector<char> on_segment;                         // per vertex
-  std::vector<std::vector<VertexId>> segment_vertices;  // per input segment: the vertices on it
+  std::vector<std::vector<Spoke>> spokes;             // per vertex, by direction
+  std::vector<std::vector<std::uint32_t>> segments;   // per vertex: the input segments it lies on
+  std::vector<std::vector<VertexId>> junctions;       // per input segment: its vertices on other segments too
 };
 
 SegmentVertices collect_spokes(const Mesh& m) {
   SegmentVertices s;
   s.spokes.resize(m.vertex_count());
-  s.on_segment.assign(m.vertex_count(), 0);
+  s.segments.resize(m.vertex_count());
   if (!m.has_subsegments()) return s;
   for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
@@ -76,93 +80,97 @@ SegmentVertices collect_spokes(const Mesh& m) {
       const Point &p = m.points[a], &q = m.points[b];
       s.spokes[a].push_back({std::atan2(q.y - p.y, q.x - p.x), b, seg});
       s.spokes[b].push_back({std::atan2(p.y - q.y, p.x - q.x), a, seg});
-      s.on_segment[a] = s.on_segment[b] = 1;
-      if (seg == kNone) continue;
-      if (seg >= s.segment_vertices.size()) s.segment_vertices.resize(seg + 1);
-      s.segment_vertices[seg].push_back(a);
-      s.segment_vertices[seg].push_back(b);
     }
   }
-  for (auto& list : s.spokes)
+  for (VertexId v = 0; v < m.vertex_count(); ++v) {
+    auto& list = s.spokes[v];
     std::sort(list.begin(), list.end(), [](const Spoke& x, const Spoke& y) { return x.direction < y.direction; });
+    for (const Spoke& k : list)
+      if (std::find(s.segments[v].begin(), s.segments[v].end(), k.segment) == s.segments[v].end())
+        s.segments[v].push_back(k.segment);
+    if (s.segments[v].size() < 2) continue;
+    for (std::uint32_t seg : s.segments[v]) {
+      if (seg == kNone) continue;
+      if (seg >= s.junctions.size()) s.junctions.resize(seg + 1);
+      s.junctions[seg].push_back(v);
+    }
+  }
   return s;
 }
 
-// A vertex deltri made where input segments cross or overlap.
+// A vertex deltri made where input segments cross or overlap: not an input vertex, yet on two.
 bool repaired_vertex(const Mesh& m, const SegmentVertices& s, VertexId v) {
-  if (m.kind[v] == VertexKind::Input) return false;
-  for (const Spoke& k : s.spokes[v])
-    if (k.segment != s.spokes[v].front().segment) return true;
+  return m.kind[v] != VertexKind::Input && s.segments[v].size() >= 2;
+}
+
+double angle_between(double from, double to) {  // counter-clockwise, in [0, 2 pi)
+  double a = to - from;
+  while (a < 0) a += 2 * std::numbers::pi;
+  while (a >= 2 * std::numbers::pi) a -= 2 * std::numbers::pi;
+  return a;
+}
+
+// Rule 1: corner v of a triangle whose other corners q, r lie inside the sector between two
+// neighbouring segments at v, when that sector is under kSmallInputAngle.
+bool in_small_sector(const Mesh& m, const SegmentVertices& s, VertexId v, VertexId q, VertexId r) {
+  const auto& list = s.spokes[v];
+  if (list.size() < 2) return false;
+  const Point& o = m.points[v];
+  const double dq = std::atan2(m.points[q].y - o.y, m.points[q].x - o.x);
+  const double dr = std::atan2(m.points[r].y - o.y, m.points[r].x - o.x);
+  const double small = kSmallInputAngle * std::numbers::pi / 180.0;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const double from = list[i].direction, to = list[(i + 1) % list.size()].direction;
+    const double gap = angle_between(from, to);
+    if (gap >= small || gap == 0.0) continue;
+    if (angle_between(from, dq) <= gap && angle_between(from, dr) <= gap) return true;
+  }
   return false;
 }
 
-// The reach of the narrow angles at v: 0 when no two angularly consecutive segments at v meet at
-// less than the -q bound, otherwise the squared distance from v to the farthest vertex on an
-// input segment forming such an angle (the region refinement must shape around the angle).
-double narrow_reach2(const Mesh& m, const SegmentVertices& s, VertexId v, double bound_deg) {
-  const auto& list = s.spokes[v];
-  if (list.size() < 2 || bound_deg <= 0.0) return 0.0;
-  const double bound = bound_deg * std::numbers::pi / 180.0;
-  const Point& o = m.points[v];
-  const auto distance2 = [&](VertexId w) {
-    const double dx = m.points[w].x - o.x, dy = m.points[w].y - o.y;
-    return dx * dx + dy * dy;
-  };
-  const auto farthest2 = [&](const Spoke& k) {
-    double d2 = distance2(k.to);
-    if (k.segment != kNone && k.segment < s.segment_vertices.size())
-      for (VertexId w : s.segment_vertices[k.segment]) d2 = std::max(d2, distance2(w));
-    return d2;
-  };
-  double reach2 = 0.0;
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const Spoke& a = list[i];
-    const Spoke& b = list[(i + 1) % list.size()];
-    double gap = b.direction - a.direction;
-    if (i + 1 == list.size()) gap += 2 * std::numbers::pi;
-    if (gap < bound) reach2 = std::max({reach2, farthest2(a), farthest2(b)});
-  }
-  return reach2;
+// The smallest angle at junction j between a piece of segment a and a piece of segment b.
+double junction_angle(const SegmentVertices& s, VertexId j, std::uint32_t a, std::uint32_t b) {
+  double smallest = std::numbers::pi;
+  for (const Spoke& x : s.spokes[j])
+    for (const Spoke& y : s.spokes[j])
+      if (x.segment == a && y.segment == b) {
+        const double d = angle_between(x.direction, y.direction);
+        smallest = std::min({smallest, d, 2 * std::numbers::pi - d});
+      }
+  return smallest;
 }
 
-bool within(const Mesh& m, VertexId apex, double reach2, TriangleId t) {
-  const Point& o = m.points[apex];
-  for (int i = 0; i < 3; ++i) {
-    const Point& p = m.points[m.corner[3 * t + i]];
-    const double dx = p.x - o.x, dy = p.y - o.y;
-    if (dx * dx + dy * dy > reach2 * (1.0 + 1e-9)) return false;
-  }
-  return true;
-}
-
-// Marks (with `mark`) the missing triangles that touch a vertex `chosen` accepts, and those
-// reached from them through edge-adjacent missing triangles within that vertex's narrow reach.
-template <class Chosen>
-void mark_near(const Mesh& m, const SegmentVertices& s, double bound_deg, const std::vector<char>& missing,
-               std::vector<char>& cause, char mark, Chosen chosen) {
-  std::vector<std::vector<TriangleId>> at(m.vertex_count());
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t)
-    if (m.is_live(t) && missing[t] && !cause[t])
-      for (int i = 0; i < 3; ++i)
-        if (chosen(m.corner[3 * t + i])) at[m.corner[3 * t + i]].push_back(t);
-  for (VertexId v = 0; v < m.vertex_count(); ++v) {
-    if (at[v].empty()) continue;
-    for (TriangleId t : at[v]) cause[t] = mark;
-    const double reach2 = narrow_reach2(m, s, v, bound_deg);
-    if (reach2 <= 0.0) continue;
-    std::vector<TriangleId> stack = at[v];
-    while (!stack.empty()) {
-      const TriangleId t = stack.back();
-      stack.pop_back();
-      for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
-        if (m.link[e] == kNone) continue;
-        const TriangleId n = m.link[e] / 3;
-        if (!missing[n] || cause[n] || !within(m, v, reach2, n)) continue;
-        cause[n] = mark;
-        stack.push_back(n);
+// Rules 2 and 3 for the edge p-q: the junction they explain the triangle by, or kNone.
+VertexId junction_of_edge(const Mesh& m, const SegmentVertices& s, VertexId p, VertexId q, bool edge_on_segment) {
+  const double small = kSmallInputAngle * std::numbers::pi / 180.0;
+  for (std::uint32_t a : s.segments[p])
+    for (std::uint32_t b : s.segments[q]) {
+      if (a == b || a == kNone || b == kNone || a >= s.junctions.size()) continue;
+      for (VertexId j : s.junctions[a]) {
+        if (std::find(s.segments[j].begin(), s.segments[j].end(), b) == s.segments[j].end()) continue;
+        if (junction_angle(s, j, a, b) < small) return j;                     // rule 2: the wedge
+        const double dp = length(m.points[p], m.points[j]), dq = length(m.points[q], m.points[j]);
+        if (!edge_on_segment && std::fabs(dp - dq) <= 0.01 * std::max(dp, dq)) return j;  // rule 3: a shell
       }
     }
+  return kNone;
+}
+
+// The vertex whose input angle explains t's miss, or kNone.
+VertexId explaining_junction(const Mesh& m, const SegmentVertices& s, TriangleId t) {
+  const VertexId* c = &m.corner[3 * t];
+  for (int i = 0; i < 3; ++i)
+    if (in_small_sector(m, s, c[i], c[(i + 1) % 3], c[(i + 2) % 3])) return c[i];
+  double shortest = INFINITY;
+  for (int i = 0; i < 3; ++i) shortest = std::min(shortest, length(m.points[c[i]], m.points[c[(i + 1) % 3]]));
+  for (int i = 0; i < 3; ++i) {
+    const VertexId p = c[i], q = c[(i + 1) % 3];
+    if (length(m.points[p], m.points[q]) > shortest) continue;
+    const bool on_segment = m.has_subsegments() && m.subseg[3 * t + i] != kNone;
+    const VertexId j = junction_of_edge(m, s, p, q, on_segment);
+    if (j != kNone) return j;
   }
+  return kNone;
 }
 
 }  // namespace
@@ -179,28 +187,21 @@ BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
     out.total += missing[t];
   }
   if (out.total == 0) return out;
-  enum : char { kNoCause, kSmallAngle, kRepaired, kPrecision, kLimits, kOther };
-  std::vector<char> cause(m.triangle_slots(), kNoCause);
   const SegmentVertices s = collect_spokes(m);
-  mark_near(m, s, r.min_angle_deg, missing, cause, kSmallAngle, [&](VertexId v) {
-    return m.kind[v] == VertexKind::Input && narrow_reach2(m, s, v, r.min_angle_deg) > 0.0;
-  });
-  mark_near(m, s, r.min_angle_deg, missing, cause, kRepaired, [&](VertexId v) { return repaired_vertex(m, s, v); });
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
-    if (!m.is_live(t) || !missing[t] || cause[t]) continue;
-    bool touches_segment = false;
-    for (int i = 0; i < 3; ++i) touches_segment = touches_segment || s.on_segment[m.corner[3 * t + i]];
-    cause[t] = at_precision_limit(m, t)                              ? kPrecision
-               : r.steiner_limited || (r.segments_kept_whole && touches_segment) ? kLimits
-                                                                     : kOther;
-  }
   for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t) || !missing[t]) continue;
-    out.small_input_angle += cause[t] == kSmallAngle;
-    out.repaired_input += cause[t] == kRepaired;
-    out.double_precision += cause[t] == kPrecision;
-    out.steiner_limits += cause[t] == kLimits;
-    out.other += cause[t] == kOther;
+    const VertexId j = misses_angle(m, t, r.min_angle_deg) ? explaining_junction(m, s, t) : kNone;
+    bool touches_repair = false, touches_segment = false;
+    for (int i = 0; i < 3; ++i) {
+      const VertexId v = m.corner[3 * t + i];
+      touches_repair = touches_repair || repaired_vertex(m, s, v);
+      touches_segment = touches_segment || !s.spokes[v].empty();
+    }
+    if (j != kNone && m.kind[j] == VertexKind::Input) ++out.small_input_angle;
+    else if (j != kNone || touches_repair) ++out.repaired_input;
+    else if (at_precision_limit(m, t)) ++out.double_precision;
+    else if (r.steiner_limited || (r.segments_kept_whole && touches_segment)) ++out.steiner_limits;
+    else ++out.other;
   }
   return out;
 }

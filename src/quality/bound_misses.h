@@ -6,16 +6,21 @@
 // the -a bound (or its own regional / .area bound), or its longest edge is above the -u length.
 // Each such triangle gets the first of these causes that applies (docs/manual.md, "Quality
 // accounting"):
-//   small_input_angle  a corner, or the wedge it lies in, is at an input vertex where two segments
-//                      meet at less than the -q angle (Shewchuk 2001: no refinement can remove
-//                      these; Triangle leaves them too);
-//   repaired_input     the same at a vertex deltri made where input segments cross or overlap
-//                      (a vertex that is not an input vertex with subsegments of two or more
-//                      input segments), or at such a vertex whatever its angle;
+//   small_input_angle  its angle miss is explained by the input, at an input vertex j: (1) a corner
+//                      j where segments meet, with the other two corners inside the sector between
+//                      two neighbouring segments at j, that sector under 60 degrees; or its shortest
+//                      edge joins points on two input segments that meet at j and (2) meet there at
+//                      under 60 degrees (the wedge between them), or (3) lie at distances from j
+//                      equal within 1%, the edge not itself on a segment (the isosceles triangles of
+//                      concentric shells). These are the exemptions of Miller, Pav and Walkington
+//                      and of Triangle; tests/tools/verify_quality.cpp checks meshes by the same rules;
+//   repaired_input     the same explanation at a vertex deltri made where input segments cross or
+//                      overlap (not an input vertex, yet on two or more input segments), or a corner
+//                      at such a vertex;
 //   double_precision   its shortest edge is at most kPrecisionUlps ulps of its largest corner
 //                      coordinate: no double lies close enough to split it usefully;
-//   steiner_limits     -S stopped refinement, or -Y/-YY kept a segment whole that the triangle
-//                      touches (an edge or a corner on a segment);
+//   steiner_limits     -S stopped refinement, or -Y/-YY kept segments whole and the triangle has a
+//                      corner on a segment;
 //   other              none of these: refinement stopped early (its termination guard) or failed.
 #pragma once
 

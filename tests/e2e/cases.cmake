@@ -260,3 +260,7 @@ strict_case(empty ${E2E_DATA}/corner_cases.poly -pq30 3
 strict_case(small_input_angles ${E2E_DATA}/touching-holes6.poly -pq30 0
             "deltri: warning: touching-holes6.poly: 28 duplicate vertices ignored (kept the first of each)"
             "q['triangles_missing_bounds'] == q['missing_bounds_by_cause']['small_input_angle'] > 0")
+# -S stops refinement: the misses the input does not explain are put down to the -S limit, and --strict refuses them.
+strict_case(steiner_limit ${G} -pq30S10 3
+            "deltri: warning: guitar.poly: refinement stopped at the -S limit of Steiner points"
+            "q['missing_bounds_by_cause']['steiner_limits'] > 0 and q['missing_bounds_by_cause']['other'] == 0")
