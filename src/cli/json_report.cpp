@@ -139,7 +139,20 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   j.optional_number("longest_edge", shapes, stats.longest_edge);
   j.optional_number("largest_aspect_ratio", shapes, stats.largest_aspect_ratio);
   const auto& q = r.refine;
-  j.integer("triangles_missing_bounds", q ? q->bad_triangles_left : 0);
+  // From the final mesh (quality/bound_misses.h), whatever refinement exempted or gave up on.
+  const BoundMisses none;
+  const BoundMisses& b = r.misses ? *r.misses : none;
+  j.integer("triangles_missing_bounds", b.total);
+  j.integer("triangles_below_angle_bound", b.below_angle);
+  j.integer("triangles_above_size_bound", b.above_size);
+  j.open("missing_bounds_by_cause");
+  j.integer("small_input_angle", b.small_input_angle);
+  j.integer("repaired_crossing_or_overlap", b.repaired_input);
+  j.integer("double_precision", b.double_precision);
+  j.integer("steiner_limits", b.steiner_limits);
+  j.integer("other", b.other);
+  j.close();
+  j.integer("triangles_missing_bounds_not_forced_by_input", b.not_forced_by_input());
   j.open("why_missed", '[');
   if (q && q->stopped_by_guard) j.string(nullptr, "termination guard: points that would have made edges far below the local feature size were refused");
   if (q && q->stopped_by_max_steiner) j.string(nullptr, "the -S limit of Steiner points was reached");

@@ -74,6 +74,11 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
   }
   if (r.switches && r.switches->variable_area && !r.area_file && !has_regional_area_bounds(r.pslg))
     warn("bare -a has no effect: the input has no regional area bounds (-a<area> bounds every triangle)");
+  if (const auto& b = r.misses; b && b->not_forced_by_input() > 0 && !(r.refine && r.refine->bad_triangles_left > 0))
+    warn(plural(b->not_forced_by_input(), "triangle misses", "triangles miss") +
+         " the requested bounds for a reason other than a small input angle (" + std::to_string(b->repaired_input) +
+         " next to repaired crossings or overlaps, " + std::to_string(b->double_precision) + " at the limit of double precision, " +
+         std::to_string(b->steiner_limits) + " at -S/-Y limits, " + std::to_string(b->other) + " other)");
   if (mesh.live_triangles() == 0) {
     if (r.pslg && r.pslg->has_segment_section && mesh.vertex_count() >= 3 && r.holes && r.holes->triangles_removed > 0)
       warn("every triangle lies outside the segments or in a hole: the mesh is empty (try -c or -O)");
@@ -154,6 +159,16 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
     if (q->locked_subsegments > 0)
       std::fprintf(out_, "  subsegments left whole because doubles cannot split them: %llu\n",
                   static_cast<unsigned long long>(q->locked_subsegments));
+  }
+  if (const auto& b = r.misses) {
+    std::fprintf(out_, "Bounds (final mesh): %llu triangles miss them (%llu below the angle, %llu above the size)\n",
+                static_cast<unsigned long long>(b->total), static_cast<unsigned long long>(b->below_angle),
+                static_cast<unsigned long long>(b->above_size));
+    std::fprintf(out_, "  by cause: %llu next to a small input angle, %llu next to a repaired crossing or overlap, "
+                "%llu at the limit of double precision, %llu at -S/-Y limits, %llu other\n",
+                static_cast<unsigned long long>(b->small_input_angle), static_cast<unsigned long long>(b->repaired_input),
+                static_cast<unsigned long long>(b->double_precision), static_cast<unsigned long long>(b->steiner_limits),
+                static_cast<unsigned long long>(b->other));
   }
   if (r.check) std::fprintf(out_, "Consistency check (-C): %s", r.check->summary().c_str());
 }

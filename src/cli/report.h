@@ -14,6 +14,7 @@
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
 #include "pslg/pslg.h"
+#include "quality/bound_misses.h"
 #include "quality/check_mesh.h"
 #include "refine/refine.h"
 
@@ -36,6 +37,7 @@ struct RunReport {
   std::optional<CheckReport> check;
   std::optional<RefineReport> refine;
   bool area_file = false;         // per-triangle area bounds were read (-r with a bare -a, or a .area)
+  std::optional<BoundMisses> misses;  // the final mesh against the -q/-a/-u bounds, when any was asked
   std::size_t hull_absorbed = 0;  // vertices taken into the hull chain (absorb_near_hull_vertices)
   PredicateCounters counters;
   std::vector<std::string> written;

@@ -33,6 +33,7 @@
 #include "io/voronoi_file.h"
 #include "io/vtu_file.h"
 #include "pslg/errors.h"
+#include "quality/bound_misses.h"
 #include "quality/check_mesh.h"
 #include "refine/area_field.h"
 #include "refine/refine.h"
@@ -234,8 +235,12 @@ void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
   if (sw.neighbors) add(out + ".neigh", [&mesh, first](ByteSink& s) { write_neigh_file(s, mesh, first); });
   if (sw.geomview) add(out + ".off", [&mesh, numbering](ByteSink& s) { write_off_file(s, mesh, numbering); });
   const ExportOptions exp{numbering, c.midpoints, markers};
-  if (sw.msh.wanted) add(requested_path(sw.msh, out, "msh"), [&mesh, exp](ByteSink& s) { write_msh_file(s, mesh, exp); });
-  if (sw.vtu.wanted) add(requested_path(sw.vtu, out, "vtu"), [&mesh, exp](ByteSink& s) { write_vtu_file(s, mesh, exp); });
+  const MshFormat msh_format{sw.msh_version, sw.msh_binary};
+  if (sw.msh.wanted)
+    add(requested_path(sw.msh, out, "msh"), [&mesh, exp, msh_format](ByteSink& s) { write_msh_file(s, mesh, exp, msh_format); });
+  const bool vtu_binary = sw.vtu_binary;
+  if (sw.vtu.wanted)
+    add(requested_path(sw.vtu, out, "vtu"), [&mesh, exp, vtu_binary](ByteSink& s) { write_vtu_file(s, mesh, exp, vtu_binary); });
   if (sw.svg.wanted) {
     const SvgOptions opt{exp, first, sw.svg_numbers, holes};
     add(requested_path(sw.svg, out, "svg"), [&mesh, opt](ByteSink& s) { write_svg_file(s, mesh, opt); });
@@ -307,6 +312,17 @@ RefineOptions refine_options(const Switches& sw, const InputFiles& in) {
   opt.threads = sw.threads;
   opt.memory_budget = memory_budget();
   return opt;
+}
+
+BoundRequest bound_request(const Switches& sw, const InputFiles& in, const RunReport& report) {
+  BoundRequest r;
+  r.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
+  r.max_area = sw.fixed_area ? sw.max_area : 0.0;
+  r.area_bounds = sw.variable_area || in.area_file;
+  r.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
+  r.steiner_limited = report.refine && report.refine->stopped_by_max_steiner;
+  r.segments_kept_whole = sw.no_boundary_steiner > 0;
+  return r;
 }
 
 }  // namespace
@@ -384,11 +400,14 @@ int run(const Switches& sw) {
     }
   }
 
+  if (refinement_wanted(sw, in)) report.misses = count_bound_misses(mesh, bound_request(sw, in, report));
+
   std::vector<VertexId> midpoints;
   if (sw.order == 2) midpoints = add_edge_midpoints(mesh);
   const std::vector<std::uint32_t> numbering = vertex_numbering(mesh, sw.jettison, midpoints);
-  const bool bounds_missed = report.refine && report.refine->bad_triangles_left > 0;
-  const int status = sw.strict && bounds_missed ? kExitBounds : kExitOk;
+  // --strict: misses a small input angle does not force, or no mesh at all.
+  const bool bounds_missed = report.misses && report.misses->not_forced_by_input() > 0;
+  const int status = sw.strict && (bounds_missed || mesh.live_triangles() == 0) ? kExitBounds : kExitOk;
   OutputSet outputs;
   schedule_outputs(outputs, {mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering,
                              sw.order == 2 ? &midpoints : nullptr, report, status});

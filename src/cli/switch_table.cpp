@@ -117,18 +117,40 @@ void set_queue(S& s, const std::string* v) {
   throw UsageError("--queue=" + *v + ": the order is ratio, paper, edge, fifo, heap or paper-heap");
 }
 
+void set_msh_format(S& s, const std::string* v) {
+  const std::string& f = *v;
+  const std::size_t comma = f.find(',');
+  const std::string version = f.substr(0, comma), encoding = comma == std::string::npos ? "" : f.substr(comma + 1);
+  if ((version != "2.2" && version != "4.1") || (comma != std::string::npos && encoding != "binary" && encoding != "ascii"))
+    throw UsageError("--msh-format=" + f + ": give 2.2 or 4.1, optionally followed by ,binary (e.g. --msh-format=4.1,binary)");
+  s.msh_version = version == "2.2" ? 22 : 41;
+  s.msh_binary = encoding == "binary";
+}
+
+void set_vtu_format(S& s, const std::string* v) {
+  if (*v != "ascii" && *v != "binary") throw UsageError("--vtu-format=" + *v + ": give ascii or binary");
+  s.vtu_binary = *v == "binary";
+}
+
 constexpr std::array kLongOptions = {
-    LongOption{"msh", "FILE", true, "also write the mesh as Gmsh MSH 4.1 (ASCII); FILE - is standard output",
+    LongOption{"msh", "FILE", true, "also write the mesh as Gmsh MSH (version and encoding: --msh-format); FILE - is standard output",
                [](S& s, const std::string* v) { request(s.msh, v, "msh"); }},
+    LongOption{"msh-format", "FORMAT", false,
+               "the --msh version and encoding: 2.2 (default; GetDP and FreeFem++ read it), 4.1, "
+               "2.2,binary or 4.1,binary",
+               set_msh_format},
     LongOption{"vtu", "FILE", true, "also write the mesh as VTK XML unstructured grid (.vtu); FILE - is standard output",
                [](S& s, const std::string* v) { request(s.vtu, v, "vtu"); }},
+    LongOption{"vtu-format", "ENCODING", false, "the --vtu encoding: ascii (default) or binary (raw appended data)",
+               set_vtu_format},
     LongOption{"svg", "FILE", true, "also draw the mesh as SVG, triangles shaded by smallest angle; FILE - is standard output",
                [](S& s, const std::string* v) { request(s.svg, v, "svg"); }},
     LongOption{"svg-numbers", "", false, "number the vertices in the SVG picture",
                [](S& s, const std::string*) { s.svg_numbers = true; }},
     LongOption{"json", "FILE", true, "also write a JSON report of the run; FILE - is standard output",
                [](S& s, const std::string* v) { request(s.json, v, "json"); }},
-    LongOption{"strict", "", false, "exit with status 3 when some triangles miss the -q/-a/-u bounds (files are still written)",
+    LongOption{"strict", "", false, "exit with status 3 when triangles miss the -q/-a/-u bounds for a reason other than a small "
+               "input angle, or when the mesh is empty (files are still written)",
                [](S& s, const std::string*) { s.strict = true; }},
     LongOption{"queue", "ORDER", false,
                "which bad triangle refinement splits first: ratio (default: worst radius-edge ratio "

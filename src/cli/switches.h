@@ -53,8 +53,11 @@ struct Switches {
     std::string path;  // empty: <output base>.<extension>; "-": standard output
   };
   FileRequest msh, vtu, svg, json;
+  int msh_version = 22;          // --msh-format=2.2|4.1[,binary]
+  bool msh_binary = false;
+  bool vtu_binary = false;       // --vtu-format=ascii|binary
   bool svg_numbers = false;      // --svg-numbers: vertex numbers in the picture
-  bool strict = false;           // --strict: exit status 3 when triangles miss the bounds
+  bool strict = false;           // --strict: exit status 3 when triangles miss the bounds not forced by the input, or none exist
   bool man = false;              // --man: print the manual page (roff) and exit
   bool version = false;          // --version: print the version and exit
 

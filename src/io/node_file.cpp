@@ -206,10 +206,31 @@ std::uint32_t read_node_section(LineReader& in, Pslg& out, bool allow_empty) {
   return h.count;
 }
 
+namespace {
+
+// Whether the next data line is a segment header: one or two non-negative integers and nothing
+// else. A .node has nothing after its vertices (Triangle ignores whatever is there), so such a line
+// means a .poly.
+bool segment_header_follows(LineReader& in) {
+  if (!in.next_line()) return false;
+  try {
+    in.read_int({"segment header", -1, "number of segments"}, 0, LLONG_MAX);
+    if (in.has_field()) in.read_int({"segment header", -1, "number of boundary markers"}, 0, LLONG_MAX);
+    return !in.has_field();
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+}  // namespace
+
 Pslg read_node_file(const std::string& path) {
   LineReader in = LineReader::open(path);
   Pslg pslg;
   read_node_section(in, pslg);
+  // Standard input has no extension to say what it is: a .poly piped in without -p would be meshed
+  // as its vertices' convex hull, its segments dropped without a word.
+  if (path == "-" && segment_header_follows(in)) in.fail("this looks like a .poly (segment section); use -p");
   return pslg;
 }
 

@@ -8,21 +8,28 @@ namespace {
 
 bool own_tag(double v) { return v >= 1.0 && v <= 2147483647.0 && v == static_cast<double>(static_cast<long long>(v)); }
 
-}  // namespace
-
-PhysicalGroups group_by_value(const std::vector<double>& per_element) {
+// Distinct values and each element's group; no tags yet.
+PhysicalGroups group(const std::vector<double>& per_element) {
   PhysicalGroups g;
   g.values = per_element;
   std::sort(g.values.begin(), g.values.end());
   g.values.erase(std::unique(g.values.begin(), g.values.end()), g.values.end());
-  long long next = 1;
-  for (double v : g.values)
-    if (own_tag(v)) next = std::max(next, static_cast<long long>(v) + 1);
-  for (double v : g.values) g.tags.push_back(own_tag(v) ? static_cast<long long>(v) : next++);
   g.group.reserve(per_element.size());
   for (double v : per_element)
     g.group.push_back(static_cast<std::uint32_t>(std::lower_bound(g.values.begin(), g.values.end(), v) - g.values.begin()));
   return g;
+}
+
+}  // namespace
+
+MeshPhysicalGroups physical_groups(const std::vector<double>& line_markers, const std::vector<double>& surface_values) {
+  MeshPhysicalGroups m{group(line_markers), group(surface_values)};
+  long long next = 1;
+  for (double v : m.lines.values)
+    if (own_tag(v)) next = std::max(next, static_cast<long long>(v) + 1);
+  for (double v : m.lines.values) m.lines.tags.push_back(own_tag(v) ? static_cast<long long>(v) : next++);
+  for (std::size_t g = 0; g < m.surfaces.values.size(); ++g) m.surfaces.tags.push_back(next++);
+  return m;
 }
 
 std::string value_text(double value) {

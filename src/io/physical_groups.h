@@ -1,5 +1,7 @@
-// Grouping of elements by a value (an edge marker, a triangle attribute) for formats whose groups
-// carry positive integer tags (Gmsh physical groups).
+// Physical groups for formats whose groups carry positive integer tags (Gmsh MSH, and the
+// "gmsh:physical" cell data of the .vtu). Many solvers (GetDP, FreeFem++, DOLFINx via its
+// reader) name a region by its tag alone, whatever its dimension, so a line group and a surface
+// group must never share a tag: the rule below gives every group of the mesh a distinct tag.
 #pragma once
 
 #include <cstdint>
@@ -14,10 +16,21 @@ struct PhysicalGroups {
   std::vector<std::uint32_t> group;  // per element: its group
 };
 
-// A value that is a positive integer (up to 2^31 - 1) is its own tag, so a marker 5 stays
-// physical group 5; the other values get the tags after the largest such value, in ascending
-// order of value.
-PhysicalGroups group_by_value(const std::vector<double>& per_element);
+struct MeshPhysicalGroups {
+  PhysicalGroups lines;     // by edge marker
+  PhysicalGroups surfaces;  // by triangle attribute (one value for the whole domain without -A)
+};
+
+// The tag rule (docs/formats.md, "Physical groups"):
+//   1. an edge marker that is a positive integer (up to 2^31 - 1) is its own tag: marker 5 is
+//      physical curve 5;
+//   2. the other markers (0, negative) get the next tags after the largest such marker, in
+//      ascending order of marker;
+//   3. the surfaces (the domain, or each triangle attribute value in ascending order) get the
+//      next tags after every line tag.
+// So with markers 1, 2, 3 the domain is surface 4; with markers 0 and 1 marker 0 is curve 2 and
+// the domain surface 3; without lines (-B) the domain is surface 1.
+MeshPhysicalGroups physical_groups(const std::vector<double>& line_markers, const std::vector<double>& surface_values);
 
 // The value as the files write it (shortest round-trip text).
 std::string value_text(double value);

@@ -96,6 +96,9 @@ e2e_case(stdout.svg ${U} "-Q --svg=-" --stdout out.svg --no-verify --files out.s
 e2e_case(stdout.json.e ${G} "-peQ --json=-" --stdout out.json --varies out.json --no-verify --no-warning --files "out.json guitar.1.edge")
 e2e_case(stdout.summary ${G} "-p --msh=-" --stdout out.msh --varies stderr --no-verify --warning "wrote standard output")
 e2e_case(stdout.error ${E2E_INPUTS}/nonnumeric.node "--msh=-" --stdin --stdout out.msh --exit 1)
+# A .poly piped in without -p: refused at its segment header (line 150 of guitar.poly), not meshed as a hull.
+e2e_case(stdin.poly_without_p ${G} "-q30 --msh=-" --stdin --stdout out.msh --exit 1
+         --error "standard input:150: this looks like a .poly (segment section)\; use -p")
 e2e_case(long_files ${G} "-p --msh --vtu --svg --json" --varies guitar.1.json --files "guitar.1.node guitar.1.ele guitar.1.poly guitar.1.msh guitar.1.vtu guitar.1.svg guitar.1.json")
 e2e_case(error.two_stdout ${G} "--msh=- --vtu=-" --exit 2 --error "deltri: -: only one")
 e2e_case(error.long_option ${G} "--mesh" --exit 2 --error "deltri: --mesh: unknown option")
@@ -277,3 +280,27 @@ foreach(input ${E2E_INPUTS}/plate.poly ${E2E_DATA}/guitar.poly ${E2E_DATA}/water
     set_tests_properties(e2e.area_inheritance.${stem}.${mode} PROPERTIES TIMEOUT 600)
   endforeach()
 endforeach()
+
+# ---- --strict: exit 3 when triangles miss the bounds for reasons other than a small input angle,
+# and on an empty mesh; the mesh is still written ----
+function(strict_case name input switches status warning json_check)
+  add_test(NAME e2e.strict.${name}
+           COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/strict.sh $<TARGET_FILE:deltri> ${input} ${switches} ${status} ${warning} ${json_check})
+  set_tests_properties(e2e.strict.${name} PROPERTIES TIMEOUT 120)
+endfunction()
+# water.poly: segments that cross (19 crossings split) and overlap; triangles next to those repairs miss 30 degrees.
+strict_case(crossings ${E2E_DATA}/water.poly -pq30 3
+            "deltri: warning: water.poly: 19 segment crossings split at a new vertex"
+            "q['missing_bounds_by_cause']['repaired_crossing_or_overlap'] > 0 and q['triangles_missing_bounds_not_forced_by_input'] > 0")
+# corner_cases.poly: no closed boundary, every triangle is outside the segments.
+strict_case(empty ${E2E_DATA}/corner_cases.poly -pq30 3
+            "deltri: warning: corner_cases.poly: every triangle lies outside the segments or in a hole: the mesh is empty (try -c or -O)"
+            "m['triangles'] == 0")
+# The same bound met where the only misses sit at small input angles (touching-holes6.poly), or nowhere (guitar.poly).
+strict_case(small_input_angles ${E2E_DATA}/touching-holes6.poly -pq30 0
+            "deltri: warning: touching-holes6.poly: 28 duplicate vertices ignored (kept the first of each)"
+            "q['triangles_missing_bounds'] == q['missing_bounds_by_cause']['small_input_angle'] > 0")
+# -S stops refinement: the misses the input does not explain are put down to the -S limit, and --strict refuses them.
+strict_case(steiner_limit ${G} -pq30S10 3
+            "deltri: warning: guitar.poly: refinement stopped at the -S limit of Steiner points"
+            "q['missing_bounds_by_cause']['steiner_limits'] > 0 and q['missing_bounds_by_cause']['other'] == 0")

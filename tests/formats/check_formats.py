@@ -163,9 +163,36 @@ def expected_cells(r):
     return sorted((gmsh_order(nodes), tuple(attrs[:1])) for nodes, attrs in r.tris)
 
 
-def check_msh(r, quadratic, markers=True):
+def expected_tags(r, markers):
+    """The documented rule (docs/formats.md): positive integer markers are their own tags, other
+    markers the next tags in ascending order, then the surfaces (domain or attributes ascending)."""
+    values = sorted(set(r.lines.values())) if markers else []
+    own = [v for v in values if v >= 1]
+    next_tag = max(own, default=0) + 1
+    tags = {}
+    for v in values:
+        if v >= 1:
+            tags[("marker", v)] = v
+        else:
+            tags[("marker", v)] = next_tag
+            next_tag += 1
+    attrs = sorted({a[0] for _, a in r.tris if a}) or [None]
+    for a in attrs:
+        tags[("attribute", a)] = next_tag
+        next_tag += 1
+    return tags
+
+
+def check_msh(r, quadratic, markers=True, msh=None):
     import meshio
-    m = meshio.read(r.path(".msh"))
+    msh = msh or r.path(".msh")
+    m = meshio.read(msh)
+    tags = expected_tags(r, markers)
+    for name, (tag, dim) in m.field_data.items():
+        key = ("marker", int(name.split()[1])) if dim == 1 else ("attribute", None if name == "domain" else float(name.split()[1]))
+        check(tags.get(key) == tag, f"{r.label} {os.path.basename(msh)}: physical group {name!r} has tag {tag}, the rule gives {tags.get(key)}")
+    all_tags = [int(v[0]) for v in m.field_data.values()]
+    check(len(all_tags) == len(set(all_tags)), f"{r.label}: physical tags shared between groups: {m.field_data}")
     check_points(r, m.points, ".msh")
     names = {tuple(v): k for k, v in m.field_data.items()}  # (tag, dim) -> name
     tri_type, line_type = ("triangle6", "line3") if quadratic else ("triangle", "line")
@@ -193,7 +220,7 @@ def check_msh(r, quadratic, markers=True):
     # Gmsh itself: it must read the file without an error, see as many nodes and elements, and
     # write back a mesh meshio reads with the same physical groups.
     again = r.path(".gmsh.msh")
-    g = subprocess.run(["gmsh", r.path(".msh"), "-0", "-o", again], capture_output=True, text=True)
+    g = subprocess.run(["gmsh", msh, "-0", "-o", again], capture_output=True, text=True)
     log = g.stdout + g.stderr
     check(g.returncode == 0 and "Error" not in log, f"{r.label}: gmsh could not read the .msh:\n{log}")
     check(re.search(rf"\b{len(r.points)} nodes\b", log), f"{r.label}: gmsh did not see {len(r.points)} nodes:\n{log}")
@@ -204,9 +231,9 @@ def check_msh(r, quadratic, markers=True):
     check(tags == sorted({int(v[0]) for v in m.field_data.values()}), f"{r.label}: gmsh's own rewrite has physical groups {tags}")
 
 
-def check_vtu(r, quadratic, markers=True):
+def check_vtu(r, quadratic, markers=True, vtu=None):
     import meshio
-    m = meshio.read(r.path(".vtu"))
+    m = meshio.read(vtu or r.path(".vtu"))
     check_points(r, m.points, ".vtu")
     tri_type, line_type = ("triangle6", "line3") if quadratic else ("triangle", "line")
     got_tris, got_lines = [], {}
@@ -317,6 +344,11 @@ def check_json(r, extra_files):
         check(report["seconds"][stage] >= 0, f"{r.label}: no {stage} time")
 
 
+def rerun(r, extra):
+    """The same run again in r's directory with other long options (the mesh is deterministic)."""
+    run([a for a in (r.switches, "-e") if a] + extra + [r.name], r.dir)
+
+
 def main():
     skip_when_missing()
     guitar, plate = os.path.join(DATA, "guitar.poly"), os.path.join(INPUTS, "plate.poly")
@@ -329,8 +361,16 @@ def main():
             r = Run(source, switches, ["--msh", "--vtu"])
             if "msh" in WHAT:
                 check_msh(r, "o2" in switches, "B" not in switches)
+                # Every version and encoding of the same mesh.
+                for fmt in ("2.2,binary", "4.1", "4.1,binary"):
+                    path = r.path("." + fmt.replace(",", "-") + ".msh")
+                    rerun(r, [f"--msh={path}", f"--msh-format={fmt}"])
+                    check_msh(r, "o2" in switches, "B" not in switches, path)
             if "vtu" in WHAT:
                 check_vtu(r, "o2" in switches, "B" not in switches)
+                path = r.path(".binary.vtu")
+                rerun(r, [f"--vtu={path}", "--vtu-format=binary"])
+                check_vtu(r, "o2" in switches, "B" not in switches, path)
             print(f"  {r.label}: {len(r.points)} nodes, {len(r.tris)} triangles, {len(r.lines)} boundary/segment edges agree")
             r.done()
     if "svg" in WHAT:

@@ -78,13 +78,25 @@ TEST(midpoints_one_per_edge_opposite_the_corners) {
   CHECK(m.kind[4] == VertexKind::Segment);
 }
 
-TEST(physical_groups_keep_positive_integers_and_number_the_rest_above) {
-  const PhysicalGroups g = group_by_value({5, 0, 7, 5, 2.5, -1, 7});
+TEST(physical_groups_keep_positive_integer_markers_and_never_share_a_tag) {
+  const MeshPhysicalGroups m = physical_groups({5, 0, 7, 5, 2.5, -1, 7}, {3, 1, 3});
+  const PhysicalGroups& g = m.lines;
   CHECK(g.values == (std::vector<double>{-1, 0, 2.5, 5, 7}));
   CHECK(g.tags == (std::vector<long long>{8, 9, 10, 5, 7}));
   CHECK(g.group == (std::vector<std::uint32_t>{3, 1, 4, 3, 2, 0, 4}));
+  // Surfaces come after every line tag, even when their attribute is a positive integer.
+  CHECK(m.surfaces.values == (std::vector<double>{1, 3}));
+  CHECK(m.surfaces.tags == (std::vector<long long>{11, 12}));
+  CHECK(m.surfaces.group == (std::vector<std::uint32_t>{1, 0, 1}));
   CHECK_EQ(value_text(2.5), std::string("2.5"));
   CHECK_EQ(value_text(10), std::string("10"));
-  const PhysicalGroups none = group_by_value({0, 0});
-  CHECK(none.tags == (std::vector<long long>{1}));
+  // The default marker 1 on every boundary edge: the domain must not be 1 too (GetDP's Region[1]).
+  const MeshPhysicalGroups plain = physical_groups({1, 1, 1}, {1});
+  CHECK(plain.lines.tags == (std::vector<long long>{1}));
+  CHECK(plain.surfaces.tags == (std::vector<long long>{2}));
+  const MeshPhysicalGroups zeros = physical_groups({0, 0}, {1});
+  CHECK(zeros.lines.tags == (std::vector<long long>{1}));
+  CHECK(zeros.surfaces.tags == (std::vector<long long>{2}));
+  const MeshPhysicalGroups no_lines = physical_groups({}, {1});
+  CHECK(no_lines.surfaces.tags == (std::vector<long long>{1}));
 }

@@ -1,0 +1,209 @@
+#include "quality/bound_misses.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace deltri {
+namespace {
+
+// Measured in doubles, with a relative margin of 1e-12 so that a triangle refinement judged good
+// by the same bound in its own rounding is not counted for a last-bit difference.
+constexpr double kMargin = 1e-12;
+
+// Input angles under this are "small": the region near them is exempt (as in Triangle and in
+// Miller, Pav and Walkington's analysis, refinement cannot be asked to do better there).
+constexpr double kSmallInputAngle = 60.0;
+
+double length(const Point& a, const Point& b) { return std::hypot(b.x - a.x, b.y - a.y); }
+
+double angle_at(const Point& a, const Point& b, const Point& c) {
+  const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
+  return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * (180.0 / std::numbers::pi);
+}
+
+bool misses_angle(const Mesh& m, TriangleId t, double bound) {
+  if (bound <= 0.0) return false;
+  const Point &a = m.points[m.corner[3 * t]], &b = m.points[m.corner[3 * t + 1]], &c = m.points[m.corner[3 * t + 2]];
+  return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)}) < bound * (1.0 - kMargin);
+}
+
+bool misses_size(const Mesh& m, TriangleId t, const BoundRequest& r) {
+  const Point &a = m.points[m.corner[3 * t]], &b = m.points[m.corner[3 * t + 1]], &c = m.points[m.corner[3 * t + 2]];
+  const double area = 0.5 * std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  if (r.max_area > 0.0 && area > r.max_area * (1.0 + kMargin)) return true;
+  if (r.area_bounds && m.area_bound.size() == m.triangle_slots() && m.area_bound[t] > 0.0 &&
+      area > m.area_bound[t] * (1.0 + kMargin))
+    return true;
+  const double longest = std::max({length(a, b), length(b, c), length(c, a)});
+  return r.max_edge_length > 0.0 && longest > r.max_edge_length * (1.0 + kMargin);
+}
+
+bool at_precision_limit(const Mesh& m, TriangleId t) {
+  double shortest = INFINITY, largest = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const Point& p = m.points[m.corner[3 * t + i]];
+    const Point& q = m.points[m.corner[3 * t + (i + 1) % 3]];
+    shortest = std::min(shortest, length(p, q));
+    largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)});
+  }
+  largest = std::max(largest, DBL_MIN);
+  return shortest <= kPrecisionUlps * (std::nextafter(largest, INFINITY) - largest);
+}
+
+// The segments at each vertex: direction angles and input segment numbers.
+struct Spoke {
+  double direction;  // radians, atan2, in (-pi, pi]
+  VertexId to;
+  std::uint32_t segment;
+};
+
+struct SegmentVertices {
+  std::vector<std::vector<Spoke>> spokes;             // per vertex, by direction
+  std::vector<std::vector<std::uint32_t>> segments;   // per vertex: the input segments it lies on
+  std::vector<std::vector<VertexId>> junctions;       // per input segment: its vertices on other segments too
+};
+
+SegmentVertices collect_spokes(const Mesh& m) {
+  SegmentVertices s;
+  s.spokes.resize(m.vertex_count());
+  s.segments.resize(m.vertex_count());
+  if (!m.has_subsegments()) return s;
+  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+    if (!m.is_live(t)) continue;
+    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
+      if (m.subseg[e] == kNone || (m.link[e] != kNone && m.link[e] < e)) continue;
+      const VertexId a = m.org(e), b = m.dest(e);
+      const std::uint32_t seg = m.subsegments[m.subseg[e]].segment;
+      const Point &p = m.points[a], &q = m.points[b];
+      s.spokes[a].push_back({std::atan2(q.y - p.y, q.x - p.x), b, seg});
+      s.spokes[b].push_back({std::atan2(p.y - q.y, p.x - q.x), a, seg});
+    }
+  }
+  for (VertexId v = 0; v < m.vertex_count(); ++v) {
+    auto& list = s.spokes[v];
+    std::sort(list.begin(), list.end(), [](const Spoke& x, const Spoke& y) { return x.direction < y.direction; });
+    for (const Spoke& k : list)
+      if (std::find(s.segments[v].begin(), s.segments[v].end(), k.segment) == s.segments[v].end())
+        s.segments[v].push_back(k.segment);
+    if (s.segments[v].size() < 2) continue;
+    for (std::uint32_t seg : s.segments[v]) {
+      if (seg == kNone) continue;
+      if (seg >= s.junctions.size()) s.junctions.resize(seg + 1);
+      s.junctions[seg].push_back(v);
+    }
+  }
+  return s;
+}
+
+// A vertex deltri made where input segments cross or overlap: not an input vertex, yet on two.
+bool repaired_vertex(const Mesh& m, const SegmentVertices& s, VertexId v) {
+  return m.kind[v] != VertexKind::Input && s.segments[v].size() >= 2;
+}
+
+double angle_between(double from, double to) {  // counter-clockwise, in [0, 2 pi)
+  double a = to - from;
+  while (a < 0) a += 2 * std::numbers::pi;
+  while (a >= 2 * std::numbers::pi) a -= 2 * std::numbers::pi;
+  return a;
+}
+
+// Rule 1: corner v of a triangle whose other corners q, r lie inside the sector between two
+// neighbouring segments at v, when that sector is under kSmallInputAngle.
+bool in_small_sector(const Mesh& m, const SegmentVertices& s, VertexId v, VertexId q, VertexId r) {
+  const auto& list = s.spokes[v];
+  if (list.size() < 2) return false;
+  const Point& o = m.points[v];
+  const double dq = std::atan2(m.points[q].y - o.y, m.points[q].x - o.x);
+  const double dr = std::atan2(m.points[r].y - o.y, m.points[r].x - o.x);
+  const double small = kSmallInputAngle * std::numbers::pi / 180.0;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const double from = list[i].direction, to = list[(i + 1) % list.size()].direction;
+    const double gap = angle_between(from, to);
+    if (gap >= small || gap == 0.0) continue;
+    if (angle_between(from, dq) <= gap && angle_between(from, dr) <= gap) return true;
+  }
+  return false;
+}
+
+// The smallest angle at junction j between a piece of segment a and a piece of segment b.
+double junction_angle(const SegmentVertices& s, VertexId j, std::uint32_t a, std::uint32_t b) {
+  double smallest = std::numbers::pi;
+  for (const Spoke& x : s.spokes[j])
+    for (const Spoke& y : s.spokes[j])
+      if (x.segment == a && y.segment == b) {
+        const double d = angle_between(x.direction, y.direction);
+        smallest = std::min({smallest, d, 2 * std::numbers::pi - d});
+      }
+  return smallest;
+}
+
+// Rules 2 and 3 for the edge p-q: the junction they explain the triangle by, or kNone.
+VertexId junction_of_edge(const Mesh& m, const SegmentVertices& s, VertexId p, VertexId q, bool edge_on_segment) {
+  const double small = kSmallInputAngle * std::numbers::pi / 180.0;
+  for (std::uint32_t a : s.segments[p])
+    for (std::uint32_t b : s.segments[q]) {
+      if (a == b || a == kNone || b == kNone || a >= s.junctions.size()) continue;
+      for (VertexId j : s.junctions[a]) {
+        if (std::find(s.segments[j].begin(), s.segments[j].end(), b) == s.segments[j].end()) continue;
+        if (junction_angle(s, j, a, b) < small) return j;                     // rule 2: the wedge
+        const double dp = length(m.points[p], m.points[j]), dq = length(m.points[q], m.points[j]);
+        if (!edge_on_segment && std::fabs(dp - dq) <= 0.01 * std::max(dp, dq)) return j;  // rule 3: a shell
+      }
+    }
+  return kNone;
+}
+
+// The vertex whose input angle explains t's miss, or kNone.
+VertexId explaining_junction(const Mesh& m, const SegmentVertices& s, TriangleId t) {
+  const VertexId* c = &m.corner[3 * t];
+  for (int i = 0; i < 3; ++i)
+    if (in_small_sector(m, s, c[i], c[(i + 1) % 3], c[(i + 2) % 3])) return c[i];
+  double shortest = INFINITY;
+  for (int i = 0; i < 3; ++i) shortest = std::min(shortest, length(m.points[c[i]], m.points[c[(i + 1) % 3]]));
+  for (int i = 0; i < 3; ++i) {
+    const VertexId p = c[i], q = c[(i + 1) % 3];
+    if (length(m.points[p], m.points[q]) > shortest) continue;
+    const bool on_segment = m.has_subsegments() && m.subseg[3 * t + i] != kNone;
+    const VertexId j = junction_of_edge(m, s, p, q, on_segment);
+    if (j != kNone) return j;
+  }
+  return kNone;
+}
+
+}  // namespace
+
+BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
+  BoundMisses out;
+  std::vector<char> missing(m.triangle_slots(), 0);
+  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+    if (!m.is_live(t)) continue;
+    const bool angle = misses_angle(m, t, r.min_angle_deg), size = misses_size(m, t, r);
+    out.below_angle += angle;
+    out.above_size += size;
+    missing[t] = angle || size;
+    out.total += missing[t];
+  }
+  if (out.total == 0) return out;
+  const SegmentVertices s = collect_spokes(m);
+  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+    if (!m.is_live(t) || !missing[t]) continue;
+    const VertexId j = misses_angle(m, t, r.min_angle_deg) ? explaining_junction(m, s, t) : kNone;
+    bool touches_repair = false, touches_segment = false;
+    for (int i = 0; i < 3; ++i) {
+      const VertexId v = m.corner[3 * t + i];
+      touches_repair = touches_repair || repaired_vertex(m, s, v);
+      touches_segment = touches_segment || !s.spokes[v].empty();
+    }
+    if (j != kNone && m.kind[j] == VertexKind::Input) ++out.small_input_angle;
+    else if (j != kNone || touches_repair) ++out.repaired_input;
+    else if (at_precision_limit(m, t)) ++out.double_precision;
+    else if (r.steiner_limited || (r.segments_kept_whole && touches_segment)) ++out.steiner_limits;
+    else ++out.other;
+  }
+  return out;
+}
+
+}  // namespace deltri

@@ -1,0 +1,60 @@
+// Which triangles of the final mesh miss the requested bounds, and why: an account a solver's
+// user can trust, computed from the output mesh alone (not from what refinement believes), so a
+// triangle refinement exempted or gave up on is counted all the same.
+//
+// A triangle misses the bounds when its smallest angle is below the -q angle, its area is above
+// the -a bound (or its own regional / .area bound), or its longest edge is above the -u length.
+// Each such triangle gets the first of these causes that applies (docs/manual.md, "Quality
+// accounting"):
+//   small_input_angle  its angle miss is explained by the input, at an input vertex j: (1) a corner
+//                      j where segments meet, with the other two corners inside the sector between
+//                      two neighbouring segments at j, that sector under 60 degrees; or its shortest
+//                      edge joins points on two input segments that meet at j and (2) meet there at
+//                      under 60 degrees (the wedge between them), or (3) lie at distances from j
+//                      equal within 1%, the edge not itself on a segment (the isosceles triangles of
+//                      concentric shells). These are the exemptions of Miller, Pav and Walkington
+//                      and of Triangle; tests/tools/verify_quality.cpp checks meshes by the same rules;
+//   repaired_input     the same explanation at a vertex deltri made where input segments cross or
+//                      overlap (not an input vertex, yet on two or more input segments), or a corner
+//                      at such a vertex;
+//   double_precision   its shortest edge is at most kPrecisionUlps ulps of its largest corner
+//                      coordinate: no double lies close enough to split it usefully;
+//   steiner_limits     -S stopped refinement, or -Y/-YY kept segments whole and the triangle has a
+//                      corner on a segment;
+//   other              none of these: refinement stopped early (its termination guard) or failed.
+#pragma once
+
+#include <cstdint>
+
+#include "mesh/mesh.h"
+
+namespace deltri {
+
+inline constexpr double kPrecisionUlps = 64.0;
+
+struct BoundRequest {
+  double min_angle_deg = 0.0;       // 0: no angle bound
+  double max_area = 0.0;            // 0: none
+  bool area_bounds = false;         // also mesh.area_bound[t] where positive
+  double max_edge_length = 0.0;     // 0: none
+  bool steiner_limited = false;     // -S was reached
+  bool segments_kept_whole = false; // -Y or -YY
+};
+
+struct BoundMisses {
+  std::uint64_t below_angle = 0;  // triangles with an angle below the -q bound
+  std::uint64_t above_size = 0;   // triangles above an area or edge-length bound
+  std::uint64_t total = 0;        // triangles missing either (each counted once)
+  // total split by cause; the five add up to total.
+  std::uint64_t small_input_angle = 0;
+  std::uint64_t repaired_input = 0;
+  std::uint64_t double_precision = 0;
+  std::uint64_t steiner_limits = 0;
+  std::uint64_t other = 0;
+  // What --strict refuses: misses not forced by a small input angle.
+  std::uint64_t not_forced_by_input() const { return total - small_input_angle; }
+};
+
+BoundMisses count_bound_misses(const Mesh& mesh, const BoundRequest& request);
+
+}  // namespace deltri

@@ -1,0 +1,102 @@
+// The quality account of a final mesh (quality/bound_misses.h) on meshes drawn by hand: which
+// triangles miss the bounds, and the cause each is given, known from the drawing.
+#include <cmath>
+
+#include "harness/check.h"
+#include "quality/bound_misses.h"
+#include "quality/mesh_builders.h"
+
+using namespace deltri;
+using namespace quality_test;
+
+namespace {
+
+// One triangle o, a, b (counter-clockwise) with o = (0, 0), a = (10, 0), b = (10, 1): its angle at o
+// is atan(1/10) = 5.71 degrees. With `segments`, o-a and o-b are subsegments of input segments 0
+// and 1 (so o is where two segments meet at 5.71 degrees).
+Mesh wedge(bool segments, VertexKind apex) {
+  Mesh m = mesh_of({{0, 0}, {10, 0}, {10, 1}});
+  m.kind[0] = apex;
+  m.add_triangle(0, 1, 2);
+  if (segments) {
+    m.enable_subsegments();
+    m.subsegments.push_back({0, 1, 1, 0});
+    m.subsegments.push_back({2, 0, 1, 1});
+    m.set_subsegment(0, 0);  // edge 0: o -> a
+    m.set_subsegment(2, 1);  // edge 2: b -> o
+  }
+  return m;
+}
+
+BoundRequest angle(double degrees) {
+  BoundRequest r;
+  r.min_angle_deg = degrees;
+  return r;
+}
+
+}  // namespace
+
+TEST(a_skinny_triangle_between_two_input_segments_is_forced_by_the_input) {
+  const BoundMisses b = count_bound_misses(wedge(true, VertexKind::Input), angle(30));
+  CHECK_EQ(b.total, 1u);
+  CHECK_EQ(b.below_angle, 1u);
+  CHECK_EQ(b.small_input_angle, 1u);
+  CHECK_EQ(b.not_forced_by_input(), 0u);
+  // 5.71 degrees meets a 5 degree bound.
+  CHECK_EQ(count_bound_misses(wedge(true, VertexKind::Input), angle(5)).total, 0u);
+}
+
+TEST(the_same_angle_at_a_crossing_deltri_made_is_a_repair_not_the_input) {
+  const BoundMisses b = count_bound_misses(wedge(true, VertexKind::Segment), angle(30));
+  CHECK_EQ(b.repaired_input, 1u);
+  CHECK_EQ(b.not_forced_by_input(), 1u);
+  // Beyond 60 degrees an angle explains nothing: the 5.71 degree triangle is not inside a small sector
+  // when the segments at o meet at 90 degrees (o-a and o-(0,10)).
+  Mesh m = mesh_of({{0, 0}, {10, 0}, {10, 1}, {0, 10}});
+  m.add_triangle(0, 1, 2);
+  m.add_triangle(0, 2, 3);
+  m.enable_subsegments();
+  m.subsegments.push_back({0, 1, 1, 0});
+  m.subsegments.push_back({3, 0, 1, 1});
+  m.set_subsegment(0, 0);  // o -> a
+  m.set_subsegment(5, 1);  // (0,10) -> o
+  const BoundMisses wide = count_bound_misses(m, angle(30));
+  CHECK_EQ(wide.total, 1u);
+  CHECK_EQ(wide.other, 1u);
+}
+
+TEST(without_segments_a_skinny_triangle_is_unexplained_or_at_the_limits) {
+  CHECK_EQ(count_bound_misses(wedge(false, VertexKind::Input), angle(30)).other, 1u);
+  BoundRequest r = angle(30);
+  r.steiner_limited = true;
+  CHECK_EQ(count_bound_misses(wedge(false, VertexKind::Input), r).steiner_limits, 1u);
+  r.steiner_limited = false;
+  r.segments_kept_whole = true;  // -Y, but the triangle touches no segment
+  CHECK_EQ(count_bound_misses(wedge(false, VertexKind::Input), r).other, 1u);
+}
+
+TEST(a_triangle_a_few_ulps_across_is_at_the_limit_of_double_precision) {
+  const double x = 1e6, ulp = std::nextafter(x, 2 * x) - x;
+  Mesh m = mesh_of({{x, 0}, {x + 3 * ulp, 0}, {x, 1}});
+  m.add_triangle(0, 1, 2);
+  const BoundMisses b = count_bound_misses(m, angle(20));
+  CHECK_EQ(b.total, 1u);
+  CHECK_EQ(b.double_precision, 1u);
+}
+
+TEST(size_bounds_count_separately_and_good_triangles_not_at_all) {
+  Mesh m = mesh_of({{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2}});  // equilateral, area 0.433
+  m.add_triangle(0, 1, 2);
+  CHECK_EQ(count_bound_misses(m, angle(59.9)).total, 0u);
+  BoundRequest r = angle(30);
+  r.max_area = 0.4;
+  BoundMisses b = count_bound_misses(m, r);
+  CHECK_EQ(b.above_size, 1u);
+  CHECK_EQ(b.below_angle, 0u);
+  CHECK_EQ(b.other, 1u);
+  r.max_area = 0.5;
+  r.max_edge_length = 0.99;
+  CHECK_EQ(count_bound_misses(m, r).above_size, 1u);
+  r.max_edge_length = 1.01;
+  CHECK_EQ(count_bound_misses(m, r).total, 0u);
+}
