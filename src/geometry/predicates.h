@@ -12,11 +12,12 @@
 // integers up to 62 bits (exactly cocircular points such as a symmetric polygon's).
 // The sign returned is always the sign of the exact determinant of the given doubles.
 //
-// Limitation: exactness needs every intermediate product and its roundoff to stay clear of overflow
-// and underflow. That is guaranteed when each coordinate is zero or has magnitude in
-// [2^-400, 2^500] (about 4e-121 to 3e150) for orient2d, and in [2^-170, 2^250] (about 7e-52 to
-// 2e75) for incircle. Outside those ranges the answer is still almost always right, but not
-// provably. Build without -ffast-math and without -ffp-contract=fast (see expansion.h).
+// Every finite double, subnormals included: the expansion stages are exact only while every product
+// and its roundoff stay clear of overflow and underflow, which holds when each coordinate is zero or
+// has magnitude in [2^-400, 2^500] for orient2d and [2^-170, 2^250] for incircle. A test with a
+// coordinate outside that range that the filter (guarded against underflow, see bounds) cannot
+// decide goes to exact_integer.h, which evaluates the determinant in integers and cannot underflow
+// or overflow. Build without -ffast-math and without -ffp-contract=fast (see expansion.h).
 //
 // There is no global state: a Predicates object carries its own counters, so each thread owns one
 // and the CLI sums them for -V.
@@ -52,6 +53,14 @@ namespace bounds {
 inline constexpr double kEpsilon = 1.1102230246251565e-16;
 inline constexpr double kOrientA = (3.0 + 16.0 * kEpsilon) * kEpsilon;
 inline constexpr double kIncircleA = (10.0 + 96.0 * kEpsilon) * kEpsilon;
+// The filters' analysis assumes no product underflows or overflows. A product that underflows is
+// off by at most 2^-1075 absolutely, so while the permanent (detsum) is at least kOrientMin
+// (kIncircleMin) those few absolute errors are below 2^-170 of it, far inside the second-order
+// slack of the bounds above (16 and 96 epsilon^2); below it the filter does not decide. Overflow
+// makes the permanent infinite or NaN, which fails every comparison below.
+inline constexpr double kOrientMin = 0x1p-900;
+inline constexpr double kIncircleMin = 0x1p-800;
+inline constexpr double kFiniteMax = 0x1.fffffffffffffp+1023;
 }  // namespace bounds
 
 // incircle's determinant evaluated plainly in R from the six coordinate differences (a - d, b - d,
@@ -89,7 +98,8 @@ class Predicates {
     // zero) |det| is exactly the rounded detsum and always passes, so only the same-sign case can
     // reach the adaptive stage. Random signs would otherwise cost branch mispredictions.
     const double detsum = std::fabs(left) + std::fabs(right);
-    if (std::fabs(det) >= bounds::kOrientA * detsum) return det;
+    if (std::fabs(det) >= bounds::kOrientA * detsum && detsum >= bounds::kOrientMin && detsum <= bounds::kFiniteMax)
+      return det;
     return orient2d_adapt(a, b, c, detsum);
   }
 
@@ -99,7 +109,8 @@ class Predicates {
     ++counters.incircle_calls;
     const PlainIncircle<double> plain =
         plain_incircle(a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y, c.x - d.x, c.y - d.y);
-    if (std::fabs(plain.det) > bounds::kIncircleA * plain.permanent) return plain.det;
+    if (std::fabs(plain.det) > bounds::kIncircleA * plain.permanent && plain.permanent >= bounds::kIncircleMin)
+      return plain.det;
     return incircle_adapt(a, b, c, d, plain.permanent);
   }
 
