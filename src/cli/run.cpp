@@ -18,6 +18,7 @@
 #include "delaunay/triangulate.h"
 #include "io/area_file.h"
 #include "io/edge_file.h"
+#include "cli/interrupt_cleanup.h"
 #include "io/ele_file.h"
 #include "io/file_text.h"
 #include "io/midpoints.h"
@@ -185,6 +186,20 @@ struct OutputContext {
   RunReport& report;
   int exit_status;
 };
+
+// Written as warnings: each means that another process touched this run's output files.
+void report_commit_notes(const CommitNotes& notes) {
+  if (notes.stale_temporaries_removed)
+    std::fprintf(stderr, "deltri: warning: removed %zu temporary file%s left by an interrupted deltri run\n",
+                 notes.stale_temporaries_removed, notes.stale_temporaries_removed == 1 ? "" : "s");
+  if (notes.replaced_meanwhile)
+    std::fprintf(stderr,
+                 "deltri: warning: %zu output file%s changed on disk while this run was writing (another run?); "
+                 "replaced by this run's set\n",
+                 notes.replaced_meanwhile, notes.replaced_meanwhile == 1 ? "" : "s");
+  else if (notes.waited_for_other_run)
+    std::fprintf(stderr, "deltri: warning: waited for another deltri run writing to the same directory\n");
+}
 
 void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
   const Mesh& mesh = c.mesh;
@@ -363,7 +378,8 @@ int run(const Switches& sw) {
   OutputSet outputs;
   schedule_outputs(outputs, {mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering,
                              sw.order == 2 ? &midpoints : nullptr, report, status});
-  outputs.commit();
+  const CommitNotes notes = outputs.commit(set_interrupt_cleanup);
+  report_commit_notes(notes);
   timer.stage("write");
   report.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   messages.finished(mesh, report);
