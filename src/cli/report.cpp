@@ -67,8 +67,10 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
   if (mesh.live_triangles() == 0) {
     if (r.pslg && r.pslg->has_segment_section && mesh.vertex_count() >= 3 && r.holes && r.holes->triangles_removed > 0)
       warn("every triangle lies outside the segments or in a hole: the mesh is empty (try -c or -O)");
+    else if (r.rebuilt_triangles)
+      warn("-r: the .ele lists no triangles: the mesh is empty");
     else
-      warn("the vertices are all collinear or fewer than three distinct: no triangles");
+      warn("the vertices are all collinear: no triangles");  // fewer than 3 distinct is an error
   }
   return lines;
 }

@@ -274,6 +274,7 @@ void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, RunReport& repo
   const std::string ele_path = in.base + ".ele";
   const EleData ele = read_ele_file(ele_path, pslg.first_index, mesh.vertex_count());
   rebuild_mesh(mesh, pred, ele, ele_path);
+  report.rebuilt_triangles = ele.triangle_count();
   if (in.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {});
   protect_boundary(mesh);
   if (in.area_file) mesh.area_bound = read_area_file(in.base + ".area", ele.triangle_count());
@@ -328,6 +329,12 @@ int run(const Switches& sw) {
   } else {
     const DelaunayReport dt = delaunay_triangulate(mesh, sw.algorithm, sw.threads);
     report.duplicates = dt.duplicates.size();
+    // As for a header of one or two vertices: duplicates merged, nothing could be triangulated.
+    if (const std::size_t distinct = report.input_vertices - report.duplicates; distinct < 3)
+      throw InputError(report.input_name, 0,
+                       "a triangulation needs at least 3 distinct vertices; after merging duplicates the " +
+                           std::to_string(report.input_vertices) + " vertices are " + std::to_string(distinct) +
+                           " distinct point" + (distinct == 1 ? "" : "s"));
     report.counters.add(dt.counters);
     timer.stage("Delaunay");
     check_stage(mesh, "Delaunay");

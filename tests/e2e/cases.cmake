@@ -106,7 +106,7 @@ foreach(sw none -i -l)
   e2e_case(offset1e9${sw} gen:offset.node ${sw} --no-warning)
   e2e_case(collinear${sw} gen:collinear.node ${sw} --warning "collinear" --verify "--expect-triangles 0")
 endforeach()
-e2e_case(two_points ${E2E_INPUTS}/two_points.node none --warning "fewer than three distinct" --verify "--expect-triangles 0")
+e2e_case(two_points ${E2E_INPUTS}/two_points.node none --exit 1 --error "two_points.node: a triangulation needs at least 3 distinct vertices")
 e2e_case(duplicates ${E2E_INPUTS}/duplicates.node none --warning "2 duplicate vertices")
 
 # ---- PSLG repairs: valid mesh and the warning ----
