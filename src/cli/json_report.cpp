@@ -157,6 +157,10 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   if (const auto& h = r.holes) {
     j.integer("hole_points_outside_ignored", h->outside.size());
     j.integer("hole_points_on_segment_ignored", h->on_segment.size());
+    if (r.regions) {
+      j.integer("region_points_outside_ignored", r.regions->outside.size());
+      j.integer("region_points_on_segment_ignored", r.regions->on_segment.size());
+    }
   }
   j.close();
 

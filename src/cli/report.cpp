@@ -46,6 +46,11 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
     if (!h->outside.empty()) warn(plural(h->outside.size(), "hole point", "hole points") + " outside the triangulation ignored");
     if (!h->on_segment.empty()) warn(plural(h->on_segment.size(), "hole point", "hole points") + " lying exactly on a segment ignored");
   }
+  if (const auto& g = r.regions) {
+    if (!g->outside.empty()) warn(plural(g->outside.size(), "region point", "region points") + " outside the triangulation ignored");
+    if (!g->on_segment.empty())
+      warn(plural(g->on_segment.size(), "region point", "region points") + " lying exactly on a segment ignored");
+  }
   if (const auto& q = r.refine) {
     if (q->stopped_by_max_steiner) warn("refinement stopped at the -S limit of Steiner points");
     if (q->stopped_by_cap)

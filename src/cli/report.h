@@ -34,6 +34,7 @@ struct RunReport {
   std::optional<std::size_t> rebuilt_triangles;  // -r: the triangles of the .ele read
   std::optional<SegmentReport> segments;
   std::optional<HoleReport> holes;
+  std::optional<RegionReport> regions;
   std::optional<CheckReport> check;
   std::optional<RefineReport> refine;
   std::size_t hull_absorbed = 0;  // vertices taken into the hull chain (absorb_near_hull_vertices)

@@ -140,7 +140,7 @@ void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Swi
   report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull);
   const bool region_areas = sw.variable_area && !pslg.regions.empty();
   if (sw.regional_attributes || region_areas)
-    spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas);
+    report.regions = spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas);
   report.counters.add(pred.counters);
 }
 
