@@ -151,6 +151,7 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
     j.integer("segments_split_at_vertices", s->split_at_vertices);
     j.integer("collinear_overlaps_merged", s->overlaps_merged);
     j.integer("crossings_split", s->crossings);
+    j.integer("vertices_snapped_onto_segments", s->snapped);
     j.integer("segments_with_missing_endpoint_ignored", s->invalid_endpoints);
     j.integer("segments_outside_every_triangle_ignored", s->unrecovered);
   }

@@ -38,6 +38,8 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
     if (s->repeated) warn(plural(s->repeated, "repeated segment", "repeated segments") + " ignored");
     if (s->split_at_vertices) warn(plural(s->split_at_vertices, "segment split", "segment splits") + " where segments pass exactly through vertices");
     if (s->overlaps_merged) warn(plural(s->overlaps_merged, "collinear overlap", "collinear overlaps") + " between segments merged");
+    if (s->snapped)
+      warn(plural(s->snapped, "vertex", "vertices") + " within 4 ulps of a segment placed on it (the segment split there; --exact-input keeps them off)");
     if (s->crossings) warn(plural(s->crossings, "segment crossing", "segment crossings") + " split at a new vertex");
     if (s->invalid_endpoints) warn(plural(s->invalid_endpoints, "segment", "segments") + " with a missing endpoint ignored");
     if (s->unrecovered) warn(plural(s->unrecovered, "segment", "segments") + " outside every triangle ignored");

@@ -134,7 +134,7 @@ Mesh mesh_from_pslg(Pslg& pslg) {
 void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Switches& sw,
                RunReport& report) {
   Predicates pred;
-  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates);
+  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates, !sw.exact_input);
   if (sw.convex_hull) enclose_convex_hull(mesh);
   static const std::vector<Point> no_holes;
   report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull);
@@ -269,13 +269,13 @@ bool refinement_wanted(const Switches& sw, const InputFiles& in) {
 
 // -r: the previous mesh's triangles, its .poly segments (with -p) and its .area bounds. Holes
 // are not carved again and regions are not read, as in Triangle.
-void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, RunReport& report) {
+void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, const Switches& sw, RunReport& report) {
   Predicates pred;
   const std::string ele_path = in.base + ".ele";
   const EleData ele = read_ele_file(ele_path, pslg.first_index, mesh.vertex_count());
   rebuild_mesh(mesh, pred, ele, ele_path);
   report.rebuilt_triangles = ele.triangle_count();
-  if (in.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {});
+  if (in.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {}, !sw.exact_input);
   protect_boundary(mesh);
   if (in.area_file) mesh.area_bound = read_area_file(in.base + ".area", ele.triangle_count());
   make_constrained_delaunay(mesh, pred);
@@ -323,7 +323,7 @@ int run(const Switches& sw) {
 
   Mesh mesh = mesh_from_pslg(pslg);
   if (in.refine) {
-    rebuild(mesh, pslg, in, report);
+    rebuild(mesh, pslg, in, sw, report);
     timer.stage("mesh reconstruction");
     check_stage(mesh, "mesh reconstruction");
   } else {

@@ -55,6 +55,7 @@ struct Switches {
   FileRequest msh, vtu, svg, json;
   bool svg_numbers = false;      // --svg-numbers: vertex numbers in the picture
   bool strict = false;           // --strict: exit status 3 when triangles miss the bounds
+  bool exact_input = false;      // --exact-input: no snapping of vertices onto nearby segments
   bool man = false;              // --man: print the manual page (roff) and exit
 
   // How to run.
