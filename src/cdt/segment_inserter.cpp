@@ -118,17 +118,17 @@ VertexId SegmentInserter::near_vertex(const Piece& piece, std::initializer_list<
   const Point& a = mesh.point(piece.u);
   const Point& b = mesh.point(piece.v);
   const double dx = b.x - a.x, dy = b.y - a.y;
-  const double length = std::hypot(dx, dy);
   for (const VertexId w : candidates) {
     if (w == kNone || w == piece.u || w == piece.v) continue;
     const Point& p = mesh.point(w);
     // Strictly between the ends along the segment, then close to its line.
     if (!((p.x - a.x) * dx + (p.y - a.y) * dy > 0.0) || !((p.x - b.x) * -dx + (p.y - b.y) * -dy > 0.0)) continue;
-    const double scale = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y), std::fabs(p.x), std::fabs(p.y)});
-    // |orient2d| is twice the triangle's area: distance * length. The plain value is within a few
-    // ulps of scale * length of it, so it rejects the far vertices cheaply; the exact value
-    // decides. A vertex exactly on the line is left to the walk (split_at_vertices).
-    const double limit = ulps_at(scale, kSnapUlps) * length;
+    // Rounding each coordinate to a double moves a point by up to half an ulp per axis, so the
+    // tolerance is kSnapUlps ulps of each axis's largest coordinate, projected on the normal
+    // of the segment; times length, as an area like orient2d: |dy| ulp_x + |dx| ulp_y.
+    const double ulp_x = std::max(ulps_at(std::max({std::fabs(a.x), std::fabs(b.x), std::fabs(p.x)}), 1.0), 0x1p-1074);
+    const double ulp_y = std::max(ulps_at(std::max({std::fabs(a.y), std::fabs(b.y), std::fabs(p.y)}), 1.0), 0x1p-1074);
+    const double limit = kSnapUlps * (std::fabs(dy) * ulp_x + std::fabs(dx) * ulp_y);
     const double plain = (a.x - p.x) * (b.y - p.y) - (a.y - p.y) * (b.x - p.x);
     if (std::fabs(plain) > 4.0 * limit) continue;
     const double area2 = std::fabs(exact::orient2d_value(a, b, p));

@@ -27,9 +27,10 @@ struct InsertionCounts {
   std::size_t snapped = 0;  // vertices within kSnapUlps of a segment that split it (snap_to_segments)
 };
 
-// A vertex this many units in the last place (of the largest coordinate involved) or closer to a
-// segment's interior is taken to lie on it: a T-junction written in decimal is usually one
-// rounding away from the segment in binary.
+// A vertex this many units in the last place or closer to a segment's interior is taken to lie on
+// it: a T-junction written in decimal is usually one rounding away from the segment in binary.
+// The ulps are those of the largest x and the largest y among the three points, each weighted by
+// how much a move along that axis moves the point off the segment's line.
 inline constexpr double kSnapUlps = 4.0;
 
 class SegmentInserter {

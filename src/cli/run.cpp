@@ -53,17 +53,17 @@ class StageTimer {
   std::chrono::steady_clock::time_point last_;
 };
 
-// The exact predicates work on products of up to four coordinate differences in doubles, with
-// error terms about 2^-106 below them: past about 2^255 the products overflow, and their error
-// terms underflow once differences fall below about 2^-230; then segment insertion can loop
-// forever or drop segments (found by scaling guitar.poly by 2^254 and 2^-300). Distinct vertices
-// of magnitude M differ by at least M 2^-52, so M >= 2^-150 keeps their differences above 2^-202.
-// (Vertices much closer than that near the origin, e.g. 1e-300 and 2e-300 in a unit domain, are
-// not refused and may still underflow: docs/reliability.md.)
+// The predicates are exact for every finite double (geometry/exact_integer.h), and segment
+// crossings are constructed at a scale where nothing overflows, so triangulating (-p, -c, holes,
+// regions) takes any finite coordinates. Refinement's constructions (circumcentres, off-centres,
+// split points, lengths and areas) are plain floating point and need their squares and
+// products to stay finite and normal, so refining (-q, -a, -u, -D, .area) keeps these limits.
+// Distinct vertices of magnitude M differ by at least M 2^-52, so M >= 2^-150 keeps their
+// differences above 2^-202.
 constexpr double kLargestCoordinate = 0x1p200;   // about 1.6e60
 constexpr double kSmallestMagnitude = 0x1p-150;  // about 7.0e-46
 
-void check_coordinate_range(const Pslg& pslg, const std::string& path) {
+void check_coordinate_range_for_refinement(const Pslg& pslg, const std::string& path) {
   double largest = 0.0;
   const auto look = [&largest](const Point& p) { largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)}); };
   for (const Point& p : pslg.points) look(p);
@@ -75,10 +75,10 @@ void check_coordinate_range(const Pslg& pslg, const std::string& path) {
     char magnitude[32];
     std::snprintf(magnitude, sizeof magnitude, "%g", largest);
     throw InputError(path, 0, std::string("a coordinate of magnitude ") + magnitude +
-                                  " is beyond the supported range of +-2^200 (about 1.6e60); scale the input down");
+                                  " is beyond the range supported for refinement, +-2^200 (about 1.6e60); scale the input down");
   }
   if (largest_vertex > 0.0 && largest_vertex < kSmallestMagnitude)
-    throw InputError(path, 0, "every vertex coordinate is below 2^-150 (about 7.0e-46) in magnitude; scale the input up");
+    throw InputError(path, 0, "every vertex coordinate is below 2^-150 (about 7.0e-46) in magnitude, too small for refinement; scale the input up");
 }
 
 // Debug builds check the mesh after every stage, so that a fault is caught in the stage that made
@@ -315,7 +315,7 @@ int run(const Switches& sw) {
   const InputFiles in = input_files(sw);
   report.input_name = in.path == "-" ? kStandardInputName : in.path;
   Pslg pslg = in.is_poly ? read_poly_file(in.path) : read_node_file(in.path);
-  check_coordinate_range(pslg, pslg.source_name.empty() ? in.path : pslg.source_name);
+  if (refinement_wanted(sw, in)) check_coordinate_range_for_refinement(pslg, pslg.source_name.empty() ? in.path : pslg.source_name);
   report.pslg = &pslg;
   report.input_vertices = pslg.points.size();
   report.input_segments = pslg.segments.size();
