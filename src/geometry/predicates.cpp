@@ -224,6 +224,10 @@ bool incircle_double_word(const double (&d)[6], double permanent, double& det) {
 }  // namespace
 
 double Predicates::orient2d_adapt(const Point& a, const Point& b, const Point& c, double detsum) {
+  // Both products with a zero factor (equal coordinates: axis-parallel collinear points) are
+  // exactly zero; the filter passes these on only because a zero permanent cannot rule out
+  // underflow.
+  if (detsum == 0.0 && (a.x == c.x || b.y == c.y) && (a.y == c.y || b.x == c.x)) return 0.0;
   ++counters.orient_adaptive;
   const Point points[3] = {a, b, c};
   if (!exact_integer::coordinates_within(points, 3, kOrientLow, kOrientHigh)) {

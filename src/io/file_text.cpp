@@ -77,17 +77,22 @@ FileText read_stream(std::FILE* f, const std::string& name) {
       text.bytes = std::move(bigger);
     }
     const std::size_t got = std::fread(text.bytes.get() + text.size, 1, capacity - text.size, f);
-    if (const void* nul = std::memchr(text.bytes.get() + text.size, '\0', got)) {
-      const auto at = static_cast<std::size_t>(static_cast<const char*>(nul) - text.bytes.get());
-      throw InputError(name, line_of(text.bytes.get(), at), "a NUL byte: binary data, not a text file");
-    }
+    const std::size_t old_size = text.size;
     text.size += got;
+    bool bad_header = false;
     if (!header_decided) {
       if (const std::size_t end = end_of_bad_header(text.bytes.get(), text.size, header_decided)) {
         text.size = end;
-        return text;
+        bad_header = true;
       }
     }
+    if (text.size > old_size) {
+      if (const void* nul = std::memchr(text.bytes.get() + old_size, '\0', text.size - old_size)) {
+        const auto at = static_cast<std::size_t>(static_cast<const char*>(nul) - text.bytes.get());
+        throw InputError(name, line_of(text.bytes.get(), at), "a NUL byte: binary data, not a text file");
+      }
+    }
+    if (bad_header) return text;
     if (got == 0) {
       if (std::ferror(f)) fail_read(name, errno);
       return text;
