@@ -15,7 +15,7 @@ fail=0
 # sends the signal. env --default-signal: a background job of sh starts with SIGINT ignored.
 interrupt() {  # signal
   rm -f guitar.1.*
-  env --default-signal=INT "$deltri" -Qpqa0.00002 guitar.poly >/dev/null 2>stderr &
+  env --default-signal=INT "$deltri" -Qpqa0.0001 guitar.poly >/dev/null 2>stderr &
   pid=$!
   i=0
   while [ $i -lt 6000 ] && ! ls guitar.1.*.tmp.* >/dev/null 2>&1; do sleep 0.01; i=$((i + 1)); done
