@@ -63,6 +63,7 @@ void SegmentInserter::process(const Piece& piece) {
       if (w == kNone && mesh.link[start.edge] != kNone) w = near_vertex(along, {mesh.apex(mesh.link[start.edge])});
       if (w != kNone) {
         ++counts_.snapped;
+        snapped_pairs_.insert((std::uint64_t{piece.segment} << 32) | w);
         pending_.push_back({w, piece.v, piece.marker, piece.segment});
         pending_.push_back({piece.u, w, piece.marker, piece.segment});
         return;
@@ -82,6 +83,7 @@ void SegmentInserter::process(const Piece& piece) {
       if (const VertexId w = near_vertex(piece, {mesh.org(g), mesh.dest(g)}); w != kNone) {
         // Split the piece at w and start both halves afresh (their walks differ from this one).
         ++counts_.snapped;
+        snapped_pairs_.insert((std::uint64_t{piece.segment} << 32) | w);
         pending_.push_back({w, piece.v, piece.marker, piece.segment});
         pending_.push_back({piece.u, w, piece.marker, piece.segment});
         return;
@@ -132,7 +134,9 @@ VertexId SegmentInserter::near_vertex(const Piece& piece, std::initializer_list<
     const double plain = (a.x - p.x) * (b.y - p.y) - (a.y - p.y) * (b.x - p.x);
     if (std::fabs(plain) > 4.0 * limit) continue;
     const double area2 = std::fabs(exact::orient2d_value(a, b, p));
-    if (area2 != 0.0 && area2 <= limit) return w;
+    if (area2 != 0.0 && area2 <= limit &&
+        !snapped_pairs_.contains((std::uint64_t{piece.segment} << 32) | w))
+      return w;
   }
   return kNone;
 }

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <unordered_set>
 #include <vector>
 
 #include "cdt/edit.h"
@@ -64,6 +65,10 @@ class SegmentInserter {
   std::vector<EdgeRef> crossed_;
   std::uint32_t last_overlap_ = kNone;  // segment last counted in overlaps_merged
   bool snap_ = false;
+  // (input segment, vertex) pairs already snapped: each vertex is taken onto each segment at most
+  // once, so snapping adds finitely many pieces even where rounded crossings and bent pieces
+  // would otherwise offer the same vertex again and again (found with coordinates near 1e300).
+  std::unordered_set<std::uint64_t> snapped_pairs_;
 };
 
 }  // namespace deltri
