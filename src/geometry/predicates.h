@@ -53,13 +53,14 @@ namespace bounds {
 inline constexpr double kEpsilon = 1.1102230246251565e-16;
 inline constexpr double kOrientA = (3.0 + 16.0 * kEpsilon) * kEpsilon;
 inline constexpr double kIncircleA = (10.0 + 96.0 * kEpsilon) * kEpsilon;
-// The filters' analysis assumes no product underflows or overflows. A product that underflows is
-// off by at most 2^-1075 absolutely, so while the permanent (detsum) is at least kOrientMin
-// (kIncircleMin) those few absolute errors are below 2^-170 of it, far inside the second-order
-// slack of the bounds above (16 and 96 epsilon^2); below it the filter does not decide. Overflow
-// makes the permanent infinite or NaN, which fails every comparison below.
+// The filters' analysis assumes no product underflows or overflows. In orient2d (and the dot
+// products of the diametral tests) a product that underflows is off by at most 2^-1075 and is
+// not multiplied again, so while the permanent (detsum) is at least kOrientMin those absolute
+// errors are below 2^-170 of it, far inside the second-order slack of the bound (16 epsilon^2);
+// below it the filter does not decide. Overflow makes the permanent infinite or NaN, which fails
+// the comparisons. incircle multiplies products again, so it checks its differences instead
+// (Predicates::filter_safe).
 inline constexpr double kOrientMin = 0x1p-900;
-inline constexpr double kIncircleMin = 0x1p-800;
 inline constexpr double kFiniteMax = 0x1.fffffffffffffp+1023;
 }  // namespace bounds
 
@@ -107,9 +108,13 @@ class Predicates {
   // outside, zero if the four points are cocircular.
   double incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
     ++counters.incircle_calls;
-    const PlainIncircle<double> plain =
-        plain_incircle(a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y, c.x - d.x, c.y - d.y);
-    if (std::fabs(plain.det) > bounds::kIncircleA * plain.permanent && plain.permanent >= bounds::kIncircleMin)
+    const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y, cdx = c.x - d.x, cdy = c.y - d.y;
+    const PlainIncircle<double> plain = plain_incircle(adx, ady, bdx, bdy, cdx, cdy);
+    // Unlike orient2d's, a product that underflows here is multiplied again (a minor of 1e-333
+    // lost to underflow, times a lift of 1e265), so no test of the permanent can bound the damage:
+    // the filter decides only when no product can underflow or overflow at all.
+    if (std::fabs(plain.det) > bounds::kIncircleA * plain.permanent && filter_safe(adx) && filter_safe(ady) &&
+        filter_safe(bdx) && filter_safe(bdy) && filter_safe(cdx) && filter_safe(cdy))
       return plain.det;
     return incircle_adapt(a, b, c, d, plain.permanent);
   }
@@ -117,6 +122,13 @@ class Predicates {
   PredicateCounters counters;
 
  private:
+  // A coordinate difference with which incircle's plain evaluation (products of up to four
+  // differences, sums of six) neither underflows nor overflows.
+  static bool filter_safe(double v) {
+    const double m = std::fabs(v);
+    return m == 0.0 || (m >= 0x1p-250 && m <= 0x1p250);
+  }
+
   double orient2d_adapt(const Point& a, const Point& b, const Point& c, double detsum);
   double incircle_adapt(const Point& a, const Point& b, const Point& c, const Point& d,
                         double permanent);
