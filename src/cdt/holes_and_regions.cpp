@@ -110,25 +110,32 @@ void add_region_attribute(Mesh& mesh) {
   mesh.num_triangle_attributes = old + 1;
 }
 
-TriangleId region_triangle(const Mesh& mesh, Predicates& pred, const Point& at, EdgeRef hint) {
-  const PointLocation where = locate_point(mesh, pred, at, hint);
-  return where.kind == PointLocation::Kind::Outside ? kNone : triangle_of(where.edge);
+// The triangle a region point seeds, or kNone; `where` says why not.
+TriangleId region_triangle(const Mesh& mesh, Predicates& pred, const Point& at, EdgeRef hint,
+                           PointLocation::Kind& where) {
+  const PointLocation location = locate_point(mesh, pred, at, hint);
+  where = location.kind;
+  return hole_triangle(mesh, location);  // the same rule as for hole points
 }
 
 }  // namespace
 
-void spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Region>& regions,
-                    bool attributes, bool area_bounds) {
+RegionReport spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Region>& regions,
+                            bool attributes, bool area_bounds) {
+  RegionReport report;
   if (attributes) add_region_attribute(mesh);
   if (area_bounds && mesh.area_bound.size() != mesh.triangle_slots())
     mesh.area_bound.assign(mesh.triangle_slots(), -1.0);
-  if (!attributes && !area_bounds) return;
+  if (!attributes && !area_bounds) return report;
   // Find all seeds first: locating is read-only, flooding writes only attributes.
   std::vector<TriangleId> starts;
   EdgeRef hint = kNone;
-  for (const Pslg::Region& r : regions) {
-    starts.push_back(region_triangle(mesh, pred, r.at, hint));
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    PointLocation::Kind where = PointLocation::Kind::Outside;
+    starts.push_back(region_triangle(mesh, pred, regions[i].at, hint, where));
     if (starts.back() != kNone) hint = 3 * starts.back();
+    else if (where == PointLocation::Kind::Outside) report.outside.push_back(i);
+    else report.on_segment.push_back(i);
   }
   std::vector<std::uint32_t> visited(mesh.triangle_slots(), 0);
   const int stride = mesh.num_triangle_attributes;
@@ -139,6 +146,7 @@ void spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Region
       if (area_bounds) mesh.area_bound[t] = regions[i].max_area;
     }
   }
+  return report;
 }
 
 }  // namespace deltri

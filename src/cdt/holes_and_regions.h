@@ -28,13 +28,21 @@ struct HoleReport {
 HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& holes,
                        bool keep_convex_hull);
 
+struct RegionReport {
+  std::vector<std::size_t> outside;     // indices of region points outside the mesh (ignored)
+  std::vector<std::size_t> on_segment;  // indices of region points exactly on a subsegment or on a
+                                        // vertex a subsegment ends at (ignored, as hole points are)
+};
+
 // Floods from the triangle containing each region point up to subsegments, in input order, so a
 // later region overrides an earlier one where they cover the same triangles (as Triangle does).
 // With `attributes`, adds one triangle attribute, the last one: the region's attribute, 0 outside
 // every region. With `area_bounds`, fills mesh.area_bound (one per triangle; -1 = no bound) with
 // the region's maximum area, a negative one included. A region point outside the mesh is
-// ignored; one on an edge uses the triangle on its left.
-void spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Region>& regions,
+// ignored, and so is one exactly on a segment or on a vertex a segment ends at, where the side is
+// ambiguous: the same rule as for hole points, for the CLI and any other caller of this function.
+// A point on an edge or vertex without a segment is fine: every triangle there is in one region.
+RegionReport spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Region>& regions,
                     bool attributes, bool area_bounds);
 
 }  // namespace deltri

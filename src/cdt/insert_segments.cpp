@@ -28,7 +28,8 @@ void pass_markers(Mesh& mesh, const std::vector<std::pair<std::uint32_t, int>>& 
 }  // namespace
 
 SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Segment>& segments,
-                              const std::vector<std::pair<VertexId, VertexId>>& duplicates) {
+                              const std::vector<std::pair<VertexId, VertexId>>& duplicates,
+                              bool snap_to_segments) {
   SegmentReport report;
   mesh.enable_subsegments();
   std::vector<VertexId> kept(mesh.vertex_count());
@@ -51,7 +52,7 @@ SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Ps
   const std::vector<std::uint32_t> repeat_of = find_repeats(ends, mesh.vertex_count());
 
   mesh.subsegments.reserve(mesh.subsegments.size() + segments.size());
-  SegmentInserter inserter(mesh, pred);
+  SegmentInserter inserter(mesh, pred, snap_to_segments);
   std::vector<std::pair<std::uint32_t, int>> repeated_markers;
   for (std::uint32_t i = 0; i < segments.size(); ++i) {
     if (ends[i].first == kNone) continue;
@@ -71,6 +72,7 @@ SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Ps
   report.overlaps_merged = counts.overlaps_merged;
   report.crossings = counts.crossings;
   report.unrecovered = counts.unrecovered;
+  report.snapped = counts.snapped;
   report.subsegments = mesh.subsegments.size();
   return report;
 }

@@ -22,6 +22,7 @@ struct SegmentReport {
   std::size_t invalid_endpoints = 0;    // segments naming a vertex that does not exist (ignored)
   std::size_t unrecovered = 0;          // segments whose endpoint is in no triangle (e.g. all
                                         // input vertices collinear): ignored
+  std::size_t snapped = 0;              // vertices within a few ulps of a segment that split it
   std::size_t subsegments = 0;          // size of mesh.subsegments at the end
 };
 
@@ -32,7 +33,10 @@ struct SegmentReport {
 // is 0. A repeated segment with a non-zero marker passes it the same way to the earlier one's
 // pieces whose marker is 0. Crossing points become VertexKind::Segment vertices; when rounding
 // puts one off a segment, the segment becomes the chain through it (as Triangle does).
+// With snap_to_segments (the default; --exact-input turns it off), a vertex within kSnapUlps
+// (segment_inserter.h) of a segment's interior splits the segment there, as one exactly on it does.
 SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Segment>& segments,
-                              const std::vector<std::pair<VertexId, VertexId>>& duplicates);
+                              const std::vector<std::pair<VertexId, VertexId>>& duplicates,
+                              bool snap_to_segments = true);
 
 }  // namespace deltri

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "cdt/edit.h"
+#include "mesh/overlap.h"
 #include "pslg/errors.h"
 
 namespace deltri {
@@ -63,6 +64,11 @@ void pair_edges(Mesh& mesh, const std::string& path) {
 void rebuild_mesh(Mesh& mesh, Predicates& pred, const EleData& ele, const std::string& ele_path) {
   add_triangles(mesh, pred, ele, ele_path);
   pair_edges(mesh, ele_path);
+  // Paired edges and counter-clockwise triangles can still cross or lie over one another.
+  if (const auto found = find_overlap(mesh, pred))
+    throw InputError(ele_path, 0,
+                     triangle_name(found->first) + " and " + triangle_name(found->second) +
+                         (found->interiors_overlap ? " overlap" : " meet other than at shared corners (a corner of one lies on the other)"));
   mesh.num_triangle_attributes = ele.num_attributes;
   mesh.triangle_attributes = ele.attributes;
   mesh.subseg.clear();

@@ -4,7 +4,8 @@
 // keys, so no hash table and no per-vertex adjacency lists are needed. What a .ele cannot be
 // trusted with is checked, since the file may come from anywhere: every triangle strictly
 // counter-clockwise (exact orient2d), and every edge used at most once in each direction, by at
-// most two triangles. Edges used once are the boundary of the mesh; Triangle treats them as
+// most two triangles, and no two triangles overlapping or meeting other than at shared corners
+// (mesh/overlap.h). Edges used once are the boundary of the mesh; Triangle treats them as
 // segments with marker 1 when refining, and so does protect_boundary.
 #pragma once
 

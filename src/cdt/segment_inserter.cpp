@@ -1,7 +1,11 @@
 #include "cdt/segment_inserter.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "cdt/walk.h"
 #include "geometry/constructions.h"
+#include "geometry/exact_determinants.h"
 
 namespace deltri {
 
@@ -52,6 +56,19 @@ void SegmentInserter::process(const Piece& piece) {
     return;
   }
   if (start.kind == RayStart::Kind::Vertex) {
+    // The piece runs along an existing edge: a vertex a few ulps off it is an apex beside it.
+    if (snap_) {
+      const Piece along{piece.u, start.vertex, piece.marker, piece.segment};
+      VertexId w = near_vertex(along, {mesh.apex(start.edge)});
+      if (w == kNone && mesh.link[start.edge] != kNone) w = near_vertex(along, {mesh.apex(mesh.link[start.edge])});
+      if (w != kNone) {
+        ++counts_.snapped;
+        snapped_pairs_.insert((std::uint64_t{piece.segment} << 32) | w);
+        pending_.push_back({w, piece.v, piece.marker, piece.segment});
+        pending_.push_back({piece.u, w, piece.marker, piece.segment});
+        return;
+      }
+    }
     record(start.edge, {piece.u, start.vertex, piece.marker, piece.segment});
     if (start.vertex != piece.v) {
       ++counts_.split_at_vertices;
@@ -62,6 +79,16 @@ void SegmentInserter::process(const Piece& piece) {
   crossed_.clear();
   EdgeRef g = start.edge;
   while (true) {
+    if (snap_) {
+      if (const VertexId w = near_vertex(piece, {mesh.org(g), mesh.dest(g)}); w != kNone) {
+        // Split the piece at w and start both halves afresh (their walks differ from this one).
+        ++counts_.snapped;
+        snapped_pairs_.insert((std::uint64_t{piece.segment} << 32) | w);
+        pending_.push_back({w, piece.v, piece.marker, piece.segment});
+        pending_.push_back({piece.u, w, piece.marker, piece.segment});
+        return;
+      }
+    }
     if (mesh.subseg[g] != kNone) return split_crossing(piece, g);
     crossed_.push_back(g);
     const RayStep step = next_step(mesh, pred, g, pu, pv);
@@ -86,6 +113,32 @@ void SegmentInserter::process(const Piece& piece) {
     }
     return;
   }
+}
+
+VertexId SegmentInserter::near_vertex(const Piece& piece, std::initializer_list<VertexId> candidates) const {
+  const Mesh& mesh = ed_.mesh;
+  const Point& a = mesh.point(piece.u);
+  const Point& b = mesh.point(piece.v);
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  for (const VertexId w : candidates) {
+    if (w == kNone || w == piece.u || w == piece.v) continue;
+    const Point& p = mesh.point(w);
+    // Strictly between the ends along the segment, then close to its line.
+    if (!((p.x - a.x) * dx + (p.y - a.y) * dy > 0.0) || !((p.x - b.x) * -dx + (p.y - b.y) * -dy > 0.0)) continue;
+    // Rounding each coordinate to a double moves a point by up to half an ulp per axis, so the
+    // tolerance is kSnapUlps ulps of each axis's largest coordinate, projected on the normal
+    // of the segment; times length, as an area like orient2d: |dy| ulp_x + |dx| ulp_y.
+    const double ulp_x = std::max(ulps_at(std::max({std::fabs(a.x), std::fabs(b.x), std::fabs(p.x)}), 1.0), 0x1p-1074);
+    const double ulp_y = std::max(ulps_at(std::max({std::fabs(a.y), std::fabs(b.y), std::fabs(p.y)}), 1.0), 0x1p-1074);
+    const double limit = kSnapUlps * (std::fabs(dy) * ulp_x + std::fabs(dx) * ulp_y);
+    const double plain = (a.x - p.x) * (b.y - p.y) - (a.y - p.y) * (b.x - p.x);
+    if (std::fabs(plain) > 4.0 * limit) continue;
+    const double area2 = std::fabs(exact::orient2d_value(a, b, p));
+    if (area2 != 0.0 && area2 <= limit &&
+        !snapped_pairs_.contains((std::uint64_t{piece.segment} << 32) | w))
+      return w;
+  }
+  return kNone;
 }
 
 void SegmentInserter::release(EdgeRef e, VertexId w) {

@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
+#include <unordered_set>
 #include <vector>
 
 #include "cdt/edit.h"
@@ -23,11 +25,21 @@ struct InsertionCounts {
   std::size_t overlaps_merged = 0;
   std::size_t crossings = 0;
   std::size_t unrecovered = 0;
+  std::size_t snapped = 0;  // vertices within kSnapUlps of a segment that split it (snap_to_segments)
 };
+
+// A vertex this many units in the last place or closer to a segment's interior is taken to lie on
+// it: a T-junction written in decimal is usually one rounding away from the segment in binary.
+// The ulps are those of the largest x and the largest y among the three points, each weighted by
+// how much a move along that axis moves the point off the segment's line.
+inline constexpr double kSnapUlps = 4.0;
 
 class SegmentInserter {
  public:
-  SegmentInserter(Mesh& mesh, Predicates& pred) : ed_(mesh, pred), recovery_(ed_) {}
+  // With snap_to_segments, a vertex within kSnapUlps of the open segment being inserted splits it
+  // there, as a vertex exactly on it does (--exact-input turns this off).
+  SegmentInserter(Mesh& mesh, Predicates& pred, bool snap_to_segments = false)
+      : ed_(mesh, pred), recovery_(ed_), snap_(snap_to_segments) {}
 
   void insert(const Piece& segment);
   const InsertionCounts& counts() const { return counts_; }
@@ -42,6 +54,9 @@ class SegmentInserter {
   // Removes the subsegment of e and queues the two halves of it around vertex w.
   void release(EdgeRef e, VertexId w);
   VertexId place_crossing(const Piece& piece, const Subsegment& old, const Point& p);
+  // One of `candidates` (the corners of an edge the piece crosses, or the apexes beside an edge it
+  // runs along) within kSnapUlps of the piece's interior, or kNone.
+  VertexId near_vertex(const Piece& piece, std::initializer_list<VertexId> candidates) const;
 
   CdtEditor ed_;
   EdgeRecovery recovery_;
@@ -49,6 +64,11 @@ class SegmentInserter {
   std::vector<Piece> pending_;
   std::vector<EdgeRef> crossed_;
   std::uint32_t last_overlap_ = kNone;  // segment last counted in overlaps_merged
+  bool snap_ = false;
+  // (input segment, vertex) pairs already snapped: each vertex is taken onto each segment at most
+  // once, so snapping adds finitely many pieces even where rounded crossings and bent pieces
+  // would otherwise offer the same vertex again and again (found with coordinates near 1e300).
+  std::unordered_set<std::uint64_t> snapped_pairs_;
 };
 
 }  // namespace deltri

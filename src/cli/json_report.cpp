@@ -174,12 +174,17 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
     j.integer("segments_split_at_vertices", s->split_at_vertices);
     j.integer("collinear_overlaps_merged", s->overlaps_merged);
     j.integer("crossings_split", s->crossings);
+    j.integer("vertices_snapped_onto_segments", s->snapped);
     j.integer("segments_with_missing_endpoint_ignored", s->invalid_endpoints);
     j.integer("segments_outside_every_triangle_ignored", s->unrecovered);
   }
   if (const auto& h = r.holes) {
     j.integer("hole_points_outside_ignored", h->outside.size());
     j.integer("hole_points_on_segment_ignored", h->on_segment.size());
+    if (r.regions) {
+      j.integer("region_points_outside_ignored", r.regions->outside.size());
+      j.integer("region_points_on_segment_ignored", r.regions->on_segment.size());
+    }
   }
   j.close();
 

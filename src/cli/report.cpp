@@ -48,6 +48,8 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
     if (s->repeated) warn(plural(s->repeated, "repeated segment", "repeated segments") + " ignored");
     if (s->split_at_vertices) warn(plural(s->split_at_vertices, "segment split", "segment splits") + " where segments pass exactly through vertices");
     if (s->overlaps_merged) warn(plural(s->overlaps_merged, "collinear overlap", "collinear overlaps") + " between segments merged");
+    if (s->snapped)
+      warn(plural(s->snapped, "vertex", "vertices") + " within 4 ulps of a segment placed on it (the segment split there; --exact-input keeps them off)");
     if (s->crossings) warn(plural(s->crossings, "segment crossing", "segment crossings") + " split at a new vertex");
     if (s->invalid_endpoints) warn(plural(s->invalid_endpoints, "segment", "segments") + " with a missing endpoint ignored");
     if (s->unrecovered) warn(plural(s->unrecovered, "segment", "segments") + " outside every triangle ignored");
@@ -55,6 +57,11 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
   if (const auto& h = r.holes) {
     if (!h->outside.empty()) warn(plural(h->outside.size(), "hole point", "hole points") + " outside the triangulation ignored");
     if (!h->on_segment.empty()) warn(plural(h->on_segment.size(), "hole point", "hole points") + " lying exactly on a segment ignored");
+  }
+  if (const auto& g = r.regions) {
+    if (!g->outside.empty()) warn(plural(g->outside.size(), "region point", "region points") + " outside the triangulation ignored");
+    if (!g->on_segment.empty())
+      warn(plural(g->on_segment.size(), "region point", "region points") + " lying exactly on a segment ignored");
   }
   if (const auto& q = r.refine) {
     if (q->stopped_by_max_steiner) warn("refinement stopped at the -S limit of Steiner points");
@@ -82,8 +89,10 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
   if (mesh.live_triangles() == 0) {
     if (r.pslg && r.pslg->has_segment_section && mesh.vertex_count() >= 3 && r.holes && r.holes->triangles_removed > 0)
       warn("every triangle lies outside the segments or in a hole: the mesh is empty (try -c or -O)");
+    else if (r.rebuilt_triangles)
+      warn("-r: the .ele lists no triangles: the mesh is empty");
     else
-      warn("the vertices are all collinear or fewer than three distinct: no triangles");
+      warn("the vertices are all collinear: no triangles");  // fewer than 3 distinct is an error
   }
   return lines;
 }

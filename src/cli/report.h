@@ -32,8 +32,10 @@ struct RunReport {
   std::size_t input_segments = 0;  // pslg's, whose list is released once the segments are in
   std::vector<Stage> stages;
   std::size_t duplicates = 0;
+  std::optional<std::size_t> rebuilt_triangles;  // -r: the triangles of the .ele read
   std::optional<SegmentReport> segments;
   std::optional<HoleReport> holes;
+  std::optional<RegionReport> regions;
   std::optional<CheckReport> check;
   std::optional<RefineReport> refine;
   bool area_file = false;         // per-triangle area bounds were read (-r with a bare -a, or a .area)

@@ -19,6 +19,7 @@
 #include "delaunay/triangulate.h"
 #include "io/area_file.h"
 #include "io/edge_file.h"
+#include "cli/interrupt_cleanup.h"
 #include "io/ele_file.h"
 #include "io/file_text.h"
 #include "io/midpoints.h"
@@ -56,17 +57,17 @@ class StageTimer {
   std::chrono::steady_clock::time_point last_;
 };
 
-// The exact predicates work on products of up to four coordinate differences in doubles, with
-// error terms about 2^-106 below them: past about 2^255 the products overflow, and their error
-// terms underflow once differences fall below about 2^-230; then segment insertion can loop
-// forever or drop segments (found by scaling guitar.poly by 2^254 and 2^-300). Distinct vertices
-// of magnitude M differ by at least M 2^-52, so M >= 2^-150 keeps their differences above 2^-202.
-// (Vertices much closer than that near the origin, e.g. 1e-300 and 2e-300 in a unit domain, are
-// not refused and may still underflow: docs/reliability.md.)
+// The predicates are exact for every finite double (geometry/exact_integer.h), and segment
+// crossings are constructed at a scale where nothing overflows, so triangulating (-p, -c, holes,
+// regions) takes any finite coordinates. Refinement's constructions (circumcentres, off-centres,
+// split points, lengths and areas) are plain floating point and need their squares and
+// products to stay finite and normal, so refining (-q, -a, -u, -D, .area) keeps these limits.
+// Distinct vertices of magnitude M differ by at least M 2^-52, so M >= 2^-150 keeps their
+// differences above 2^-202.
 constexpr double kLargestCoordinate = 0x1p200;   // about 1.6e60
 constexpr double kSmallestMagnitude = 0x1p-150;  // about 7.0e-46
 
-void check_coordinate_range(const Pslg& pslg, const std::string& path) {
+void check_coordinate_range_for_refinement(const Pslg& pslg, const std::string& path) {
   double largest = 0.0;
   const auto look = [&largest](const Point& p) { largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)}); };
   for (const Point& p : pslg.points) look(p);
@@ -78,10 +79,10 @@ void check_coordinate_range(const Pslg& pslg, const std::string& path) {
     char magnitude[32];
     std::snprintf(magnitude, sizeof magnitude, "%g", largest);
     throw InputError(path, 0, std::string("a coordinate of magnitude ") + magnitude +
-                                  " is beyond the supported range of +-2^200 (about 1.6e60); scale the input down");
+                                  " is beyond the range supported for refinement, +-2^200 (about 1.6e60); scale the input down");
   }
   if (largest_vertex > 0.0 && largest_vertex < kSmallestMagnitude)
-    throw InputError(path, 0, "every vertex coordinate is below 2^-150 (about 7.0e-46) in magnitude; scale the input up");
+    throw InputError(path, 0, "every vertex coordinate is below 2^-150 (about 7.0e-46) in magnitude, too small for refinement; scale the input up");
 }
 
 // Debug builds check the mesh after every stage, so that a fault is caught in the stage that made
@@ -137,13 +138,13 @@ Mesh mesh_from_pslg(Pslg& pslg) {
 void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Switches& sw,
                RunReport& report) {
   Predicates pred;
-  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates);
+  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates, !sw.exact_input);
   if (sw.convex_hull) enclose_convex_hull(mesh);
   static const std::vector<Point> no_holes;
   report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull);
   const bool region_areas = sw.variable_area && !pslg.regions.empty();
   if (sw.regional_attributes || region_areas)
-    spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas);
+    report.regions = spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas);
   report.counters.add(pred.counters);
 }
 
@@ -189,6 +190,20 @@ struct OutputContext {
   RunReport& report;
   int exit_status;
 };
+
+// Written as warnings: each means that another process touched this run's output files.
+void report_commit_notes(const CommitNotes& notes) {
+  if (notes.stale_temporaries_removed)
+    std::fprintf(stderr, "deltri: warning: removed %zu temporary file%s left by an interrupted deltri run\n",
+                 notes.stale_temporaries_removed, notes.stale_temporaries_removed == 1 ? "" : "s");
+  if (notes.replaced_meanwhile)
+    std::fprintf(stderr,
+                 "deltri: warning: %zu output file%s changed on disk while this run was writing (another run?); "
+                 "replaced by this run's set\n",
+                 notes.replaced_meanwhile, notes.replaced_meanwhile == 1 ? "" : "s");
+  else if (notes.waited_for_other_run)
+    std::fprintf(stderr, "deltri: warning: waited for another deltri run writing to the same directory\n");
+}
 
 void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
   const Mesh& mesh = c.mesh;
@@ -280,12 +295,14 @@ bool refinement_wanted(const Switches& sw, const InputFiles& in) {
 // are not carved again and regions are not read, as in Triangle.
 // The .area bounds are kept as a field over the triangles as read (refine/area_field.h), before
 // the flips that make the mesh constrained Delaunay re-cut them.
-void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, RunReport& report, AreaField& area_field) {
+void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, const Switches& sw, RunReport& report,
+             AreaField& area_field) {
   Predicates pred;
   const std::string ele_path = in.base + ".ele";
   const EleData ele = read_ele_file(ele_path, pslg.first_index, mesh.vertex_count());
   rebuild_mesh(mesh, pred, ele, ele_path);
-  if (in.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {});
+  report.rebuilt_triangles = ele.triangle_count();
+  if (in.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {}, !sw.exact_input);
   protect_boundary(mesh);
   if (in.area_file) {
     mesh.area_bound = read_area_file(in.base + ".area", ele.triangle_count());
@@ -341,7 +358,7 @@ int run(const Switches& sw) {
   report.input_name = in.path == "-" ? kStandardInputName : in.path;
   report.area_file = in.area_file;
   Pslg pslg = in.is_poly ? read_poly_file(in.path) : read_node_file(in.path);
-  check_coordinate_range(pslg, pslg.source_name.empty() ? in.path : pslg.source_name);
+  if (refinement_wanted(sw, in)) check_coordinate_range_for_refinement(pslg, pslg.source_name.empty() ? in.path : pslg.source_name);
   report.pslg = &pslg;
   report.input_vertices = pslg.points.size();
   report.input_segments = pslg.segments.size();
@@ -350,12 +367,18 @@ int run(const Switches& sw) {
   Mesh mesh = mesh_from_pslg(pslg);
   AreaField area_field;
   if (in.refine) {
-    rebuild(mesh, pslg, in, report, area_field);
+    rebuild(mesh, pslg, in, sw, report, area_field);
     timer.stage("mesh reconstruction");
     check_stage(mesh, "mesh reconstruction");
   } else {
     const DelaunayReport dt = delaunay_triangulate(mesh, sw.algorithm, sw.threads);
     report.duplicates = dt.duplicates.size();
+    // As for a header of one or two vertices: duplicates merged, nothing could be triangulated.
+    if (const std::size_t distinct = report.input_vertices - report.duplicates; distinct < 3)
+      throw InputError(report.input_name, 0,
+                       "a triangulation needs at least 3 distinct vertices; after merging duplicates the " +
+                           std::to_string(report.input_vertices) + " vertices are " + std::to_string(distinct) +
+                           " distinct point" + (distinct == 1 ? "" : "s"));
     report.counters.add(dt.counters);
     timer.stage("Delaunay");
     check_stage(mesh, "Delaunay");
@@ -412,7 +435,8 @@ int run(const Switches& sw) {
   schedule_outputs(outputs, {mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering,
                              sw.order == 2 ? &midpoints : nullptr, report, status});
   refuse_overwriting_inputs(report, in, pslg);
-  outputs.commit();
+  const CommitNotes notes = outputs.commit(set_interrupt_cleanup);
+  report_commit_notes(notes);
   timer.stage("write");
   report.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   messages.finished(mesh, report);

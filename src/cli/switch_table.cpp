@@ -152,6 +152,10 @@ constexpr std::array kLongOptions = {
     LongOption{"strict", "", false, "exit with status 3 when triangles miss the -q/-a/-u bounds for a reason other than a small "
                "input angle, or when the mesh is empty (files are still written)",
                [](S& s, const std::string*) { s.strict = true; }},
+    LongOption{"exact-input", "", false,
+               "take every coordinate exactly as written: a vertex within 4 ulps of a segment is not "
+               "placed on it (by default it is, and the segment is split there, with a warning)",
+               [](S& s, const std::string*) { s.exact_input = true; }},
     LongOption{"queue", "ORDER", false,
                "which bad triangle refinement splits first: ratio (default: worst radius-edge ratio "
                "first for slivers, 16 times the bound and more, then shortest edge first), paper (worst "

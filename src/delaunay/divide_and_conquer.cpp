@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <thread>
 #include <utility>
 
@@ -95,22 +96,28 @@ class MortonKey {
       lo_.x = std::min(lo_.x, box.lo.x), lo_.y = std::min(lo_.y, box.lo.y);
       hi_x_ = std::max(hi_x_, box.hi_x), hi_y_ = std::max(hi_y_, box.hi_y);
     }
-    const double extent = std::max(hi_x_ - lo_.x, hi_y_ - lo_.y);
+    // Coordinates near both ends of the double range overflow their differences (and then
+    // inf * 0 made NaN cells, which broke the keys' monotonicity and the merge: issue 17). Halving
+    // first keeps every difference finite; it is monotone, which is all the keys need.
+    if (!std::isfinite(hi_x_ - lo_.x) || !std::isfinite(hi_y_ - lo_.y)) half_ = 0.5;
+    const double extent = std::max(hi_x_ * half_ - lo_.x * half_, hi_y_ * half_ - lo_.y * half_);
     scale_ = extent > 0.0 ? kCells / extent : 0.0;
   }
   std::uint64_t operator()(const Point& p) const {
-    return (spread_bits(cell(p.x - lo_.x)) << 1) | spread_bits(cell(p.y - lo_.y));
+    return (spread_bits(cell(p.x * half_ - lo_.x * half_)) << 1) | spread_bits(cell(p.y * half_ - lo_.y * half_));
   }
 
  private:
   std::uint32_t cell(double d) const {
     const double c = d * scale_;
+    if (!(c > 0.0)) return 0;  // also NaN: a cast of NaN would be undefined
     return c >= kCells ? kLastCell : static_cast<std::uint32_t>(c);
   }
   bool any_ = false;
   Point lo_;
   double hi_x_ = -1e308, hi_y_ = -1e308;
   double scale_ = 0.0;
+  double half_ = 1.0;
 };
 
 // The empty constructor leaves the members uninitialised, so that large arrays of these are not

@@ -101,11 +101,44 @@ Point off_center(const Point& a, const Point& b, const Point& c, double beta) {
   return {mid.x - side * k * ey, mid.y + side * k * ex};
 }
 
+namespace {
+
+Point intersection_in_range(const Point& a, const Point& b, const Point& c, const Point& d);
+
+// The exponent k (a power of two) that brings the largest coordinate of the four points near 1.
+int normalizing_exponent(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double largest = std::max({magnitude(a), magnitude(b), magnitude(c), magnitude(d)});
+  int e = 0;
+  std::frexp(largest, &e);
+  return -e;
+}
+
+Point scaled(const Point& p, int k) { return {std::ldexp(p.x, k), std::ldexp(p.y, k)}; }
+
+}  // namespace
+
 Point segment_intersection(const Point& a, const Point& b, const Point& c, const Point& d) {
+  // The expansions below are exact only while their products neither overflow nor underflow.
+  // The crossing is affine-invariant, so far from 1 it is found for the four points scaled by a
+  // power of two that brings the largest coordinate near 1, and scaled back. Scaling up is
+  // exact; scaling down loses only bits below 2^-1074 of the largest coordinate, far below the
+  // final rounding of the crossing. The result is clamped to both boxes as always.
+  const double largest = std::max({magnitude(a), magnitude(b), magnitude(c), magnitude(d)});
+  if (largest > 0x1p100 || (largest > 0.0 && largest < 0x1p-100)) {
+    const int k = normalizing_exponent(a, b, c, d);
+    const Point p = scaled(intersection_in_range(scaled(a, k), scaled(b, k), scaled(c, k), scaled(d, k)), -k);
+    return {clamp_to_both(p.x, a.x, b.x, c.x, d.x), clamp_to_both(p.y, a.y, b.y, c.y, d.y)};
+  }
+  return intersection_in_range(a, b, c, d);
+}
+
+namespace {
+
+Point intersection_in_range(const Point& a, const Point& b, const Point& c, const Point& d) {
   // orient2d(c, d, .) is affine along ab, with exact values o1 at a and o2 at b, so the crossing is
   // (o1 b - o2 a) / (o1 - o2). Evaluating numerator and denominator exactly leaves only the final
   // rounding and division: a few ulps, however long or far from the origin the segments are.
-  // The numerator has degree three in the coordinates, so they must stay below about 1e100.
+  // The numerator has degree three in the coordinates: segment_intersection keeps them near 1.
   double o1[exact::kOrientMax], o2[exact::kOrientMax], difference[2 * exact::kOrientMax];
   const int n1 = exact::orient2d(c, d, a, o1);
   int n2 = exact::orient2d(c, d, b, o2);
@@ -118,6 +151,8 @@ Point segment_intersection(const Point& a, const Point& b, const Point& c, const
   const double y = crossing_coordinate(o1, n1, o2, n2, a.y, b.y, denominator);
   return {clamp_to_both(x, a.x, b.x, c.x, d.x), clamp_to_both(y, a.y, b.y, c.y, d.y)};
 }
+
+}  // namespace
 
 double triangle_area(const Point& a, const Point& b, const Point& c) {
   return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));

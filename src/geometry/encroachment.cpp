@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/exact_determinants.h"
+#include "geometry/exact_integer.h"
 #include "geometry/expansion.h"
 #include "geometry/predicates.h"
 
@@ -24,6 +25,14 @@ bool in_diametral_circle(const Point& a, const Point& b, const Point& p) {
   const double x_part = (a.x - p.x) * (b.x - p.x);
   const double y_part = (a.y - p.y) * (b.y - p.y);
   const double dot = x_part + y_part;
+  // Products below 2^-900 may have underflowed and lost their sign or their roundoff; with every
+  // coordinate in [2^-400, 2^500] that cannot happen (only an exact zero difference gives a zero
+  // product), otherwise the test is done in integers.
+  const double permanent = std::fabs(x_part) + std::fabs(y_part);
+  if (!(permanent >= bounds::kOrientMin && permanent <= bounds::kFiniteMax)) {
+    const Point points[3] = {a, b, p};
+    if (!exact_integer::coordinates_within(points, 3, -400, 500)) return exact_integer::dot_sign(a, b, p) < 0;
+  }
   // Rounding never flips the sign of a difference or a product (barring underflow), so terms of
   // equal sign decide alone; otherwise the orient2d filter bound applies to this sum unchanged.
   if ((x_part <= 0.0) == (y_part <= 0.0) || x_part == 0.0 || y_part == 0.0) return dot < 0.0;

@@ -23,6 +23,7 @@
 
 #include "geometry/expansion.h"
 #include "geometry/exact_determinants.h"
+#include "geometry/exact_integer.h"
 #include "geometry/predicates.h"
 
 namespace deltri {
@@ -37,6 +38,10 @@ constexpr double kOrientB = (2.0 + 12.0 * kEpsilon) * kEpsilon;
 constexpr double kOrientC = (9.0 + 64.0 * kEpsilon) * kEpsilon * kEpsilon;
 constexpr double kIncircleB = (4.0 + 48.0 * kEpsilon) * kEpsilon;
 constexpr double kIncircleC = (44.0 + 576.0 * kEpsilon) * kEpsilon * kEpsilon;
+
+// The coordinate ranges, as powers of two, where the expansion stages are exact (predicates.h).
+constexpr int kOrientLow = -400, kOrientHigh = 500;
+constexpr int kIncircleLow = -170, kIncircleHigh = 250;
 
 bool decided(double det, double bound) { return det > bound || -det > bound; }
 
@@ -219,7 +224,16 @@ bool incircle_double_word(const double (&d)[6], double permanent, double& det) {
 }  // namespace
 
 double Predicates::orient2d_adapt(const Point& a, const Point& b, const Point& c, double detsum) {
+  // Both products with a zero factor (equal coordinates: axis-parallel collinear points) are
+  // exactly zero; the filter passes these on only because a zero permanent cannot rule out
+  // underflow.
+  if (detsum == 0.0 && (a.x == c.x || b.y == c.y) && (a.y == c.y || b.x == c.x)) return 0.0;
   ++counters.orient_adaptive;
+  const Point points[3] = {a, b, c};
+  if (!exact_integer::coordinates_within(points, 3, kOrientLow, kOrientHigh)) {
+    ++counters.orient_exact;
+    return exact_integer::orient2d_sign(a, b, c);
+  }
   const double acx = a.x - c.x, bcx = b.x - c.x;
   const double acy = a.y - c.y, bcy = b.y - c.y;
 
@@ -271,6 +285,11 @@ double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c
     return incircle_in_integers(scaled);
   }
 
+  const Point points[4] = {a, b, c, d};
+  if (!exact_integer::coordinates_within(points, 4, kIncircleLow, kIncircleHigh)) {
+    ++counters.incircle_exact;
+    return exact_integer::incircle_sign(a, b, c, d);
+  }
   double bc[4], ca[4], ab[4];
   const int bcn = difference_of_products(bdx, cdy, cdx, bdy, bc);
   const int can = difference_of_products(cdx, ady, adx, cdy, ca);

@@ -12,11 +12,12 @@
 // integers up to 62 bits (exactly cocircular points such as a symmetric polygon's).
 // The sign returned is always the sign of the exact determinant of the given doubles.
 //
-// Limitation: exactness needs every intermediate product and its roundoff to stay clear of overflow
-// and underflow. That is guaranteed when each coordinate is zero or has magnitude in
-// [2^-400, 2^500] (about 4e-121 to 3e150) for orient2d, and in [2^-170, 2^250] (about 7e-52 to
-// 2e75) for incircle. Outside those ranges the answer is still almost always right, but not
-// provably. Build without -ffast-math and without -ffp-contract=fast (see expansion.h).
+// Every finite double, subnormals included: the expansion stages are exact only while every product
+// and its roundoff stay clear of overflow and underflow, which holds when each coordinate is zero or
+// has magnitude in [2^-400, 2^500] for orient2d and [2^-170, 2^250] for incircle. A test with a
+// coordinate outside that range that the filter (guarded against underflow, see bounds) cannot
+// decide goes to exact_integer.h, which evaluates the determinant in integers and cannot underflow
+// or overflow. Build without -ffast-math and without -ffp-contract=fast (see expansion.h).
 //
 // There is no global state: a Predicates object carries its own counters, so each thread owns one
 // and the CLI sums them for -V.
@@ -52,6 +53,15 @@ namespace bounds {
 inline constexpr double kEpsilon = 1.1102230246251565e-16;
 inline constexpr double kOrientA = (3.0 + 16.0 * kEpsilon) * kEpsilon;
 inline constexpr double kIncircleA = (10.0 + 96.0 * kEpsilon) * kEpsilon;
+// The filters' analysis assumes no product underflows or overflows. In orient2d (and the dot
+// products of the diametral tests) a product that underflows is off by at most 2^-1075 and is
+// not multiplied again, so while the permanent (detsum) is at least kOrientMin those absolute
+// errors are below 2^-170 of it, far inside the second-order slack of the bound (16 epsilon^2);
+// below it the filter does not decide. Overflow makes the permanent infinite or NaN, which fails
+// the comparisons. incircle multiplies products again, so it checks its differences instead
+// (Predicates::filter_safe).
+inline constexpr double kOrientMin = 0x1p-900;
+inline constexpr double kFiniteMax = 0x1.fffffffffffffp+1023;
 }  // namespace bounds
 
 // incircle's determinant evaluated plainly in R from the six coordinate differences (a - d, b - d,
@@ -89,7 +99,8 @@ class Predicates {
     // zero) |det| is exactly the rounded detsum and always passes, so only the same-sign case can
     // reach the adaptive stage. Random signs would otherwise cost branch mispredictions.
     const double detsum = std::fabs(left) + std::fabs(right);
-    if (std::fabs(det) >= bounds::kOrientA * detsum) return det;
+    if (std::fabs(det) >= bounds::kOrientA * detsum && detsum >= bounds::kOrientMin && detsum <= bounds::kFiniteMax)
+      return det;
     return orient2d_adapt(a, b, c, detsum);
   }
 
@@ -97,15 +108,27 @@ class Predicates {
   // outside, zero if the four points are cocircular.
   double incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
     ++counters.incircle_calls;
-    const PlainIncircle<double> plain =
-        plain_incircle(a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y, c.x - d.x, c.y - d.y);
-    if (std::fabs(plain.det) > bounds::kIncircleA * plain.permanent) return plain.det;
+    const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y, cdx = c.x - d.x, cdy = c.y - d.y;
+    const PlainIncircle<double> plain = plain_incircle(adx, ady, bdx, bdy, cdx, cdy);
+    // Unlike orient2d's, a product that underflows here is multiplied again (a minor of 1e-333
+    // lost to underflow, times a lift of 1e265), so no test of the permanent can bound the damage:
+    // the filter decides only when no product can underflow or overflow at all.
+    if (std::fabs(plain.det) > bounds::kIncircleA * plain.permanent && filter_safe(adx) && filter_safe(ady) &&
+        filter_safe(bdx) && filter_safe(bdy) && filter_safe(cdx) && filter_safe(cdy))
+      return plain.det;
     return incircle_adapt(a, b, c, d, plain.permanent);
   }
 
   PredicateCounters counters;
 
  private:
+  // A coordinate difference with which incircle's plain evaluation (products of up to four
+  // differences, sums of six) neither underflows nor overflows.
+  static bool filter_safe(double v) {
+    const double m = std::fabs(v);
+    return m == 0.0 || (m >= 0x1p-250 && m <= 0x1p250);
+  }
+
   double orient2d_adapt(const Point& a, const Point& b, const Point& c, double detsum);
   double incircle_adapt(const Point& a, const Point& b, const Point& c, const Point& d,
                         double permanent);

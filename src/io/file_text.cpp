@@ -1,5 +1,7 @@
 #include "io/file_text.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -11,20 +13,12 @@
 
 #include "pslg/errors.h"
 
-#ifdef __linux__
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
-#endif
 
 namespace deltri {
 namespace {
 
 // Below this a second reading thread costs more than it saves.
 constexpr std::size_t kParallelReadBytes = std::size_t{4} << 20;
-// From this size a file is mapped rather than copied, where the system allows.
-[[maybe_unused]] constexpr std::size_t kMapBytes = std::size_t{4} << 20;
 
 struct FileCloser {
   void operator()(std::FILE* f) const { std::fclose(f); }
@@ -35,10 +29,46 @@ using FileHandle = std::unique_ptr<std::FILE, FileCloser>;
   throw InputError(name, 0, std::string("read error: ") + (error ? std::strerror(error) : "unexpected end of file"));
 }
 
-// Reads until end of file: works for pipes, whose size is unknown in advance.
+// The number of the line holding byte `at`.
+long line_of(const char* data, std::size_t at) {
+  return 1 + static_cast<long>(std::count(data, data + at, '\n'));
+}
+
+// Where the first line with data (not blank, not a '#' comment) ends, if its first character is
+// present in [0, size) and cannot start a number: every format read through here (.node, .poly,
+// .ele, .area) begins with a count. Then reading on is pointless, and for an endless stream
+// (`yes garbage`) it would never end. 0 when the line is fine or not there yet.
+std::size_t end_of_bad_header(const char* data, std::size_t size, bool& decided) {
+  std::size_t i = size >= 3 && std::memcmp(data, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;
+  while (i < size) {
+    while (i < size && (data[i] == ' ' || data[i] == '\t' || data[i] == '\r')) ++i;
+    if (i == size) return 0;
+    if (data[i] == '\n') {
+      ++i;
+      continue;
+    }
+    if (data[i] == '#') {
+      const void* nl = std::memchr(data + i, '\n', size - i);
+      if (!nl) return 0;
+      i = static_cast<std::size_t>(static_cast<const char*>(nl) - data) + 1;
+      continue;
+    }
+    decided = true;
+    if (std::isdigit(static_cast<unsigned char>(data[i])) || data[i] == '+' || data[i] == '-' || data[i] == '.') return 0;
+    const void* nl = std::memchr(data + i, '\n', size - i);
+    return nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - data) + 1 : size;
+  }
+  return 0;
+}
+
+// Reads until end of file: works for pipes, whose size is unknown in advance. Devices and pipes
+// may never end (/dev/zero, `yes garbage | deltri -`), so what arrives is checked as it arrives:
+// a NUL byte (binary data) fails at once, and so does a first data line that cannot start the
+// header: the text up to that line is returned for the parser to report in its usual words.
 FileText read_stream(std::FILE* f, const std::string& name) {
   FileText text;
   std::size_t capacity = 0;
+  bool header_decided = false;
   while (true) {
     if (text.size == capacity) {
       capacity = capacity * 2 + 65536;
@@ -47,7 +77,22 @@ FileText read_stream(std::FILE* f, const std::string& name) {
       text.bytes = std::move(bigger);
     }
     const std::size_t got = std::fread(text.bytes.get() + text.size, 1, capacity - text.size, f);
+    const std::size_t old_size = text.size;
     text.size += got;
+    bool bad_header = false;
+    if (!header_decided) {
+      if (const std::size_t end = end_of_bad_header(text.bytes.get(), text.size, header_decided)) {
+        text.size = end;
+        bad_header = true;
+      }
+    }
+    if (text.size > old_size) {
+      if (const void* nul = std::memchr(text.bytes.get() + old_size, '\0', text.size - old_size)) {
+        const auto at = static_cast<std::size_t>(static_cast<const char*>(nul) - text.bytes.get());
+        throw InputError(name, line_of(text.bytes.get(), at), "a NUL byte: binary data, not a text file");
+      }
+    }
+    if (bad_header) return text;
     if (got == 0) {
       if (std::ferror(f)) fail_read(name, errno);
       return text;
@@ -71,7 +116,7 @@ void read_range(std::FILE* f, const std::string& path, char* dest, std::size_t f
 // Two threads each copy half of the file: on this hardware copying out of the page cache is
 // bound by page faults, which two cores take in parallel.
 FileText read_sized(FileHandle f, const std::string& path, std::size_t size) {
-  FileText text{BigBytes(size ? size : 1), size, {}};
+  FileText text{BigBytes(size ? size : 1), size};
   if (size < kParallelReadBytes) {
     read_range(f.get(), path, text.bytes.get(), 0, size);
     return text;
@@ -96,44 +141,8 @@ FileText read_sized(FileHandle f, const std::string& path, std::size_t size) {
   return text;
 }
 
-#ifdef __linux__
-// Maps a regular file of `size` bytes; false (and `text` untouched) when that is not possible or
-// the file's size changed since it was measured, in which case the caller reads it instead. Pages
-// are faulted in by the threads that parse them, not in advance.
-bool map_file(const std::string& path, std::size_t size, FileText& text) {
-  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return false;
-  struct stat st;
-  void* p = MAP_FAILED;
-  if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) == size)
-    p = mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
-  close(fd);  // the mapping keeps the file
-  if (p == MAP_FAILED) return false;
-  text.mapped = MappedFile(static_cast<const char*>(p), size);
-  text.size = size;
-  return true;
-}
-#endif
 
 }  // namespace
-
-MappedFile& MappedFile::operator=(MappedFile&& other) noexcept {
-  if (this != &other) {
-    release();
-    data_ = std::exchange(other.data_, nullptr);
-    size_ = other.size_;
-  }
-  return *this;
-}
-
-MappedFile::~MappedFile() { release(); }
-
-void MappedFile::release() noexcept {
-#ifdef __linux__
-  if (data_) munmap(const_cast<char*>(data_), size_);
-#endif
-  data_ = nullptr;
-}
 
 FileText read_file_text(const std::string& path) {
   if (path == "-") return read_stream(stdin, kStandardInputName);
@@ -142,12 +151,8 @@ FileText read_file_text(const std::string& path) {
   FileHandle f = open_or_throw(path);
   const auto size = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
   if (ec || size == 0) return read_stream(f.get(), path);  // pipes, devices, files whose size lies
-#ifdef __linux__
-  // A file that shrinks while it is mapped would fault (SIGBUS) where a read would report a short
-  // file; input files changing during a run are not something a mesher can defend against anyway.
-  FileText mapped;
-  if (size >= kMapBytes && map_file(path, static_cast<std::size_t>(size), mapped)) return mapped;
-#endif
+  // Never mapped: a mapped file that another process shrinks faults (SIGBUS) on the lost pages,
+  // where read() reports a short file, which becomes the ordinary truncated-file error.
   return read_sized(std::move(f), path, static_cast<std::size_t>(size));
 }
 

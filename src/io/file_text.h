@@ -9,31 +9,13 @@
 
 namespace deltri {
 
-// A read-only mapping of a whole file, unmapped on destruction.
-class MappedFile {
- public:
-  MappedFile() = default;
-  MappedFile(const char* data, std::size_t size) : data_(data), size_(size) {}
-  MappedFile(MappedFile&& other) noexcept : data_(other.data_), size_(other.size_) { other.data_ = nullptr; }
-  MappedFile& operator=(MappedFile&& other) noexcept;
-  ~MappedFile();
-  const char* data() const { return data_; }
-
- private:
-  void release() noexcept;
-  const char* data_ = nullptr;
-  std::size_t size_ = 0;
-};
-
-// The text of a file: either its bytes copied into memory or, for large regular files where the
-// system allows it, the file mapped in place. Copying is not a std::string because zero-filling a
-// large buffer before reading into it costs as much as a third of the read; mapping saves the copy
-// and the zeroing of fresh memory altogether (for a 185 MB file, 110 ms of 125).
+// The text of a file, its bytes read into memory. Not a std::string because zero-filling a large
+// buffer before reading into it costs as much as a third of the read. Never a mapping of the file:
+// a mapped file that shrinks under us faults (SIGBUS), where read() reports the short file.
 struct FileText {
   BigBytes bytes;
   std::size_t size = 0;
-  MappedFile mapped;  // when set, the text is here and `bytes` is empty
-  const char* data() const { return mapped.data() ? mapped.data() : bytes.get(); }
+  const char* data() const { return bytes.get(); }
 };
 
 // How messages name standard input (the path "-").

@@ -55,7 +55,7 @@ LineReader::LineReader(std::string name, FileText text)
 
 namespace {
 FileText copy_text(const std::string& text) {
-  FileText copy{BigBytes(text.size() + 1), text.size(), {}};
+  FileText copy{BigBytes(text.size() + 1), text.size()};
   text.copy(copy.bytes.get(), text.size());
   return copy;
 }

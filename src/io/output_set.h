@@ -11,6 +11,21 @@
 
 namespace deltri {
 
+// What commit() met besides its own files, for the caller to report.
+struct CommitNotes {
+  // Another run held the lock of an output directory, so this one waited for it (the other run's
+  // set, if it wrote the same names, is now wholly replaced by this one's).
+  bool waited_for_other_run = false;
+  // Output files that changed on disk (another process replaced them) while this run was writing.
+  std::size_t replaced_meanwhile = 0;
+  // Temporaries of earlier runs that died before renaming them (their process no longer exists).
+  std::size_t stale_temporaries_removed = 0;
+};
+
+// Told every temporary path before any is created, and an empty list once none is left: the CLI
+// keeps them where a signal handler can remove them (the library itself keeps no global state).
+using TemporaryListener = std::function<void(const std::vector<std::string>&)>;
+
 class OutputSet {
  public:
   // A file whose text is already in memory.
@@ -29,7 +44,12 @@ class OutputSet {
   // then every temporary is removed and existing files are untouched. (Should a rename itself
   // fail after others succeeded, those stay renamed: the remaining renames are within the same
   // directories and in practice cannot fail.)
-  void commit();
+  //
+  // Temporaries are named FINAL.tmp.PID.RANDOM. Before writing, temporaries of this kind for the
+  // same final names whose process is gone are removed (an interrupted or killed run's). The
+  // renames happen under an exclusive advisory lock (flock) of every output directory, so that
+  // two deltri runs writing the same names leave one run's complete set, never a mix.
+  CommitNotes commit(const TemporaryListener& listener = {});
 
   std::size_t size() const { return files_.size(); }
 
@@ -40,6 +60,7 @@ class OutputSet {
     std::function<void(ByteSink&)> produce;  // empty: use contents
   };
   static void write_temporary(File& f, const std::string& temp_path);
+  std::size_t remove_stale_temporaries() const;
   static void write_standard_output(File& f);
   std::vector<File> files_;
 };

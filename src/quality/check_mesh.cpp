@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "geometry/predicates.h"
+#include "mesh/overlap.h"
 
 namespace deltri {
 namespace {
@@ -36,6 +37,7 @@ constexpr std::array<KindInfo, kFaultKinds> kKinds = {{
     {"reflex turn of a convex-hull boundary", "edge", CheckLayer::ConvexHull},
     {"more than one boundary loop", "edge", CheckLayer::ConvexHull},
     {"input vertex in no triangle", "vertex", CheckLayer::ConvexHull},
+    {"triangles overlap or meet other than at shared corners", "triangle", CheckLayer::Orientation},
 }};
 
 constexpr std::array<const char*, kCheckLayers> kLayerNames = {
@@ -56,6 +58,7 @@ class Checker {
     check_topology();
     check_orientation();
     check_boundary();
+    if (clean(CheckLayer::Topology) && clean(CheckLayer::Orientation)) check_overlap();
     const bool sound = clean(CheckLayer::Topology) && clean(CheckLayer::Orientation);
     if (sound)
       check_delaunay();
@@ -253,6 +256,10 @@ class Checker {
       if (o < 0.0) fault(FaultKind::ClockwiseTriangle, t);
       if (o == 0.0) fault(FaultKind::FlatTriangle, t);
     }
+  }
+
+  void check_overlap() {
+    if (const auto found = find_overlap(mesh_, pred_)) fault(FaultKind::OverlappingTriangles, found->second);
   }
 
   // --- boundary ---

@@ -4,7 +4,8 @@
 //
 //   storage      array sizes, ids in range, distinct corners, the free list
 //   topology     twins (link), unique directed edges, subsegments on twins, no dead vertex in use
-//   orientation  every triangle strictly counter-clockwise (exact orient2d)
+//   orientation  every triangle strictly counter-clockwise (exact orient2d), then no two
+//                triangles overlapping or meeting other than at shared corners (mesh/overlap.h)
 //   boundary     boundary edges (link == kNone) close up into loops
 //   delaunay     unconstrained interior edges locally Delaunay (exact incircle)
 //   convex hull  optional: one convex boundary loop and every input vertex in use
@@ -62,8 +63,10 @@ enum class FaultKind : std::uint8_t {
   ReflexBoundaryTurn,  // consecutive boundary edges turning clockwise (the second edge)
   ExtraBoundaryLoop,   // boundary loops beyond the first (one per extra loop; example: an edge)
   UnusedVertex,        // an Input vertex in no triangle (vertex)
+  // orientation, run only when the rest of that layer and the topology are sound
+  OverlappingTriangles,  // two triangles overlap or meet other than at shared corners (triangle)
 };
-inline constexpr std::size_t kFaultKinds = 21;
+inline constexpr std::size_t kFaultKinds = 22;
 
 // A short description of the fault kind, e.g. "link is not an involution".
 const char* fault_name(FaultKind kind);

@@ -14,6 +14,9 @@ double shell_radius(double length) {
 
 Point shell_split_point(const Point& a, const Point& b, bool a_is_apex, bool b_is_apex) {
   const double dx = b.x - a.x, dy = b.y - a.y;
+  // Ends near the opposite ends of the double range overflow dx: halve first there (exact for
+  // such large values).
+  if (!std::isfinite(dx) || !std::isfinite(dy)) return Point{0.5 * a.x + 0.5 * b.x, 0.5 * a.y + 0.5 * b.y};
   if (!a_is_apex && !b_is_apex) return Point{a.x + 0.5 * dx, a.y + 0.5 * dy};
   const double length = std::sqrt(dx * dx + dy * dy);
   const double t = shell_radius(length) / length;

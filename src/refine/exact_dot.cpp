@@ -3,6 +3,9 @@
 #include <array>
 #include <cmath>
 
+#include "geometry/exact_integer.h"
+#include "geometry/predicates.h"
+
 namespace deltri {
 namespace {
 
@@ -54,8 +57,13 @@ int dot_sign(const Point& x, const Point& y, const Point& w) {
   // one more; 8 epsilon of the permanent is a safe filter.
   const double permanent = std::fabs(ax * bx) + std::fabs(ay * by);
   const double bound = 8.0 * 1.1102230246251565e-16 * permanent;
-  if (dot > bound) return 1;
-  if (dot < -bound) return -1;
+  // A permanent below 2^-900 may hide underflowed products (and exact_sign's products of the raw
+  // coordinates underflow or overflow outside [2^-400, 2^500]): then the sign comes from integers.
+  const bool filter_safe = permanent >= bounds::kOrientMin && permanent <= bounds::kFiniteMax;
+  if (filter_safe && dot > bound) return 1;
+  if (filter_safe && dot < -bound) return -1;
+  const Point points[3] = {x, y, w};
+  if (!exact_integer::coordinates_within(points, 3, -400, 500)) return exact_integer::dot_sign(x, y, w);
   return exact_sign(x.x, x.y, y.x, y.y, w.x, w.y);
 }
 

@@ -116,7 +116,9 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_
   // that Chew's step below deletes; checked again after). Then, and at the bottom of double
   // precision, the doubles near p are tried (bottom_scale_split); if none will do, s is locked.
   const auto out_of_precision = [&](const Point& q) {
-    return q == pa || q == pb || !split_keeps_orientation(s, q, uses_lenses());
+    // A split point that overflowed (segments spanning most of the double range) is no point.
+    return !std::isfinite(q.x) || !std::isfinite(q.y) || q == pa || q == pb ||
+           !split_keeps_orientation(s, q, uses_lenses());
   };
   if ((bottom_possible_ && at_bottom_scale(squared_distance(pa, pb), pa)) || out_of_precision(p)) {
     p = bottom_scale_split(s, p, uses_lenses());

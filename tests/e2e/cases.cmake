@@ -109,7 +109,7 @@ foreach(sw none -i -l)
   e2e_case(offset1e9${sw} gen:offset.node ${sw} --no-warning)
   e2e_case(collinear${sw} gen:collinear.node ${sw} --warning "collinear" --verify "--expect-triangles 0")
 endforeach()
-e2e_case(two_points ${E2E_INPUTS}/two_points.node none --warning "fewer than three distinct" --verify "--expect-triangles 0")
+e2e_case(two_points ${E2E_INPUTS}/two_points.node none --exit 1 --error "two_points.node: a triangulation needs at least 3 distinct vertices")
 e2e_case(duplicates ${E2E_INPUTS}/duplicates.node none --warning "2 duplicate vertices")
 
 # ---- PSLG repairs: valid mesh and the warning ----
@@ -253,8 +253,8 @@ foreach(name star_1e9 star_1e-9 span)
 endforeach()
 e2e_case(extreme.offset1e9.q30 gen:offset.node -q30 --no-verify)
 # Beyond the supported range (+-2^200, and every vertex coordinate below 2^-150): a clean error.
-e2e_case(error.coordinate_too_large ${I}/too_large.poly -p --exit 1 --error "too_large.poly: a coordinate of magnitude")
-e2e_case(error.coordinates_too_small ${I}/too_small.node none --exit 1 --error "too_small.node: every vertex coordinate")
+e2e_case(error.coordinate_too_large ${I}/too_large.poly -pq --exit 1 --error "too_large.poly: a coordinate of magnitude")
+e2e_case(error.coordinates_too_small ${I}/too_small.node -q --exit 1 --error "too_small.node: every vertex coordinate")
 e2e_case(accept.marker_count2 ${I}/marker_count2.poly -pen --verify "--expect-triangles 2")
 
 # ---- refinement against Triangle 1.6's counts and the quality bounds, on data/ ----

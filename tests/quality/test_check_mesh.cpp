@@ -310,3 +310,27 @@ TEST(fault_tables_are_complete) {
   CHECK_EQ(std::string(layer_name(CheckLayer::Delaunay)), std::string("Delaunay"));
   CHECK_EQ(std::string(fault_subject(FaultKind::ClockwiseTriangle)), std::string("triangle"));
 }
+
+// Issue 17: two counter-clockwise triangles that cross without sharing an edge pass every local
+// check (twins, orientation, closed boundaries); only the overlap test sees them.
+TEST(crossing_triangles_overlap) {
+  Mesh m = mesh_of({{0, 0}, {1, 0}, {0, 1}, {0.2, 0.2}, {1.2, 0.2}, {0.2, 1.2}});
+  m.add_triangle(0, 1, 2);
+  m.add_triangle(3, 4, 5);
+  const CheckReport r = check_mesh(m, CheckOptions{});
+  CHECK(has_exactly(r, {{FaultKind::OverlappingTriangles, 1}}));
+  CHECK_EQ(r.example(FaultKind::OverlappingTriangles), 1u);
+}
+
+// A corner of one triangle on the edge of another (a T-junction) is no triangulation either,
+// though the interiors are disjoint.
+TEST(corner_on_an_edge_is_reported) {
+  Mesh m = mesh_of({{0, 0}, {2, 0}, {1, 1}, {1, 0}, {2, -1}});
+  m.add_triangle(0, 1, 2);
+  m.add_triangle(3, 4, 1);
+  const CheckReport r = check_mesh(m, CheckOptions{});
+  CHECK(has_exactly(r, {{FaultKind::OverlappingTriangles, 1}}));
+}
+
+// Neighbours across an edge and around a vertex are not overlaps.
+TEST(a_sound_fan_has_no_overlap) { CHECK(check_mesh(square_fan(), CheckOptions{}).ok()); }

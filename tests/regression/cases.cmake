@@ -17,3 +17,13 @@ foreach(input IN LISTS OPEN_REGRESSION_INPUTS)
            COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/regression/run.sh $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify> ${input})
   set_tests_properties(regression.open.${rname} PROPERTIES TIMEOUT 60 DISABLED TRUE)
 endforeach()
+
+# Regression scripts (issue 17): behaviours that one input file cannot show (a file shrinking while
+# it is read, endless streams, concurrent runs, signals, -r pairs of files). Each takes the deltri
+# binary and exits 0 on success.
+file(GLOB REGRESSION_SCRIPTS CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/regression/scripts/*.sh)
+foreach(script IN LISTS REGRESSION_SCRIPTS)
+  get_filename_component(sname ${script} NAME_WE)
+  add_test(NAME regression.script.${sname} COMMAND sh ${script} $<TARGET_FILE:deltri>)
+  set_tests_properties(regression.script.${sname} PROPERTIES TIMEOUT 300)
+endforeach()

@@ -4,7 +4,9 @@
 # The input's first line is "# deltri SWITCHES". deltri must either fail cleanly (exit 1, first
 # line of stderr "NAME:LINE: message" or "NAME: message", no output file) or succeed with -C and
 # give a mesh that passes deltri_mesh_verify. Anything else (a crash, exit 5 or 6, a hang up to
-# CTest's timeout) fails the test.
+# CTest's timeout) fails the test. An input whose second line is "# check: exact" is also checked,
+# on success, by tests/tools/exact_delaunay_check.py (exact rationals, none of deltri's predicates);
+# with "# check: exact only", by that checker alone.
 set -u
 deltri=$1 verify=$2 input=$3
 name=$(basename "$input") base=${name%.*}
@@ -21,7 +23,16 @@ case $status in
   0)
     case $switches in *q*|*a*|*u*) refined=--refined ;; *) refined= ;; esac
     case $name in *.node) hull=--convex-hull ;; *) hull= ;; esac
-    (cd "$work" && "$verify" --input "$name" --mesh "$base.1" $refined $hull) || { echo "FAIL: invalid mesh"; exit 1; } ;;
+    # "# check: exact only": segments spanning hundreds of orders of magnitude, which the
+    # verifier's long double parametrisation of a segment cannot order; the exact checker can.
+    if ! sed -n 2p "$input" | grep -q '^# check: exact only'; then
+      (cd "$work" && "$verify" --input "$name" --mesh "$base.1" $refined $hull) || { echo "FAIL: invalid mesh"; exit 1; }
+    fi
+    if sed -n 2p "$input" | grep -q '^# check: exact'; then
+      case $name in *.node) exact_hull="--convex-hull $work/$name" ;; *) exact_hull= ;; esac
+      /usr/bin/python3 "$(dirname "$0")/../tools/exact_delaunay_check.py" "$work/$base.1" $exact_hull ||
+        { echo "FAIL: the exact checker rejects the mesh"; exit 1; }
+    fi ;;
   1)
     [ -z "$(cd "$work" && ls | grep -v -x -F -e "$name" -e stderr)" ] || { echo "FAIL: output files left"; exit 1; }
     head -n 1 "$work/stderr" | grep -q "^$name:\([0-9][0-9]*:\)\{0,1\} " || { echo "FAIL: not a 'file:line: message' error"; exit 1; } ;;

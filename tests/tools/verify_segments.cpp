@@ -9,6 +9,11 @@
 // A correctly rounded intersection is within 0.71 ulp; 8 leaves room for a few roundings.
 // With --refined the same tolerance holds for every segment: a refined mesh splits segments at
 // rounded points (and a mesh refined twice, -r, splits pieces whose ends were already rounded).
+// An input vertex counts as on a segment, besides exactly, when deltri's snapping rule (issue 17,
+// docs/manual.md "Repaired PSLG input") takes it there: its distance from the segment's line is at
+// most kSnapUlps ulps of the largest x and of the largest y of the three points, each weighted by
+// the normal's component (a decimal T-junction one rounding off the segment). With --exact-input
+// deltri does not snap, and its exact edge along the segment is then found first.
 // Every other decision (collinear vertices, whether a gap between two vertices on the segment
 // meets a triangle) is exact.
 #include <algorithm>
@@ -20,6 +25,7 @@ namespace mv {
 namespace {
 
 constexpr double kCrossUlps = 8.0;
+constexpr double kSnapUlps = 4.01;  // deltri's 4, decided there exactly, here in long double
 
 bool boxes_meet(const Point& a, const Point& b, const Point& c, const Point& d) {
   return std::max(a.x, b.x) >= std::min(c.x, d.x) && std::max(c.x, d.x) >= std::min(a.x, b.x) &&
@@ -119,8 +125,16 @@ class SegmentWalk {
     return it == c_.topo.used_at.end() ? -1 : it->second;
   }
   bool exactly_on(const Point& p) { return on_closed_segment(c_.pred, a_, b_, p); }
+  bool snapped(const Point& p) const {
+    const long double dx = static_cast<long double>(b_.x) - a_.x, dy = static_cast<long double>(b_.y) - a_.y;
+    const long double cross = dx * (static_cast<long double>(p.y) - a_.y) - dy * (static_cast<long double>(p.x) - a_.x);
+    const long double ux = 0x1p-52L * std::max({std::fabs(a_.x), std::fabs(b_.x), std::fabs(p.x)});
+    const long double uy = 0x1p-52L * std::max({std::fabs(a_.y), std::fabs(b_.y), std::fabs(p.y)});
+    return std::fabs(cross) <= kSnapUlps * (std::fabs(dy) * std::max(ux, 0x1p-1074L) + std::fabs(dx) * std::max(uy, 0x1p-1074L));
+  }
   bool near(const Point& p) const {
-    if (!crosses_ || input_.count(p)) return false;
+    if (input_.count(p)) return snapped(p);
+    if (!crosses_) return false;
     const long double dx = static_cast<long double>(b_.x) - a_.x, dy = static_cast<long double>(b_.y) - a_.y;
     const long double cross = dx * (static_cast<long double>(p.y) - a_.y) - dy * (static_cast<long double>(p.x) - a_.x);
     const double m = std::max({std::fabs(a_.x), std::fabs(a_.y), std::fabs(b_.x), std::fabs(b_.y), std::fabs(p.x), std::fabs(p.y)});
