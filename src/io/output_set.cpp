@@ -77,6 +77,14 @@ bool process_gone(long pid) {
 class DirectoryLocks {
  public:
   explicit DirectoryLocks(std::vector<std::string> dirs) {
+    // One lock per directory, however its path is spelt: a second flock of the same directory on
+    // another descriptor would wait for this process itself (out/x.msh beside x.1.ele named
+    // /abs/out/x.msh hung).
+    for (std::string& d : dirs) {
+      std::error_code ec;
+      const std::filesystem::path canonical = std::filesystem::weakly_canonical(d.empty() ? "." : d, ec);
+      if (!ec) d = canonical.string();
+    }
     std::sort(dirs.begin(), dirs.end());
     dirs.erase(std::unique(dirs.begin(), dirs.end()), dirs.end());
 #ifdef DELTRI_POSIX_OUTPUT
