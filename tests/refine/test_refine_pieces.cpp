@@ -186,6 +186,28 @@ EdgeRef edge_between(const Mesh& m, VertexId a, VertexId b) {
   return kNone;
 }
 
+// Shells only where two subsegments follow each other at less than 90 degrees inside the domain:
+// the corners of a square (90) and of a regular hexagon (120) split at midpoints, those of an
+// equilateral triangle (60) and the origin of the fan (20 between spokes) on shells.
+TEST(shells_only_at_acute_apices) {
+  const auto boundary_of = [](std::vector<Point> pts) {
+    Mesh m = triangulated(pts);
+    mark_boundary(m);
+    return m;
+  };
+  const SegmentApices square(boundary_of({{0, 0}, {1, 0}, {1, 1}, {0, 1}}));
+  std::vector<Point> hexagon, equilateral;
+  for (int k = 0; k < 6; ++k) hexagon.push_back({std::cos(rad(60.0 * k)), std::sin(rad(60.0 * k))});
+  for (int k = 0; k < 3; ++k) equilateral.push_back({std::cos(rad(120.0 * k)), std::sin(rad(120.0 * k))});
+  const SegmentApices hex(boundary_of(hexagon));
+  const SegmentApices tri(boundary_of(equilateral));
+  for (VertexId v = 0; v < 4; ++v) CHECK(square.is_apex(v) && !square.uses_shells(v));
+  for (VertexId v = 0; v < 6; ++v) CHECK(hex.is_apex(v) && !hex.uses_shells(v));
+  for (VertexId v = 0; v < 3; ++v) CHECK(tri.uses_shells(v));
+  const SegmentApices fan(cluster_mesh());
+  CHECK(fan.uses_shells(0));
+}
+
 TEST(clusters_gather_subsegments_within_sixty_degrees) {
   Mesh m = cluster_mesh();
   const SegmentApices apices(m);
