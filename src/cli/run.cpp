@@ -16,6 +16,7 @@
 #include "cdt/rebuild_mesh.h"
 #include "cli/json_report.h"
 #include "cli/report.h"
+#include "cli/surface_run.h"
 #include "delaunay/triangulate.h"
 #include "io/area_file.h"
 #include "io/edge_file.h"
@@ -345,6 +346,7 @@ BoundRequest bound_request(const Switches& sw, const InputFiles& in, const RunRe
 }  // namespace
 
 int run(const Switches& sw) {
+  if (const auto facets = surface_input(sw)) return run_surface(sw, *facets);  // facets in 3-D
   RunReport report;
   report.switches = &sw;
   StageTimer timer(report);
