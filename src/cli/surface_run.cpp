@@ -13,7 +13,6 @@
 #include "io/surface_files.h"
 #include "surface/check_surface.h"
 #include "surface/surface_mesher.h"
-#include "util/memory_budget.h"
 
 namespace deltri {
 namespace {
@@ -22,24 +21,13 @@ std::string plural(std::size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-// The switches that mean the same for a facet as for a .poly; the others are refused or noted.
+// The switches mean the same for a facet as for a PSLG; -a without a number has no bounds to use.
 FacetMeshOptions facet_options(const Switches& sw) {
   FacetMeshOptions o;
   o.algorithm = sw.algorithm;
   o.refine = sw.quality || sw.fixed_area || sw.user_test || sw.conforming_delaunay;
-  RefineOptions& r = o.refinement;
-  r.quality = sw.quality;
-  r.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
-  r.max_area = sw.fixed_area ? sw.max_area : 0.0;
-  r.lenses = !sw.conforming_delaunay;
-  r.conforming_delaunay = sw.conforming_delaunay;
-  r.no_steiner_on_segments = sw.no_boundary_steiner;
-  r.max_steiner = sw.max_steiner;
-  r.off_centers = !sw.circumcenters_only;
-  r.queue_order = sw.queue_order;
-  r.decline_cluster_splits = sw.decline_cluster_splits;
-  r.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
-  r.memory_budget = memory_budget();
+  o.refinement = refine_options(sw, false);
+  o.refinement.use_triangle_area_bounds = false;
   return o;
 }
 

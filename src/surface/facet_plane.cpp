@@ -27,8 +27,8 @@ Point3 newell(const FacetInput& input, const std::vector<std::uint32_t>& polygon
   return n;
 }
 
-// A normal from three of the points spanning the widest triangle from the first one: it fixes
-// the sign the polygons' Newell normals are summed with (holes wind either way).
+// A normal from three of the points spanning the widest triangle from the first one: it tells
+// whether the facet spans a plane at all.
 Point3 spanning_normal(const std::vector<Point3>& points, double& diameter) {
   const Point3& a = points[0];
   std::size_t far = 0;
@@ -59,13 +59,21 @@ FacetPlane fit_facet_plane(const FacetInput& input, std::size_t f) {
   // diameter^2 * sin(angle), so this refuses angles below about 1e-12 radians.
   if (norm(guide) <= 1e-12 * plane.diameter * plane.diameter / 4 || plane.diameter == 0.0)
     fail(input, f, "its points are collinear, so it spans no plane");
+  // The triangles wind about the normal as the facet's first loop does (outward, when the input's
+  // loops are written so): its Newell normal, where it has one, sets the sign.
+  Point3 sign = guide;
+  for (const auto& polygon : facet.polygons)
+    if (polygon.size() >= 3 && norm(newell(input, polygon)) > 1e-12 * norm(guide)) {
+      sign = newell(input, polygon);
+      break;
+    }
   Point3 normal;
   for (const auto& polygon : facet.polygons) {
     if (polygon.size() < 3) continue;
     const Point3 n = newell(input, polygon);
-    normal = dot(n, guide) >= 0.0 ? normal + n : normal - n;
+    normal = dot(n, sign) >= 0.0 ? normal + n : normal - n;
   }
-  if (norm(normal) <= 1e-12 * norm(guide)) normal = guide;  // only segments and vertices
+  if (norm(normal) <= 1e-12 * norm(guide)) normal = sign;  // only segments and vertices
   plane.normal = (1.0 / norm(normal)) * normal;
   Point3 sum;
   for (const Point3& p : points) sum = sum + p;
