@@ -44,6 +44,7 @@ void note_ignored_switches(const Switches& sw) {
   if (sw.jettison) note("-j");
   if (sw.svg.wanted) note("--svg");
   if (sw.json.wanted) note("--json");
+  if (sw.strict) note("--strict");
 }
 
 // The smallest angle of any triangle in space, in degrees.
