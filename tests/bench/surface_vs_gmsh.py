@@ -24,7 +24,7 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "surface"))
 from check_surface import frame, inside, read_facets  # noqa: E402
 
-INPUTS = ["cube.smesh", "l_bracket.poly", "tee.poly", "slot_box.poly", "elmer_L.poly", "pmg_example.poly"]
+INPUTS = ["cube.smesh", "l_bracket.poly", "tee.poly", "slot_box.poly", "elmer_L.poly", "pmg_example.poly", "wedge.poly"]
 
 
 def best_time(args, runs=3):
