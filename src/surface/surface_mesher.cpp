@@ -44,7 +44,8 @@ struct FacetState {
 
 class SurfaceBuilder {
  public:
-  SurfaceBuilder(const FacetInput& input, const FacetMeshOptions& options) : in_(input), options_(options) {}
+  SurfaceBuilder(const FacetInput& input, const FacetMeshOptions& options, int max_rounds)
+      : in_(input), options_(options), max_rounds_(max_rounds) {}
 
   SurfaceMesh run(SurfaceReport& report);
 
@@ -52,11 +53,13 @@ class SurfaceBuilder {
   void collect_segments();
   std::uint32_t segment_of(std::uint32_t a, std::uint32_t b);
   Pslg facet_pslg(std::uint32_t f);
-  std::vector<std::uint32_t> mesh_facets(const std::vector<std::uint32_t>& facets, const FacetMeshOptions& options);
+  std::vector<std::uint32_t> mesh_facets(const std::vector<std::uint32_t>& facets, const FacetMeshOptions& options,
+                                         bool record = true);
   SurfaceMesh lift();
 
   const FacetInput& in_;
   const FacetMeshOptions& options_;
+  const int max_rounds_;
   std::vector<FacetPlane> planes_;
   std::vector<Segment3> segments_;
   std::unordered_map<std::uint64_t, std::uint32_t> segment_index_;
@@ -133,13 +136,16 @@ Pslg SurfaceBuilder::facet_pslg(std::uint32_t f) {
   return pslg;
 }
 
-// Meshes the given facets; returns the shared segments that gained splits.
+// Meshes the given facets; with `record`, adds the vertices they put on shared segments to those
+// segments' splits and returns the segments that gained some. (The guard's last pass records
+// nothing: the facets' vertex maps must keep naming the splits as they were built.)
 std::vector<std::uint32_t> SurfaceBuilder::mesh_facets(const std::vector<std::uint32_t>& facets,
-                                                       const FacetMeshOptions& options) {
+                                                       const FacetMeshOptions& options, bool record) {
   std::map<std::uint32_t, std::vector<double>> found;
   for (std::uint32_t f : facets) {
     FacetState& state = facets_[f];
     state.result = mesh_facet(facet_pslg(f), options);
+    if (!record) continue;
     const Mesh& mesh = state.result.mesh;
     const std::uint32_t n_local = static_cast<std::uint32_t>(state.local.size());
     for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
@@ -180,7 +186,7 @@ SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
   std::vector<std::uint32_t> dirty(facets_.size());
   for (std::uint32_t f = 0; f < dirty.size(); ++f) dirty[f] = f;
   report.converged = false;
-  for (report.rounds = 1; report.rounds <= kMaxSurfaceRounds; ++report.rounds) {
+  for (report.rounds = 1; report.rounds <= max_rounds_; ++report.rounds) {
     report.facet_meshings += dirty.size();
     const std::vector<std::uint32_t> changed = mesh_facets(dirty, options_);
     if (changed.empty()) {
@@ -194,13 +200,13 @@ SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
   }
   if (!report.converged) {
     // The guard: mesh every facet with its segments kept as they are now.
-    report.rounds = kMaxSurfaceRounds;
+    report.rounds = max_rounds_;
     FacetMeshOptions kept = options_;
     kept.refinement.no_steiner_on_segments = 2;
     dirty.resize(facets_.size());
     for (std::uint32_t f = 0; f < dirty.size(); ++f) dirty[f] = f;
     report.facet_meshings += dirty.size();
-    mesh_facets(dirty, kept);
+    mesh_facets(dirty, kept, false);
   }
   report.segments = segments_.size();
   for (const Segment3& s : segments_)
@@ -262,8 +268,9 @@ SurfaceMesh SurfaceBuilder::lift() {
 
 }  // namespace
 
-SurfaceMesh mesh_surface(const FacetInput& input, const FacetMeshOptions& options, SurfaceReport& report) {
-  SurfaceBuilder builder(input, options);
+SurfaceMesh mesh_surface(const FacetInput& input, const FacetMeshOptions& options, SurfaceReport& report,
+                         int max_rounds) {
+  SurfaceBuilder builder(input, options, max_rounds);
   return builder.run(report);
 }
 

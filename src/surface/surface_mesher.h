@@ -11,11 +11,11 @@
 // ends are one vertex in space (the point at t on the segment in 3-D, not each facet's rounded
 // lift of it).
 //
-// Termination: the recorded points only grow, each is a vertex some facet's Terminator placed
-// under its termination guard (so no piece gets shorter than that facet's edge floor), and a
-// segment of finite length holds finitely many such points; so the rounds end. As a guard of its
-// own, after kMaxSurfaceRounds the facets are meshed once more with no Steiner points on any
-// segment (-YY): the result conforms, and triangles that miss the bounds are reported.
+// Termination: the recorded points only grow, and each is a vertex a facet's Terminator placed
+// under its termination guard. That guard's floor is tied to the facet's input, which the cuts
+// arriving from other facets extend, so the rounds are not proven to end (docs/surfaces.md); they
+// are bounded instead: after kMaxSurfaceRounds the facets are meshed once more with no Steiner
+// points on any segment (-YY), which always conforms; triangles that miss the bounds are reported.
 #pragma once
 
 #include <cstdint>
@@ -39,7 +39,9 @@ struct SurfaceReport {
   SegmentReport segment_repairs;    // summed likewise
 };
 
-// Throws InputError for a facet that is not planar (facet_plane.h).
-SurfaceMesh mesh_surface(const FacetInput& input, const FacetMeshOptions& options, SurfaceReport& report);
+// Throws InputError for a facet that is not planar (facet_plane.h). `max_rounds` is the guard's
+// round cap (smaller only in tests of the guard).
+SurfaceMesh mesh_surface(const FacetInput& input, const FacetMeshOptions& options, SurfaceReport& report,
+                         int max_rounds = kMaxSurfaceRounds);
 
 }  // namespace deltri

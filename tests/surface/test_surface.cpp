@@ -97,3 +97,17 @@ TEST(tee_facets_conform_along_the_shared_segment) {
   CHECK_EQ(uses.size(), on_segment[0].size() - 1);
   for (const auto& [edge, n] : uses) CHECK_EQ(n, 3);
 }
+
+TEST(round_cap_guard_still_conforms) {
+  FacetMeshOptions opt;
+  opt.refine = true;
+  opt.refinement.quality = true;
+  opt.refinement.min_angle_deg = 30.0;
+  SurfaceReport report;
+  const SurfaceMesh m = mesh_surface(tee(), opt, report, 1);
+  CHECK(!report.converged);
+  CHECK(check_surface(m).ok());
+  double total = 0.0;
+  for (std::size_t t = 0; t < m.triangle_count(); ++t) total += area(m, t);
+  CHECK_NEAR(total, 3.5, 1e-12);
+}
