@@ -136,11 +136,9 @@ int run_surface(const Switches& sw, const std::string& path) {
                plural(mesh.triangle_count(), "triangle", "triangles").c_str(), smallest_angle(mesh),
                files.empty() ? " nothing" : files.c_str(), seconds);
   if (sw.verbose > 0)
-    std::fprintf(out, "Facets agreed after %d round%s (%zu facet meshes); %zu vertices on shared segments; the facets' last "
-                 "meshes added %llu inside and %llu on unshared segments\n",
+    std::fprintf(out, "Facets agreed after %d round%s (%zu facet meshes); new vertices: %zu on shared segments, %zu others\n",
                  report.rounds, report.rounds == 1 ? "" : "s", report.facet_meshings, report.shared_splits,
-                 static_cast<unsigned long long>(report.refine.interior_steiner),
-                 static_cast<unsigned long long>(report.refine.segment_steiner));
+                 mesh.points.size() - input.points.size() - report.shared_splits);
   return kExitOk;
 }
 

@@ -99,6 +99,14 @@ Pslg SurfaceBuilder::facet_pslg(std::uint32_t f) {
   FacetState& state = facets_[f];
   const FacetPlane& plane = planes_[f];
   Pslg pslg;
+  // The previous round's interior vertices as seeds: the facet is then re-meshed from nearly the
+  // mesh it had, and only the neighbourhood of new cuts changes.
+  std::vector<Point> seeds;
+  const Mesh& previous = state.result.mesh;
+  for (std::uint32_t v = 0; v < previous.vertex_count(); ++v) {
+    const bool seed = v < state.local.size() && state.local[v].input == kNone && state.local[v].g == kNone;
+    if (seed || (v >= state.local.size() && previous.kind[v] == VertexKind::Free)) seeds.push_back(previous.points[v]);
+  }
   state.local.clear();
   state.pieces.clear();
   std::unordered_map<std::uint32_t, std::uint32_t> of_input;
@@ -111,6 +119,10 @@ Pslg SurfaceBuilder::facet_pslg(std::uint32_t f) {
     return it->second;
   };
   for (std::uint32_t v : state.lone) input_vertex(v);
+  for (const Point& p : seeds) {
+    state.local.push_back({kNone, kNone, 0});
+    pslg.points.push_back(p);
+  }
   for (std::uint32_t g : state.segments) {
     const Segment3& s = segments_[g];
     const Point3 a = in_.points[s.a], d = in_.points[s.b] - a;
@@ -240,8 +252,12 @@ SurfaceMesh SurfaceBuilder::lift() {
     for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
       if (v < state.local.size()) {
         const LocalVertex& lv = state.local[v];
-        global[v] = lv.input != kNone ? lv.input : split_base[lv.g] + lv.k;
-      } else if (mesh.kind[v] != VertexKind::Dead) {
+        if (lv.input != kNone || lv.g != kNone) {
+          global[v] = lv.input != kNone ? lv.input : split_base[lv.g] + lv.k;
+          continue;
+        }
+      }
+      if (mesh.kind[v] != VertexKind::Dead && mesh.kind[v] != VertexKind::Duplicate) {
         global[v] = static_cast<std::uint32_t>(out.points.size());
         out.points.push_back(planes_[f].lift(mesh.points[v]));
       }

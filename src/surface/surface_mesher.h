@@ -5,7 +5,9 @@
 // How they come to agree, without a second Terminator: the facets are meshed, then every vertex
 // a facet's refinement put on a shared segment is recorded as a parameter t along that segment,
 // and every facet holding the segment is meshed again with the segment cut into pieces at all the
-// recorded parameters (the pieces are input segments, their ends input vertices). This repeats
+// recorded parameters (the pieces are input segments, their ends input vertices), and with the
+// interior vertices of its previous mesh as seeds, so that it is re-meshed from nearly the mesh it
+// had and only the neighbourhood of the new cuts changes. This repeats
 // until no facet adds a vertex on a shared segment. Then every facet's subsegments on a shared
 // segment are exactly its pieces, the same in every facet: the meshes conform, and each piece's
 // ends are one vertex in space (the point at t on the segment in 3-D, not each facet's rounded
