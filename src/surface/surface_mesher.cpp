@@ -20,7 +20,8 @@ struct Segment3 {
   bool shared() const { return facets.size() >= 2; }
 };
 
-// Where a facet's PSLG vertex comes from: an input point, or split `k` of segment `g`.
+// Where a facet's PSLG vertex comes from: an input point, split `k` of segment `g`, or (neither)
+// a seed from the facet's previous mesh.
 struct LocalVertex {
   std::uint32_t input = kNone;
   std::uint32_t g = kNone;
@@ -55,6 +56,8 @@ class SurfaceBuilder {
   Pslg facet_pslg(std::uint32_t f);
   std::vector<std::uint32_t> mesh_facets(const std::vector<std::uint32_t>& facets, const FacetMeshOptions& options,
                                          bool record = true);
+  std::vector<std::uint32_t> facet_vertices(std::uint32_t f, const std::vector<std::uint32_t>& split_base,
+                                            SurfaceMesh& out) const;
   SurfaceMesh lift();
 
   const FacetInput& in_;
@@ -94,19 +97,25 @@ void SurfaceBuilder::collect_segments() {
   }
 }
 
-// The facet in its plane coordinates: its points, each segment cut at the recorded splits, holes.
-Pslg SurfaceBuilder::facet_pslg(std::uint32_t f) {
-  FacetState& state = facets_[f];
-  const FacetPlane& plane = planes_[f];
-  Pslg pslg;
-  // The previous round's interior vertices as seeds: the facet is then re-meshed from nearly the
-  // mesh it had, and only the neighbourhood of new cuts changes.
+// The interior vertices of the facet's previous mesh (its seeds and the free vertices refinement
+// added), to seed the next: the facet is then re-meshed from nearly the mesh it had, and only the
+// neighbourhood of new cuts changes. Empty before the first round.
+std::vector<Point> previous_interior(const FacetState& state) {
   std::vector<Point> seeds;
   const Mesh& previous = state.result.mesh;
   for (std::uint32_t v = 0; v < previous.vertex_count(); ++v) {
     const bool seed = v < state.local.size() && state.local[v].input == kNone && state.local[v].g == kNone;
     if (seed || (v >= state.local.size() && previous.kind[v] == VertexKind::Free)) seeds.push_back(previous.points[v]);
   }
+  return seeds;
+}
+
+// The facet in its plane coordinates: its points, each segment cut at the recorded splits, holes.
+Pslg SurfaceBuilder::facet_pslg(std::uint32_t f) {
+  FacetState& state = facets_[f];
+  const FacetPlane& plane = planes_[f];
+  Pslg pslg;
+  const std::vector<Point> seeds = previous_interior(state);
   state.local.clear();
   state.pieces.clear();
   std::unordered_map<std::uint32_t, std::uint32_t> of_input;
@@ -231,6 +240,27 @@ SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
   return lift();
 }
 
+// Each vertex of facet f's mesh as a vertex of `out`: input points and cuts by their ids (cuts of
+// segment g from split_base[g] on), the facet's seeds and new vertices lifted from its plane.
+std::vector<std::uint32_t> SurfaceBuilder::facet_vertices(std::uint32_t f, const std::vector<std::uint32_t>& split_base,
+                                                          SurfaceMesh& out) const {
+  const FacetState& state = facets_[f];
+  const Mesh& mesh = state.result.mesh;
+  std::vector<std::uint32_t> global(mesh.vertex_count(), kNone);
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
+    const LocalVertex* lv = v < state.local.size() ? &state.local[v] : nullptr;
+    if (lv && lv->input != kNone) {
+      global[v] = lv->input;
+    } else if (lv && lv->g != kNone) {
+      global[v] = split_base[lv->g] + lv->k;
+    } else if (mesh.kind[v] != VertexKind::Dead && mesh.kind[v] != VertexKind::Duplicate) {
+      global[v] = static_cast<std::uint32_t>(out.points.size());
+      out.points.push_back(planes_[f].lift(mesh.points[v]));
+    }
+  }
+  return global;
+}
+
 // Every facet's triangles in space, on one set of vertices.
 SurfaceMesh SurfaceBuilder::lift() {
   SurfaceMesh out;
@@ -246,22 +276,9 @@ SurfaceMesh SurfaceBuilder::lift() {
   }
   std::unordered_map<std::uint64_t, std::uint32_t> edge_seen;
   for (std::uint32_t f = 0; f < facets_.size(); ++f) {
+    std::vector<std::uint32_t> global = facet_vertices(f, split_base, out);
     FacetState& state = facets_[f];
     Mesh& mesh = state.result.mesh;
-    std::vector<std::uint32_t> global(mesh.vertex_count(), kNone);
-    for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
-      if (v < state.local.size()) {
-        const LocalVertex& lv = state.local[v];
-        if (lv.input != kNone || lv.g != kNone) {
-          global[v] = lv.input != kNone ? lv.input : split_base[lv.g] + lv.k;
-          continue;
-        }
-      }
-      if (mesh.kind[v] != VertexKind::Dead && mesh.kind[v] != VertexKind::Duplicate) {
-        global[v] = static_cast<std::uint32_t>(out.points.size());
-        out.points.push_back(planes_[f].lift(mesh.points[v]));
-      }
-    }
     for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
       out.triangles.push_back(global[mesh.corner[e]]);
       if (e % 3 == 2) out.triangle_facet.push_back(f);
