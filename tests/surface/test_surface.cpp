@@ -27,6 +27,14 @@ FacetInput tee() {
   return in;
 }
 
+FacetMeshOptions quality30() {
+  FacetMeshOptions opt;
+  opt.refine = true;
+  opt.refinement.quality = true;
+  opt.refinement.min_angle_deg = 30.0;
+  return opt;
+}
+
 double area(const SurfaceMesh& m, std::size_t t) {
   const Point3& a = m.points[m.triangles[3 * t]];
   return 0.5 * norm(cross(m.points[m.triangles[3 * t + 1]] - a, m.points[m.triangles[3 * t + 2]] - a));
@@ -61,12 +69,8 @@ TEST(plane_frame_is_orthonormal_and_keeps_lengths) {
 }
 
 TEST(tee_facets_conform_along_the_shared_segment) {
-  FacetMeshOptions opt;
-  opt.refine = true;
-  opt.refinement.quality = true;
-  opt.refinement.min_angle_deg = 30.0;
   SurfaceReport report;
-  const SurfaceMesh m = mesh_surface(tee(), opt, report);
+  const SurfaceMesh m = mesh_surface(tee(), quality30(), report);
   CHECK(report.converged);
   CHECK_EQ(report.shared_segments, 1u);
   CHECK(report.shared_splits > 0);
@@ -99,12 +103,8 @@ TEST(tee_facets_conform_along_the_shared_segment) {
 }
 
 TEST(round_cap_guard_still_conforms) {
-  FacetMeshOptions opt;
-  opt.refine = true;
-  opt.refinement.quality = true;
-  opt.refinement.min_angle_deg = 30.0;
   SurfaceReport report;
-  const SurfaceMesh m = mesh_surface(tee(), opt, report, 1);
+  const SurfaceMesh m = mesh_surface(tee(), quality30(), report, 1);
   CHECK(!report.converged);
   CHECK(check_surface(m).ok());
   double total = 0.0;
