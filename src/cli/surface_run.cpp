@@ -25,6 +25,7 @@ std::string plural(std::size_t n, const char* one, const char* many) {
 FacetMeshOptions facet_options(const Switches& sw) {
   FacetMeshOptions o;
   o.algorithm = sw.algorithm;
+  o.threads = sw.threads;
   o.refine = sw.quality || sw.fixed_area || sw.user_test || sw.conforming_delaunay;
   o.refinement = refine_options(sw, false);
   o.refinement.use_triangle_area_bounds = false;

@@ -15,6 +15,7 @@ struct FacetMeshOptions {
   DelaunayAlgorithm algorithm = DelaunayAlgorithm::DivideAndConquer;
   bool refine = false;  // run refine_mesh with `refinement`
   RefineOptions refinement;
+  int threads = 1;      // > 1: facets are meshed two at a time (each facet on one thread)
 };
 
 struct FacetMeshResult {

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <unordered_map>
 #include <utility>
+
+#include "util/run_both.h"
 
 namespace deltri {
 namespace {
@@ -54,6 +55,7 @@ class SurfaceBuilder {
   void collect_segments();
   std::uint32_t segment_of(std::uint32_t a, std::uint32_t b);
   Pslg facet_pslg(std::uint32_t f);
+  std::vector<std::pair<std::uint32_t, double>> new_cuts(std::uint32_t f) const;
   std::vector<std::uint32_t> mesh_facets(const std::vector<std::uint32_t>& facets, const FacetMeshOptions& options,
                                          bool record = true);
   std::vector<std::uint32_t> facet_vertices(std::uint32_t f, const std::vector<std::uint32_t>& split_base,
@@ -157,47 +159,61 @@ Pslg SurfaceBuilder::facet_pslg(std::uint32_t f) {
   return pslg;
 }
 
-// Meshes the given facets; with `record`, adds the vertices they put on shared segments to those
-// segments' splits and returns the segments that gained some. (The guard's last pass records
-// nothing: the facets' vertex maps must keep naming the splits as they were built.)
+// The vertices facet f's new mesh put inside its shared segments' pieces, as (segment,
+// parameter) pairs.
+std::vector<std::pair<std::uint32_t, double>> SurfaceBuilder::new_cuts(std::uint32_t f) const {
+  const FacetState& state = facets_[f];
+  const Mesh& mesh = state.result.mesh;
+  const std::uint32_t n_local = static_cast<std::uint32_t>(state.local.size());
+  std::vector<std::pair<std::uint32_t, double>> cuts;
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+    if (!mesh.has_subsegments() || mesh.subseg[e] == kNone || mesh.corner[e] < n_local) continue;
+    const Subsegment& rec = mesh.subsegments[mesh.subseg[e]];
+    if (rec.segment >= state.pieces.size()) continue;
+    const Piece& piece = state.pieces[rec.segment];
+    if (!segments_[piece.g].shared()) continue;
+    // Where the new vertex lies along its piece, as a parameter of the whole segment.
+    const Point& p = mesh.points[mesh.corner[e]];
+    const Point& a = mesh.points[piece.la];
+    const Point& b = mesh.points[piece.lb];
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double s = ((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy);
+    cuts.emplace_back(piece.g, piece.ta + std::clamp(s, 0.0, 1.0) * (piece.tb - piece.ta));
+  }
+  return cuts;
+}
+
+// Meshes the given facets (on two threads with options.threads > 1: facets share nothing while
+// they are meshed, and the cuts are merged afterwards in facet order, so the result does not
+// depend on the threads); with `record`, adds the cuts to the segments' splits and returns the
+// segments that gained some. (The guard's last pass records nothing: the facets' vertex maps
+// must keep naming the splits as they were built.)
 std::vector<std::uint32_t> SurfaceBuilder::mesh_facets(const std::vector<std::uint32_t>& facets,
                                                        const FacetMeshOptions& options, bool record) {
-  std::map<std::uint32_t, std::vector<double>> found;
-  for (std::uint32_t f : facets) {
-    FacetState& state = facets_[f];
-    state.result = mesh_facet(facet_pslg(f), options);
-    if (!record) continue;
-    const Mesh& mesh = state.result.mesh;
-    const std::uint32_t n_local = static_cast<std::uint32_t>(state.local.size());
-    for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
-      if (!mesh.has_subsegments() || mesh.subseg[e] == kNone || mesh.corner[e] < n_local) continue;
-      const Subsegment& rec = mesh.subsegments[mesh.subseg[e]];
-      if (rec.segment >= state.pieces.size()) continue;
-      const Piece& piece = state.pieces[rec.segment];
-      if (!segments_[piece.g].shared()) continue;
-      // Where the new vertex lies along its piece, as a parameter of the whole segment.
-      const Point& p = mesh.points[mesh.corner[e]];
-      const Point& a = mesh.points[piece.la];
-      const Point& b = mesh.points[piece.lb];
-      const double dx = b.x - a.x, dy = b.y - a.y;
-      const double s = ((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy);
-      found[piece.g].push_back(piece.ta + std::clamp(s, 0.0, 1.0) * (piece.tb - piece.ta));
+  std::vector<std::vector<std::pair<std::uint32_t, double>>> cuts(facets.size());
+  const auto mesh_every_other = [&](std::size_t first) {
+    for (std::size_t i = first; i < facets.size(); i += 2) {
+      facets_[facets[i]].result = mesh_facet(facet_pslg(facets[i]), options);
+      if (record) cuts[i] = new_cuts(facets[i]);
     }
-  }
+  };
+  if (options.threads > 1 && facets.size() > 1)
+    run_both([&] { mesh_every_other(1); }, [&] { mesh_every_other(0); });
+  else
+    for (std::size_t first : {0, 1}) mesh_every_other(first);
   std::vector<std::uint32_t> changed;
-  for (auto& [g, ts] : found) {
-    std::vector<double>& splits = segments_[g].splits;
-    bool grew = false;
-    for (double t : ts) {
+  for (const auto& list : cuts)
+    for (const auto& [g, t] : list) {
+      std::vector<double>& splits = segments_[g].splits;
       const auto at = std::lower_bound(splits.begin(), splits.end(), t);
       const bool near_next = at != splits.end() && *at - t < kSameParameter;
       const bool near_prev = at != splits.begin() && t - *(at - 1) < kSameParameter;
       if (near_next || near_prev || t < kSameParameter || t > 1.0 - kSameParameter) continue;
       splits.insert(at, t);
-      grew = true;
+      changed.push_back(g);
     }
-    if (grew) changed.push_back(g);
-  }
+  std::sort(changed.begin(), changed.end());
+  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
   return changed;
 }
 

@@ -111,3 +111,39 @@ TEST(round_cap_guard_still_conforms) {
   for (std::size_t t = 0; t < m.triangle_count(); ++t) total += area(m, t);
   CHECK_NEAR(total, 3.5, 1e-12);
 }
+
+TEST(two_threads_give_the_same_surface) {
+  // A 2 x 1 x 1 box made of unit squares: 10 facets, every segment shared by two.
+  FacetInput in;
+  in.source_name = "box";
+  for (int z = 0; z <= 1; ++z)
+    for (int y = 0; y <= 1; ++y)
+      for (int x = 0; x <= 2; ++x) in.points.push_back({double(x), double(y), double(z)});
+  const auto id = [](int x, int y, int z) { return static_cast<std::uint32_t>(x + 3 * y + 6 * z); };
+  const auto square = [&](std::vector<std::uint32_t> loop) {
+    FacetInput::Facet f;
+    f.polygons = {std::move(loop)};
+    f.marker = static_cast<int>(in.facets.size()) + 1;
+    in.facets.push_back(f);
+  };
+  for (int x = 0; x < 2; ++x) {
+    square({id(x, 0, 0), id(x + 1, 0, 0), id(x + 1, 1, 0), id(x, 1, 0)});
+    square({id(x, 0, 1), id(x + 1, 0, 1), id(x + 1, 1, 1), id(x, 1, 1)});
+    square({id(x, 0, 0), id(x + 1, 0, 0), id(x + 1, 0, 1), id(x, 0, 1)});
+    square({id(x, 1, 0), id(x + 1, 1, 0), id(x + 1, 1, 1), id(x, 1, 1)});
+  }
+  square({id(0, 0, 0), id(0, 1, 0), id(0, 1, 1), id(0, 0, 1)});
+  square({id(2, 0, 0), id(2, 1, 0), id(2, 1, 1), id(2, 0, 1)});
+  FacetMeshOptions one = quality30();
+  one.refinement.max_area = 0.003;
+  FacetMeshOptions two = one;
+  two.threads = 2;
+  SurfaceReport r1, r2;
+  const SurfaceMesh a = mesh_surface(in, one, r1);
+  const SurfaceMesh b = mesh_surface(in, two, r2);
+  CHECK(check_surface(a).ok());
+  CHECK(a.triangle_count() > 1000);
+  CHECK(a.points == b.points);
+  CHECK(a.triangles == b.triangles);
+  CHECK_EQ(r1.rounds, r2.rounds);
+}
