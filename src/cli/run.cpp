@@ -16,6 +16,7 @@
 #include "cdt/rebuild_mesh.h"
 #include "cli/json_report.h"
 #include "cli/report.h"
+#include "cli/surface_run.h"
 #include "delaunay/triangulate.h"
 #include "io/area_file.h"
 #include "io/edge_file.h"
@@ -312,25 +313,6 @@ void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, const Switches&
   report.counters.add(pred.counters);
 }
 
-RefineOptions refine_options(const Switches& sw, const InputFiles& in) {
-  RefineOptions opt;
-  opt.quality = sw.quality;
-  opt.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
-  opt.max_area = sw.fixed_area ? sw.max_area : 0.0;
-  opt.use_triangle_area_bounds = sw.variable_area || in.area_file;
-  opt.lenses = !sw.conforming_delaunay;
-  opt.conforming_delaunay = sw.conforming_delaunay;
-  opt.no_steiner_on_segments = sw.no_boundary_steiner;
-  opt.max_steiner = sw.max_steiner;
-  opt.off_centers = !sw.circumcenters_only;
-  opt.queue_order = sw.queue_order;
-  opt.decline_cluster_splits = sw.decline_cluster_splits;
-  opt.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
-  opt.threads = sw.threads;
-  opt.memory_budget = memory_budget();
-  return opt;
-}
-
 BoundRequest bound_request(const Switches& sw, const InputFiles& in, const RunReport& report) {
   BoundRequest r;
   r.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
@@ -344,7 +326,27 @@ BoundRequest bound_request(const Switches& sw, const InputFiles& in, const RunRe
 
 }  // namespace
 
+RefineOptions refine_options(const Switches& sw, bool area_file) {
+  RefineOptions opt;
+  opt.quality = sw.quality;
+  opt.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
+  opt.max_area = sw.fixed_area ? sw.max_area : 0.0;
+  opt.use_triangle_area_bounds = sw.variable_area || area_file;
+  opt.lenses = !sw.conforming_delaunay;
+  opt.conforming_delaunay = sw.conforming_delaunay;
+  opt.no_steiner_on_segments = sw.no_boundary_steiner;
+  opt.max_steiner = sw.max_steiner;
+  opt.off_centers = !sw.circumcenters_only;
+  opt.queue_order = sw.queue_order;
+  opt.decline_cluster_splits = sw.decline_cluster_splits;
+  opt.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
+  opt.threads = sw.threads;
+  opt.memory_budget = memory_budget();
+  return opt;
+}
+
 int run(const Switches& sw) {
+  if (const auto facets = surface_input(sw)) return run_surface(sw, *facets);  // facets in 3-D
   RunReport report;
   report.switches = &sw;
   StageTimer timer(report);
@@ -396,7 +398,7 @@ int run(const Switches& sw) {
     if (!in.is_poly && !sw.convex_hull && !in.refine) enclose_convex_hull(mesh);  // a point set is bounded by its hull
     Predicates pred;
     if (!in.refine && (sw.convex_hull || !in.is_poly)) report.hull_absorbed = absorb_near_hull_vertices(mesh, pred);
-    RefineOptions opt = refine_options(sw, in);
+    RefineOptions opt = refine_options(sw, in.area_file);
     opt.area_field = &area_field;
     report.refine = refine_mesh(mesh, pred, opt);
     report.counters.add(pred.counters);

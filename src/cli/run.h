@@ -3,6 +3,7 @@
 #pragma once
 
 #include "cli/switches.h"
+#include "refine/refine.h"
 
 namespace deltri {
 
@@ -13,6 +14,10 @@ inline constexpr int kExitBounds = 3;    // --strict: some triangles miss the bo
 inline constexpr int kExitOutput = 4;    // an output file could not be written
 inline constexpr int kExitCheck = 5;     // -C found faults in the mesh
 inline constexpr int kExitInternal = 6;  // out of memory or a bug
+
+// The refinement options the switches ask for (-q, -a, -u, -D, -Y, -S, -k, --queue, ...); with
+// area_file, per-triangle bounds are honoured (-a bare, or an .area read).
+RefineOptions refine_options(const Switches& sw, bool area_file);
 
 // Runs deltri with the given switches; prints the summary, warnings and -V report; returns the
 // exit status. Throws InputError, OutputError or UsageError.
