@@ -151,6 +151,8 @@ void SegmentInserter::release(EdgeRef e, VertexId w) {
   pending_.push_back({s.a, w, s.marker, s.segment});
 }
 
+// The new vertex's attributes are interpolated along the earlier segment's piece it splits, as
+// for any vertex on a segment (Triangle interpolates along the subsegment it splits, too).
 VertexId SegmentInserter::place_crossing(const Piece& piece, const Subsegment& old, const Point& p) {
   Mesh& mesh = ed_.mesh;
   const PointLocation at = walk_to_point(mesh, ed_.pred, ed_.vertex_edge[old.a], p);
@@ -159,11 +161,13 @@ VertexId SegmentInserter::place_crossing(const Piece& piece, const Subsegment& o
       return mesh.org(at.edge);
     case PointLocation::Kind::InTriangle: {
       const VertexId w = mesh.add_vertex(p, VertexKind::Segment);
+      mesh.interpolate_attributes(w, old.a, old.b);
       ed_.insert_in_triangle(at.edge, w);
       return w;
     }
     case PointLocation::Kind::OnEdge: {
       const VertexId w = mesh.add_vertex(p, VertexKind::Segment);
+      mesh.interpolate_attributes(w, old.a, old.b);
       // A third segment through the very same point: it is split there too.
       if (mesh.subseg[at.edge] != kNone) release(at.edge, w);
       ed_.insert_on_edge(at.edge, w);

@@ -211,7 +211,9 @@ void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
   const Switches& sw = c.sw;
   const std::vector<std::uint32_t>* numbering = c.numbering;
   const std::string out = output_base(c.in.base, sw.no_iteration);
-  const int first = sw.zero_based ? 0 : pslg.first_index;
+  // As in Triangle, the input's numbering decides (-z only numbers an input whose first index is
+  // neither 0 nor 1).
+  const int first = pslg.numbered_by_file ? pslg.first_index : sw.zero_based ? 0 : 1;
   const bool markers = !sw.no_markers;
   const auto add = [&](const std::string& name, std::function<void(ByteSink&)> produce) {
     c.report.written.push_back(name == OutputSet::kStandardOutput ? "standard output" : name);
@@ -237,7 +239,10 @@ void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
     opt.first_index = first;
     opt.markers = markers;
     opt.numbering = numbering;
-    add(out + ".poly", [&mesh, opt, holes, &pslg](ByteSink& s) { write_poly_file(s, mesh, opt, holes, pslg.regions); });
+    // As in Triangle: the hole list is copied even with -O, the regions only when read (-A, bare -a).
+    static const std::vector<Pslg::Region> no_regions;
+    const std::vector<Pslg::Region>* regions = sw.regional_attributes || sw.variable_area ? &pslg.regions : &no_regions;
+    add(out + ".poly", [&mesh, opt, &pslg, regions](ByteSink& s) { write_poly_file(s, mesh, opt, pslg.holes, *regions); });
   }
   if (sw.edges) {
     const EdgeWriteOptions opt{first, markers, numbering};
@@ -299,6 +304,7 @@ void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, const Switches&
              AreaField& area_field) {
   Predicates pred;
   const std::string ele_path = in.base + ".ele";
+  require_regular_numbering(pslg, "the triangles of " + ele_path);
   const EleData ele = read_ele_file(ele_path, pslg.first_index, mesh.vertex_count());
   rebuild_mesh(mesh, pred, ele, ele_path);
   report.rebuilt_triangles = ele.triangle_count();
@@ -428,6 +434,9 @@ int run(const Switches& sw) {
   std::vector<VertexId> midpoints;
   if (sw.order == 2) midpoints = add_edge_midpoints(mesh);
   const std::vector<std::uint32_t> numbering = vertex_numbering(mesh, sw.jettison, midpoints);
+  if (sw.jettison)
+    report.jettisoned_vertex_count = numbering.empty() ? mesh.vertex_count()
+                                                       : numbering.size() - std::count(numbering.begin(), numbering.end(), kNone);
   // --strict: misses a small input angle does not force, or no mesh at all.
   const bool bounds_missed = report.misses && report.misses->not_forced_by_input() > 0;
   const int status = sw.strict && (bounds_missed || mesh.live_triangles() == 0) ? kExitBounds : kExitOk;

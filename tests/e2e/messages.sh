@@ -30,7 +30,8 @@ outputs() { ls | grep -v -x -e box.poly -e guitar.poly -e crossing-edges.poly -e
 expect 0 "deltri $version" "" -- --version
 expect 2 "" "deltri: -a-1: the maximum area must be a positive number, e.g. -a0.1" -- -pa-1 box.poly
 expect 2 "" "deltri: -q-5: the minimum angle must be at least 0 and below 60 degrees" -- -pq-5 box.poly
-expect 2 "" "deltri: -a: the maximum area must be a positive number, e.g. -a0.1" -- -pa0 box.poly
+# Triangle refuses -a0 too, with exit status 1.
+expect 1 "" "deltri: -a: the maximum area must be a positive number, e.g. -a0.1" -- -pa0 box.poly
 [ -z "$(outputs)" ] || fail "a refused switch wrote $(outputs)"
 cp box.poly box.orig
 expect 4 "" "box.poly: is an input of this run, not overwritten (no files written)" -- -pQ --msh=box.poly box.poly
