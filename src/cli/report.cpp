@@ -25,9 +25,8 @@ bool has_regional_area_bounds(const Pslg* pslg) {
 
 }  // namespace
 
-std::vector<const char*> unsupported_switches(const Switches& sw) {
+std::vector<const char*> unsupported_switches(const Switches&) {  // none today (-s landed in issue 23)
   std::vector<const char*> list;
-  if (sw.split_segments) list.push_back("-s");
   return list;
 }
 

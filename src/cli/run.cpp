@@ -138,7 +138,7 @@ Mesh mesh_from_pslg(Pslg& pslg) {
 void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Switches& sw,
                RunReport& report) {
   Predicates pred;
-  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates, !sw.exact_input);
+  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates, !sw.exact_input, sw.split_segments);
   if (sw.convex_hull) enclose_convex_hull(mesh);
   static const std::vector<Point> no_holes;
   report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull);
@@ -308,7 +308,7 @@ void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, const Switches&
   const EleData ele = read_ele_file(ele_path, pslg.first_index, mesh.vertex_count());
   rebuild_mesh(mesh, pred, ele, ele_path);
   report.rebuilt_triangles = ele.triangle_count();
-  if (in.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {}, !sw.exact_input);
+  if (in.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {}, !sw.exact_input, sw.split_segments);
   protect_boundary(mesh);
   if (in.area_file) {
     mesh.area_bound = read_area_file(in.base + ".area", ele.triangle_count());

@@ -87,7 +87,7 @@ constexpr std::array kTable = {
               [](S& s, bool, double) { s.sweepline = true; }},
     SwitchRow{'l', ArgKind::None, "", "divide and conquer with vertical cuts only",
               [](S& s, bool, double) { s.algorithm = DelaunayAlgorithm::VerticalCuts; }},
-    SwitchRow{'s', ArgKind::None, "", "accepted and ignored for now (Triangle: insert segments by splitting them)",
+    SwitchRow{'s', ArgKind::None, "", "insert segments by splitting them at midpoints (conforming), not by flips",
               [](S& s, bool, double) { s.split_segments = true; }},
     SwitchRow{'C', ArgKind::None, "", "check the final mesh for consistency and the Delaunay property",
               [](S& s, bool, double) { s.check = true; }},

@@ -28,6 +28,8 @@ foreach(name IN LISTS E2E_POLY_FILES)
   e2e_case(${name}.pA ${E2E_DATA}/${name}.poly -pA)
   e2e_case(${name}.pO ${E2E_DATA}/${name}.poly -pO --verify --no-holes)
   e2e_case(${name}.pz ${E2E_DATA}/${name}.poly -pz)
+  # -s: segments split at midpoints, which round off the line as refinement's split points do
+  e2e_case(${name}.psC ${E2E_DATA}/${name}.poly -psC --verify --refined)
 endforeach()
 e2e_case(robustness2.warning ${E2E_DATA}/robustness2.node none --warning "32 duplicate vertices ignored")
 
@@ -320,7 +322,7 @@ strict_case(steiner_limit ${G} -pq30S10 3
             "q['missing_bounds_by_cause']['steiner_limits'] > 0 and q['missing_bounds_by_cause']['other'] == 0")
 
 # ---- issue 23: Triangle's meaning where deltri differed (tests/e2e/triangle_compat.sh) ----
-foreach(item refine_o2 z crossing_attributes lenient messages poly_output)
+foreach(item refine_o2 z crossing_attributes lenient messages poly_output split_segments)
   add_test(NAME e2e.triangle_compat.${item}
            COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/triangle_compat.sh $<TARGET_FILE:deltri> ${E2E_INPUTS} ${item})
 endforeach()

@@ -42,7 +42,7 @@ expect 0 "" "deltri: warning: box.poly: bare -a has no effect: the input has no 
 # plate.poly's regions bound the area: the bare -a applies, no warning.
 expect 0 "" "" -- -paQ plate.poly
 "$deltri" -h >out
-grep -q -x -- "  -s          accepted and ignored for now (Triangle: insert segments by splitting them)" out ||
+grep -q -x -- "  -s          insert segments by splitting them at midpoints (conforming), not by flips" out ||
   fail "-h on -s: $(grep -- '^  -s' out)"
 
 # -V: the version line right after the summary line; the JSON report carries the same version.

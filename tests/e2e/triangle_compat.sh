@@ -161,6 +161,33 @@ poly_output)
   said=$(sed 's/.*-> \([0-9]*\) vertices.*/\1/' out)
   [ "$(count hole_vertex.1.node)" = 24 ] || fail "-pjo2 hole_vertex: $(count hole_vertex.1.node) vertices written, expected 8 + 16 midpoints"
   [ "$said" = "$(count hole_vertex.1.node)" ] || fail "-pjo2: summary says $said vertices, the .node has $(count hole_vertex.1.node)" ;;
+split_segments)
+  # 3. -s: a segment missing from the Delaunay triangulation is split at its midpoint, recursively,
+  # until its pieces are edges (guitar.poly: Triangle has 148 vertices in 152 triangles, -p 144 in 148).
+  cp "$inputs/../../../data/guitar.poly" . || fail "no data/guitar.poly"
+  "$deltri" -Q -ps guitar.poly || fail "-ps guitar.poly failed"
+  [ "$(count guitar.1.ele)" = 152 ] || fail "-ps guitar.poly: $(count guitar.1.ele) triangles, Triangle 152"
+  used=$(awk 'FNR == 1 || /^[[:space:]]*(#|$)/ { next } { u[$2]; u[$3]; u[$4] } END { print length(u) }' guitar.1.ele)
+  [ "$used" = 148 ] || fail "-ps guitar.poly: $used vertices in triangles, Triangle 148"
+  # A diagonal through a square of points that the Delaunay triangulation crosses: every new vertex
+  # is a dyadic point of the diagonal (x = y = 8k/2^j) and the diagonal's pieces are edges.
+  awk 'BEGIN { print 12, 2, 0, 0; n = 0
+    print ++n, 0, 0; print ++n, 8, 0; print ++n, 8, 8; print ++n, 0, 8
+    for (i = 0; i < 8; i++) print ++n, 1 + i * 0.8, 1 + i * 0.8 + ((i % 2) ? 0.3 : -0.3)
+    print 5, 0; print 1, 1, 2; print 2, 2, 3; print 3, 3, 4; print 4, 4, 1; print 5, 1, 3; print 0 }' >diag.poly
+  "$deltri" -Q -psC diag.poly || fail "-psC diag.poly failed"
+  new=$(($(count diag.1.node) - 12))
+  [ $new -gt 0 ] || fail "-ps diag.poly: no midpoint inserted"
+  awk 'FNR == 1 || /^[[:space:]]*(#|$)/ { next } $1 > 12 {
+         if ($2 != $3) { print "FAIL: vertex " $1 " (" $2 ", " $3 ") is off the diagonal"; bad = 1 }
+         t = $2 / 8; for (k = 0; k < 60 && t != int(t); k++) t *= 2
+         if (t != int(t)) { print "FAIL: vertex " $1 " is not a dyadic point of the diagonal"; bad = 1 } } END { exit bad }' diag.1.node || failed=1
+  # The diagonal's pieces are all in the output .poly: their lengths add up to the diagonal's.
+  awk 'FNR == 1 { f++ } /^[[:space:]]*(#|$)/ { next }
+       f == 1 && FNR > 1 { x[$1] = $2; y[$1] = $3 }
+       f == 2 && FNR > 2 && NF >= 3 && x[$2] == y[$2] && x[$3] == y[$3] { s += sqrt((x[$2] - x[$3]) ^ 2 + (y[$2] - y[$3]) ^ 2); n++ }
+       END { if (n < 2 || (s - 8 * sqrt(2)) ^ 2 > 1e-20) { print "FAIL: diagonal pieces " n ", length " s; exit 1 } }' diag.1.node diag.1.poly || failed=1
+  echo "-ps diag.poly: $new midpoints" ;;
 *)
   echo "triangle_compat.sh: unknown item $item" >&2
   exit 2 ;;
