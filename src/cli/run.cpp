@@ -356,7 +356,6 @@ int run(const Switches& sw) {
   StageTimer timer(report);
   const auto start = std::chrono::steady_clock::now();
   Messages messages(sw);
-  if (sw.sweepline) messages.notice("-F: the sweepline algorithm is not provided; divide and conquer is used");
   for (const char* unsupported : unsupported_switches(sw))
     messages.notice(std::string(unsupported) + " is not available yet and is ignored");
 
@@ -386,6 +385,7 @@ int run(const Switches& sw) {
                            std::to_string(report.input_vertices) + " vertices are " + std::to_string(distinct) +
                            " distinct point" + (distinct == 1 ? "" : "s"));
     report.counters.add(dt.counters);
+    if (dt.sweepline_fell_back) messages.notice("-F: rounding broke the sweepline on this input; divide and conquer was used");
     timer.stage("Delaunay");
     check_stage(mesh, "Delaunay");
     if (in.is_poly) {

@@ -83,8 +83,11 @@ constexpr std::array kTable = {
     SwitchRow{'S', ArgKind::OptionalInt, "n", "at most n Steiner points (bare: none)", set_S},
     SwitchRow{'i', ArgKind::None, "", "incremental Delaunay triangulation instead of divide and conquer",
               [](S& s, bool, double) { s.algorithm = DelaunayAlgorithm::Incremental; }},
-    SwitchRow{'F', ArgKind::None, "", "sweepline requested: divide and conquer is used (notice printed)",
-              [](S& s, bool, double) { s.sweepline = true; }},
+    SwitchRow{'F', ArgKind::None, "", "Fortune's sweepline Delaunay triangulation instead of divide and conquer",
+              [](S& s, bool, double) {
+                s.sweepline = true;
+                s.algorithm = DelaunayAlgorithm::Sweepline;
+              }},
     SwitchRow{'l', ArgKind::None, "", "divide and conquer with vertical cuts only",
               [](S& s, bool, double) { s.algorithm = DelaunayAlgorithm::VerticalCuts; }},
     SwitchRow{'s', ArgKind::None, "", "insert segments by splitting them at midpoints (conforming), not by flips",
