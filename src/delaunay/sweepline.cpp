@@ -257,12 +257,21 @@ bool sweepline_delaunay(Mesh& mesh, Predicates& pred, std::vector<std::pair<Vert
   mesh.area_bound.clear();
   std::vector<VertexId> sites = distinct_inputs(mesh, duplicates);
   if (sites.size() < 3) return true;
-  const auto& p = mesh.points;
-  std::sort(sites.begin(), sites.end(), [&p](VertexId a, VertexId b) {
-    return p[a].y != p[b].y ? p[a].y < p[b].y : p[a].x < p[b].x;
-  });
-  double lo = p[sites[0]].x, hi = lo;
-  for (VertexId v : sites) lo = std::min(lo, p[v].x), hi = std::max(hi, p[v].x);
+  // Sorted as (y, x, id) records: sorting ids through the point array misses the cache every time.
+  struct Key {
+    double y, x;
+    VertexId id;
+  };
+  std::vector<Key> keys(sites.size());
+  double lo = mesh.points[sites[0]].x, hi = lo;
+  for (std::size_t k = 0; k < sites.size(); ++k) {
+    const Point& q = mesh.points[sites[k]];
+    keys[k] = {q.y, q.x, sites[k]};
+    lo = std::min(lo, q.x), hi = std::max(hi, q.x);
+  }
+  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+  for (std::size_t k = 0; k < sites.size(); ++k) sites[k] = keys[k].id;
+  std::vector<Key>().swap(keys);
   Sweep sweep(mesh, pred, lo, hi, sites.size());
   const bool consistent = sweep.run(sites);
   if (mesh.corner.empty()) return true;  // all collinear
