@@ -110,6 +110,12 @@ void remove_ghosts(Mesh& mesh) {
 
 std::vector<VertexId> distinct_inputs(Mesh& mesh,
                                       std::vector<std::pair<VertexId, VertexId>>& duplicates) {
+  mesh.corner.clear();
+  mesh.link.clear();
+  mesh.subseg.clear();
+  mesh.free_triangles.clear();
+  mesh.triangle_attributes.clear();
+  mesh.area_bound.clear();
   std::vector<VertexId> ids;
   for (VertexId v = 0; v < mesh.vertex_count(); ++v)
     if (mesh.kind[v] == VertexKind::Input) ids.push_back(v);
@@ -137,12 +143,6 @@ std::vector<VertexId> distinct_inputs(Mesh& mesh,
 
 void incremental_delaunay(Mesh& mesh, Predicates& pred,
                           std::vector<std::pair<VertexId, VertexId>>& duplicates) {
-  mesh.corner.clear();
-  mesh.link.clear();
-  mesh.subseg.clear();
-  mesh.free_triangles.clear();
-  mesh.triangle_attributes.clear();
-  mesh.area_bound.clear();
   std::vector<VertexId> order = insertion_order(mesh, distinct_inputs(mesh, duplicates));
   if (!front_triangle(mesh, pred, order)) return;
   if (pred.orient2d(mesh.point(order[0]), mesh.point(order[1]), mesh.point(order[2])) < 0)

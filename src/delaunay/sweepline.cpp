@@ -249,12 +249,6 @@ void lawson_pass(Mesh& mesh, Predicates& pred) {
 }  // namespace
 
 bool sweepline_delaunay(Mesh& mesh, Predicates& pred, std::vector<std::pair<VertexId, VertexId>>& duplicates) {
-  mesh.corner.clear();
-  mesh.link.clear();
-  mesh.subseg.clear();
-  mesh.free_triangles.clear();
-  mesh.triangle_attributes.clear();
-  mesh.area_bound.clear();
   std::vector<VertexId> sites = distinct_inputs(mesh, duplicates);
   if (sites.size() < 3) return true;
   // Sorted as (y, x, id) records: sorting ids through the point array misses the cache every time.
