@@ -108,7 +108,7 @@ e2e_case(error.two_stdout ${G} "--msh=- --vtu=-" --exit 2 --error "deltri: -: on
 e2e_case(error.long_option ${G} "--mesh" --exit 2 --error "deltri: --mesh: unknown option")
 
 # ---- generated point sets ----
-foreach(sw none -i -l)
+foreach(sw none -i -l -F)
   e2e_case(grid30${sw} gen:grid30.node ${sw} --verify "--expect-triangles 1682")
   e2e_case(offset1e9${sw} gen:offset.node ${sw} --no-warning)
   e2e_case(collinear${sw} gen:collinear.node ${sw} --warning "collinear" --verify "--expect-triangles 0")
