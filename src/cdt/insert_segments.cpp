@@ -29,7 +29,7 @@ void pass_markers(Mesh& mesh, const std::vector<std::pair<std::uint32_t, int>>& 
 
 SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Segment>& segments,
                               const std::vector<std::pair<VertexId, VertexId>>& duplicates,
-                              bool snap_to_segments) {
+                              bool snap_to_segments, bool split_to_conform) {
   SegmentReport report;
   mesh.enable_subsegments();
   std::vector<VertexId> kept(mesh.vertex_count());
@@ -52,7 +52,7 @@ SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Ps
   const std::vector<std::uint32_t> repeat_of = find_repeats(ends, mesh.vertex_count());
 
   mesh.subsegments.reserve(mesh.subsegments.size() + segments.size());
-  SegmentInserter inserter(mesh, pred, snap_to_segments);
+  SegmentInserter inserter(mesh, pred, snap_to_segments, split_to_conform);
   std::vector<std::pair<std::uint32_t, int>> repeated_markers;
   for (std::uint32_t i = 0; i < segments.size(); ++i) {
     if (ends[i].first == kNone) continue;
@@ -73,6 +73,7 @@ SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Ps
   report.crossings = counts.crossings;
   report.unrecovered = counts.unrecovered;
   report.snapped = counts.snapped;
+  report.midpoints = counts.midpoints;
   report.subsegments = mesh.subsegments.size();
   return report;
 }

@@ -23,6 +23,7 @@ struct SegmentReport {
   std::size_t unrecovered = 0;          // segments whose endpoint is in no triangle (e.g. all
                                         // input vertices collinear): ignored
   std::size_t snapped = 0;              // vertices within a few ulps of a segment that split it
+  std::size_t midpoints = 0;            // -s: midpoints inserted to make segments edges
   std::size_t subsegments = 0;          // size of mesh.subsegments at the end
 };
 
@@ -35,8 +36,10 @@ struct SegmentReport {
 // puts one off a segment, the segment becomes the chain through it (as Triangle does).
 // With snap_to_segments (the default; --exact-input turns it off), a vertex within kSnapUlps
 // (segment_inserter.h) of a segment's interior splits the segment there, as one exactly on it does.
+// With split_to_conform (-s), a segment missing from the triangulation is split at its midpoint,
+// recursively, until its pieces are edges, instead of flipping edges to make it one.
 SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Segment>& segments,
                               const std::vector<std::pair<VertexId, VertexId>>& duplicates,
-                              bool snap_to_segments = true);
+                              bool snap_to_segments = true, bool split_to_conform = false);
 
 }  // namespace deltri

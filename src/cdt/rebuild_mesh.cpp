@@ -59,6 +59,22 @@ void pair_edges(Mesh& mesh, const std::string& path) {
   }
 }
 
+// A six-node .ele (-o2) lists the edge midpoints as nodes 4 to 6. They are no corners of the
+// rebuilt mesh, and refinement makes its own, so, as Triangle does, they leave the mesh: a vertex
+// named only as a midpoint is marked Dead and is not written (a -r chain of quadratic meshes would
+// otherwise gather unused vertices, pairs of them on the same point).
+void drop_midpoint_nodes(Mesh& mesh, const EleData& ele) {
+  if (ele.nodes_per_triangle != 6) return;
+  std::vector<char> role(mesh.vertex_count(), 0);  // 1: corner, 2: midpoint only
+  for (std::size_t i = 0; i < ele.corners.size(); ++i) {
+    const std::uint32_t v = ele.corners[i];
+    if (i % 6 < 3) role[v] = 1;
+    else if (role[v] == 0) role[v] = 2;
+  }
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    if (role[v] == 2) mesh.kind[v] = VertexKind::Dead;
+}
+
 }  // namespace
 
 void rebuild_mesh(Mesh& mesh, Predicates& pred, const EleData& ele, const std::string& ele_path) {
@@ -72,6 +88,7 @@ void rebuild_mesh(Mesh& mesh, Predicates& pred, const EleData& ele, const std::s
   mesh.num_triangle_attributes = ele.num_attributes;
   mesh.triangle_attributes = ele.attributes;
   mesh.subseg.clear();
+  drop_midpoint_nodes(mesh, ele);
 }
 
 void protect_boundary(Mesh& mesh) {

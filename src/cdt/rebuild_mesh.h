@@ -18,8 +18,9 @@
 
 namespace deltri {
 
-// Replaces mesh's triangles by those of `ele` (three corners each; -o2 midpoints are ignored) and
-// takes its triangle attributes. `ele_path` names the file in errors. Throws InputError.
+// Replaces mesh's triangles by those of `ele` (three corners each) and takes its triangle
+// attributes. With six nodes per triangle, a vertex named only as a midpoint (nodes 4-6) becomes
+// Dead: it is not written, as in Triangle. `ele_path` names the file in errors. Throws InputError.
 void rebuild_mesh(Mesh& mesh, Predicates& pred, const EleData& ele, const std::string& ele_path);
 
 // Gives every boundary edge that carries no subsegment yet a subsegment with marker 1.

@@ -105,6 +105,7 @@ void SegmentInserter::process(const Piece& piece) {
       ++counts_.split_at_vertices;
       pending_.push_back({w, piece.v, piece.marker, piece.segment});
     }
+    if (conform_ && split_at_midpoint(piece, w)) return;
     const Piece first{piece.u, w, piece.marker, piece.segment};
     const SubsegmentId id = new_record(first);
     if (recovery_.recover(piece.u, w, crossed_, id) == kNone) {
@@ -113,6 +114,28 @@ void SegmentInserter::process(const Piece& piece) {
     }
     return;
   }
+}
+
+bool SegmentInserter::split_at_midpoint(const Piece& piece, VertexId w) {
+  Mesh& mesh = ed_.mesh;
+  const Point a = mesh.point(piece.u), b = mesh.point(w);
+  const Point m{a.x + 0.5 * (b.x - a.x), a.y + 0.5 * (b.y - a.y)};
+  if ((m.x == a.x && m.y == a.y) || (m.x == b.x && m.y == b.y)) return false;
+  const PointLocation at = walk_to_point(mesh, ed_.pred, ed_.vertex_edge[piece.u], m);
+  if (at.kind == PointLocation::Kind::Outside || at.kind == PointLocation::Kind::OnVertex) return false;
+  const VertexId x = mesh.add_vertex(m, VertexKind::Segment);
+  mesh.interpolate_attributes(x, piece.u, w);
+  if (at.kind == PointLocation::Kind::InTriangle) {
+    ed_.insert_in_triangle(at.edge, x);
+  } else {
+    // Rounding put the midpoint on an edge, perhaps a subsegment: that one is split there too.
+    if (mesh.subseg[at.edge] != kNone) release(at.edge, x);
+    ed_.insert_on_edge(at.edge, x);
+  }
+  ++counts_.midpoints;
+  pending_.push_back({x, w, piece.marker, piece.segment});
+  pending_.push_back({piece.u, x, piece.marker, piece.segment});
+  return true;
 }
 
 VertexId SegmentInserter::near_vertex(const Piece& piece, std::initializer_list<VertexId> candidates) const {
@@ -151,6 +174,8 @@ void SegmentInserter::release(EdgeRef e, VertexId w) {
   pending_.push_back({s.a, w, s.marker, s.segment});
 }
 
+// The new vertex's attributes are interpolated along the earlier segment's piece it splits, as
+// for any vertex on a segment (Triangle interpolates along the subsegment it splits, too).
 VertexId SegmentInserter::place_crossing(const Piece& piece, const Subsegment& old, const Point& p) {
   Mesh& mesh = ed_.mesh;
   const PointLocation at = walk_to_point(mesh, ed_.pred, ed_.vertex_edge[old.a], p);
@@ -159,11 +184,13 @@ VertexId SegmentInserter::place_crossing(const Piece& piece, const Subsegment& o
       return mesh.org(at.edge);
     case PointLocation::Kind::InTriangle: {
       const VertexId w = mesh.add_vertex(p, VertexKind::Segment);
+      mesh.interpolate_attributes(w, old.a, old.b);
       ed_.insert_in_triangle(at.edge, w);
       return w;
     }
     case PointLocation::Kind::OnEdge: {
       const VertexId w = mesh.add_vertex(p, VertexKind::Segment);
+      mesh.interpolate_attributes(w, old.a, old.b);
       // A third segment through the very same point: it is split there too.
       if (mesh.subseg[at.edge] != kNone) release(at.edge, w);
       ed_.insert_on_edge(at.edge, w);

@@ -26,6 +26,7 @@ struct InsertionCounts {
   std::size_t crossings = 0;
   std::size_t unrecovered = 0;
   std::size_t snapped = 0;  // vertices within kSnapUlps of a segment that split it (snap_to_segments)
+  std::size_t midpoints = 0;  // -s: vertices inserted at the midpoints of missing pieces
 };
 
 // A vertex this many units in the last place or closer to a segment's interior is taken to lie on
@@ -38,8 +39,12 @@ class SegmentInserter {
  public:
   // With snap_to_segments, a vertex within kSnapUlps of the open segment being inserted splits it
   // there, as a vertex exactly on it does (--exact-input turns this off).
-  SegmentInserter(Mesh& mesh, Predicates& pred, bool snap_to_segments = false)
-      : ed_(mesh, pred), recovery_(ed_), snap_(snap_to_segments) {}
+  // With split_to_conform (-s), a piece that is not an edge of the triangulation is split at its
+  // midpoint, the midpoint inserted as a vertex (Lawson flips, never across a subsegment), and
+  // each half treated the same way until every piece is an edge: a conforming insertion, with no
+  // edge flipped in to make a constraint (Triangle's -s, after its description).
+  SegmentInserter(Mesh& mesh, Predicates& pred, bool snap_to_segments = false, bool split_to_conform = false)
+      : ed_(mesh, pred), recovery_(ed_), snap_(snap_to_segments), conform_(split_to_conform) {}
 
   void insert(const Piece& segment);
   const InsertionCounts& counts() const { return counts_; }
@@ -54,6 +59,9 @@ class SegmentInserter {
   // Removes the subsegment of e and queues the two halves of it around vertex w.
   void release(EdgeRef e, VertexId w);
   VertexId place_crossing(const Piece& piece, const Subsegment& old, const Point& p);
+  // -s: inserts the midpoint of u-w and queues both halves; false where no double lies strictly
+  // between the two ends (the piece is then recovered by flips).
+  bool split_at_midpoint(const Piece& piece, VertexId w);
   // One of `candidates` (the corners of an edge the piece crosses, or the apexes beside an edge it
   // runs along) within kSnapUlps of the piece's interior, or kNone.
   VertexId near_vertex(const Piece& piece, std::initializer_list<VertexId> candidates) const;
@@ -65,6 +73,7 @@ class SegmentInserter {
   std::vector<EdgeRef> crossed_;
   std::uint32_t last_overlap_ = kNone;  // segment last counted in overlaps_merged
   bool snap_ = false;
+  bool conform_ = false;
   // (input segment, vertex) pairs already snapped: each vertex is taken onto each segment at most
   // once, so snapping adds finitely many pieces even where rounded crossings and bent pieces
   // would otherwise offer the same vertex again and again (found with coordinates near 1e300).

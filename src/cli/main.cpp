@@ -26,6 +26,9 @@ int main(int argc, char** argv) {
       return switches.help ? kExitOk : kExitUsage;
     }
     return run(switches);
+  } catch (const RefusedSwitchError& e) {
+    std::fprintf(stderr, "deltri: %s\n", e.what());
+    return kExitInput;  // Triangle's status for the values it refuses
   } catch (const UsageError& e) {
     std::fprintf(stderr, "deltri: %s\n", e.what());
     return kExitUsage;

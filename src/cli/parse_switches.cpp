@@ -61,6 +61,11 @@ void parse_word(std::string_view word, Switches& s) {
                            negative_number_message(letter));
       }
       const std::size_t n = number_length(word.substr(i), row->arg == ArgKind::OptionalInt);
+      if (n == 0 && letter == 'u')
+        throw UsageError(
+            "-u: a bare -u runs the size test compiled into Triangle, which deltri does not have; write the "
+            "test as -u<length> (no edge longer than length, e.g. -u0.05), or bound areas with -a<area>, "
+            "regional areas (bare -a) or a .area file with -r");
       if (n == 0 && row->arg == ArgKind::RequiredReal)
         throw UsageError(std::string("-") + letter + ": a number must follow, e.g. -" + letter + "0.05");
       if (n > 0) {
@@ -157,7 +162,7 @@ Switches parse_switches(int argc, const char* const* argv) {
   }
   if (s.quality && !(s.min_angle >= 0.0 && s.min_angle < 60.0))
     throw UsageError("-q: the minimum angle must be at least 0 and below 60 degrees");
-  if (s.refine && s.no_iteration) throw UsageError("-I: cannot be combined with -r (the output would overwrite the input)");
+  if (s.refine && s.no_iteration) throw RefusedSwitchError("-I: cannot be combined with -r (the output would overwrite the input)");
   int to_stdout = 0;
   for (const Switches::FileRequest* r : {&s.msh, &s.vtu, &s.svg, &s.json, &s.stl}) to_stdout += r->wanted && r->path == "-";
   if (to_stdout > 1) throw UsageError("-: only one of --msh=-, --vtu=-, --svg=-, --json=- can go to standard output");

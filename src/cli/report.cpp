@@ -5,6 +5,7 @@
 #include "cdt/convex_hull.h"
 #include "cli/version.h"
 #include "quality/statistics.h"
+#include "quality/triangle_wording.h"
 #include "refine/termination_guard.h"
 
 namespace deltri {
@@ -24,9 +25,8 @@ bool has_regional_area_bounds(const Pslg* pslg) {
 
 }  // namespace
 
-std::vector<const char*> unsupported_switches(const Switches& sw) {
+std::vector<const char*> unsupported_switches(const Switches&) {  // none today (-s landed in issue 23)
   std::vector<const char*> list;
-  if (sw.split_segments) list.push_back("-s");
   return list;
 }
 
@@ -41,6 +41,7 @@ void Messages::check_failed(const CheckReport& check) const {
 std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
   std::vector<std::string> lines;
   const auto warn = [&](const std::string& text) { lines.push_back(text); };
+  if (r.pslg) lines = r.pslg->read_warnings;  // first: each names its own file and line
   if (r.duplicates > 0) warn(plural(r.duplicates, "duplicate vertex", "duplicate vertices") + " ignored (kept the first of each)");
   if (const auto& s = r.segments) {
     if (s->duplicates_remapped) warn(plural(s->duplicates_remapped, "segment endpoint", "segment endpoints") + " moved from a duplicate vertex to the vertex it duplicates");
@@ -98,8 +99,13 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
 }
 
 void Messages::warn_about_input(const Mesh& mesh, const RunReport& r) const {
-  for (const std::string& text : run_warnings(mesh, r))
-    std::fprintf(stderr, "deltri: warning: %s: %s\n", r.input_name.c_str(), text.c_str());
+  const std::size_t from_reading = r.pslg ? r.pslg->read_warnings.size() : 0;
+  const std::vector<std::string> lines = run_warnings(mesh, r);
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    if (i < from_reading)
+      std::fprintf(stderr, "deltri: warning: %s\n", lines[i].c_str());
+    else
+      std::fprintf(stderr, "deltri: warning: %s: %s\n", r.input_name.c_str(), lines[i].c_str());
 }
 
 void Messages::finished(const Mesh& mesh, const RunReport& r) const {
@@ -110,6 +116,7 @@ void Messages::finished(const Mesh& mesh, const RunReport& r) const {
   std::size_t used = 0;
   for (VertexId v = 0; v < mesh.vertex_count(); ++v)
     used += mesh.kind[v] != VertexKind::Duplicate && mesh.kind[v] != VertexKind::Dead;
+  if (r.jettisoned_vertex_count) used = *r.jettisoned_vertex_count;
   std::string input = plural(r.input_vertices, "vertex", "vertices");
   if (r.pslg->has_segment_section) {
     input += ", " + plural(r.input_segments, "segment", "segments");
@@ -119,7 +126,21 @@ void Messages::finished(const Mesh& mesh, const RunReport& r) const {
               plural(used, "vertex", "vertices").c_str(),
               plural(mesh.live_triangles(), "triangle", "triangles").c_str(),
               files.empty() ? " nothing" : files.c_str(), r.total_seconds);
+  if (sw_.triangle_messages) triangle_report(mesh, r);
   if (sw_.verbose > 0) verbose_report(mesh, r);
+}
+
+void Messages::triangle_report(const Mesh& mesh, const RunReport& r) const {
+  InputCounts in;
+  in.vertices = r.input_vertices;
+  in.triangles = r.rebuilt_triangles;
+  in.pslg = r.pslg->has_segment_section;
+  in.segments = r.input_segments;
+  in.holes = r.pslg->holes.size();
+  const MeshStatistics stats = compute_statistics(mesh);
+  std::string text = triangle_counts(in, stats, mesh.has_subsegments());
+  if (sw_.verbose > 0) text += triangle_quality(stats);
+  std::fprintf(out_, "%s\n", text.c_str());
 }
 
 void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {

@@ -40,6 +40,9 @@ struct RunReport {
   std::optional<RefineReport> refine;
   bool area_file = false;         // per-triangle area bounds were read (-r with a bare -a, or a .area)
   std::optional<BoundMisses> misses;  // the final mesh against the -q/-a/-u bounds, when any was asked
+  // -j: the vertices the .node lists (those some triangle uses, -o2 midpoints included), which the
+  // summary reports instead of every vertex of the mesh.
+  std::optional<std::size_t> jettisoned_vertex_count;
   std::size_t hull_absorbed = 0;  // vertices taken into the hull chain (absorb_near_hull_vertices)
   PredicateCounters counters;
   std::vector<std::string> written;
@@ -69,6 +72,7 @@ class Messages {
  private:
   void warn_about_input(const Mesh& mesh, const RunReport& report) const;
   void verbose_report(const Mesh& mesh, const RunReport& report) const;
+  void triangle_report(const Mesh& mesh, const RunReport& report) const;
   const Switches& sw_;
   std::FILE* out_;
 };

@@ -139,7 +139,7 @@ Mesh mesh_from_pslg(Pslg& pslg) {
 void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Switches& sw,
                RunReport& report) {
   Predicates pred;
-  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates, !sw.exact_input);
+  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates, !sw.exact_input, sw.split_segments);
   if (sw.convex_hull) enclose_convex_hull(mesh);
   static const std::vector<Point> no_holes;
   report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull);
@@ -212,7 +212,9 @@ void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
   const Switches& sw = c.sw;
   const std::vector<std::uint32_t>* numbering = c.numbering;
   const std::string out = output_base(c.in.base, sw.no_iteration);
-  const int first = sw.zero_based ? 0 : pslg.first_index;
+  // As in Triangle, the input's numbering decides (-z only numbers an input whose first index is
+  // neither 0 nor 1).
+  const int first = pslg.numbered_by_file ? pslg.first_index : sw.zero_based ? 0 : 1;
   const bool markers = !sw.no_markers;
   const auto add = [&](const std::string& name, std::function<void(ByteSink&)> produce) {
     c.report.written.push_back(name == OutputSet::kStandardOutput ? "standard output" : name);
@@ -238,7 +240,10 @@ void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
     opt.first_index = first;
     opt.markers = markers;
     opt.numbering = numbering;
-    add(out + ".poly", [&mesh, opt, holes, &pslg](ByteSink& s) { write_poly_file(s, mesh, opt, holes, pslg.regions); });
+    // As in Triangle: the hole list is copied even with -O, the regions only when read (-A, bare -a).
+    static const std::vector<Pslg::Region> no_regions;
+    const std::vector<Pslg::Region>* regions = sw.regional_attributes || sw.variable_area ? &pslg.regions : &no_regions;
+    add(out + ".poly", [&mesh, opt, &pslg, regions](ByteSink& s) { write_poly_file(s, mesh, opt, pslg.holes, *regions); });
   }
   if (sw.edges) {
     const EdgeWriteOptions opt{first, markers, numbering};
@@ -300,10 +305,11 @@ void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, const Switches&
              AreaField& area_field) {
   Predicates pred;
   const std::string ele_path = in.base + ".ele";
+  require_regular_numbering(pslg, "the triangles of " + ele_path);
   const EleData ele = read_ele_file(ele_path, pslg.first_index, mesh.vertex_count());
   rebuild_mesh(mesh, pred, ele, ele_path);
   report.rebuilt_triangles = ele.triangle_count();
-  if (in.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {}, !sw.exact_input);
+  if (in.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {}, !sw.exact_input, sw.split_segments);
   protect_boundary(mesh);
   if (in.area_file) {
     mesh.area_bound = read_area_file(in.base + ".area", ele.triangle_count());
@@ -352,7 +358,6 @@ int run(const Switches& sw) {
   StageTimer timer(report);
   const auto start = std::chrono::steady_clock::now();
   Messages messages(sw);
-  if (sw.sweepline) messages.notice("-F: the sweepline algorithm is not provided; divide and conquer is used");
   for (const char* unsupported : unsupported_switches(sw))
     messages.notice(std::string(unsupported) + " is not available yet and is ignored");
 
@@ -382,6 +387,7 @@ int run(const Switches& sw) {
                            std::to_string(report.input_vertices) + " vertices are " + std::to_string(distinct) +
                            " distinct point" + (distinct == 1 ? "" : "s"));
     report.counters.add(dt.counters);
+    if (dt.sweepline_fell_back) messages.notice("-F: rounding broke the sweepline on this input; divide and conquer was used");
     timer.stage("Delaunay");
     check_stage(mesh, "Delaunay");
     if (in.is_poly) {
@@ -430,6 +436,9 @@ int run(const Switches& sw) {
   std::vector<VertexId> midpoints;
   if (sw.order == 2) midpoints = add_edge_midpoints(mesh);
   const std::vector<std::uint32_t> numbering = vertex_numbering(mesh, sw.jettison, midpoints);
+  if (sw.jettison)
+    report.jettisoned_vertex_count = numbering.empty() ? mesh.vertex_count()
+                                                       : numbering.size() - std::count(numbering.begin(), numbering.end(), kNone);
   // --strict: misses a small input angle does not force, or no mesh at all.
   const bool bounds_missed = report.misses && report.misses->not_forced_by_input() > 0;
   const int status = sw.strict && (bounds_missed || mesh.live_triangles() == 0) ? kExitBounds : kExitOk;

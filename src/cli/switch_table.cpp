@@ -20,7 +20,7 @@ void set_a(S& s, bool has, double v) {
     s.variable_area = true;
     return;
   }
-  if (!(v > 0.0)) throw UsageError("-a: the maximum area must be a positive number, e.g. -a0.1");
+  if (!(v > 0.0)) throw RefusedSwitchError("-a: the maximum area must be a positive number, e.g. -a0.1");
   s.fixed_area = true;
   s.max_area = v;
 }
@@ -83,11 +83,14 @@ constexpr std::array kTable = {
     SwitchRow{'S', ArgKind::OptionalInt, "n", "at most n Steiner points (bare: none)", set_S},
     SwitchRow{'i', ArgKind::None, "", "incremental Delaunay triangulation instead of divide and conquer",
               [](S& s, bool, double) { s.algorithm = DelaunayAlgorithm::Incremental; }},
-    SwitchRow{'F', ArgKind::None, "", "sweepline requested: divide and conquer is used (notice printed)",
-              [](S& s, bool, double) { s.sweepline = true; }},
+    SwitchRow{'F', ArgKind::None, "", "Fortune's sweepline Delaunay triangulation instead of divide and conquer",
+              [](S& s, bool, double) {
+                s.sweepline = true;
+                s.algorithm = DelaunayAlgorithm::Sweepline;
+              }},
     SwitchRow{'l', ArgKind::None, "", "divide and conquer with vertical cuts only",
               [](S& s, bool, double) { s.algorithm = DelaunayAlgorithm::VerticalCuts; }},
-    SwitchRow{'s', ArgKind::None, "", "accepted and ignored for now (Triangle: insert segments by splitting them)",
+    SwitchRow{'s', ArgKind::None, "", "insert segments by splitting them at midpoints (conforming), not by flips",
               [](S& s, bool, double) { s.split_segments = true; }},
     SwitchRow{'C', ArgKind::None, "", "check the final mesh for consistency and the Delaunay property",
               [](S& s, bool, double) { s.check = true; }},
@@ -158,6 +161,10 @@ constexpr std::array kLongOptions = {
                "take every coordinate exactly as written: a vertex within 4 ulps of a segment is not "
                "placed on it (by default it is, and the segment is split there, with a warning)",
                [](S& s, const std::string*) { s.exact_input = true; }},
+    LongOption{"triangle-messages", "", false,
+               "after the summary, print the counts in Triangle's words (Input vertices:, Mesh triangles:, "
+               "Mesh edges:, ...) and, with -V, its quality statistics (Smallest angle:, ...)",
+               [](S& s, const std::string*) { s.triangle_messages = true; }},
     LongOption{"queue", "ORDER", false,
                "which bad triangle refinement splits first: ratio (default: worst radius-edge ratio "
                "first for slivers, 16 times the bound and more, then shortest edge first), paper (worst "

@@ -60,6 +60,7 @@ struct Switches {
   bool svg_numbers = false;      // --svg-numbers: vertex numbers in the picture
   bool strict = false;           // --strict: exit status 3 when triangles miss the bounds not forced by the input, or none exist
   bool exact_input = false;      // --exact-input: no snapping of vertices onto nearby segments
+  bool triangle_messages = false;  // --triangle-messages: also Triangle's labelled statistics
   bool man = false;              // --man: print the manual page (roff) and exit
   bool version = false;          // --version: print the version and exit
 

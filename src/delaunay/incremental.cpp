@@ -14,34 +14,6 @@
 namespace deltri {
 namespace {
 
-// Input vertices without repeats (lowest id kept), in increasing id order.
-std::vector<VertexId> distinct_inputs(Mesh& mesh,
-                                      std::vector<std::pair<VertexId, VertexId>>& duplicates) {
-  std::vector<VertexId> ids;
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
-    if (mesh.kind[v] == VertexKind::Input) ids.push_back(v);
-  const auto& p = mesh.points;
-  std::sort(ids.begin(), ids.end(), [&p](VertexId a, VertexId b) {
-    if (p[a].x != p[b].x) return p[a].x < p[b].x;
-    if (p[a].y != p[b].y) return p[a].y < p[b].y;
-    return a < b;
-  });
-  std::vector<std::pair<VertexId, VertexId>> found;
-  std::vector<VertexId> kept;
-  for (std::size_t i = 0; i < ids.size(); ++i) {
-    if (!kept.empty() && p[ids[i]] == p[kept.back()]) {
-      found.emplace_back(ids[i], kept.back());
-      mesh.kind[ids[i]] = VertexKind::Duplicate;
-    } else {
-      kept.push_back(ids[i]);
-    }
-  }
-  std::sort(found.begin(), found.end());
-  duplicates.insert(duplicates.end(), found.begin(), found.end());
-  std::sort(kept.begin(), kept.end());
-  return kept;
-}
-
 // Fisher-Yates with a fixed-seed generator and no library distribution, whose algorithms differ
 // between standard libraries: the same input gives the same mesh everywhere.
 void shuffle(std::vector<VertexId>& order) {
@@ -136,14 +108,41 @@ void remove_ghosts(Mesh& mesh) {
 
 }  // namespace
 
-void incremental_delaunay(Mesh& mesh, Predicates& pred,
-                          std::vector<std::pair<VertexId, VertexId>>& duplicates) {
+std::vector<VertexId> distinct_inputs(Mesh& mesh,
+                                      std::vector<std::pair<VertexId, VertexId>>& duplicates) {
   mesh.corner.clear();
   mesh.link.clear();
   mesh.subseg.clear();
   mesh.free_triangles.clear();
   mesh.triangle_attributes.clear();
   mesh.area_bound.clear();
+  std::vector<VertexId> ids;
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    if (mesh.kind[v] == VertexKind::Input) ids.push_back(v);
+  const auto& p = mesh.points;
+  std::sort(ids.begin(), ids.end(), [&p](VertexId a, VertexId b) {
+    if (p[a].x != p[b].x) return p[a].x < p[b].x;
+    if (p[a].y != p[b].y) return p[a].y < p[b].y;
+    return a < b;
+  });
+  std::vector<std::pair<VertexId, VertexId>> found;
+  std::vector<VertexId> kept;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    if (!kept.empty() && p[ids[i]] == p[kept.back()]) {
+      found.emplace_back(ids[i], kept.back());
+      mesh.kind[ids[i]] = VertexKind::Duplicate;
+    } else {
+      kept.push_back(ids[i]);
+    }
+  }
+  std::sort(found.begin(), found.end());
+  duplicates.insert(duplicates.end(), found.begin(), found.end());
+  std::sort(kept.begin(), kept.end());
+  return kept;
+}
+
+void incremental_delaunay(Mesh& mesh, Predicates& pred,
+                          std::vector<std::pair<VertexId, VertexId>>& duplicates) {
   std::vector<VertexId> order = insertion_order(mesh, distinct_inputs(mesh, duplicates));
   if (!front_triangle(mesh, pred, order)) return;
   if (pred.orient2d(mesh.point(order[0]), mesh.point(order[1]), mesh.point(order[2])) < 0)

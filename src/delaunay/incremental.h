@@ -20,4 +20,10 @@ namespace deltri {
 void incremental_delaunay(Mesh& mesh, Predicates& pred,
                           std::vector<std::pair<VertexId, VertexId>>& duplicates);
 
+// Empties the mesh's triangles (and their attribute, area-bound and subsegment arrays) and returns
+// the Input vertices without repeats (lowest id kept), in increasing id order; each repeat becomes
+// VertexKind::Duplicate and (duplicate, kept) is appended to `duplicates` in increasing order of
+// the duplicate. Shared with the sweepline.
+std::vector<VertexId> distinct_inputs(Mesh& mesh, std::vector<std::pair<VertexId, VertexId>>& duplicates);
+
 }  // namespace deltri

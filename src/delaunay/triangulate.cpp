@@ -2,6 +2,7 @@
 
 #include "delaunay/divide_and_conquer.h"
 #include "delaunay/incremental.h"
+#include "delaunay/sweepline.h"
 
 namespace deltri {
 
@@ -12,6 +13,16 @@ DelaunayReport delaunay_triangulate(Mesh& mesh, DelaunayAlgorithm algorithm, int
     incremental_delaunay(mesh, pred, report.duplicates);
     report.counters = pred.counters;
     return report;
+  }
+  if (algorithm == DelaunayAlgorithm::Sweepline) {
+    Predicates pred;
+    const bool swept = sweepline_delaunay(mesh, pred, report.duplicates);
+    report.counters = pred.counters;
+    if (swept) return report;
+    // The duplicates are marked already; divide and conquer finds the same ones again.
+    for (const auto& [duplicate, kept] : report.duplicates) mesh.kind[duplicate] = VertexKind::Input;
+    report.duplicates.clear();
+    report.sweepline_fell_back = true;
   }
   DivideAndConquerOptions options;
   options.alternate_cuts = algorithm == DelaunayAlgorithm::DivideAndConquer;

@@ -13,12 +13,15 @@ enum class DelaunayAlgorithm {
   DivideAndConquer,  // alternating cuts (default)
   VerticalCuts,      // divide and conquer with vertical cuts only (-l)
   Incremental,       // randomised incremental insertion (-i)
+  Sweepline,         // Fortune's sweepline (-F)
 };
 
 struct DelaunayReport {
   // (duplicate, kept): an input vertex at the same place as an earlier one, and that earlier one.
   std::vector<std::pair<VertexId, VertexId>> duplicates;
   PredicateCounters counters;
+  // -F: rounding broke the sweep (its triangles did not tile the hull); divide and conquer was used.
+  bool sweepline_fell_back = false;
 };
 
 // Replaces the triangles of `mesh` by the Delaunay triangulation of its vertices of kind Input.

@@ -40,41 +40,71 @@ NodeHeader read_node_header(LineReader& in, bool allow_empty) {
   return h;
 }
 
+// What a lenient (serial) reading of the vertex lines met and assumed, turned into warnings once
+// the list is read. The parallel halves read strictly and leave anything odd to the serial reader.
+struct Leniency {
+  long irregular_line = 0;  // first vertex line whose index is out of sequence
+  std::string irregular_text;
+  std::size_t irregular = 0;
+  long odd_first_line = 0;  // a first index other than 0 or 1
+  long long odd_first = 0;
+  long missing_marker_line = 0;
+  std::size_t missing_markers = 0;
+};
+
 // The first vertex line decides the numbering (or, for the second half of a split list, just
-// tells where it starts); every later one must follow it.
-void read_vertex_index(LineReader& in, long long& first, std::uint32_t k) {
+// tells where it starts); every later one must follow it. Read leniently, as Triangle reads them,
+// any indices are accepted and noted; the vertices are numbered by their place in the file.
+void read_vertex_index(LineReader& in, long long& first, std::uint32_t k, Leniency* lenient) {
   if (k == 0 && first < 0) {
     const long long index = in.read_int({"first vertex", -1, "index"}, LLONG_MIN, LLONG_MAX);
-    if (first == kFirstFromFile && index != 0 && index != 1)
-      in.fail("first vertex: index must be 0 or 1, not " + std::to_string(index));
+    if (first == kFirstFromFile && index != 0 && index != 1) {
+      if (!lenient) in.fail("first vertex: index must be 0 or 1, not " + std::to_string(index));
+      lenient->odd_first_line = in.line();
+      lenient->odd_first = index;
+    }
     first = index;
     return;
   }
   const long long expected = first + static_cast<long long>(k);
   const long long index = in.read_int({"vertex", expected, "index"}, LLONG_MIN, LLONG_MAX);
-  if (index != expected)
-    in.fail("vertex index " + std::to_string(index) + " is out of sequence: expected " + std::to_string(expected));
+  if (index == expected) return;
+  const std::string problem = "vertex index " + std::to_string(index) + " is out of sequence: expected " + std::to_string(expected);
+  if (!lenient) in.fail(problem);
+  if (lenient->irregular++ == 0) {
+    lenient->irregular_line = in.line();
+    lenient->irregular_text = problem;
+  }
 }
 
 // The point is stored last, so that after an error out.points counts the complete vertices (the
 // parallel reader relies on that; attributes and markers may then hold a few extra entries).
-void read_vertex_fields(LineReader& in, Pslg& out, const NodeHeader& h, long long number) {
+// A missing trailing marker is 0 when read leniently (Triangle's default): with every attribute
+// present, nothing else can be meant.
+void read_vertex_fields(LineReader& in, Pslg& out, const NodeHeader& h, long long number, Leniency* lenient) {
   Point p;
   p.x = in.read_double({"vertex", number, "x coordinate"});
   p.y = in.read_double({"vertex", number, "y coordinate"});
   for (int a = 0; a < h.attributes; ++a) out.attributes.push_back(in.read_double({"vertex", number, "attribute", a + 1}));
-  if (h.markers) out.markers.push_back(static_cast<int>(in.read_int({"vertex", number, "boundary marker"}, INT_MIN, INT_MAX)));
+  if (h.markers) {
+    if (lenient && !in.has_field()) {
+      if (lenient->missing_markers++ == 0) lenient->missing_marker_line = in.line();
+      out.markers.push_back(0);
+    } else {
+      out.markers.push_back(static_cast<int>(in.read_int({"vertex", number, "boundary marker"}, INT_MIN, INT_MAX)));
+    }
+  }
   out.points.push_back(p);
 }
 
 // Reads vertex lines into `out` until `limit` are stored or the text ends; returns how many.
 // `after` is left just behind the last vertex read.
 std::uint32_t parse_vertices(LineReader& in, Pslg& out, const NodeHeader& h, std::uint32_t limit, long long& first,
-                             LineReader::Mark& after) {
+                             LineReader::Mark& after, Leniency* lenient = nullptr) {
   std::uint32_t k = 0;
   for (; k < limit && in.next_line(); ++k) {
-    read_vertex_index(in, first, k);
-    read_vertex_fields(in, out, h, first + static_cast<long long>(k));
+    read_vertex_index(in, first, k, lenient);
+    read_vertex_fields(in, out, h, first + static_cast<long long>(k), lenient);
     after = in.mark();
   }
   return k;
@@ -89,14 +119,42 @@ void reserve_vertices(std::size_t bytes, Pslg& out, const NodeHeader& h) {
   if (h.markers) out.markers.reserve(n);
 }
 
+std::string plural(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+void note_leniency(const LineReader& in, Pslg& out, const Leniency& l) {
+  const auto at = [&in](long line) { return in.name() + ":" + std::to_string(line) + ": "; };
+  if (l.odd_first_line)
+    out.read_warnings.push_back(at(l.odd_first_line) + "the first vertex is numbered " + std::to_string(l.odd_first) +
+                                ", not 0 or 1: the output is numbered from 1 (0 with -z), as in Triangle");
+  if (l.irregular) {
+    out.irregular_index_line = l.irregular_line;
+    out.irregular_index_text = l.irregular_text;
+    out.read_warnings.push_back(at(l.irregular_line) + l.irregular_text + " (" +
+                                plural(l.irregular, "vertex line", "vertex lines") +
+                                " out of sequence): vertices are numbered by their order in the file, as in Triangle");
+  }
+  if (l.missing_markers)
+    out.read_warnings.push_back(at(l.missing_marker_line) + plural(l.missing_markers, "vertex has", "vertices have") +
+                                " no boundary marker: 0 assumed, as in Triangle");
+}
+
 void read_vertices_serially(LineReader& in, Pslg& out, const NodeHeader& h) {
   long long first = kFirstFromFile;
   LineReader::Mark after = in.mark();
-  const std::uint32_t found = parse_vertices(in, out, h, h.count, first, after);
+  Leniency lenient;
+  const std::uint32_t found = parse_vertices(in, out, h, h.count, first, after, &lenient);
   if (found < h.count)
     in.fail("unexpected end of file: " + std::to_string(h.count) + " vertices announced, " + std::to_string(found) +
             " found");
-  out.first_index = static_cast<int>(first);
+  out.numbered_by_file = first == 0 || first == 1;
+  out.first_index = out.numbered_by_file ? static_cast<int>(first) : 1;
+  if (!out.numbered_by_file) {
+    out.irregular_index_line = lenient.odd_first_line;
+    out.irregular_index_text = "first vertex: index must be 0 or 1, not " + std::to_string(first);
+  }
+  note_leniency(in, out, lenient);
 }
 
 // One half of a split vertex list. Errors end the half quietly: whether they matter depends on
@@ -223,6 +281,13 @@ bool segment_header_follows(LineReader& in) {
 }
 
 }  // namespace
+
+void require_regular_numbering(const Pslg& pslg, const std::string& referrer) {
+  if (pslg.irregular_index_line == 0) return;
+  throw InputError(pslg.source_name, pslg.irregular_index_line,
+                   pslg.irregular_index_text + " (" + referrer +
+                       " name vertices by number, so which vertex each number means is ambiguous)");
+}
 
 Pslg read_node_file(const std::string& path) {
   LineReader in = LineReader::open(path);

@@ -1,9 +1,12 @@
 // The .node format: vertices with optional attributes and boundary markers.
 //   <#vertices> [<dimension = 2> [<#attributes> [<#markers 0|1>]]]
 //   <index> <x> <y> [<attribute>...] [<marker>]
-// The first vertex's index (0 or 1) sets the numbering of the whole input; later indices must
-// follow it consecutively. Fields after the ones the header announces are ignored, as Triangle
-// does; so is anything after the last vertex.
+// The first vertex's index (0 or 1) sets the numbering of the whole input; later indices should
+// follow it consecutively. As in Triangle, indices that do not (and a first index other than 0 or
+// 1) are read with a warning, the vertices numbered by their order in the file; where something
+// refers to vertices by number this is ambiguous and refused (require_regular_numbering). A
+// missing trailing marker is read as 0 with a warning. Fields after the ones the header announces
+// are ignored, as Triangle does; so is anything after the last vertex.
 #pragma once
 
 #include <cstdint>
@@ -24,6 +27,10 @@ Pslg read_node_file(const std::string& path);
 // header's vertex count, which must be at least 3. With `allow_empty` a count of 0 is accepted
 // too: nothing is read and `out` is unchanged (a .poly then takes its vertices from the .node).
 std::uint32_t read_node_section(LineReader& in, Pslg& out, bool allow_empty = false);
+
+// Throws the InputError of the first irregular vertex index in `pslg`, if any: `referrer` (e.g.
+// "the segments") names vertices by number, and which vertex a number meant is then ambiguous.
+void require_regular_numbering(const Pslg& pslg, const std::string& referrer);
 
 struct NodeWriteOptions {
   int first_index = 1;

@@ -31,35 +31,77 @@ std::uint32_t read_count(LineReader& in, const char* section) {
   return static_cast<std::uint32_t>(in.read_int({section, -1, "count"}, 0, kMaxItems));
 }
 
-std::uint32_t read_endpoint(LineReader& in, const Pslg& pslg, long long number, const char* which) {
+// What a lenient reading of the segment lines assumed, for the warnings.
+struct SegmentLeniency {
+  std::size_t dropped = 0;
+  long dropped_line = 0;
+  std::string dropped_text;
+  std::size_t missing_markers = 0;
+  long missing_marker_line = 0;
+};
+
+// The 0-based vertex an endpoint names, or kNone (with `problem` set) when it names none.
+std::uint32_t read_endpoint(LineReader& in, const Pslg& pslg, long long number, const char* which, std::string& problem) {
   const long long first = pslg.first_index;
   const long long last = first + static_cast<long long>(pslg.points.size()) - 1;
   const long long v = in.read_int({"segment", number, which}, LLONG_MIN, LLONG_MAX);
-  if (v < first || v > last)
-    in.fail("segment " + std::to_string(number) + ": " + which + " " + std::to_string(v) +
-            " is not a vertex (vertices are numbered " + std::to_string(first) + " to " + std::to_string(last) + ")");
+  if (v < first || v > last) {
+    if (problem.empty())
+      problem = "segment " + std::to_string(number) + ": " + which + " " + std::to_string(v) +
+                " is not a vertex (vertices are numbered " + std::to_string(first) + " to " + std::to_string(last) + ")";
+    return kNone;
+  }
   return static_cast<std::uint32_t>(v - first);
 }
 
-void read_segment(LineReader& in, Pslg& pslg, long long number) {
+// As in Triangle, a segment naming no vertex is dropped and a missing trailing marker is 0; both
+// are plain in meaning and warned about.
+void read_segment(LineReader& in, Pslg& pslg, long long number, SegmentLeniency& lenient) {
   in.read_int({"segment", number, "index"}, LLONG_MIN, LLONG_MAX);
   Pslg::Segment s;
-  s.a = read_endpoint(in, pslg, number, "first endpoint");
-  s.b = read_endpoint(in, pslg, number, "second endpoint");
+  std::string problem;
+  s.a = read_endpoint(in, pslg, number, "first endpoint", problem);
+  s.b = read_endpoint(in, pslg, number, "second endpoint", problem);
   // A zero-length segment is legal input: the constrained Delaunay stage ignores it and says so.
-  if (pslg.has_segment_markers) s.marker = static_cast<int>(in.read_int({"segment", number, "boundary marker"}, INT_MIN, INT_MAX));
-  pslg.segments.push_back(s);
+  if (pslg.has_segment_markers) {
+    if (in.has_field()) {
+      s.marker = static_cast<int>(in.read_int({"segment", number, "boundary marker"}, INT_MIN, INT_MAX));
+    } else if (lenient.missing_markers++ == 0) {
+      lenient.missing_marker_line = in.line();
+    }
+  }
+  if (problem.empty()) {
+    pslg.segments.push_back(s);
+  } else if (lenient.dropped++ == 0) {
+    lenient.dropped_line = in.line();
+    lenient.dropped_text = problem;
+  }
+}
+
+void note_leniency(const LineReader& in, Pslg& pslg, const SegmentLeniency& l) {
+  const auto at = [&in](long line) { return in.name() + ":" + std::to_string(line) + ": "; };
+  if (l.dropped)
+    pslg.read_warnings.push_back(at(l.dropped_line) + l.dropped_text + ": " + std::to_string(l.dropped) +
+                                 (l.dropped == 1 ? " segment" : " segments") +
+                                 " naming no vertex dropped, as in Triangle");
+  if (l.missing_markers)
+    pslg.read_warnings.push_back(at(l.missing_marker_line) + std::to_string(l.missing_markers) +
+                                 (l.missing_markers == 1 ? " segment has" : " segments have") +
+                                 " no boundary marker: 0 assumed, as in Triangle");
 }
 
 void read_segments(LineReader& in, Pslg& pslg) {
   const std::uint32_t count = read_count(in, "segment header");
   if (in.has_field()) pslg.has_segment_markers = in.read_int({"segment header", -1, "number of boundary markers"}, 0, INT_MAX) != 0;  // any non-zero count means "markers present", as Triangle reads it
+  if (count > 0) require_regular_numbering(pslg, "the segments");
   pslg.segments.reserve(std::min<std::size_t>(count, in.bytes_left() / 6 + 1));
+  SegmentLeniency lenient;
   for (std::uint32_t k = 0; k < count; ++k) {
     const long long number = pslg.first_index + static_cast<long long>(k);
     if (!in.next_line()) in.fail("unexpected end of file: " + std::to_string(count) + " segments announced, " + std::to_string(k) + " found");
-    read_segment(in, pslg, number);
+    read_segment(in, pslg, number, lenient);
   }
+  note_leniency(in, pslg, lenient);
 }
 
 void read_holes(LineReader& in, Pslg& pslg) {

@@ -48,6 +48,21 @@ VertexId Mesh::add_vertex(const Point& p, VertexKind k) {
   return v;
 }
 
+void Mesh::interpolate_attributes(VertexId v, VertexId a, VertexId b) {
+  const std::size_t na = static_cast<std::size_t>(num_attributes);
+  if (na == 0) return;
+  const Point& pa = points[a];
+  const Point& pb = points[b];
+  const Point& p = points[v];
+  const double dx = pb.x - pa.x, dy = pb.y - pa.y;
+  const double w = ((p.x - pa.x) * dx + (p.y - pa.y) * dy) / (dx * dx + dy * dy);
+  for (std::size_t k = 0; k < na; ++k) {
+    const double va = attributes[a * na + k];
+    const double vb = attributes[b * na + k];
+    attributes[v * na + k] = va + w * (vb - va);
+  }
+}
+
 void Mesh::enable_subsegments() {
   if (subseg.size() != corner.size()) subseg.assign(corner.size(), kNone);
 }

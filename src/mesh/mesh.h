@@ -108,6 +108,9 @@ struct Mesh {
   }
   // Adds a vertex and returns its id; attributes are zero and the marker 0.
   VertexId add_vertex(const Point& p, VertexKind k);
+  // Gives vertex v, which lies on the line a-b, the attributes of a and b interpolated linearly by
+  // its position along a-b (as every vertex added on a segment gets them).
+  void interpolate_attributes(VertexId v, VertexId a, VertexId b);
   // Ensures the subsegment array exists (all kNone) so edges can carry segments.
   void enable_subsegments();
   // Attaches subsegment s to edge e and its twin.

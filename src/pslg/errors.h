@@ -29,6 +29,13 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A switch value Triangle refuses too (-a0, -r with -I): Triangle's exit status 1, not the 2 of
+// other bad switches (Triangle ignores those).
+class RefusedSwitchError : public UsageError {
+ public:
+  using UsageError::UsageError;
+};
+
 // An output file could not be written. what() is "file: message".
 class OutputError : public std::runtime_error {
  public:

@@ -28,6 +28,18 @@ struct Pslg {
   bool has_markers = false;
   std::vector<int> markers;        // one per point when has_markers
   int first_index = 1;             // 0 or 1, from the first vertex line of the file
+  // False when the first vertex's index was neither 0 nor 1: the output is then numbered from 1,
+  // or from 0 with -z, as in Triangle.
+  bool numbered_by_file = true;
+  // Where the vertex indices do not follow the first one consecutively (Triangle ignores them):
+  // the first such line, 0 if none. What refers to vertices by number (segments, a .ele) is then
+  // ambiguous, and refused (require_regular_numbering in io/node_file.h).
+  long irregular_index_line = 0;
+  std::string irregular_index_text;  // the problem at that line, for the error
+
+  // What a lenient reading assumed, one line each ("file:line: what"), for warnings: things
+  // Triangle reads whose meaning is plain (a missing trailing marker, a segment naming no vertex).
+  std::vector<std::string> read_warnings;
 
   bool has_segment_markers = false;
   std::vector<Segment> segments;

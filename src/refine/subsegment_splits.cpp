@@ -243,18 +243,7 @@ VertexId Terminator::add_segment_vertex(const Point& p, EdgeRef s) {
   const VertexId a = mesh_.org(s), b = mesh_.dest(s);
   const VertexId v = mesh_.add_vertex(p, VertexKind::Segment);
   if (!mesh_.marker.empty()) mesh_.marker[v] = mesh_.subsegments[mesh_.subseg[s]].marker;
-  const int na = mesh_.num_attributes;
-  if (na > 0) {
-    const Point& pa = mesh_.point(a);
-    const Point& pb = mesh_.point(b);
-    const double dx = pb.x - pa.x, dy = pb.y - pa.y;
-    const double w = ((p.x - pa.x) * dx + (p.y - pa.y) * dy) / (dx * dx + dy * dy);
-    for (int k = 0; k < na; ++k) {
-      const double va = mesh_.attributes[static_cast<std::size_t>(a) * na + k];
-      const double vb = mesh_.attributes[static_cast<std::size_t>(b) * na + k];
-      mesh_.attributes[static_cast<std::size_t>(v) * na + k] = va + w * (vb - va);
-    }
-  }
+  mesh_.interpolate_attributes(v, a, b);
   return v;
 }
 

@@ -150,6 +150,18 @@ def point_sets():
     print()
 
 
+def algorithms():
+    """-F (Fortune's sweepline) against divide and conquer and -i on a million points, in memory
+    (tests/bench/sweepline_vs_dc.cpp); it also checks that -F gives divide and conquer's
+    triangulation, and fails the bench if not."""
+    if only and only not in "sweepline":
+        return
+    print("## Delaunay algorithms: divide and conquer, sweepline (-F), incremental (-i), 1M points, in memory\n")
+    n = "100000" if quick else "1000000"
+    subprocess.run([os.path.join(build, "tests", "deltri_sweepline_vs_dc"), n], check=True)
+    print()
+
+
 def pslgs():
     print("## PSLGs: unit square with k x k circular holes of 64 segments (`deltri -pV`)\n")
     print_table_header("| holes | vertices and segments | switches | triangles | end to end s | peak | bytes/triangle |",
@@ -202,6 +214,7 @@ if __name__ == "__main__":
     print(f"deltri benchmarks on {os.cpu_count()} cores; median of {REPEAT} run(s)"
           + (f"; Triangle 1.6 from {triangle} alongside" if triangle else "") + "\n")
     point_sets()
+    algorithms()
     pslgs()
     refinement()
     soak()

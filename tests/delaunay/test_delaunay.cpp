@@ -17,6 +17,9 @@ using meshcheck::hull_boundary_points;
 using meshcheck::mesh_of;
 using meshcheck::triangle_set;
 using meshcheck::uniform;
+using meshcheck::firm_edges;
+using meshcheck::gaussian;
+using meshcheck::shuffled_grid;
 
 // Faults of a finished triangulation: the shared orientation, twin and empty-circle counts, plus
 // what delaunay_triangulate promises on top: no dead slots, and exactly the Input vertices in use.
@@ -157,4 +160,43 @@ TEST(divide_and_conquer_agrees_with_incremental) {
     delaunay_triangulate(b, DelaunayAlgorithm::Incremental, 1);
     CHECK(triangle_set(a) == triangle_set(b));
   }
+}
+
+// ---- Fortune's sweepline (-F) against divide and conquer ----
+namespace {
+
+// The sweepline's triangulation is Delaunay and, away from cocircular ties, the same as divide and
+// conquer's; with no ties (`exact`) the same triangles.
+void check_sweepline_matches(const std::vector<Point>& pts, bool exact) {
+  Mesh a = mesh_of(pts), b = mesh_of(pts);
+  const DelaunayReport ra = delaunay_triangulate(a, DelaunayAlgorithm::Sweepline, 1);
+  const DelaunayReport rb = delaunay_triangulate(b, DelaunayAlgorithm::DivideAndConquer, 1);
+  CHECK(!ra.sweepline_fell_back);
+  CHECK(ra.duplicates == rb.duplicates);
+  CHECK_EQ(faults(a, a.live_triangles() > 0), 0);
+  CHECK_EQ(a.live_triangles(), b.live_triangles());
+  if (exact) CHECK(triangle_set(a) == triangle_set(b));
+  CHECK(firm_edges(a) == firm_edges(b));
+}
+
+}  // namespace
+
+TEST(sweepline_small_sizes_and_degenerate_sets) {
+  for (std::size_t n = 3; n <= 40; ++n)
+    for (unsigned seed = 0; seed < 20; ++seed) check_point_set(uniform(n, seed * 100 + n), DelaunayAlgorithm::Sweepline);
+  for (int w = 1; w <= 7; ++w)
+    for (int h = 1; h <= 7; ++h)
+      if (w * h >= 3) check_sweepline_matches(shuffled_grid(w, h, static_cast<unsigned>(w * 10 + h)), false);
+  std::vector<Point> circle;
+  for (int i = 0; i < 64; ++i) circle.push_back({std::cos(i * M_PI / 32), std::sin(i * M_PI / 32)});
+  circle.push_back({0, 0});
+  check_sweepline_matches(circle, false);
+  check_sweepline_matches({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {0, 0}}, false);  // collinear, a duplicate
+}
+
+// The ctest-sized version of `make bench`'s million-point comparison (tests/bench/sweepline_vs_dc).
+TEST(sweepline_equals_divide_and_conquer_20k) {
+  check_sweepline_matches(uniform(20000, 31), true);
+  check_sweepline_matches(gaussian(20000, 32), true);
+  check_sweepline_matches(shuffled_grid(141, 142, 33), false);
 }

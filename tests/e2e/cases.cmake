@@ -20,6 +20,7 @@ set(E2E_POLY_FILES Constrained_Sweden corner_cases crossing-edges eberly-6 guita
     issue-42-hole-overlaps-bondary overlapping_constraints square_with_crack touching-holes6 water-huge water)
 foreach(name IN LISTS E2E_NODE_FILES)
   e2e_case(${name}.default ${E2E_DATA}/${name}.node none)
+  e2e_case(${name}.FC ${E2E_DATA}/${name}.node -FC)
   e2e_case(${name}.p ${E2E_DATA}/${name}.node -p)
 endforeach()
 foreach(name IN LISTS E2E_POLY_FILES)
@@ -28,6 +29,9 @@ foreach(name IN LISTS E2E_POLY_FILES)
   e2e_case(${name}.pA ${E2E_DATA}/${name}.poly -pA)
   e2e_case(${name}.pO ${E2E_DATA}/${name}.poly -pO --verify --no-holes)
   e2e_case(${name}.pz ${E2E_DATA}/${name}.poly -pz)
+  # -s: segments split at midpoints, which round off the line as refinement's split points do
+  e2e_case(${name}.psC ${E2E_DATA}/${name}.poly -psC --verify --refined)
+  e2e_case(${name}.pFC ${E2E_DATA}/${name}.poly -pFC)  # -F: Fortune's sweepline, checked
 endforeach()
 e2e_case(robustness2.warning ${E2E_DATA}/robustness2.node none --warning "32 duplicate vertices ignored")
 
@@ -47,7 +51,7 @@ e2e_case(guitar.pQ ${G} -pQ --no-warning)
 e2e_case(guitar.pC ${G} -pC)
 e2e_case(guitar.pi ${G} -pi)
 e2e_case(guitar.pl ${G} -pl)
-e2e_case(guitar.pF ${G} -pF --warning "sweepline")
+e2e_case(guitar.pF ${G} -pFC --no-warning)  # Fortune's sweepline, checked
 e2e_case(guitar.pcjen ${G} -pcjen --verify --convex-hull)
 set(U ${E2E_DATA}/ukraine.node)
 e2e_case(ukraine.e ${U} -e --files "ukraine.1.node ukraine.1.ele ukraine.1.edge")
@@ -62,7 +66,7 @@ e2e_case(ukraine.Q ${U} -Q)
 e2e_case(ukraine.C ${U} -C)
 e2e_case(ukraine.i ${U} -ien)
 e2e_case(ukraine.l ${U} -len)
-e2e_case(ukraine.F ${U} -F --warning "sweepline")
+e2e_case(ukraine.F ${U} -FC --warning "7 duplicate vertices ignored")
 e2e_case(water.pAen ${E2E_DATA}/water.poly -pAen)
 e2e_case(water-huge.pcen ${E2E_DATA}/water-huge.poly -pcen --verify --convex-hull)
 e2e_case(touching-holes6.pen ${E2E_DATA}/touching-holes6.poly -pen)
@@ -104,7 +108,7 @@ e2e_case(error.two_stdout ${G} "--msh=- --vtu=-" --exit 2 --error "deltri: -: on
 e2e_case(error.long_option ${G} "--mesh" --exit 2 --error "deltri: --mesh: unknown option")
 
 # ---- generated point sets ----
-foreach(sw none -i -l)
+foreach(sw none -i -l -F)
   e2e_case(grid30${sw} gen:grid30.node ${sw} --verify "--expect-triangles 1682")
   e2e_case(offset1e9${sw} gen:offset.node ${sw} --no-warning)
   e2e_case(collinear${sw} gen:collinear.node ${sw} --warning "collinear" --verify "--expect-triangles 0")
@@ -123,7 +127,8 @@ e2e_case(repair.near_parallel ${E2E_INPUTS}/near_parallel.poly -pen --warning "c
 
 # ---- bad input: exit 1, "file:line:" message, no output ----
 e2e_case(error.wrong_count ${E2E_INPUTS}/wrong_count.node none --exit 1)
-e2e_case(error.segment_range ${E2E_INPUTS}/segment_range.poly -p --exit 1)
+e2e_case(accept.segment_range ${E2E_INPUTS}/segment_range.poly -pc --verify --convex-hull
+         --warning "segment_range.poly:9: segment 2: second endpoint 9 is not a vertex (vertices are numbered 1 to 4): 1 segment naming no vertex dropped, as in Triangle")
 e2e_case(error.non_numeric ${E2E_INPUTS}/nonnumeric.node none --exit 1)
 e2e_case(error.nan ${E2E_INPUTS}/nan.node none --exit 1)
 e2e_case(error.inf ${E2E_INPUTS}/inf.node none --exit 1)
@@ -211,11 +216,11 @@ e2e_case(plate.pa0.001S10 ${E2E_INPUTS}/plate.poly -pa0.001S10 --verify --refine
 
 # ---- error discipline (docs/reliability.md has the table): one line, exit status, no output ----
 set(I ${E2E_INPUTS})
-foreach(name comments_only negative_count huge_count overflow_count one_vertex index_gap first_index5 missing_y
+foreach(name comments_only negative_count huge_count overflow_count one_vertex missing_y
         overflow_real hex marker_overflow negative_attributes huge_attributes dimension1)
   e2e_case(error.${name} ${I}/${name}.node none --exit 1)
 endforeach()
-foreach(name no_holes negative_holes short_holes short_regions real_endpoint endpoint_zero nan_hole
+foreach(name no_holes negative_holes short_holes short_regions real_endpoint nan_hole
         duplicate_section huge_segments inf_region)
   e2e_case(error.${name} ${I}/${name}.poly -p --exit 1)
 endforeach()
@@ -232,9 +237,22 @@ e2e_case(accept.crlf_poly gen:crlf.poly -p --verify "--expect-triangles 2")
 e2e_case(accept.bom gen:bom.node none --verify "--expect-triangles 1")
 e2e_case(accept.no_final_newline gen:no_newline.node none --verify "--expect-triangles 1")
 e2e_case(accept.trailing ${I}/trailing.node none --verify "--expect-triangles 1")
+# Read as Triangle reads them, with a warning saying what was assumed (tests/e2e/triangle_compat.sh
+# has the outputs): vertex indices out of sequence or not starting at 0 or 1 where nothing refers to
+# them, a segment endpoint naming no vertex.
+# (deltri_mesh_verify reads only regular numbering; triangle_compat.sh lenient checks the output.)
+e2e_case(accept.index_gap ${I}/index_gap.node none --no-verify
+         --warning "index_gap.node:5: vertex index 4 is out of sequence: expected 3 (1 vertex line out of sequence): vertices are numbered by their order in the file, as in Triangle")
+e2e_case(accept.first_index5 ${I}/first_index5.node none --verify "--expect-triangles 1"
+         --warning "first_index5.node:3: the first vertex is numbered 5, not 0 or 1: the output is numbered from 1 (0 with -z), as in Triangle")
+e2e_case(accept.endpoint_zero ${I}/endpoint_zero.poly -pc --verify --convex-hull
+         --warning "endpoint_zero.poly:9: segment 2: second endpoint 0 is not a vertex (vertices are numbered 1 to 4): 1 segment naming no vertex dropped")
+# Where segments name the vertices by number, irregular indices are ambiguous: still an error.
+e2e_case(error.index_gap_segments gen:gap_segments.poly -p --exit 1
+         --error "gap_segments.poly:4: vertex index 4 is out of sequence: expected 3 (the segments name vertices by number")
 # Bad switches: exit 2, "deltri: -X: ..." and nothing read or written.
 e2e_case(error.switch_angle ${G} -pq60 --exit 2 --error "deltri: -q: ")
-e2e_case(error.switch_area ${G} -pa0 --exit 2 --error "deltri: -a: ")
+e2e_case(error.switch_area ${G} -pa0 --exit 1 --error "deltri: -a: ")  # Triangle refuses -a0 with 1 too
 e2e_case(error.switch_negative ${G} -pq-5 --exit 2 --error "deltri: ")
 e2e_case(error.refine_no_ele ${G} -pr --exit 1 --error "guitar.ele: ")
 # Output failures: exit 4, "file: reason", no temporaries left, earlier outputs untouched.
@@ -311,3 +329,9 @@ add_test(NAME e2e.refine.thin_domains
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/thin_domains.sh $<TARGET_FILE:deltri>
                  $<TARGET_FILE:deltri_mesh_verify> ${E2E_INPUTS} ${CMAKE_CURRENT_SOURCE_DIR}/e2e/thin_domains.md)
 set_tests_properties(e2e.refine.thin_domains PROPERTIES TIMEOUT 600)
+
+# ---- issue 23: Triangle's meaning where deltri differed (tests/e2e/triangle_compat.sh) ----
+foreach(item refine_o2 z crossing_attributes lenient messages poly_output split_segments)
+  add_test(NAME e2e.triangle_compat.${item}
+           COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/triangle_compat.sh $<TARGET_FILE:deltri> ${E2E_INPUTS} ${item})
+endforeach()

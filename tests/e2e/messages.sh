@@ -30,7 +30,8 @@ outputs() { ls | grep -v -x -e box.poly -e guitar.poly -e crossing-edges.poly -e
 expect 0 "deltri $version" "" -- --version
 expect 2 "" "deltri: -a-1: the maximum area must be a positive number, e.g. -a0.1" -- -pa-1 box.poly
 expect 2 "" "deltri: -q-5: the minimum angle must be at least 0 and below 60 degrees" -- -pq-5 box.poly
-expect 2 "" "deltri: -a: the maximum area must be a positive number, e.g. -a0.1" -- -pa0 box.poly
+# Triangle refuses -a0 too, with exit status 1.
+expect 1 "" "deltri: -a: the maximum area must be a positive number, e.g. -a0.1" -- -pa0 box.poly
 [ -z "$(outputs)" ] || fail "a refused switch wrote $(outputs)"
 cp box.poly box.orig
 expect 4 "" "box.poly: is an input of this run, not overwritten (no files written)" -- -pQ --msh=box.poly box.poly
@@ -41,7 +42,7 @@ expect 0 "" "deltri: warning: box.poly: bare -a has no effect: the input has no 
 # plate.poly's regions bound the area: the bare -a applies, no warning.
 expect 0 "" "" -- -paQ plate.poly
 "$deltri" -h >out
-grep -q -x -- "  -s          accepted and ignored for now (Triangle: insert segments by splitting them)" out ||
+grep -q -x -- "  -s          insert segments by splitting them at midpoints (conforming), not by flips" out ||
   fail "-h on -s: $(grep -- '^  -s' out)"
 
 # -V: the version line right after the summary line; the JSON report carries the same version.

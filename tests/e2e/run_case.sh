@@ -73,6 +73,8 @@ star() {  # star CENTRE RADIUS: 40-gon with a 12-gon hole and 60 free vertices, 
 }
 gen_input() {  # gen_input NAME.EXT DIR
   case $1 in
+    gap_segments.poly)  # vertex indices 1, 2, 4 and a segment naming vertex 4
+      printf '3 2 0 0\n1 0 0\n2 1 0\n4 0 1\n1 0\n1 1 4\n0\n' >"$2/$1" ;;
     grid30.node)  # 30 x 30 unit grid: every quad is cocircular
       awk 'BEGIN { print 900, 2, 0, 0; n = 1; for (i = 0; i < 30; i++) for (j = 0; j < 30; j++) print n++, i, j }' >"$2/$1" ;;
     offset.node)  # 400 pseudo-random points in [1e9, 1e9 + 1) on a 2^-10 lattice: 40 significant bits

@@ -53,9 +53,6 @@ TEST(node_errors_name_file_and_line) {
   CHECK(starts_at(node_error("e1.node", "3 3 0 0\n1 0 0\n2 1 0\n3 0 1\n"), "e1.node", 1));
   CHECK(starts_at(node_error("e2.node", "3 2 0 0\n1 0 0\n# c\n2 1\n3 0 1\n"), "e2.node", 4));
   CHECK(node_error("e2.node", "3 2 0 0\n1 0 0\n# c\n2 1\n3 0 1\n").find("vertex 2: y coordinate is missing") != std::string::npos);
-  CHECK(starts_at(node_error("e3.node", "3 2 0 0\n1 0 0\n2 1 0\n4 0 1\n"), "e3.node", 4));
-  CHECK(node_error("e3.node", "3 2 0 0\n1 0 0\n2 1 0\n4 0 1\n").find("out of sequence: expected 3") != std::string::npos);
-  CHECK(starts_at(node_error("e4.node", "3 2 0 0\n2 0 0\n3 1 0\n4 0 1\n"), "e4.node", 2));
   CHECK(starts_at(node_error("e5.node", "3 2 0 0\n1 0 0\n2 1 0\n"), "e5.node", 3));
   CHECK(node_error("e5.node", "3 2 0 0\n1 0 0\n2 1 0\n").find("unexpected end of file") != std::string::npos);
   CHECK(starts_at(node_error("e6.node", "3 2 1 0\n1 0 0 5\n2 1 0\n3 0 1 5\n"), "e6.node", 3));
@@ -67,6 +64,38 @@ TEST(node_errors_name_file_and_line) {
   CHECK(starts_at(node_error("e12.node", "4000000000 2 0 0\n1 0 0\n"), "e12.node", 2));
   CHECK(node_error("e13.node", "") == (iotest::scratch_dir() / "e13.node").string() +
                                           ": unexpected end of file: the node header is missing");
+}
+
+// Read as Triangle reads them, with a warning naming the line: indices out of sequence (the
+// vertices are numbered by their order), a first index other than 0 or 1 (the output numbering is
+// then -z's), a missing trailing marker (0).
+TEST(node_lenient_reading_warns) {
+  const std::string gap = iotest::write_file("gap.node", "3 2 0 0\n1 0 0\n2 1 0\n4 0 1\n");
+  const Pslg g = read_node_file(gap);
+  CHECK_EQ(g.points.size(), 3u);
+  CHECK_EQ(g.points[2].y, 1.0);
+  CHECK(g.numbered_by_file);
+  CHECK_EQ(g.irregular_index_line, 4);
+  REQUIRE(g.read_warnings.size() == 1u);
+  CHECK(g.read_warnings[0].starts_with(gap + ":4: vertex index 4 is out of sequence: expected 3"));
+  const Pslg five = read_node_file(iotest::write_file("five.node", "3 2 0 0\n5 0 0\n6 1 0\n7 0 1\n"));
+  CHECK(!five.numbered_by_file);
+  CHECK_EQ(five.irregular_index_line, 2);
+  REQUIRE(five.read_warnings.size() == 1u);
+  CHECK(five.read_warnings[0].find("numbered 5, not 0 or 1") != std::string::npos);
+  const std::string unmarked = iotest::write_file("unmarked.node", "3 2 1 1\n1 0 0 7 2\n2 1 0 8\n3 0 1 9\n");
+  const Pslg m = read_node_file(unmarked);
+  CHECK_EQ(m.markers.size(), 3u);
+  CHECK_EQ(m.markers[0], 2);
+  CHECK_EQ(m.markers[1], 0);
+  CHECK_EQ(m.markers[2], 0);
+  CHECK_EQ(m.attributes[1], 8.0);
+  REQUIRE(m.read_warnings.size() == 1u);
+  CHECK(m.read_warnings[0].starts_with(unmarked + ":3: 2 vertices have no boundary marker: 0 assumed"));
+  // A regular file gives no warning; "010" is ten (decimal, not Triangle's octal).
+  const Pslg ten = read_node_file(iotest::write_file("ten.node", "3 2 0 0\n0 010 0\n1 1 0\n2 0 1\n"));
+  CHECK(ten.read_warnings.empty());
+  CHECK_EQ(ten.points[0].x, 10.0);
 }
 
 TEST(node_round_trip_is_bit_exact) {
@@ -136,9 +165,14 @@ TEST(node_large_file_parallel_path_matches_serial) {
   const std::size_t at = broken.find("\n180000 ");
   broken.replace(at + 1, 6, "180001");
   const long line = 1 + static_cast<long>(std::count(broken.begin(), broken.begin() + static_cast<long>(at) + 1, '\n'));
-  const std::string message = node_error("big_broken.node", broken);
-  CHECK(starts_at(message, "big_broken.node", static_cast<int>(line)));
-  CHECK(message.find("vertex index 180001 is out of sequence: expected 180000") != std::string::npos);
+  // Out of sequence is read (numbered by position) with a warning naming the line.
+  const std::string broken_path = iotest::write_file("big_broken.node", broken);
+  const Pslg b = read_node_file(broken_path);
+  CHECK_EQ(b.points.size(), 200000u);
+  CHECK_EQ(b.points[179999].x, 180000 * 0.25);
+  REQUIRE(b.read_warnings.size() == 1u);
+  CHECK(b.read_warnings[0].starts_with(broken_path + ":" + std::to_string(line) +
+                                       ": vertex index 180001 is out of sequence: expected 180000"));
   const std::string truncated = text.substr(0, text.rfind("\n200000 ") + 1);
   const std::string short_message = node_error("big_short.node", truncated);
   CHECK(short_message.find("unexpected end of file: 200000 vertices announced, 199999 found") != std::string::npos);

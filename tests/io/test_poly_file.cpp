@@ -64,15 +64,39 @@ TEST(poly_takes_vertices_from_node_file) {
 TEST(poly_errors_name_file_and_line) {
   const std::string base = "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n";
   CHECK(poly_error("p1.poly", base).starts_with(where("p1.poly", 5) + " unexpected end of file: the segment header"));
-  CHECK(poly_error("p2.poly", base + "1 0\n1 1 5\n0\n").starts_with(where("p2.poly", 7) + " segment 1: second endpoint 5 is not a vertex"));
-  CHECK(poly_error("p3.poly", base + "1 0\n1 0 2\n0\n").starts_with(where("p3.poly", 7)));
   CHECK(read_poly_file(iotest::write_file("p4.poly", base + "1 0\n1 2 2\n0\n")).segments.size() == 1u);  // zero length: legal, ignored later
-  CHECK(poly_error("p5.poly", base + "1 1\n1 1 2\n0\n").starts_with(where("p5.poly", 7) + " segment 1: boundary marker is missing"));
   CHECK(poly_error("p6.poly", base + "2 0\n1 1 2\n").starts_with(where("p6.poly", 7) + " unexpected end of file"));
   CHECK(poly_error("p7.poly", base + "1 0\n1 1 2\n").starts_with(where("p7.poly", 7) + " unexpected end of file: the hole header"));
   CHECK(poly_error("p8.poly", base + "1 0\n1 1 2\n1\n1 x 0\n").starts_with(where("p8.poly", 9) + " hole 1: x coordinate is not a number: 'x'"));
   CHECK(poly_error("p9.poly", base + "1 0\n1 1 2\n0\n1\n1 0 0\n").starts_with(where("p9.poly", 10) + " region 1: attribute is missing"));
   CHECK(poly_error("p10.poly", base + "1 0\n1 1 2\n0\n2\n1 0 0 1 1\n").starts_with(where("p10.poly", 10) + " unexpected end of file"));
+}
+
+// As in Triangle: a segment naming no vertex is dropped, a missing trailing segment marker is 0,
+// each with a warning naming the line. Vertex indices out of sequence are an error once segments
+// refer to vertices by number.
+TEST(poly_lenient_reading_warns) {
+  const std::string base = "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n";
+  const std::string p2 = iotest::write_file("p2.poly", base + "3 1\n1 1 5 0\n2 0 2 4\n3 2 3\n0\n");
+  const Pslg p = read_poly_file(p2);
+  REQUIRE(p.segments.size() == 1u);
+  CHECK_EQ(p.segments[0].a, 1u);
+  CHECK_EQ(p.segments[0].b, 2u);
+  CHECK_EQ(p.segments[0].marker, 0);
+  REQUIRE(p.read_warnings.size() == 2u);
+  CHECK(p.read_warnings[0].starts_with(p2 + ":7: segment 1: second endpoint 5 is not a vertex (vertices are numbered 1 to 4): "
+                                       "2 segments naming no vertex dropped"));
+  CHECK(p.read_warnings[1].starts_with(p2 + ":9: 1 segment has no boundary marker: 0 assumed"));
+  const std::string gap = "3 2 0 0\n1 0 0\n2 1 0\n4 0 1\n";
+  CHECK(poly_error("gap.poly", gap + "1 0\n1 1 2\n0\n").starts_with(where("gap.poly", 4) + " vertex index 4 is out of sequence: expected 3 (the segments name"));
+  CHECK(read_poly_file(iotest::write_file("gap0.poly", gap + "0 0\n0\n")).read_warnings.size() == 1u);
+  // "010" names vertex ten.
+  std::string ten = "10 2 0 0\n";
+  for (int i = 1; i <= 10; ++i) ten += std::to_string(i) + " " + std::to_string(i) + " " + std::to_string(i * i) + "\n";
+  const Pslg t = read_poly_file(iotest::write_file("ten.poly", ten + "1 0\n1 1 010\n0\n"));
+  REQUIRE(t.segments.size() == 1u);
+  CHECK_EQ(t.segments[0].b, 9u);
+  CHECK(t.read_warnings.empty());
 }
 
 TEST(poly_writer_lists_live_subsegments_once) {
