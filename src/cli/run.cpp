@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@
 #include "io/voronoi_file.h"
 #include "io/vtu_file.h"
 #include "pslg/errors.h"
+#include "refine/size_field.h"
 
 namespace deltri {
 namespace {
@@ -180,6 +182,30 @@ void refuse_overwriting_inputs(const RunReport& report, const InputFiles& in, co
     }
 }
 
+// --size-field=FILE: FILE.node (or FILE as named) and FILE.ele, the wanted edge length the first
+// vertex attribute (refine/size_field.h).
+SizeField read_size_field(const std::string& name) {
+  std::string extension;
+  const std::string base = input_base(name, &extension);
+  const std::string node_path = extension == "node" ? name : base + ".node";
+  Pslg background = read_node_file(node_path);
+  if (background.num_attributes < 1)
+    throw InputError(node_path, 0, "--size-field: the vertices have no attribute; the first one is the wanted edge length");
+  const std::size_t n = background.points.size(), na = static_cast<std::size_t>(background.num_attributes);
+  std::vector<double> lengths(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    lengths[v] = background.attributes[v * na];
+    if (!(lengths[v] > 0.0))
+      throw InputError(node_path, 0, "--size-field: vertex " + std::to_string(v + background.first_index) +
+                                         ": the wanted edge length (first attribute) must be positive, not " + std::to_string(lengths[v]));
+  }
+  const EleData ele = read_ele_file(base + ".ele", background.first_index, static_cast<std::uint32_t>(n));
+  std::vector<std::uint32_t> corners;
+  for (std::uint32_t t = 0; t < ele.triangle_count(); ++t)
+    for (std::uint32_t k = 0; k < 3; ++k) corners.push_back(ele.corners[t * ele.nodes_per_triangle + k]);
+  return SizeField(std::vector<Point>(background.points.begin(), background.points.end()), std::move(lengths), corners);
+}
+
 // -r: the previous mesh's .ele (numbered as the .node just read) and, with a bare -a or a named
 // .area, its .area bounds.
 PreviousMesh read_previous_mesh(const InputFiles& in, const Pslg& pslg) {
@@ -212,6 +238,13 @@ int run(const Switches& sw) {
   if (in.refine) {
     previous = read_previous_mesh(in, pslg);
     source.previous = &previous;
+  }
+  std::optional<SizeField> size_field;
+  SizeTest size_test;
+  if (!sw.size_field.empty()) {
+    size_field.emplace(read_size_field(sw.size_field));
+    size_test = size_field->test();
+    source.size_test = &size_test;
   }
   PipelineResult result = run_pipeline(pslg, source, sw, report, [&timer](const char* name) { timer.stage(name); });
   const Mesh& mesh = result.mesh;

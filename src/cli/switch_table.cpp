@@ -156,6 +156,10 @@ constexpr std::array kLongOptions = {
                "take every coordinate exactly as written: a vertex within 4 ulps of a segment is not "
                "placed on it (by default it is, and the segment is split there, with a warning)",
                [](S& s, const std::string*) { s.exact_input = true; }},
+    LongOption{"size-field", "FILE", false,
+               "refine until no edge is longer than the background size field says: FILE.node (first vertex "
+               "attribute: the wanted edge length) and FILE.ele, linearly interpolated at each triangle's centroid",
+               [](S& s, const std::string* v) { s.size_field = *v; }},
     LongOption{"queue", "ORDER", false,
                "which bad triangle refinement splits first: ratio (default: worst radius-edge ratio "
                "first for slivers, 16 times the bound and more, then shortest edge first), paper (worst "

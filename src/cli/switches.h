@@ -59,6 +59,7 @@ struct Switches {
   bool svg_numbers = false;      // --svg-numbers: vertex numbers in the picture
   bool strict = false;           // --strict: exit status 3 when triangles miss the bounds not forced by the input, or none exist
   bool exact_input = false;      // --exact-input: no snapping of vertices onto nearby segments
+  std::string size_field;        // --size-field=FILE: background mesh FILE.node/.ele of wanted edge lengths
   bool man = false;              // --man: print the manual page (roff) and exit
   bool version = false;          // --version: print the version and exit
 
