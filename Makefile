@@ -5,7 +5,7 @@ CMAKE_FLAGS ?=
 PREFIX ?= /usr/local
 DESTDIR ?=
 
-.PHONY: all build configure demo test bench clean check-sanitize check-fresh fuzz install uninstall
+.PHONY: all build configure demo test bench clean check-sanitize check-tsan check-fresh fuzz install uninstall
 
 all: build
 
@@ -33,6 +33,13 @@ bench: build
 
 check-sanitize:
 	@$(MAKE) --no-print-directory test BUILD=build-sanitize CMAKE_FLAGS="-DDELTRI_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo"
+
+# The library's thread test (8 threads calling the C++ API at once, tests/api/test_threads.cpp)
+# under ThreadSanitizer, which must report nothing: its own build, of that test only.
+check-tsan:
+	@cmake -S . -B build-tsan -DDELTRI_TSAN=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+	@cmake --build build-tsan -j $(JOBS) --target test_api_threads
+	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/test_api_threads data
 
 # The README's two commands in a fresh clone of this checkout's HEAD, from a clean environment,
 # with MAKEFLAGS unset and then set to -s (tests/setup/check_fresh.sh). Not part of `make test`.
@@ -69,4 +76,4 @@ fuzz:
 	@sh tests/fuzz/run.sh $(CURDIR)/build-fuzz $(FUZZ_TARGET) $(FUZZ_SECONDS) "$(FUZZ_FLAGS)"
 
 clean:
-	rm -rf $(BUILD) build-sanitize build-fuzz
+	rm -rf $(BUILD) build-sanitize build-tsan build-fuzz

@@ -32,6 +32,15 @@ std::vector<T> input_array(const T* list, long long count, long long per_item, c
   return std::vector<T>(list, list + values);
 }
 
+// Before anything is read through the pointer: a count beyond the readers' limit is refused, not
+// trusted (the arrays' sizes are otherwise the caller's word, as in Triangle).
+void check_attribute_count(int count, const char* name) {
+  constexpr int kMaxAttributes = 1 << 20;  // as the .node and .ele readers
+  if (count < 0 || count > kMaxAttributes)
+    fail(DELTRI_INPUT_ERROR, std::string(name) + " must be between 0 and " + std::to_string(kMaxAttributes) + ", not " +
+                                 std::to_string(count));
+}
+
 bool has(const char* switches, char letter) {
   // The letters of numbers (digits, '.', 'e' inside an exponent) are never switch letters asked
   // about here, except 'e' of an exponent, which follows a digit and precedes a digit or sign.
@@ -47,8 +56,7 @@ bool has(const char* switches, char letter) {
 api::Input input_of(const triangulateio& in, const char* switches) {
   api::Input input;
   input.points = input_array(in.pointlist, in.numberofpoints, 2, "pointlist", "numberofpoints");
-  if (in.numberofpointattributes < 0)
-    fail(DELTRI_INPUT_ERROR, "numberofpointattributes is " + std::to_string(in.numberofpointattributes) + ", must not be negative");
+  check_attribute_count(in.numberofpointattributes, "numberofpointattributes");
   input.point_attribute_count = in.numberofpointattributes;
   input.point_attributes = input_array(in.pointattributelist, in.numberofpoints, in.numberofpointattributes,
                                        "pointattributelist", "numberofpoints times numberofpointattributes");
@@ -63,12 +71,11 @@ api::Input input_of(const triangulateio& in, const char* switches) {
     }
   }
   if (refine) {
-    input.corner_count = in.numberofcorners;
-    if (in.numberofcorners != 3 && in.numberofcorners != 6)
+    input.corner_count = in.numberoftriangles == 0 ? 3 : in.numberofcorners;  // none: the message says so
+    if (input.corner_count != 3 && input.corner_count != 6)
       fail(DELTRI_INPUT_ERROR, "numberofcorners must be 3 or 6, not " + std::to_string(in.numberofcorners));
-    input.triangles = input_array(in.trianglelist, in.numberoftriangles, in.numberofcorners, "trianglelist", "numberoftriangles");
-    if (in.numberoftriangleattributes < 0)
-      fail(DELTRI_INPUT_ERROR, "numberoftriangleattributes is " + std::to_string(in.numberoftriangleattributes) + ", must not be negative");
+    input.triangles = input_array(in.trianglelist, in.numberoftriangles, input.corner_count, "trianglelist", "numberoftriangles");
+    check_attribute_count(in.numberoftriangleattributes, "numberoftriangleattributes");
     input.triangle_attribute_count = in.numberoftriangleattributes;
     input.triangle_attributes = input_array(in.triangleattributelist, in.numberoftriangles, in.numberoftriangleattributes,
                                             "triangleattributelist", "numberoftriangles times numberoftriangleattributes");
