@@ -118,7 +118,7 @@ def main():
         check(left.max() <= 0.0005 and right.max() <= 0.02 and math.isclose(a.sum(), 1.0, rel_tol=1e-12),
               'size callback: every triangle within its asked area (left %.2e <= 5e-4, right %.2e <= 2e-2), areas sum to 1' %
               (left.max(), right.max()))
-        check(left.mean() * 10 < right.mean() and len(left) > 3 * len(right),
+        check(left.mean() * 3 < right.mean() and len(left) > 3 * len(right),
               'size callback: finer where asked (%d triangles of mean area %.2e left of x = 0.5, %d of %.2e right)' %
               (len(left), left.mean(), len(right), right.mean()))
         plain = deltri.triangulate(square, 'pq30')
