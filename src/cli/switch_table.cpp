@@ -157,8 +157,8 @@ constexpr std::array kLongOptions = {
                "placed on it (by default it is, and the segment is split there, with a warning)",
                [](S& s, const std::string*) { s.exact_input = true; }},
     LongOption{"size-field", "FILE", false,
-               "refine until no edge is longer than the background size field says: FILE.node (first vertex "
-               "attribute: the wanted edge length) and FILE.ele, linearly interpolated at each triangle's centroid",
+               "refine to the background size field FILE.node (first vertex attribute: the wanted edge length h) "
+               "and FILE.ele: a triangle is split while its area exceeds sqrt(3)/4 h^2, h interpolated at its centroid",
                [](S& s, const std::string* v) { s.size_field = *v; }},
     LongOption{"queue", "ORDER", false,
                "which bad triangle refinement splits first: ratio (default: worst radius-edge ratio "
