@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
   if (argc != 2) return std::fprintf(stderr, "usage: test_api_threads DATA_DIR\n"), 2;
   const std::string data = argv[1];
   const std::vector<Job> jobs = {
-      {"guitar.poly", "pq30a0.5evn"},    {"water.poly", "pq25"},         {"box.poly", "pq30a0.01o2A"},
+      {"guitar.poly", "pq30a0.05evn"},    {"water.poly", "pq25"},         {"box.poly", "pq30a0.01o2A"},
       {"ukraine.node", "q30ev"},         {"corner_cases.poly", "pq"},   {"crossing-edges.poly", "pcen"},
       {"eberly-6.poly", "pDq", true},    {"Constrained_Sweden.poly", "pzq20j"},
   };
