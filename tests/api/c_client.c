@@ -197,5 +197,15 @@ int main(int argc, char **argv) {
   release(&out);
   release(&vor);
   if (second) release(&mid);
+  free(in.pointlist);
+  free(in.pointattributelist);
+  free(in.pointmarkerlist);
+  free(in.segmentlist);
+  free(in.segmentmarkerlist);
+  free(in.holelist);
+  free(in.regionlist);
+  free(in.trianglelist);
+  free(in.triangleattributelist);
+  free(in.trianglearealist);
   return 0;
 }

@@ -37,5 +37,13 @@ run "$D/ukraine.node" lzenQ               # vertical cuts
 run "$D/ukraine.node" q30u20eQ            # an edge-length bound
 run "$D/robustness2.node" jzevQ           # duplicates left out by j
 run "$E/sq_attr.node" vzQ                 # Voronoi vertex attributes
+# r with a bare a: a previous mesh as files (.node, .ele with attributes, .area with some bounds
+# and some -1), read by the command line as named and by the client as trianglelist,
+# triangleattributelist and trianglearealist.
+mkdir "$work/previous" && cp "$P" "$work/previous/" && (cd "$work/previous" && "$build/deltri" -pqAQ plate_attr.poly) &&
+  awk 'NR == 1 { print $1; n = $1; next } NF && $1 !~ /^#/ { print $1, ($1 % 3 == 0 ? -1 : 0.002 * ($1 % 7 + 1)) }' \
+      "$work/previous/plate_attr.1.ele" >"$work/previous/plate_attr.1.area" || { echo "FAIL: making the previous mesh"; failed=1; }
+run "$work/previous/plate_attr.1.ele" raAeQ --preallocate   # per-triangle area bounds (trianglearealist)
+run "$work/previous/plate_attr.1.ele" rqa0.05zQ             # numbered from 0
 [ $failed = 0 ] && echo "the installed C library agrees with the command line on every case"
 exit $failed

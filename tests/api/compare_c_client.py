@@ -23,8 +23,24 @@ def lines(path):
     return out
 
 
+def read_previous_mesh(path):
+    """An .ele named as input (r): its .node's arrays, its triangles and attributes, its .area."""
+    base = path[:-len('.ele')]
+    a, first = read_poly_or_node(base + '.node')
+    L = lines(path)
+    t, c, na = (int(x) for x in (L[0] + ['3', '0'])[:3])
+    a['triangles'] = [[int(x) for x in f[1:1 + c]] for f in L[1:1 + t]]
+    if na:
+        a['triangle_attributes'] = [[float(x) for x in f[1 + c:1 + c + na]] for f in L[1:1 + t]]
+    if os.path.exists(base + '.area'):
+        a['triangle_areas'] = [[float(f[1])] for f in lines(base + '.area')[1:]]
+    return a, first
+
+
 def read_poly_or_node(path):
     """The input arrays of a .node or .poly, with the file's first index."""
+    if path.endswith('.ele'):
+        return read_previous_mesh(path)
     L = lines(path)
     n, _, na, nm = (int(x) for x in (L[0] + ['2', '0', '0'])[:4])
     first = int(L[1][0])
@@ -130,13 +146,16 @@ def main():
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     name = os.path.basename(source)
+    for ext in ('.node', '.area'):  # beside a named .ele
+        if source.endswith('.ele') and os.path.exists(source[:-4] + ext):
+            shutil.copy(source[:-4] + ext, work)
     shutil.copy(source, work)
     stem_in = os.path.join(work, name.rsplit('.', 1)[0])
     arrays, first = read_poly_or_node(source)
     lib_first = 0 if 'z' in (second or switches) else 1
     in_first = 0 if 'z' in switches else 1
     shift = in_first - first
-    for key in ('segments',):
+    for key in ('segments', 'triangles'):
         if key in arrays:
             arrays[key] = [[v + shift for v in r] for r in arrays[key]]
     write_flat(os.path.join(work, 'input.flat'), arrays)
@@ -146,7 +165,9 @@ def main():
     if r.returncode != 0 or r.stderr:
         sys.exit('FAIL: c_client %s: exit %d, stderr %r' % (' '.join(cmd[3:]), r.returncode, r.stderr))
     subprocess.run([deltri, '-' + switches, name], cwd=work, check=True, capture_output=True)
-    stem = stem_in + '.1'
+    # The output's iteration number follows the input's (box.1.ele -> box.2.*), as in Triangle.
+    parts = stem_in.rsplit('.', 1)
+    stem = parts[0] + '.%d' % (int(parts[1]) + 1) if len(parts) == 2 and parts[1].isdigit() else stem_in + '.1'
     cli_first = 0 if 'z' in switches else first
     if second:
         subprocess.run([deltri, '-' + second, os.path.basename(stem)], cwd=work, check=True, capture_output=True)
