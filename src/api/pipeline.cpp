@@ -139,26 +139,6 @@ void rebuild(Mesh& mesh, const Pslg& pslg, const PipelineSource& source, const S
 
 bool area_bounds_read(const PipelineSource& source) { return source.previous && source.previous->area_bounds; }
 
-RefineOptions refine_options(const Switches& sw, const PipelineSource& source) {
-  RefineOptions opt;
-  opt.quality = sw.quality;
-  opt.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
-  opt.max_area = sw.fixed_area ? sw.max_area : 0.0;
-  opt.use_triangle_area_bounds = sw.variable_area || area_bounds_read(source);
-  opt.lenses = !sw.conforming_delaunay;
-  opt.conforming_delaunay = sw.conforming_delaunay;
-  opt.no_steiner_on_segments = sw.no_boundary_steiner;
-  opt.max_steiner = sw.max_steiner;
-  opt.off_centers = !sw.circumcenters_only;
-  opt.queue_order = sw.queue_order;
-  opt.decline_cluster_splits = sw.decline_cluster_splits;
-  opt.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
-  opt.size_test = source.size_test;
-  opt.threads = sw.threads;
-  opt.memory_budget = memory_budget();
-  return opt;
-}
-
 BoundRequest bound_request(const Switches& sw, const PipelineSource& source, const RunReport& report) {
   BoundRequest r;
   r.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
@@ -171,6 +151,25 @@ BoundRequest bound_request(const Switches& sw, const PipelineSource& source, con
 }
 
 }  // namespace
+
+RefineOptions refine_options(const Switches& sw, bool area_file) {
+  RefineOptions opt;
+  opt.quality = sw.quality;
+  opt.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
+  opt.max_area = sw.fixed_area ? sw.max_area : 0.0;
+  opt.use_triangle_area_bounds = sw.variable_area || area_file;
+  opt.lenses = !sw.conforming_delaunay;
+  opt.conforming_delaunay = sw.conforming_delaunay;
+  opt.no_steiner_on_segments = sw.no_boundary_steiner;
+  opt.max_steiner = sw.max_steiner;
+  opt.off_centers = !sw.circumcenters_only;
+  opt.queue_order = sw.queue_order;
+  opt.decline_cluster_splits = sw.decline_cluster_splits;
+  opt.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
+  opt.threads = sw.threads;
+  opt.memory_budget = memory_budget();
+  return opt;
+}
 
 bool refinement_wanted(const Switches& sw, const PipelineSource& source) {
   return sw.quality || sw.fixed_area || sw.variable_area || area_bounds_read(source) || sw.user_test ||
@@ -226,7 +225,8 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     if (!source.is_poly && !sw.convex_hull && !rebuilding) enclose_convex_hull(mesh);  // a point set is bounded by its hull
     Predicates pred;
     if (!rebuilding && (sw.convex_hull || !source.is_poly)) report.hull_absorbed = absorb_near_hull_vertices(mesh, pred);
-    RefineOptions opt = refine_options(sw, source);
+    RefineOptions opt = refine_options(sw, area_bounds_read(source));
+    opt.size_test = source.size_test;
     opt.area_field = &area_field;
     report.refine = refine_mesh(mesh, pred, opt);
     report.counters.add(pred.counters);

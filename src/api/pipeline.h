@@ -16,6 +16,7 @@
 #include "io/ele_file.h"
 #include "mesh/mesh.h"
 #include "pslg/pslg.h"
+#include "refine/refine.h"
 #include "refine/size_test.h"
 
 namespace deltri {
@@ -45,6 +46,10 @@ struct PipelineResult {
 
 // Told the name of each stage as it ends (the command line's timings).
 using StageListener = std::function<void(const char*)>;
+
+// The refinement options the switches ask for (-q, -a, -u, -D, -Y, -S, -k, --queue, ...); with
+// area_file, per-triangle bounds are honoured (-a bare, or an .area read). Also the facets' (3-D).
+RefineOptions refine_options(const Switches& sw, bool area_file);
 
 // Whether the switches (or a size test) ask for refinement.
 bool refinement_wanted(const Switches& sw, const PipelineSource& source);

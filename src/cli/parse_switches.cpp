@@ -137,7 +137,7 @@ std::string roff(std::string_view text) {
 }  // namespace
 
 bool uses_standard_output(const Switches& s) {
-  for (const Switches::FileRequest* r : {&s.msh, &s.vtu, &s.svg, &s.json})
+  for (const Switches::FileRequest* r : {&s.msh, &s.vtu, &s.svg, &s.json, &s.stl})
     if (r->wanted && r->path == "-") return true;
   return false;
 }
@@ -159,7 +159,7 @@ Switches parse_switches(int argc, const char* const* argv) {
     throw UsageError("-q: the minimum angle must be at least 0 and below 60 degrees");
   if (s.refine && s.no_iteration) throw UsageError("-I: cannot be combined with -r (the output would overwrite the input)");
   int to_stdout = 0;
-  for (const Switches::FileRequest* r : {&s.msh, &s.vtu, &s.svg, &s.json}) to_stdout += r->wanted && r->path == "-";
+  for (const Switches::FileRequest* r : {&s.msh, &s.vtu, &s.svg, &s.json, &s.stl}) to_stdout += r->wanted && r->path == "-";
   if (to_stdout > 1) throw UsageError("-: only one of --msh=-, --vtu=-, --svg=-, --json=- can go to standard output");
   return s;
 }

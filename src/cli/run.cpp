@@ -11,6 +11,7 @@
 #include "api/pipeline.h"
 #include "cli/json_report.h"
 #include "cli/report.h"
+#include "cli/surface_run.h"
 #include "io/area_file.h"
 #include "io/edge_file.h"
 #include "cli/interrupt_cleanup.h"
@@ -220,6 +221,7 @@ PreviousMesh read_previous_mesh(const InputFiles& in, const Pslg& pslg) {
 }  // namespace
 
 int run(const Switches& sw) {
+  if (const auto facets = surface_input(sw)) return run_surface(sw, *facets);  // facets in 3-D
   RunReport report;
   report.switches = &sw;
   StageTimer timer(report);

@@ -1,5 +1,6 @@
-// The pipeline: read -> Delaunay -> constrained Delaunay -> carve -> (refine) -> check -> write.
-// The only place that knows every stage.
+// The command line's run: read the files, run the stages (api/pipeline.h: Delaunay -> constrained
+// Delaunay -> carve -> (refine) -> check), write the files and messages; facets in 3-D go to
+// cli/surface_run.h.
 #pragma once
 
 #include "cli/switches.h"

@@ -147,6 +147,8 @@ constexpr std::array kLongOptions = {
                [](S& s, const std::string* v) { request(s.svg, v, "svg"); }},
     LongOption{"svg-numbers", "", false, "number the vertices in the SVG picture",
                [](S& s, const std::string*) { s.svg_numbers = true; }},
+    LongOption{"stl", "FILE", true, "for facets in 3-D (TetGen .poly/.smesh): also write the surface as ASCII STL; FILE - is standard output",
+               [](S& s, const std::string* v) { request(s.stl, v, "stl"); }},
     LongOption{"json", "FILE", true, "also write a JSON report of the run; FILE - is standard output",
                [](S& s, const std::string* v) { request(s.json, v, "json"); }},
     LongOption{"strict", "", false, "exit with status 3 when triangles miss the -q/-a/-u bounds for a reason other than a small "

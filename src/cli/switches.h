@@ -53,6 +53,7 @@ struct Switches {
     std::string path;  // empty: <output base>.<extension>; "-": standard output
   };
   FileRequest msh, vtu, svg, json;
+  FileRequest stl;               // --stl: ASCII STL of a surface mesh (facets in 3-D only)
   int msh_version = 22;          // --msh-format=2.2|4.1[,binary]
   bool msh_binary = false;
   bool vtu_binary = false;       // --vtu-format=ascii|binary

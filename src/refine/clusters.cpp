@@ -7,6 +7,8 @@ namespace deltri {
 namespace {
 
 constexpr double kSixtyDegrees = std::numbers::pi / 3.0 * (1.0 + 1e-12);
+// Right angles computed with rounding count as right, not acute.
+constexpr double kAcute = std::numbers::pi / 2.0 * (1.0 - 1e-12);
 
 bool has_subsegment(const Mesh& mesh, EdgeRef e) { return mesh.subseg[e] != kNone; }
 
@@ -42,6 +44,20 @@ EdgeRef next_spoke(const Mesh& mesh, EdgeRef e, bool ccw, EdgeRef stop, double& 
   }
 }
 
+// The angle inside the domain from subsegment edge e counter-clockwise around its origin to the
+// next subsegment there; HUGE_VAL when the turn reaches an edge of the mesh that is no
+// subsegment (a boundary left unconstrained) or comes full circle.
+double wedge_to_next_subsegment(const Mesh& mesh, EdgeRef e) {
+  double angle = 0.0;
+  for (EdgeRef f = e;;) {
+    angle += angle_at_origin(mesh, f);
+    const EdgeRef back = lprev(f);  // from the apex of f's triangle back to the origin
+    if (has_subsegment(mesh, back)) return angle;
+    f = mesh.link[back];
+    if (f == kNone || f == e) return HUGE_VAL;
+  }
+}
+
 }  // namespace
 
 SegmentApices::SegmentApices(const Mesh& mesh) : apex_(mesh.vertex_count(), false) {
@@ -56,6 +72,11 @@ SegmentApices::SegmentApices(const Mesh& mesh) : apex_(mesh.vertex_count(), fals
       if (degree[v] < 2) ++degree[v];
   }
   for (VertexId v = 0; v < mesh.vertex_count(); ++v) apex_[v] = degree[v] >= 2;
+  shells_.assign(mesh.vertex_count(), false);
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+    if (mesh.corner[e] == kNone || !has_subsegment(mesh, e) || !apex_[mesh.org(e)]) continue;
+    if (wedge_to_next_subsegment(mesh, e) < kAcute) shells_[mesh.org(e)] = true;
+  }
 }
 
 Cluster subsegment_cluster(const Mesh& mesh, EdgeRef from_apex) {

@@ -12,15 +12,25 @@
 namespace deltri {
 
 // The apices: vertices present before refinement that are the endpoint of two or more
-// subsegments. Only these carry concentric shells and clusters; refinement never adds one.
+// subsegments. Only these carry clusters; refinement never adds one.
+//
+// Concentric shells are used only at the acute apices: two subsegments that follow each other
+// around the apex inside the domain at less than 90 degrees. At 90 degrees or more the midpoint
+// of one never encroaches on the other, whatever their lengths, so the cycle of Fig. 24 cannot
+// start there; and midpoints keep the split points of a long side out of step with those of the
+// side facing it across a thin channel, where shells measured from both corners line them up into
+// right triangles that fail the bound and split again (Triangle 1.6 likewise splits at midpoints
+// away from segments that share a triangle). Clusters (60 degrees or less) are acute apices.
 class SegmentApices {
  public:
   SegmentApices() = default;
   explicit SegmentApices(const Mesh& mesh);
   bool is_apex(VertexId v) const { return v < apex_.size() && apex_[v]; }
+  bool uses_shells(VertexId v) const { return v < shells_.size() && shells_[v]; }
 
  private:
   std::vector<bool> apex_;
+  std::vector<bool> shells_;
 };
 
 struct Cluster {

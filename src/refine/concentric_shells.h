@@ -1,5 +1,5 @@
 // Where to split an encroached subsegment (Fig. 39 l.39; Sec. 6.2, Fig. 25): if an endpoint is an
-// apex where segments meet, on the circle around it whose radius is the power of two that falls in
+// acute apex (clusters.h: two subsegments at less than 90 degrees), on the circle around it whose radius is the power of two that falls in
 // [|s|/3, 2|s|/3); otherwise at the midpoint. Subsegments at an apex then have power-of-two
 // lengths, equal ones do not encroach on each other, and the runaway cycle of Fig. 24 cannot start.
 #pragma once

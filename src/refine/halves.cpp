@@ -284,15 +284,21 @@ TerminatorStart split_initial_encroachments(Mesh& mesh, Predicates& pred, const 
 // the subsegments on the seam, and grows in small pages: two meshes' partly used last huge pages
 // had cost 7 MB of the peak (the 45x45 holes), and no time that could be measured.
 void refine_both(Mesh& mesh, Cut& cut, Predicates& pred, const RefineOptions& one_thread, TerminatorStart whole,
-                 HalfResult& left, HalfResult& right) {
+                 HalfResult& left, HalfResult& right, bool at_once) {
   whole.steiner_cap /= 2;
   whole.locked.resize(cut.seam_records.size(), 0);
   for (SubsegmentId s = 0; s < cut.seam_records.size(); ++s) whole.locked[s] |= cut.seam_records[s];
   whole.small_pages = true;
   TerminatorStart left_start = whole;
   Predicates right_pred;
-  run_both([&] { right = refine_half(cut.right, right_pred, one_thread, std::move(whole)); },
-           [&] { left = refine_half(mesh, pred, one_thread, std::move(left_start)); });
+  const auto refine_right = [&] { right = refine_half(cut.right, right_pred, one_thread, std::move(whole)); };
+  const auto refine_left = [&] { left = refine_half(mesh, pred, one_thread, std::move(left_start)); };
+  if (at_once) {
+    run_both(refine_right, refine_left);
+  } else {  // the same two refinements, one after the other: the same halves
+    refine_right();
+    refine_left();
+  }
   pred.counters.add(right_pred.counters);
 }
 
@@ -317,7 +323,7 @@ std::vector<TriangleId> sew_and_flip(Mesh& mesh, Predicates& pred, const RightId
 }  // namespace
 
 bool halves_apply(const Mesh& mesh, const RefineOptions& opt) {
-  if (opt.threads < 2 || !mesh.has_subsegments()) return false;
+  if (!opt.in_halves || !mesh.has_subsegments()) return false;
   const bool bounded = opt.quality || opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0;
   if (!bounded || opt.size_test || opt.max_steiner >= 0 || opt.no_steiner_on_segments != 0 || opt.conforming_delaunay ||
       opt.decline_cluster_splits || opt.queue_order != QueueOrder::Ratio)
@@ -347,7 +353,7 @@ RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions&
   const CapKind cap_kind = whole.cap_kind;
   const std::vector<char> whole_locked = whole.locked;
   HalfResult left, right;
-  refine_both(mesh, cut, pred, one_thread, std::move(whole), left, right);
+  refine_both(mesh, cut, pred, one_thread, std::move(whole), left, right, opt.threads >= 2);
 
   const RightIds ids{v0, mesh.vertex_count(), s0, static_cast<SubsegmentId>(mesh.subsegments.size()),
                      mesh.triangle_slots()};

@@ -13,11 +13,12 @@
 // Every vertex is placed by the Terminator's rules, the guard's floor and Steiner cap are those of
 // the whole mesh (computed once, before the cut), and the seam's Terminator is an ordinary one on a
 // constrained Delaunay mesh: the result meets the same bounds with the same guarantees as one
-// Terminator on the whole mesh, though the triangles differ near the seam. It does not depend on
-// the threads' timing: each half is refined exactly as it would be alone.
+// Terminator on the whole mesh, though the triangles differ near the seam. It depends neither on
+// the threads' timing nor on their number: each half is refined exactly as it would be alone, on
+// a thread of its own with two threads or more, one after the other with one.
 //
-// Used only where it pays and where the halves cannot disagree (halves_apply): two threads, a
-// large initial mesh, and none of the options that make refinement depend on more than the
+// Used only where it pays and where the halves cannot disagree (halves_apply): RefineOptions::
+// in_halves (the default), a large initial mesh, and none of the options that make refinement depend on more than the
 // triangles it changes (-S, -Y, -D, declined cluster splits, angle bounds that can cascade, edges
 // no double can give a good triangle).
 #pragma once

@@ -45,7 +45,12 @@ struct RefineOptions {
   // subsegment is split as in Triangle; the isosceles shell triangles at a junction are exempt
   // instead (Miller-Pav-Walkington), and the guard still bounds every new edge.
   bool decline_cluster_splits = false;
-  int threads = 1;  // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h)
+  // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h) and the halves
+  // run at once. The mesh does not depend on it.
+  int threads = 1;
+  // Refine a large mesh as two halves and the seam between them (refine/halves.h), on one thread
+  // or two: a rule of the input and this switch, so the mesh is the same for every thread count.
+  bool in_halves = true;
   // The memory refinement may use, in bytes (0: no limit): size bounds that need more are refused
   // before refinement starts (MemoryError), and the Steiner cap never allows more
   // (termination_guard.h). The command line sets it from the machine (util/memory_budget.h).

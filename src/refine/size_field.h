@@ -5,9 +5,9 @@
 // The rule refinement applies (refine/size_test.h): a triangle is too big when its area is larger
 // than that of the equilateral triangle of edge h, sqrt(3)/4 h^2, with h taken at its centroid. So a
 // mesh that meets it needs at least about the integral of 4 / (sqrt(3) h^2) over the domain
-// triangles; deltri's meshes have 1.5 times that (docs/library.md). An area rather than an edge
-// rule: an edge rule costs 2.6 times the bound (measured on the same example), and with -q the
-// triangles are well shaped, so their edges are close to h anyway (at most 1.3 h there).
+// triangles; deltri's meshes have about 1.6 times that (docs/library.md). An area rather than an
+// edge rule: an edge rule cost 2.6 times the bound (measured on the same kind of field), and with
+// -q the triangles are well shaped, so their edges stay close to h (at most 1.65 h there).
 #pragma once
 
 #include <cstdint>

@@ -4,6 +4,7 @@
 
 #include "geometry/constructions.h"
 #include "geometry/encroachment.h"
+#include "geometry/lattice.h"
 #include "mesh/delete_vertex.h"
 #include "mesh/operations.h"
 #include "refine/bottom_scale.h"
@@ -111,7 +112,7 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_
   const Point& pb = mesh_.point(b);
   Point p;  // Fig. 39 l.39, across a thin wedge aligned with the vertex opposite (mirrored_split.h)
   if (!mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
-    p = shell_split_point(pa, pb, apices_.is_apex(a), apices_.is_apex(b));
+    p = shell_split_point(pa, pb, apices_.uses_shells(a), apices_.uses_shells(b));
   // Out of precision: p rounds onto an end, or a neighbour is flush with s there (unless it is one
   // that Chew's step below deletes; checked again after). Then, and at the bottom of double
   // precision, the doubles near p are tried (bottom_scale_split); if none will do, s is locked.
@@ -205,12 +206,23 @@ bool Terminator::kept_by_switch(EdgeRef e) const {
   return opt_.no_steiner_on_segments >= 2 || (opt_.no_steiner_on_segments == 1 && mesh_.link[e] == kNone);
 }
 
-// The probe just made recorded the subsegments on the cavity's boundary (CavityMarks).
-bool Terminator::encroaches_kept_boundary(const Point& c) {
+// The probe just made recorded the subsegments on the cavity's boundary (CavityMarks). c would
+// make a triangle with each of them; one that c encroaches and -Y/-YY keeps whole refuses c only
+// if that triangle would be no better than t. Refusing every such c leaves the triangles along a
+// long kept segment as they are, and points inserted beyond its diametral circle then cut them
+// into slivers against the short edges near its ends (river.poly: 0.72 degrees where 3 were
+// possible); a c that makes a better triangle than the one it removes only improves the mesh.
+bool Terminator::encroaches_kept_boundary(const Point& c, TriangleId t) {
   if (opt_.no_steiner_on_segments == 0) return false;
-  for (EdgeRef e : marks_.boundary_subsegments())
-    if (kept_by_switch(e) && encroaches(pred_, mesh_.point(mesh_.org(e)), mesh_.point(mesh_.dest(e)), c, rule_))
+  const EdgeRef e0 = edge_of(t, 0);
+  const double worst = smallest_angle_sine2(mesh_.point(mesh_.org(e0)), mesh_.point(mesh_.dest(e0)),
+                                            mesh_.point(mesh_.apex(e0)));
+  for (EdgeRef e : marks_.boundary_subsegments()) {
+    const Point& a = mesh_.point(mesh_.org(e));
+    const Point& b = mesh_.point(mesh_.dest(e));
+    if (kept_by_switch(e) && encroaches(pred_, a, b, c, rule_) && smallest_angle_sine2(a, b, c) <= worst)
       return true;
+  }
   return false;
 }
 

@@ -100,9 +100,15 @@ void note_array(PageWarmer& warmer, unsigned slot, const Array& a) {
   warmer.note(slot, a.data(), a.size() * sizeof(T), a.capacity() * sizeof(T));
 }
 
+// Without an angle bound (-a, -u alone) the lens would shrink to the subsegment itself, and a
+// Steiner point exactly on a segment's line, beside a split vertex that rounding put an ulp off
+// it, would encroach upon nothing: it made triangles of 1e-13 degrees (guitar.poly -pa0.003). A
+// lens of 0.01 degrees catches such points and lets every other one be.
+constexpr double kLeastLensDeg = 0.01;
+
 EncroachRule rule_for(const RefineOptions& opt) {
   if (!opt.lenses || opt.conforming_delaunay) return diametral_circle_rule();
-  return diametral_lens_rule(opt.quality ? opt.min_angle_deg : 0.0);
+  return diametral_lens_rule(std::max(opt.quality ? opt.min_angle_deg : 0.0, kLeastLensDeg));
 }
 
 }  // namespace
@@ -342,10 +348,10 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
   const Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, splittable);  // Fig. 38 l.14
   if (probe.status == ProbeStatus::Unusable) return;
-  if (probe.status == ProbeStatus::Clear && encroaches_kept_boundary(c)) {
+  if (probe.status == ProbeStatus::Clear && encroaches_kept_boundary(c, t)) {
     // Fig. 38 l.18 with a subsegment that -Y/-YY keeps whole: c is rejected and, as nothing may be
     // split, t stays as it is (counted by the closing survey). Inserting c anyway would make a
-    // sliver against the subsegment.
+    // triangle against the subsegment no better than t.
     ++report_.kept_boundary_refusals;
     return;
   }

@@ -116,8 +116,8 @@ class Terminator {
   bool is_splittable(EdgeRef e) const;  // not kept by -Y / -YY, not a seam edge, not locked
   bool kept_by_switch(EdgeRef e) const;  // -Y / -YY keep the subsegment on e whole
   // Whether c encroaches upon a subsegment on the boundary of the cavity just probed that -Y / -YY
-  // keep whole.
-  bool encroaches_kept_boundary(const Point& c);
+  // keep whole, making a triangle with it no better than t.
+  bool encroaches_kept_boundary(const Point& c, TriangleId t);
   bool budget_left();                   // -S
   VertexId add_free_vertex(const Point& p, EdgeRef container);
   VertexId add_segment_vertex(const Point& p, EdgeRef s);

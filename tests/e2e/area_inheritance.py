@@ -13,7 +13,8 @@ import os, shutil, subprocess, sys
 from fractions import Fraction
 
 deltri, work, poly, switches, mode = sys.argv[1:6]
-os.makedirs(work, exist_ok=True)
+shutil.rmtree(work, ignore_errors=True)  # a fresh directory: nothing from an earlier run counts
+os.makedirs(work)
 base = os.path.splitext(os.path.basename(poly))[0]
 shutil.copy(poly, work)
 

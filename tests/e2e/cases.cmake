@@ -304,3 +304,10 @@ strict_case(small_input_angles ${E2E_DATA}/touching-holes6.poly -pq30 0
 strict_case(steiner_limit ${G} -pq30S10 3
             "deltri: warning: guitar.poly: refinement stopped at the -S limit of Steiner points"
             "q['missing_bounds_by_cause']['steiner_limits'] > 0 and q['missing_bounds_by_cause']['other'] == 0")
+
+# Issue 16: thin domains (rectangles 1 x 1e-2 to 1 x 1e-5, an L-shaped channel) meet the angle
+# bound with at most 1.1 times Triangle 1.6's triangle count (counts in thin_domains.md).
+add_test(NAME e2e.refine.thin_domains
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/thin_domains.sh $<TARGET_FILE:deltri>
+                 $<TARGET_FILE:deltri_mesh_verify> ${E2E_INPUTS} ${CMAKE_CURRENT_SOURCE_DIR}/e2e/thin_domains.md)
+set_tests_properties(e2e.refine.thin_domains PROPERTIES TIMEOUT 600)

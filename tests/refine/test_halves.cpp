@@ -43,10 +43,11 @@ Mesh scattered_square_with_chain() {
   return m;
 }
 
-RefineOptions bounds_with(int threads) {
+RefineOptions bounds_with(int threads, bool in_halves = true) {
   RefineOptions opt = quality(30);
   opt.use_triangle_area_bounds = true;
   opt.threads = threads;
+  opt.in_halves = in_halves;
   return opt;
 }
 
@@ -85,7 +86,8 @@ TEST(halves_apply_only_where_they_cannot_disagree) {
   const Mesh m = scattered_square_with_chain();
   CHECK(m.live_triangles() >= kHalvesMinTriangles);
   CHECK(halves_apply(m, bounds_with(2)));
-  CHECK(!halves_apply(m, bounds_with(1)));
+  CHECK(halves_apply(m, bounds_with(1)));  // the thread count does not decide
+  CHECK(!halves_apply(m, bounds_with(2, false)));
   RefineOptions opt = bounds_with(2);
   opt.max_steiner = 1000;
   CHECK(!halves_apply(m, opt));
@@ -143,14 +145,27 @@ TEST(halves_meet_the_bounds_and_keep_what_triangles_carry) {
 TEST(halves_are_deterministic_and_close_to_the_whole) {
   Mesh a = scattered_square_with_chain(), b = a, whole = a;
   Predicates pa, pb, pw;
-  refine_mesh(a, pa, bounds_with(2));
+  const RefineReport ra = refine_mesh(a, pa, bounds_with(2));
   refine_mesh(b, pb, bounds_with(2));
   CHECK(Snapshot(a) == Snapshot(b));
-  refine_mesh(whole, pw, bounds_with(1));
+  const RefineReport rw = refine_mesh(whole, pw, bounds_with(2, false));
   const double n = a.live_triangles(), w = whole.live_triangles();
   std::printf("  halves %u triangles, whole %u\n", a.live_triangles(), whole.live_triangles());
-  CHECK(Snapshot(a) != Snapshot(whole));  // the halves did run
+  CHECK(ra.in_halves && !rw.in_halves);  // the halves did run, and only where asked
   CHECK(std::fabs(n - w) <= 0.01 * w);
+}
+
+// The mesh does not depend on the number of threads: one thread refines the same halves one after
+// the other, and four use two of them.
+TEST(halves_give_the_same_mesh_on_one_two_and_four_threads) {
+  Mesh one = scattered_square_with_chain(), two = one, four = one;
+  Predicates p1, p2, p4;
+  const RefineReport r1 = refine_mesh(one, p1, bounds_with(1));
+  refine_mesh(two, p2, bounds_with(2));
+  refine_mesh(four, p4, bounds_with(4));
+  CHECK(r1.in_halves);
+  CHECK(Snapshot(one) == Snapshot(two));
+  CHECK(Snapshot(one) == Snapshot(four));
 }
 
 // Random interior edges as segments: subsegments meeting at every angle, many of them across the
@@ -176,7 +191,6 @@ TEST(halves_keep_random_segments_and_the_constrained_delaunay_property) {
       m.set_subsegment(e, id);
       segment_length += length_of(m, e);
     }
-    REQUIRE(halves_apply(m, quality(28)) == false);  // one thread by default
     RefineOptions opt = quality(28);
     opt.threads = 2;
     REQUIRE(halves_apply(m, opt));

@@ -153,7 +153,6 @@ TEST(keyed_queue_serves_higher_tiers_first_whatever_the_key) {
 
 // The skinny tier: the count of doublings of q from 256 (r from 16B), into 48..63.
 TEST(skinny_bucket_counts_doublings_of_the_ratio_from_sixteen_times_the_bound) {
-  CHECK_EQ(kSkinnyRatio2, 256.0);
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> lq(8.0, 50.0);
   for (int i = 0; i < 100000; ++i) {

@@ -37,10 +37,30 @@ TEST(circle_encroachment_is_exact_on_the_circle) {
   CHECK(encroaches(pred, x, y, {1, 1}, circle));               // on the circle: 90 degrees
   CHECK(encroaches(pred, x, y, {1, 0.5}, circle));             // inside
   CHECK(!encroaches(pred, x, y, {1, std::nextafter(1.0, 2.0)}, circle));  // one ulp outside
-  // A point on the circle whose float dot product rounds: (0.1, 0.3) on the circle through
-  // (0,0) and (1,0)? Not representable; use the exactly representable (0.5, 0.5).
-  CHECK(encroaches(pred, {0, 0}, {1, 0}, {0.5, 0.5}, circle));
-  CHECK(!encroaches(pred, {0, 0}, {1, 0}, {0.5, std::nextafter(0.5, 1.0)}, circle));
+}
+
+// Points within two units of the diametral circle of xy, all coordinates integers below 2^51
+// (exact doubles): x = c + (u, v), y = c - (u, v) and w = c + (-v, u) plus a nudge, so w is on the
+// circle before the nudge. The products in (x - w).(y - w) need up to 104 bits, so the float dot
+// product rounds and gets about one sign in 300 wrong here; the reference is the same expression in
+// 128-bit integers.
+TEST(circle_encroachment_matches_an_exact_integer_reference_near_the_circle) {
+  Predicates pred;
+  const EncroachRule circle = diametral_circle_rule();
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<std::int64_t> coord(-(std::int64_t{1} << 50), std::int64_t{1} << 50);
+  std::uniform_int_distribution<int> nudge(-2, 2);
+  int inside = 0, outside = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const std::int64_t cx = coord(rng), cy = coord(rng), u = coord(rng), v = coord(rng);
+    const std::int64_t X[2] = {cx + u, cy + v}, Y[2] = {cx - u, cy - v}, W[2] = {cx - v + nudge(rng), cy + u + nudge(rng)};
+    const __int128 dot = static_cast<__int128>(X[0] - W[0]) * (Y[0] - W[0]) + static_cast<__int128>(X[1] - W[1]) * (Y[1] - W[1]);
+    const auto pt = [](const std::int64_t* p) { return Point{static_cast<double>(p[0]), static_cast<double>(p[1])}; };
+    const bool expected = dot <= 0;
+    (expected ? inside : outside) += 1;
+    CHECK_EQ(encroaches(pred, pt(X), pt(Y), pt(W), circle), expected);
+  }
+  CHECK(inside > 1000 && outside > 1000);  // both sides of the circle were tried
 }
 
 TEST(lens_encroachment_follows_the_apex_angle) {
@@ -184,6 +204,28 @@ EdgeRef edge_between(const Mesh& m, VertexId a, VertexId b) {
   for (EdgeRef e = 0; e < m.corner.size(); ++e)
     if (m.corner[e] != kNone && m.org(e) == a && m.dest(e) == b) return e;
   return kNone;
+}
+
+// Shells only where two subsegments follow each other at less than 90 degrees inside the domain:
+// the corners of a square (90) and of a regular hexagon (120) split at midpoints, those of an
+// equilateral triangle (60) and the origin of the fan (20 between spokes) on shells.
+TEST(shells_only_at_acute_apices) {
+  const auto boundary_of = [](std::vector<Point> pts) {
+    Mesh m = triangulated(pts);
+    mark_boundary(m);
+    return m;
+  };
+  const SegmentApices square(boundary_of({{0, 0}, {1, 0}, {1, 1}, {0, 1}}));
+  std::vector<Point> hexagon, equilateral;
+  for (int k = 0; k < 6; ++k) hexagon.push_back({std::cos(rad(60.0 * k)), std::sin(rad(60.0 * k))});
+  for (int k = 0; k < 3; ++k) equilateral.push_back({std::cos(rad(120.0 * k)), std::sin(rad(120.0 * k))});
+  const SegmentApices hex(boundary_of(hexagon));
+  const SegmentApices tri(boundary_of(equilateral));
+  for (VertexId v = 0; v < 4; ++v) CHECK(square.is_apex(v) && !square.uses_shells(v));
+  for (VertexId v = 0; v < 6; ++v) CHECK(hex.is_apex(v) && !hex.uses_shells(v));
+  for (VertexId v = 0; v < 3; ++v) CHECK(tri.uses_shells(v));
+  const SegmentApices fan(cluster_mesh());
+  CHECK(fan.uses_shells(0));
 }
 
 TEST(clusters_gather_subsegments_within_sixty_degrees) {

@@ -1,0 +1,326 @@
+#include "surface/surface_mesher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <utility>
+
+#include "util/run_both.h"
+
+namespace deltri {
+namespace {
+
+// Two recorded parameters closer than this (as a fraction of the segment) are one point: the
+// facets compute the same split in different plane coordinates, equal only to rounding.
+constexpr double kSameParameter = 1e-10;
+
+struct Segment3 {
+  std::uint32_t a = 0, b = 0;        // input point ids, a < b
+  std::vector<std::uint32_t> facets;  // facets holding it, ascending
+  std::vector<double> splits;         // parameters in (0, 1), ascending, where it is cut
+  bool shared() const { return facets.size() >= 2; }
+};
+
+// Where a facet's PSLG vertex comes from: an input point, split `k` of segment `g`, or (neither)
+// a seed from the facet's previous mesh.
+struct LocalVertex {
+  std::uint32_t input = kNone;
+  std::uint32_t g = kNone;
+  std::uint32_t k = 0;
+};
+
+// A PSLG segment of a facet: the part [ta, tb] of input segment g, between PSLG vertices la, lb.
+struct Piece {
+  std::uint32_t g = 0;
+  double ta = 0.0, tb = 1.0;
+  std::uint32_t la = 0, lb = 0;
+};
+
+struct FacetState {
+  std::vector<std::uint32_t> segments;  // input segments it holds, ascending
+  std::vector<std::uint32_t> lone;      // lone vertices (one-corner polygons)
+  std::vector<LocalVertex> local;       // per PSLG vertex
+  std::vector<Piece> pieces;            // per PSLG segment
+  FacetMeshResult result;
+};
+
+class SurfaceBuilder {
+ public:
+  SurfaceBuilder(const FacetInput& input, const FacetMeshOptions& options, int max_rounds)
+      : in_(input), options_(options), max_rounds_(max_rounds) {}
+
+  SurfaceMesh run(SurfaceReport& report);
+
+ private:
+  void collect_segments();
+  std::uint32_t segment_of(std::uint32_t a, std::uint32_t b);
+  Pslg facet_pslg(std::uint32_t f);
+  std::vector<std::pair<std::uint32_t, double>> new_cuts(std::uint32_t f) const;
+  std::vector<std::uint32_t> mesh_facets(const std::vector<std::uint32_t>& facets, const FacetMeshOptions& options,
+                                         bool record = true);
+  std::vector<std::uint32_t> facet_vertices(std::uint32_t f, const std::vector<std::uint32_t>& split_base,
+                                            SurfaceMesh& out) const;
+  SurfaceMesh lift();
+
+  const FacetInput& in_;
+  const FacetMeshOptions& options_;
+  const int max_rounds_;
+  std::vector<FacetPlane> planes_;
+  std::vector<Segment3> segments_;
+  std::unordered_map<std::uint64_t, std::uint32_t> segment_index_;
+  std::vector<FacetState> facets_;
+};
+
+std::uint32_t SurfaceBuilder::segment_of(std::uint32_t a, std::uint32_t b) {
+  if (a > b) std::swap(a, b);
+  const std::uint64_t key = (std::uint64_t{a} << 32) | b;
+  const auto [it, added] = segment_index_.emplace(key, static_cast<std::uint32_t>(segments_.size()));
+  if (added) segments_.push_back({a, b, {}, {}});
+  return it->second;
+}
+
+// Every polygon edge of every facet becomes an input segment, identified by its two points, so
+// that facets naming the same two points share it.
+void SurfaceBuilder::collect_segments() {
+  facets_.resize(in_.facets.size());
+  for (std::uint32_t f = 0; f < in_.facets.size(); ++f) {
+    FacetState& state = facets_[f];
+    for (const auto& polygon : in_.facets[f].polygons) {
+      if (polygon.size() == 1) state.lone.push_back(polygon[0]);
+      const std::size_t edges = polygon.size() == 2 ? 1 : polygon.size() >= 3 ? polygon.size() : 0;
+      for (std::size_t i = 0; i < edges; ++i) {
+        const std::uint32_t a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+        if (a != b) state.segments.push_back(segment_of(a, b));
+      }
+    }
+    std::sort(state.segments.begin(), state.segments.end());
+    state.segments.erase(std::unique(state.segments.begin(), state.segments.end()), state.segments.end());
+    for (std::uint32_t g : state.segments) segments_[g].facets.push_back(f);
+  }
+}
+
+// The interior vertices of the facet's previous mesh (its seeds and the free vertices refinement
+// added), to seed the next: the facet is then re-meshed from nearly the mesh it had, and only the
+// neighbourhood of new cuts changes. Empty before the first round.
+std::vector<Point> previous_interior(const FacetState& state) {
+  std::vector<Point> seeds;
+  const Mesh& previous = state.result.mesh;
+  for (std::uint32_t v = 0; v < previous.vertex_count(); ++v) {
+    const bool seed = v < state.local.size() && state.local[v].input == kNone && state.local[v].g == kNone;
+    if (seed || (v >= state.local.size() && previous.kind[v] == VertexKind::Free)) seeds.push_back(previous.points[v]);
+  }
+  return seeds;
+}
+
+// The facet in its plane coordinates: its points, each segment cut at the recorded splits, holes.
+Pslg SurfaceBuilder::facet_pslg(std::uint32_t f) {
+  FacetState& state = facets_[f];
+  const FacetPlane& plane = planes_[f];
+  Pslg pslg;
+  const std::vector<Point> seeds = previous_interior(state);
+  state.local.clear();
+  state.pieces.clear();
+  std::unordered_map<std::uint32_t, std::uint32_t> of_input;
+  const auto input_vertex = [&](std::uint32_t v) {
+    const auto [it, added] = of_input.emplace(v, static_cast<std::uint32_t>(state.local.size()));
+    if (added) {
+      state.local.push_back({v, kNone, 0});
+      pslg.points.push_back(plane.to_plane(in_.points[v]));
+    }
+    return it->second;
+  };
+  for (std::uint32_t v : state.lone) input_vertex(v);
+  for (const Point& p : seeds) {
+    state.local.push_back({kNone, kNone, 0});
+    pslg.points.push_back(p);
+  }
+  for (std::uint32_t g : state.segments) {
+    const Segment3& s = segments_[g];
+    const Point3 a = in_.points[s.a], d = in_.points[s.b] - a;
+    std::uint32_t prev = input_vertex(s.a);
+    double t_prev = 0.0;
+    for (std::uint32_t k = 0; k <= s.splits.size(); ++k) {
+      std::uint32_t next;
+      double t;
+      if (k == s.splits.size()) {
+        next = input_vertex(s.b), t = 1.0;
+      } else {
+        t = s.splits[k];
+        next = static_cast<std::uint32_t>(state.local.size());
+        state.local.push_back({kNone, g, k});
+        pslg.points.push_back(plane.to_plane(a + t * d));
+      }
+      state.pieces.push_back({g, t_prev, t, prev, next});
+      pslg.segments.push_back({prev, next, 0});
+      prev = next, t_prev = t;
+    }
+  }
+  for (const Point3& h : in_.facets[f].holes) pslg.holes.push_back(plane.to_plane(h));
+  return pslg;
+}
+
+// The vertices facet f's new mesh put inside its shared segments' pieces, as (segment,
+// parameter) pairs.
+std::vector<std::pair<std::uint32_t, double>> SurfaceBuilder::new_cuts(std::uint32_t f) const {
+  const FacetState& state = facets_[f];
+  const Mesh& mesh = state.result.mesh;
+  const std::uint32_t n_local = static_cast<std::uint32_t>(state.local.size());
+  std::vector<std::pair<std::uint32_t, double>> cuts;
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+    if (!mesh.has_subsegments() || mesh.subseg[e] == kNone || mesh.corner[e] < n_local) continue;
+    const Subsegment& rec = mesh.subsegments[mesh.subseg[e]];
+    if (rec.segment >= state.pieces.size()) continue;
+    const Piece& piece = state.pieces[rec.segment];
+    if (!segments_[piece.g].shared()) continue;
+    // Where the new vertex lies along its piece, as a parameter of the whole segment.
+    const Point& p = mesh.points[mesh.corner[e]];
+    const Point& a = mesh.points[piece.la];
+    const Point& b = mesh.points[piece.lb];
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double s = ((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy);
+    cuts.emplace_back(piece.g, piece.ta + std::clamp(s, 0.0, 1.0) * (piece.tb - piece.ta));
+  }
+  return cuts;
+}
+
+// Meshes the given facets (on two threads with options.threads > 1: facets share nothing while
+// they are meshed, and the cuts are merged afterwards in facet order, so the result does not
+// depend on the threads); with `record`, adds the cuts to the segments' splits and returns the
+// segments that gained some. (The guard's last pass records nothing: the facets' vertex maps
+// must keep naming the splits as they were built.)
+std::vector<std::uint32_t> SurfaceBuilder::mesh_facets(const std::vector<std::uint32_t>& facets,
+                                                       const FacetMeshOptions& options, bool record) {
+  std::vector<std::vector<std::pair<std::uint32_t, double>>> cuts(facets.size());
+  const auto mesh_every_other = [&](std::size_t first) {
+    for (std::size_t i = first; i < facets.size(); i += 2) {
+      facets_[facets[i]].result = mesh_facet(facet_pslg(facets[i]), options);
+      if (record) cuts[i] = new_cuts(facets[i]);
+    }
+  };
+  if (options.threads > 1 && facets.size() > 1)
+    run_both([&] { mesh_every_other(1); }, [&] { mesh_every_other(0); });
+  else
+    for (std::size_t first : {0, 1}) mesh_every_other(first);
+  std::vector<std::uint32_t> changed;
+  for (const auto& list : cuts)
+    for (const auto& [g, t] : list) {
+      std::vector<double>& splits = segments_[g].splits;
+      const auto at = std::lower_bound(splits.begin(), splits.end(), t);
+      const bool near_next = at != splits.end() && *at - t < kSameParameter;
+      const bool near_prev = at != splits.begin() && t - *(at - 1) < kSameParameter;
+      if (near_next || near_prev || t < kSameParameter || t > 1.0 - kSameParameter) continue;
+      splits.insert(at, t);
+      changed.push_back(g);
+    }
+  std::sort(changed.begin(), changed.end());
+  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+  return changed;
+}
+
+SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
+  for (std::size_t f = 0; f < in_.facets.size(); ++f) planes_.push_back(fit_facet_plane(in_, f));
+  collect_segments();
+  std::vector<std::uint32_t> dirty(facets_.size());
+  for (std::uint32_t f = 0; f < dirty.size(); ++f) dirty[f] = f;
+  report.converged = false;
+  for (report.rounds = 1; report.rounds <= max_rounds_; ++report.rounds) {
+    report.facet_meshings += dirty.size();
+    const std::vector<std::uint32_t> changed = mesh_facets(dirty, options_);
+    if (changed.empty()) {
+      report.converged = true;
+      break;
+    }
+    dirty.clear();
+    for (std::uint32_t g : changed) dirty.insert(dirty.end(), segments_[g].facets.begin(), segments_[g].facets.end());
+    std::sort(dirty.begin(), dirty.end());
+    dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
+  }
+  if (!report.converged) {
+    // The guard: mesh every facet with its segments kept as they are now.
+    report.rounds = max_rounds_;
+    FacetMeshOptions kept = options_;
+    kept.refinement.no_steiner_on_segments = 2;
+    dirty.resize(facets_.size());
+    for (std::uint32_t f = 0; f < dirty.size(); ++f) dirty[f] = f;
+    report.facet_meshings += dirty.size();
+    mesh_facets(dirty, kept, false);
+  }
+  report.segments = segments_.size();
+  for (const Segment3& s : segments_)
+    if (s.shared()) ++report.shared_segments, report.shared_splits += s.splits.size();
+  for (const FacetState& state : facets_) {
+    add_counts(report.refine, state.result.refine);
+    report.segment_repairs.crossings += state.result.segments.crossings;
+    report.segment_repairs.snapped += state.result.segments.snapped;
+  }
+  return lift();
+}
+
+// Each vertex of facet f's mesh as a vertex of `out`: input points and cuts by their ids (cuts of
+// segment g from split_base[g] on), the facet's seeds and new vertices lifted from its plane.
+std::vector<std::uint32_t> SurfaceBuilder::facet_vertices(std::uint32_t f, const std::vector<std::uint32_t>& split_base,
+                                                          SurfaceMesh& out) const {
+  const FacetState& state = facets_[f];
+  const Mesh& mesh = state.result.mesh;
+  std::vector<std::uint32_t> global(mesh.vertex_count(), kNone);
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
+    const LocalVertex* lv = v < state.local.size() ? &state.local[v] : nullptr;
+    if (lv && lv->input != kNone) {
+      global[v] = lv->input;
+    } else if (lv && lv->g != kNone) {
+      global[v] = split_base[lv->g] + lv->k;
+    } else if (mesh.kind[v] != VertexKind::Dead && mesh.kind[v] != VertexKind::Duplicate) {
+      global[v] = static_cast<std::uint32_t>(out.points.size());
+      out.points.push_back(planes_[f].lift(mesh.points[v]));
+    }
+  }
+  return global;
+}
+
+// Every facet's triangles in space, on one set of vertices.
+SurfaceMesh SurfaceBuilder::lift() {
+  SurfaceMesh out;
+  out.points = in_.points;
+  out.has_markers = in_.has_markers;
+  out.markers = in_.markers;
+  std::vector<std::uint32_t> split_base(segments_.size());
+  for (std::uint32_t g = 0; g < segments_.size(); ++g) {
+    const Segment3& s = segments_[g];
+    split_base[g] = static_cast<std::uint32_t>(out.points.size());
+    const Point3 a = in_.points[s.a], d = in_.points[s.b] - a;
+    for (double t : s.splits) out.points.push_back(a + t * d);
+  }
+  std::unordered_map<std::uint64_t, std::uint32_t> edge_seen;
+  for (std::uint32_t f = 0; f < facets_.size(); ++f) {
+    std::vector<std::uint32_t> global = facet_vertices(f, split_base, out);
+    FacetState& state = facets_[f];
+    Mesh& mesh = state.result.mesh;
+    for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+      out.triangles.push_back(global[mesh.corner[e]]);
+      if (e % 3 == 2) out.triangle_facet.push_back(f);
+      if (!mesh.has_subsegments() || mesh.subseg[e] == kNone) continue;
+      const std::uint32_t a = global[mesh.org(e)], b = global[mesh.dest(e)];
+      const std::uint64_t key = (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+      const Subsegment& rec = mesh.subsegments[mesh.subseg[e]];
+      if (rec.segment < state.pieces.size() && edge_seen.emplace(key, 0).second)
+        out.subsegments.push_back({a, b, state.pieces[rec.segment].g});
+    }
+    out.facet_vertex.push_back(std::move(global));
+    out.facet_meshes.push_back(std::move(mesh));
+    out.facet_marker.push_back(in_.facets[f].marker);
+  }
+  if (out.has_markers) out.markers.resize(out.points.size(), 0);
+  out.planes = planes_;
+  for (const Segment3& s : segments_) out.segment_facets.push_back(s.facets);
+  return out;
+}
+
+}  // namespace
+
+SurfaceMesh mesh_surface(const FacetInput& input, const FacetMeshOptions& options, SurfaceReport& report,
+                         int max_rounds) {
+  SurfaceBuilder builder(input, options, max_rounds);
+  return builder.run(report);
+}
+
+}  // namespace deltri
