@@ -5,7 +5,7 @@ CMAKE_FLAGS ?=
 PREFIX ?= /usr/local
 DESTDIR ?=
 
-.PHONY: all build configure demo test bench clean check-sanitize check-fresh fuzz install uninstall
+.PHONY: all build configure demo test bench clean check-sanitize check-tsan check-fresh fuzz install uninstall
 
 all: build
 
@@ -34,21 +34,36 @@ bench: build
 check-sanitize:
 	@$(MAKE) --no-print-directory test BUILD=build-sanitize CMAKE_FLAGS="-DDELTRI_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo"
 
+# The library's thread test (8 threads calling the C++ API at once, tests/api/test_threads.cpp)
+# under ThreadSanitizer, which must report nothing: its own build, of that test only.
+check-tsan:
+	@cmake -S . -B build-tsan -DDELTRI_TSAN=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+	@cmake --build build-tsan -j $(JOBS) --target test_api_threads
+	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/test_api_threads data
+
 # The README's two commands in a fresh clone of this checkout's HEAD, from a clean environment,
 # with MAKEFLAGS unset and then set to -s (tests/setup/check_fresh.sh). Not part of `make test`.
 check-fresh:
 	@sh tests/setup/check_fresh.sh "$(CURDIR)"
 
-# deltri in $(PREFIX)/bin and its man page in $(PREFIX)/share/man/man1 (CMake's install rules).
+# deltri in $(PREFIX)/bin and its man page in $(PREFIX)/share/man/man1, the libraries
+# (libdeltri.so.0 and libdeltri.a) in $(PREFIX)/lib, the headers in $(PREFIX)/include/deltri, the
+# CMake package, the pkg-config file and the Python module (CMake's install rules; the list is
+# build/install_manifest.txt).
 # (An existing build is installed as configured, e.g. build-sanitize; a new one is a Release build.)
 install:
 	@test -f $(BUILD)/CMakeCache.txt || cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) >/dev/null
-	@cmake --build $(BUILD) -j $(JOBS) --target deltri
+	@cmake --build $(BUILD) -j $(JOBS) --target deltri deltri_shared deltri_static
 	@DESTDIR="$(DESTDIR)" cmake --install $(BUILD) --prefix "$(PREFIX)"
 
-# Removes exactly what `make install` with the same PREFIX and DESTDIR put there.
+# Removes exactly what `make install` with the same PREFIX and DESTDIR put there, and the folders
+# of its own it leaves empty.
 uninstall:
 	rm -f "$(DESTDIR)$(PREFIX)/bin/deltri" "$(DESTDIR)$(PREFIX)/share/man/man1/deltri.1"
+	rm -f "$(DESTDIR)$(PREFIX)"/lib/libdeltri.so "$(DESTDIR)$(PREFIX)"/lib/libdeltri.so.* "$(DESTDIR)$(PREFIX)/lib/libdeltri.a"
+	rm -f "$(DESTDIR)$(PREFIX)/lib/pkgconfig/deltri.pc"
+	rm -rf "$(DESTDIR)$(PREFIX)/include/deltri" "$(DESTDIR)$(PREFIX)/lib/cmake/deltri"
+	rm -rf "$(DESTDIR)$(PREFIX)"/lib/python3*/dist-packages/deltri
 
 # libFuzzer with clang, separate from the g++ build; see docs/reliability.md. Not part of CI.
 FUZZ_SECONDS ?= 60
@@ -61,4 +76,4 @@ fuzz:
 	@sh tests/fuzz/run.sh $(CURDIR)/build-fuzz $(FUZZ_TARGET) $(FUZZ_SECONDS) "$(FUZZ_FLAGS)"
 
 clean:
-	rm -rf $(BUILD) build-sanitize build-fuzz
+	rm -rf $(BUILD) build-sanitize build-tsan build-fuzz

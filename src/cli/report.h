@@ -43,6 +43,7 @@ struct RunReport {
   // -j: the vertices the .node lists (those some triangle uses, -o2 midpoints included), which the
   // summary reports instead of every vertex of the mesh.
   std::optional<std::size_t> jettisoned_vertex_count;
+  bool sweepline_fell_back = false;  // -F: rounding broke the sweep; divide and conquer was used
   std::size_t hull_absorbed = 0;  // vertices taken into the hull chain (absorb_near_hull_vertices)
   PredicateCounters counters;
   std::vector<std::string> written;

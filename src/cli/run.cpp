@@ -2,28 +2,21 @@
 
 #include <chrono>
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <stdexcept>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "cdt/convex_hull.h"
-#include "cdt/holes_and_regions.h"
-#include "cdt/insert_segments.h"
-#include "cdt/markers.h"
-#include "cdt/rebuild_mesh.h"
+#include "api/pipeline.h"
 #include "cli/json_report.h"
 #include "cli/report.h"
 #include "cli/surface_run.h"
-#include "delaunay/triangulate.h"
 #include "io/area_file.h"
 #include "io/edge_file.h"
 #include "cli/interrupt_cleanup.h"
 #include "io/ele_file.h"
 #include "io/file_text.h"
-#include "io/midpoints.h"
 #include "io/msh_file.h"
 #include "io/neigh_file.h"
 #include "io/node_file.h"
@@ -35,11 +28,7 @@
 #include "io/voronoi_file.h"
 #include "io/vtu_file.h"
 #include "pslg/errors.h"
-#include "quality/bound_misses.h"
-#include "quality/check_mesh.h"
-#include "refine/area_field.h"
-#include "refine/refine.h"
-#include "util/memory_budget.h"
+#include "refine/size_field.h"
 
 namespace deltri {
 namespace {
@@ -57,46 +46,6 @@ class StageTimer {
   RunReport& report_;
   std::chrono::steady_clock::time_point last_;
 };
-
-// The predicates are exact for every finite double (geometry/exact_integer.h), and segment
-// crossings are constructed at a scale where nothing overflows, so triangulating (-p, -c, holes,
-// regions) takes any finite coordinates. Refinement's constructions (circumcentres, off-centres,
-// split points, lengths and areas) are plain floating point and need their squares and
-// products to stay finite and normal, so refining (-q, -a, -u, -D, .area) keeps these limits.
-// Distinct vertices of magnitude M differ by at least M 2^-52, so M >= 2^-150 keeps their
-// differences above 2^-202.
-constexpr double kLargestCoordinate = 0x1p200;   // about 1.6e60
-constexpr double kSmallestMagnitude = 0x1p-150;  // about 7.0e-46
-
-void check_coordinate_range_for_refinement(const Pslg& pslg, const std::string& path) {
-  double largest = 0.0;
-  const auto look = [&largest](const Point& p) { largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)}); };
-  for (const Point& p : pslg.points) look(p);
-  // Only the vertices are ever differenced with each other: a tiny input is tiny in them.
-  const double largest_vertex = largest;
-  for (const Point& p : pslg.holes) look(p);
-  for (const Pslg::Region& r : pslg.regions) look(r.at);
-  if (largest > kLargestCoordinate) {
-    char magnitude[32];
-    std::snprintf(magnitude, sizeof magnitude, "%g", largest);
-    throw InputError(path, 0, std::string("a coordinate of magnitude ") + magnitude +
-                                  " is beyond the range supported for refinement, +-2^200 (about 1.6e60); scale the input down");
-  }
-  if (largest_vertex > 0.0 && largest_vertex < kSmallestMagnitude)
-    throw InputError(path, 0, "every vertex coordinate is below 2^-150 (about 7.0e-46) in magnitude, too small for refinement; scale the input up");
-}
-
-// Debug builds check the mesh after every stage, so that a fault is caught in the stage that made
-// it rather than at the end (or never, without -C). A fault there is a bug, not bad input.
-void check_stage([[maybe_unused]] const Mesh& mesh, [[maybe_unused]] const char* stage,
-                 [[maybe_unused]] bool conforming = false) {
-#ifndef NDEBUG
-  CheckOptions opt;
-  opt.conforming = conforming;
-  const CheckReport report = check_mesh(mesh, opt);
-  if (!report.ok()) throw std::logic_error(std::string("inconsistent mesh after ") + stage + ": " + report.summary());
-#endif
-}
 
 struct InputFiles {
   std::string base;       // name without extension, for output names
@@ -120,59 +69,6 @@ InputFiles input_files(const Switches& sw) {
   const bool named_vertex_file = extension == "poly" || extension == "node";
   in.path = named_vertex_file ? sw.input : in.base + (in.is_poly ? ".poly" : ".node");
   return in;
-}
-
-// The vertices move into the mesh (the Pslg keeps segments, holes and regions): one copy of the
-// coordinates at a time is part of the memory budget.
-Mesh mesh_from_pslg(Pslg& pslg) {
-  Mesh mesh;
-  mesh.kind.assign(pslg.points.size(), VertexKind::Input);
-  mesh.points = std::move(pslg.points);
-  mesh.num_attributes = pslg.num_attributes;
-  mesh.attributes = std::move(pslg.attributes);
-  if (pslg.has_markers) mesh.marker = std::move(pslg.markers);
-  pslg.points.clear();
-  return mesh;
-}
-
-// Builds the constrained Delaunay triangulation of a .poly's segments and carves the domain.
-void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Switches& sw,
-               RunReport& report) {
-  Predicates pred;
-  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates, !sw.exact_input, sw.split_segments);
-  if (sw.convex_hull) enclose_convex_hull(mesh);
-  static const std::vector<Point> no_holes;
-  report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull);
-  const bool region_areas = sw.variable_area && !pslg.regions.empty();
-  if (sw.regional_attributes || region_areas)
-    report.regions = spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas);
-  report.counters.add(pred.counters);
-}
-
-// Output numbers of the vertices: every vertex but deleted ones, or with -j only those a
-// triangle uses (its corners and, with -o2, its midpoints). Empty when every vertex is written in
-// id order.
-std::vector<std::uint32_t> vertex_numbering(const Mesh& mesh, bool jettison, const std::vector<VertexId>& midpoints) {
-  std::vector<char> keep(mesh.vertex_count(), 1);
-  if (jettison) {
-    keep.assign(mesh.vertex_count(), 0);
-    for (VertexId v : mesh.corner)
-      if (v != kNone) keep[v] = 1;
-    for (VertexId v : midpoints)
-      if (v != kNone) keep[v] = 1;
-  }
-  bool all = true;
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
-    if (mesh.kind[v] == VertexKind::Dead) keep[v] = 0;
-    all = all && keep[v];
-  }
-  std::vector<std::uint32_t> numbering;
-  if (all) return numbering;
-  numbering.assign(mesh.vertex_count(), kNone);
-  std::uint32_t next = 0;
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
-    if (keep[v]) numbering[v] = next++;
-  return numbering;
 }
 
 // Where a long-option file goes: <output base>.<extension>, the name given, or standard output.
@@ -292,64 +188,43 @@ void refuse_overwriting_inputs(const RunReport& report, const InputFiles& in, co
     }
 }
 
-bool refinement_wanted(const Switches& sw, const InputFiles& in) {
-  return sw.quality || sw.fixed_area || sw.variable_area || in.area_file || sw.user_test ||
-         sw.conforming_delaunay;
-}
-
-// -r: the previous mesh's triangles, its .poly segments (with -p) and its .area bounds. Holes
-// are not carved again and regions are not read, as in Triangle.
-// The .area bounds are kept as a field over the triangles as read (refine/area_field.h), before
-// the flips that make the mesh constrained Delaunay re-cut them.
-void rebuild(Mesh& mesh, const Pslg& pslg, const InputFiles& in, const Switches& sw, RunReport& report,
-             AreaField& area_field) {
-  Predicates pred;
-  const std::string ele_path = in.base + ".ele";
-  require_regular_numbering(pslg, "the triangles of " + ele_path);
-  const EleData ele = read_ele_file(ele_path, pslg.first_index, mesh.vertex_count());
-  rebuild_mesh(mesh, pred, ele, ele_path);
-  report.rebuilt_triangles = ele.triangle_count();
-  if (in.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {}, !sw.exact_input, sw.split_segments);
-  protect_boundary(mesh);
-  if (in.area_file) {
-    mesh.area_bound = read_area_file(in.base + ".area", ele.triangle_count());
-    area_field = AreaField::of(mesh);
+// --size-field=FILE: FILE.node (or FILE as named) and FILE.ele, the wanted edge length the first
+// vertex attribute (refine/size_field.h).
+SizeField read_size_field(const std::string& name) {
+  std::string extension;
+  const std::string base = input_base(name, &extension);
+  const std::string node_path = extension == "node" ? name : base + ".node";
+  Pslg background = read_node_file(node_path);
+  if (background.num_attributes < 1)
+    throw InputError(node_path, 0, "--size-field: the vertices have no attribute; the first one is the wanted edge length");
+  const std::size_t n = background.points.size(), na = static_cast<std::size_t>(background.num_attributes);
+  std::vector<double> lengths(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    lengths[v] = background.attributes[v * na];
+    if (!(lengths[v] > 0.0))
+      throw InputError(node_path, 0, "--size-field: vertex " + std::to_string(v + background.first_index) +
+                                         ": the wanted edge length (first attribute) must be positive, not " + std::to_string(lengths[v]));
   }
-  make_constrained_delaunay(mesh, pred);
-  report.counters.add(pred.counters);
+  const EleData ele = read_ele_file(base + ".ele", background.first_index, static_cast<std::uint32_t>(n));
+  std::vector<std::uint32_t> corners;
+  for (std::uint32_t t = 0; t < ele.triangle_count(); ++t)
+    for (std::uint32_t k = 0; k < 3; ++k) corners.push_back(ele.corners[t * ele.nodes_per_triangle + k]);
+  return SizeField(std::vector<Point>(background.points.begin(), background.points.end()), std::move(lengths), corners);
 }
 
-BoundRequest bound_request(const Switches& sw, const InputFiles& in, const RunReport& report) {
-  BoundRequest r;
-  r.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
-  r.max_area = sw.fixed_area ? sw.max_area : 0.0;
-  r.area_bounds = sw.variable_area || in.area_file;
-  r.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
-  r.steiner_limited = report.refine && report.refine->stopped_by_max_steiner;
-  r.segments_kept_whole = sw.no_boundary_steiner > 0;
-  return r;
+// -r: the previous mesh's .ele (numbered as the .node just read) and, with a bare -a or a named
+// .area, its .area bounds.
+PreviousMesh read_previous_mesh(const InputFiles& in, const Pslg& pslg) {
+  PreviousMesh previous;
+  previous.ele_name = in.base + ".ele";
+  require_regular_numbering(pslg, "the triangles of " + previous.ele_name);
+  previous.ele = read_ele_file(previous.ele_name, pslg.first_index, static_cast<std::uint32_t>(pslg.points.size()));
+  previous.area_bounds = in.area_file;
+  if (in.area_file) previous.areas = read_area_file(in.base + ".area", previous.ele.triangle_count());
+  return previous;
 }
 
 }  // namespace
-
-RefineOptions refine_options(const Switches& sw, bool area_file) {
-  RefineOptions opt;
-  opt.quality = sw.quality;
-  opt.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
-  opt.max_area = sw.fixed_area ? sw.max_area : 0.0;
-  opt.use_triangle_area_bounds = sw.variable_area || area_file;
-  opt.lenses = !sw.conforming_delaunay;
-  opt.conforming_delaunay = sw.conforming_delaunay;
-  opt.no_steiner_on_segments = sw.no_boundary_steiner;
-  opt.max_steiner = sw.max_steiner;
-  opt.off_centers = !sw.circumcenters_only;
-  opt.queue_order = sw.queue_order;
-  opt.decline_cluster_splits = sw.decline_cluster_splits;
-  opt.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
-  opt.threads = sw.threads;
-  opt.memory_budget = memory_budget();
-  return opt;
-}
 
 int run(const Switches& sw) {
   if (const auto facets = surface_input(sw)) return run_surface(sw, *facets);  // facets in 3-D
@@ -362,89 +237,37 @@ int run(const Switches& sw) {
     messages.notice(std::string(unsupported) + " is not available yet and is ignored");
 
   const InputFiles in = input_files(sw);
-  report.input_name = in.path == "-" ? kStandardInputName : in.path;
-  report.area_file = in.area_file;
   Pslg pslg = in.is_poly ? read_poly_file(in.path) : read_node_file(in.path);
-  if (refinement_wanted(sw, in)) check_coordinate_range_for_refinement(pslg, pslg.source_name.empty() ? in.path : pslg.source_name);
-  report.pslg = &pslg;
-  report.input_vertices = pslg.points.size();
-  report.input_segments = pslg.segments.size();
-  timer.stage("read");
-
-  Mesh mesh = mesh_from_pslg(pslg);
-  AreaField area_field;
+  PipelineSource source;
+  source.name = in.path == "-" ? kStandardInputName : in.path;
+  source.is_poly = in.is_poly;
+  PreviousMesh previous;
   if (in.refine) {
-    rebuild(mesh, pslg, in, sw, report, area_field);
-    timer.stage("mesh reconstruction");
-    check_stage(mesh, "mesh reconstruction");
-  } else {
-    const DelaunayReport dt = delaunay_triangulate(mesh, sw.algorithm, sw.threads);
-    report.duplicates = dt.duplicates.size();
-    // As for a header of one or two vertices: duplicates merged, nothing could be triangulated.
-    if (const std::size_t distinct = report.input_vertices - report.duplicates; distinct < 3)
-      throw InputError(report.input_name, 0,
-                       "a triangulation needs at least 3 distinct vertices; after merging duplicates the " +
-                           std::to_string(report.input_vertices) + " vertices are " + std::to_string(distinct) +
-                           " distinct point" + (distinct == 1 ? "" : "s"));
-    report.counters.add(dt.counters);
-    if (dt.sweepline_fell_back) messages.notice("-F: rounding broke the sweepline on this input; divide and conquer was used");
-    timer.stage("Delaunay");
-    check_stage(mesh, "Delaunay");
-    if (in.is_poly) {
-      constrain(mesh, pslg, dt, sw, report);
-      std::vector<Pslg::Segment>().swap(pslg.segments);  // in the mesh now; refinement's peak is later
-      timer.stage("segments and holes");
-      check_stage(mesh, "segments and holes");
-    } else if (sw.convex_hull) {
-      enclose_convex_hull(mesh);
-      check_stage(mesh, "convex hull");
-    }
+    previous = read_previous_mesh(in, pslg);
+    source.previous = &previous;
   }
-  if (refinement_wanted(sw, in)) {
-    if (!in.is_poly && !sw.convex_hull && !in.refine) enclose_convex_hull(mesh);  // a point set is bounded by its hull
-    Predicates pred;
-    if (!in.refine && (sw.convex_hull || !in.is_poly)) report.hull_absorbed = absorb_near_hull_vertices(mesh, pred);
-    RefineOptions opt = refine_options(sw, in.area_file);
-    opt.area_field = &area_field;
-    report.refine = refine_mesh(mesh, pred, opt);
-    report.counters.add(pred.counters);
-    mesh.compact_triangles();
-    timer.stage("refinement");
-    check_stage(mesh, "refinement", sw.conforming_delaunay);
+  std::optional<SizeField> size_field;
+  SizeTest size_test;
+  if (!sw.size_field.empty()) {
+    size_field.emplace(read_size_field(sw.size_field));
+    size_test = size_field->test();
+    source.size_test = &size_test;
   }
-  // Once, at the end: every marker follows from input markers, subsegments and the boundary.
-  assign_boundary_markers(mesh, pslg.has_markers);
-
-  if (sw.check) {
-    CheckOptions opt;
-    // Where the termination guard stopped refinement (its warning says so), segments may still be
-    // encroached: the mesh is then held to the constrained Delaunay property only.
-    const bool stopped = report.refine && (report.refine->stopped_by_guard || report.refine->stopped_by_cap);
-    opt.conforming = sw.conforming_delaunay && !stopped;
-    // Split points on hull edges are rounded, so a refined hull is convex only up to rounding.
-    opt.convex_hull_expected = !in.is_poly && !report.refine && !in.refine;
-    report.check = check_mesh(mesh, opt);
-    timer.stage("check");
-    if (!report.check->ok()) {
-      messages.check_failed(*report.check);
-      return kExitCheck;
-    }
+  PipelineResult result = run_pipeline(pslg, source, sw, report, [&timer](const char* name) { timer.stage(name); });
+  const Mesh& mesh = result.mesh;
+  if (report.sweepline_fell_back) messages.notice("-F: rounding broke the sweepline on this input; divide and conquer was used");
+  if (result.check_failed) {
+    messages.check_failed(*report.check);
+    return kExitCheck;
   }
 
-  if (refinement_wanted(sw, in)) report.misses = count_bound_misses(mesh, bound_request(sw, in, report));
-
-  std::vector<VertexId> midpoints;
-  if (sw.order == 2) midpoints = add_edge_midpoints(mesh);
-  const std::vector<std::uint32_t> numbering = vertex_numbering(mesh, sw.jettison, midpoints);
-  if (sw.jettison)
-    report.jettisoned_vertex_count = numbering.empty() ? mesh.vertex_count()
-                                                       : numbering.size() - std::count(numbering.begin(), numbering.end(), kNone);
+  const std::vector<std::uint32_t>& numbering = result.numbering;
   // --strict: misses a small input angle does not force, or no mesh at all.
   const bool bounds_missed = report.misses && report.misses->not_forced_by_input() > 0;
   const int status = sw.strict && (bounds_missed || mesh.live_triangles() == 0) ? kExitBounds : kExitOk;
   OutputSet outputs;
   schedule_outputs(outputs, {mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering,
-                             sw.order == 2 ? &midpoints : nullptr, report, status});
+                             sw.order == 2 ? &result.midpoints : nullptr, report, status});
   refuse_overwriting_inputs(report, in, pslg);
   const CommitNotes notes = outputs.commit(set_interrupt_cleanup);
   report_commit_notes(notes);

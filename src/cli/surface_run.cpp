@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "api/pipeline.h"
 #include "cli/interrupt_cleanup.h"
 #include "cli/run.h"
 #include "io/facet_file.h"

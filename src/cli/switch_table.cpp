@@ -165,6 +165,10 @@ constexpr std::array kLongOptions = {
                "after the summary, print the counts in Triangle's words (Input vertices:, Mesh triangles:, "
                "Mesh edges:, ...) and, with -V, its quality statistics (Smallest angle:, ...)",
                [](S& s, const std::string*) { s.triangle_messages = true; }},
+    LongOption{"size-field", "FILE", false,
+               "refine to the background size field FILE.node (first vertex attribute: the wanted edge length h) "
+               "and FILE.ele: a triangle is split while its area exceeds sqrt(3)/4 h^2, h interpolated at its centroid",
+               [](S& s, const std::string* v) { s.size_field = *v; }},
     LongOption{"queue", "ORDER", false,
                "which bad triangle refinement splits first: ratio (default: worst radius-edge ratio "
                "first for slivers, 16 times the bound and more, then shortest edge first), paper (worst "

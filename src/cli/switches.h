@@ -61,6 +61,7 @@ struct Switches {
   bool strict = false;           // --strict: exit status 3 when triangles miss the bounds not forced by the input, or none exist
   bool exact_input = false;      // --exact-input: no snapping of vertices onto nearby segments
   bool triangle_messages = false;  // --triangle-messages: also Triangle's labelled statistics
+  std::string size_field;        // --size-field=FILE: background mesh FILE.node/.ele of wanted edge lengths
   bool man = false;              // --man: print the manual page (roff) and exit
   bool version = false;          // --version: print the version and exit
 

@@ -133,13 +133,7 @@ void read_regions(LineReader& in, Pslg& pslg) {
   }
 }
 
-// For each subsegment id, the first live edge carrying it (kNone: gone from the mesh) and
-// whether it lies on the mesh boundary.
-struct LiveSubsegments {
-  std::vector<EdgeRef> edge;
-  std::vector<bool> boundary;
-  std::uint32_t count = 0;
-};
+}  // namespace
 
 LiveSubsegments find_live_subsegments(const Mesh& mesh) {
   LiveSubsegments live;
@@ -160,6 +154,8 @@ LiveSubsegments find_live_subsegments(const Mesh& mesh) {
   }
   return live;
 }
+
+namespace {
 
 void write_segments(TextWriter& out, const Mesh& mesh, const PolyWriteOptions& options) {
   const LiveSubsegments live = find_live_subsegments(mesh);

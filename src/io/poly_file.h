@@ -21,6 +21,15 @@ namespace deltri {
 
 Pslg read_poly_file(const std::string& path);
 
+// For each subsegment id, the first live edge carrying it (kNone: gone from the mesh) and
+// whether it lies on the mesh boundary: the segments a .poly (and the library) writes, in order.
+struct LiveSubsegments {
+  std::vector<EdgeRef> edge;
+  std::vector<bool> boundary;
+  std::uint32_t count = 0;
+};
+LiveSubsegments find_live_subsegments(const Mesh& mesh);
+
 struct PolyWriteOptions {
   int first_index = 1;
   bool markers = true;  // false: -B

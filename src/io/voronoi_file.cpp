@@ -6,6 +6,24 @@
 
 namespace deltri {
 
+Point voronoi_vertex(const Mesh& mesh, TriangleId t, std::vector<double>& attributes) {
+  const std::size_t na = static_cast<std::size_t>(mesh.num_attributes);
+  const VertexId a = mesh.corner[3 * t], b = mesh.corner[3 * t + 1], c = mesh.corner[3 * t + 2];
+  const Point &pa = mesh.points[a], &pb = mesh.points[b], &pc = mesh.points[c];
+  const Point cc = circumcenter(pa, pb, pc);
+  attributes.resize(na);
+  if (na > 0) {
+    // Barycentric coordinates of the circumcentre (outside the triangle when it is obtuse, so
+    // the attributes are extrapolated along the same plane).
+    const double area = triangle_area(pa, pb, pc);
+    const double wb = triangle_area(pa, cc, pc) / area, wc = triangle_area(pa, pb, cc) / area;
+    const double wa = 1.0 - wb - wc;
+    for (std::size_t k = 0; k < na; ++k)
+      attributes[k] = wa * mesh.attributes[a * na + k] + wb * mesh.attributes[b * na + k] + wc * mesh.attributes[c * na + k];
+  }
+  return cc;
+}
+
 void write_voronoi_node_file(ByteSink& sink, const Mesh& mesh, int first_index) {
   const std::size_t na = static_cast<std::size_t>(mesh.num_attributes);
   sink.expect(static_cast<std::size_t>(mesh.live_triangles()) * (48 + 24 * na));
@@ -15,24 +33,15 @@ void write_voronoi_node_file(ByteSink& sink, const Mesh& mesh, int first_index) 
   out.next_integer(static_cast<long long>(na));
   out.next_integer(0);
   out.end_line();
+  std::vector<double> attributes;
   long long index = first_index;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    const VertexId a = mesh.corner[3 * t], b = mesh.corner[3 * t + 1], c = mesh.corner[3 * t + 2];
-    const Point &pa = mesh.points[a], &pb = mesh.points[b], &pc = mesh.points[c];
-    const Point cc = circumcenter(pa, pb, pc);
+    const Point cc = voronoi_vertex(mesh, t, attributes);
     out.integer(index++);
     out.next_real(cc.x);
     out.next_real(cc.y);
-    if (na > 0) {
-      // Barycentric coordinates of the circumcentre (outside the triangle when it is obtuse, so
-      // the attributes are extrapolated along the same plane).
-      const double area = triangle_area(pa, pb, pc);
-      const double wb = triangle_area(pa, cc, pc) / area, wc = triangle_area(pa, pb, cc) / area;
-      const double wa = 1.0 - wb - wc;
-      for (std::size_t k = 0; k < na; ++k)
-        out.next_real(wa * mesh.attributes[a * na + k] + wb * mesh.attributes[b * na + k] + wc * mesh.attributes[c * na + k]);
-    }
+    for (std::size_t k = 0; k < na; ++k) out.next_real(attributes[k]);
     out.end_line();
   }
   out.finish();

@@ -11,10 +11,16 @@
 // Voronoi diagram of the vertices (as in Triangle).
 #pragma once
 
+#include <vector>
+
 #include "io/text_writer.h"
 #include "mesh/mesh.h"
 
 namespace deltri {
+
+// The Voronoi vertex of live triangle t (its circumcentre) and, into `attributes`, the vertex
+// attributes interpolated linearly there.
+Point voronoi_vertex(const Mesh& mesh, TriangleId t, std::vector<double>& attributes);
 
 void write_voronoi_node_file(ByteSink& out, const Mesh& mesh, int first_index);
 void write_voronoi_edge_file(ByteSink& out, const Mesh& mesh, int first_index);

@@ -93,6 +93,10 @@ Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& r
     for (unsigned i = 0; i < 3; ++i)
       if (len2[i] > limit2) out.too_large = true;
   }
+  if (rules.size_test && !out.too_large) {
+    const VertexId* c = &mesh.corner[3 * t];
+    out.too_large = (*rules.size_test)(mesh.point(c[0]), mesh.point(c[1]), mesh.point(c[2]), area);
+  }
   return out;
 }
 

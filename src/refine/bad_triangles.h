@@ -6,6 +6,7 @@
 #include "mesh/mesh.h"
 #include "refine/area_field.h"
 #include "refine/quality_queue.h"
+#include "refine/size_test.h"
 
 namespace deltri {
 
@@ -17,6 +18,7 @@ struct QualityRules {
   // With bounds that vary within a region (-r with an .area file), the field gives each triangle
   // its bound instead of mesh.area_bound (refine/area_field.h); null or empty: not used.
   const AreaField* area_field = nullptr;
+  const SizeTest* size_test = nullptr;  // a caller's test (refine/size_test.h), or null
 };
 
 // The area bound that applies to t (<= 0: none), as rules say.

@@ -18,6 +18,7 @@
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
 #include "refine/quality_queue.h"
+#include "refine/size_test.h"
 
 namespace deltri {
 
@@ -34,6 +35,9 @@ struct RefineOptions {
   long max_steiner = -1;                // -S; -1 unlimited
   bool off_centers = true;              // Ungor's off-centres instead of circumcentres
   double max_edge_length = 0.0;         // <= 0: none; the -u size test
+  // A caller's size test (refine/size_test.h), or null. Its wishes are unknown in advance, so only
+  // the memory budget caps the Steiner points, and refinement stays on one thread (halves.h).
+  const SizeTest* size_test = nullptr;
   QueueOrder queue_order = QueueOrder::Ratio;  // which bad triangle goes first (quality_queue.h)
   // Fig. 38 l.21: let SPLITPERMITTED decline cluster splits. That is the Terminator's proof of
   // termination, but a declined triangle keeps its angle (up to Theorem 12's bound) wherever it

@@ -120,6 +120,7 @@ TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) 
   const auto floor = [&] { start.guard_floor = guard_floor_of(mesh, opt); };
   const auto rest = [&] {
     start.steiner_cap = deltri::steiner_cap(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
+    if (opt.size_test) start.steiner_cap = UINT64_MAX;  // what it asks for is unknown: memory alone caps it
     if (const std::uint64_t memory = memory_cap(mesh, opt.memory_budget); memory < start.steiner_cap) {
       start.steiner_cap = memory;
       start.cap_kind = CapKind::Memory;
@@ -159,8 +160,10 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
   rules_.area_field = opt.area_field;
+  rules_.size_test = opt.size_test;
   report_.guard_length = guard_floor_;
-  const bool size_bounds = opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0;
+  const bool size_bounds =
+      opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0 || opt.size_test;
   bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
   if (bottom_possible_) {
     if (start.hopeless_edges >= 0) report_.hopeless_edges = static_cast<std::uint64_t>(start.hopeless_edges);

@@ -3,7 +3,8 @@
 #   install_test.sh SOURCE_DIR BUILD_DIR
 # 1. PREFIX=<tmp>/prefix; 2. DESTDIR=<tmp>/dest with the default PREFIX (/usr/local). Each time the
 # installed deltri must run (its --version equals the build's; it meshes data/box.poly), the man
-# page must be docs/deltri.1, and uninstall must remove both and nothing else.
+# page must be docs/deltri.1, the library files must be there (tests/api checks that they work), and
+# uninstall must remove every file and nothing else.
 set -u
 # How the surrounding make was called must not matter here.
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES GNUMAKEFLAGS
@@ -27,7 +28,14 @@ files() { (cd "$1" && find . -type f | LC_ALL=C sort | tr '\n' ' '); }
 
 make -s -C "$src" install BUILD="$build" PREFIX="$work/prefix" >"$work/log" 2>&1 || fail "make install PREFIX=...: $(cat "$work/log")"
 check_installed "$work/prefix"
-[ "$(files "$work/prefix")" = "./bin/deltri ./share/man/man1/deltri.1 " ] || fail "installed: $(files "$work/prefix")"
+expected="./bin/deltri ./include/deltri/deltri.hpp ./include/deltri/triangle.h ./lib/cmake/deltri/deltriConfig.cmake \
+./lib/cmake/deltri/deltriConfigVersion.cmake ./lib/cmake/deltri/deltriTargets-release.cmake ./lib/cmake/deltri/deltriTargets.cmake \
+./lib/libdeltri.a ./lib/libdeltri.so.0.9.0 ./lib/pkgconfig/deltri.pc ./lib/python3.N/dist-packages/deltri/__init__.py ./share/man/man1/deltri.1 "
+installed=$(files "$work/prefix" | sed 's,/python3\.[0-9]*/,/python3.N/,; s,deltriTargets-[a-z]*\.cmake,deltriTargets-release.cmake,')
+version=$("$build/deltri" --version | sed 's/deltri //')
+[ "$installed" = "$(echo "$expected" | sed "s/0\.9\.0/$version/")" ] || fail "installed: $installed"
+[ "$(readlink "$work/prefix/lib/libdeltri.so")" = libdeltri.so.0 ] && [ "$(readlink "$work/prefix/lib/libdeltri.so.0")" = "libdeltri.so.$version" ] ||
+  fail "the libdeltri.so -> libdeltri.so.0 -> libdeltri.so.$version links are missing"
 make -s -C "$src" uninstall PREFIX="$work/prefix" >"$work/log" 2>&1 || fail "make uninstall PREFIX=...: $(cat "$work/log")"
 [ -z "$(files "$work/prefix")" ] || fail "left after uninstall: $(files "$work/prefix")"
 
@@ -36,5 +44,5 @@ check_installed "$work/dest/usr/local"
 make -s -C "$src" uninstall DESTDIR="$work/dest" >"$work/log" 2>&1 || fail "make uninstall DESTDIR=...: $(cat "$work/log")"
 [ -z "$(files "$work/dest")" ] || fail "left after uninstall: $(files "$work/dest")"
 
-[ $failed = 0 ] && echo "install: deltri in PREFIX/bin and deltri.1 in PREFIX/share/man/man1 (PREFIX=... and DESTDIR=...), both run/match, uninstall removes them"
+[ $failed = 0 ] && echo "install: deltri in PREFIX/bin and deltri.1 in PREFIX/share/man/man1, the libraries, headers, CMake package, pkg-config file and Python module (PREFIX=... and DESTDIR=...); deltri runs, the man page matches, uninstall removes them all"
 exit $failed

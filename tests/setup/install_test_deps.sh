@@ -15,6 +15,7 @@ PY=/usr/bin/python3
 # package|how to tell it is there
 PACKAGES='python3-meshio|py:meshio
 python3-numpy|py:numpy
+pkg-config|cmd:pkg-config
 gmsh|cmd:gmsh
 librsvg2-bin|cmd:rsvg-convert
 getdp|cmd:getdp

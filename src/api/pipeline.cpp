@@ -1,0 +1,268 @@
+#include "api/pipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cdt/convex_hull.h"
+#include "cdt/holes_and_regions.h"
+#include "cdt/insert_segments.h"
+#include "cdt/markers.h"
+#include "cdt/rebuild_mesh.h"
+#include "delaunay/triangulate.h"
+#include "io/midpoints.h"
+#include "pslg/errors.h"
+#include "quality/bound_misses.h"
+#include "quality/check_mesh.h"
+#include "refine/area_field.h"
+#include "refine/refine.h"
+#include "util/memory_budget.h"
+
+namespace deltri {
+namespace {
+
+// The predicates are exact for every finite double (geometry/exact_integer.h), and segment
+// crossings are constructed at a scale where nothing overflows, so triangulating (-p, -c, holes,
+// regions) takes any finite coordinates. Refinement's constructions (circumcentres, off-centres,
+// split points, lengths and areas) are plain floating point and need their squares and
+// products to stay finite and normal, so refining (-q, -a, -u, -D, .area) keeps these limits.
+// Distinct vertices of magnitude M differ by at least M 2^-52, so M >= 2^-150 keeps their
+// differences above 2^-202.
+constexpr double kLargestCoordinate = 0x1p200;   // about 1.6e60
+constexpr double kSmallestMagnitude = 0x1p-150;  // about 7.0e-46
+
+void check_coordinate_range_for_refinement(const Pslg& pslg, const std::string& path) {
+  double largest = 0.0;
+  const auto look = [&largest](const Point& p) { largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)}); };
+  for (const Point& p : pslg.points) look(p);
+  // Only the vertices are ever differenced with each other: a tiny input is tiny in them.
+  const double largest_vertex = largest;
+  for (const Point& p : pslg.holes) look(p);
+  for (const Pslg::Region& r : pslg.regions) look(r.at);
+  if (largest > kLargestCoordinate) {
+    char magnitude[32];
+    std::snprintf(magnitude, sizeof magnitude, "%g", largest);
+    throw InputError(path, 0, std::string("a coordinate of magnitude ") + magnitude +
+                                  " is beyond the range supported for refinement, +-2^200 (about 1.6e60); scale the input down");
+  }
+  if (largest_vertex > 0.0 && largest_vertex < kSmallestMagnitude)
+    throw InputError(path, 0, "every vertex coordinate is below 2^-150 (about 7.0e-46) in magnitude, too small for refinement; scale the input up");
+}
+
+// Debug builds check the mesh after every stage, so that a fault is caught in the stage that made
+// it rather than at the end (or never, without -C). A fault there is a bug, not bad input.
+void check_stage([[maybe_unused]] const Mesh& mesh, [[maybe_unused]] const char* stage,
+                 [[maybe_unused]] bool conforming = false) {
+#ifndef NDEBUG
+  CheckOptions opt;
+  opt.conforming = conforming;
+  const CheckReport report = check_mesh(mesh, opt);
+  if (!report.ok()) throw std::logic_error(std::string("inconsistent mesh after ") + stage + ": " + report.summary());
+#endif
+}
+
+// The vertices move into the mesh (the Pslg keeps segments, holes and regions): one copy of the
+// coordinates at a time is part of the memory budget.
+Mesh mesh_from_pslg(Pslg& pslg) {
+  Mesh mesh;
+  mesh.kind.assign(pslg.points.size(), VertexKind::Input);
+  mesh.points = std::move(pslg.points);
+  mesh.num_attributes = pslg.num_attributes;
+  mesh.attributes = std::move(pslg.attributes);
+  if (pslg.has_markers) mesh.marker = std::move(pslg.markers);
+  pslg.points.clear();
+  return mesh;
+}
+
+// Builds the constrained Delaunay triangulation of a .poly's segments and carves the domain.
+void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Switches& sw,
+               RunReport& report) {
+  Predicates pred;
+  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates, !sw.exact_input, sw.split_segments);
+  if (sw.convex_hull) enclose_convex_hull(mesh);
+  const std::vector<Point> no_holes;
+  report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull);
+  const bool region_areas = sw.variable_area && !pslg.regions.empty();
+  if (sw.regional_attributes || region_areas)
+    report.regions = spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas);
+  report.counters.add(pred.counters);
+}
+
+// Output numbers of the vertices: every vertex but deleted ones, or with -j only those a
+// triangle uses (its corners and, with -o2, its midpoints). Empty when every vertex is written in
+// id order.
+std::vector<std::uint32_t> vertex_numbering(const Mesh& mesh, bool jettison, const std::vector<VertexId>& midpoints) {
+  std::vector<char> keep(mesh.vertex_count(), 1);
+  if (jettison) {
+    keep.assign(mesh.vertex_count(), 0);
+    for (VertexId v : mesh.corner)
+      if (v != kNone) keep[v] = 1;
+    for (VertexId v : midpoints)
+      if (v != kNone) keep[v] = 1;
+  }
+  bool all = true;
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+    if (mesh.kind[v] == VertexKind::Dead) keep[v] = 0;
+    all = all && keep[v];
+  }
+  std::vector<std::uint32_t> numbering;
+  if (all) return numbering;
+  numbering.assign(mesh.vertex_count(), kNone);
+  std::uint32_t next = 0;
+  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    if (keep[v]) numbering[v] = next++;
+  return numbering;
+}
+
+// -r: the previous mesh's triangles, its .poly segments (with -p) and its .area bounds. Holes
+// are not carved again and regions are not read, as in Triangle.
+// The .area bounds are kept as a field over the triangles as read (refine/area_field.h), before
+// the flips that make the mesh constrained Delaunay re-cut them.
+void rebuild(Mesh& mesh, const Pslg& pslg, const PipelineSource& source, const Switches& sw, RunReport& report,
+             AreaField& area_field) {
+  Predicates pred;
+  const PreviousMesh& previous = *source.previous;
+  rebuild_mesh(mesh, pred, previous.ele, previous.ele_name);
+  report.rebuilt_triangles = previous.ele.triangle_count();
+  if (source.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {}, !sw.exact_input, sw.split_segments);
+  protect_boundary(mesh);
+  if (previous.area_bounds) {
+    mesh.area_bound = previous.areas;
+    area_field = AreaField::of(mesh);
+  }
+  make_constrained_delaunay(mesh, pred);
+  report.counters.add(pred.counters);
+}
+
+bool area_bounds_read(const PipelineSource& source) { return source.previous && source.previous->area_bounds; }
+
+BoundRequest bound_request(const Switches& sw, const PipelineSource& source, const RunReport& report) {
+  BoundRequest r;
+  r.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
+  r.max_area = sw.fixed_area ? sw.max_area : 0.0;
+  r.area_bounds = sw.variable_area || area_bounds_read(source);
+  r.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
+  r.steiner_limited = report.refine && report.refine->stopped_by_max_steiner;
+  r.segments_kept_whole = sw.no_boundary_steiner > 0;
+  return r;
+}
+
+}  // namespace
+
+RefineOptions refine_options(const Switches& sw, bool area_file) {
+  RefineOptions opt;
+  opt.quality = sw.quality;
+  opt.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
+  opt.max_area = sw.fixed_area ? sw.max_area : 0.0;
+  opt.use_triangle_area_bounds = sw.variable_area || area_file;
+  opt.lenses = !sw.conforming_delaunay;
+  opt.conforming_delaunay = sw.conforming_delaunay;
+  opt.no_steiner_on_segments = sw.no_boundary_steiner;
+  opt.max_steiner = sw.max_steiner;
+  opt.off_centers = !sw.circumcenters_only;
+  opt.queue_order = sw.queue_order;
+  opt.decline_cluster_splits = sw.decline_cluster_splits;
+  opt.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
+  opt.threads = sw.threads;
+  opt.memory_budget = memory_budget();
+  return opt;
+}
+
+bool refinement_wanted(const Switches& sw, const PipelineSource& source) {
+  return sw.quality || sw.fixed_area || sw.variable_area || area_bounds_read(source) || sw.user_test ||
+         sw.conforming_delaunay || source.size_test != nullptr;
+}
+
+PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Switches& sw, RunReport& report,
+                            const StageListener& stage_listener) {
+  const auto stage = [&](const char* name) {
+    if (stage_listener) stage_listener(name);
+  };
+  const bool rebuilding = source.previous != nullptr;
+  if (refinement_wanted(sw, source))
+    check_coordinate_range_for_refinement(pslg, pslg.source_name.empty() ? source.name : pslg.source_name);
+  report.input_name = source.name;
+  report.area_file = area_bounds_read(source);
+  report.pslg = &pslg;
+  report.input_vertices = pslg.points.size();
+  report.input_segments = pslg.segments.size();
+  stage("read");
+
+  PipelineResult result;
+  Mesh& mesh = result.mesh;
+  mesh = mesh_from_pslg(pslg);
+  AreaField area_field;
+  if (rebuilding) {
+    rebuild(mesh, pslg, source, sw, report, area_field);
+    stage("mesh reconstruction");
+    check_stage(mesh, "mesh reconstruction");
+  } else {
+    const DelaunayReport dt = delaunay_triangulate(mesh, sw.algorithm, sw.threads);
+    report.duplicates = dt.duplicates.size();
+    // As for a header of one or two vertices: duplicates merged, nothing could be triangulated.
+    if (const std::size_t distinct = report.input_vertices - report.duplicates; distinct < 3)
+      throw InputError(report.input_name, 0,
+                       "a triangulation needs at least 3 distinct vertices; after merging duplicates the " +
+                           std::to_string(report.input_vertices) + " vertices are " + std::to_string(distinct) +
+                           " distinct point" + (distinct == 1 ? "" : "s"));
+    report.counters.add(dt.counters);
+    report.sweepline_fell_back = dt.sweepline_fell_back;
+    stage("Delaunay");
+    check_stage(mesh, "Delaunay");
+    if (source.is_poly) {
+      constrain(mesh, pslg, dt, sw, report);
+      std::vector<Pslg::Segment>().swap(pslg.segments);  // in the mesh now; refinement's peak is later
+      stage("segments and holes");
+      check_stage(mesh, "segments and holes");
+    } else if (sw.convex_hull) {
+      enclose_convex_hull(mesh);
+      check_stage(mesh, "convex hull");
+    }
+  }
+  if (refinement_wanted(sw, source)) {
+    if (!source.is_poly && !sw.convex_hull && !rebuilding) enclose_convex_hull(mesh);  // a point set is bounded by its hull
+    Predicates pred;
+    if (!rebuilding && (sw.convex_hull || !source.is_poly)) report.hull_absorbed = absorb_near_hull_vertices(mesh, pred);
+    RefineOptions opt = refine_options(sw, area_bounds_read(source));
+    opt.size_test = source.size_test;
+    opt.area_field = &area_field;
+    report.refine = refine_mesh(mesh, pred, opt);
+    report.counters.add(pred.counters);
+    mesh.compact_triangles();
+    stage("refinement");
+    check_stage(mesh, "refinement", sw.conforming_delaunay);
+  }
+  // Once, at the end: every marker follows from input markers, subsegments and the boundary.
+  assign_boundary_markers(mesh, pslg.has_markers);
+
+  if (sw.check) {
+    CheckOptions opt;
+    // Where the termination guard stopped refinement (its warning says so), segments may still be
+    // encroached: the mesh is then held to the constrained Delaunay property only.
+    const bool stopped = report.refine && (report.refine->stopped_by_guard || report.refine->stopped_by_cap);
+    opt.conforming = sw.conforming_delaunay && !stopped;
+    // Split points on hull edges are rounded, so a refined hull is convex only up to rounding.
+    opt.convex_hull_expected = !source.is_poly && !report.refine && !rebuilding;
+    report.check = check_mesh(mesh, opt);
+    stage("check");
+    if (!report.check->ok()) {
+      result.check_failed = true;
+      return result;
+    }
+  }
+
+  if (refinement_wanted(sw, source)) report.misses = count_bound_misses(mesh, bound_request(sw, source, report));
+
+  if (sw.order == 2) result.midpoints = add_edge_midpoints(mesh);
+  result.numbering = vertex_numbering(mesh, sw.jettison, result.midpoints);
+  if (sw.jettison) {
+    const std::vector<std::uint32_t>& n = result.numbering;
+    report.jettisoned_vertex_count = n.empty() ? mesh.vertex_count() : n.size() - std::count(n.begin(), n.end(), kNone);
+  }
+  return result;
+}
+
+}  // namespace deltri

@@ -1,0 +1,168 @@
+"""The Python module (src/api/python/deltri) on the shared library of this build:
+the dict round trip against the command line's files, the size callback meshing finer where it
+asks, and exceptions on bad input.
+    DELTRI_LIBRARY=.../libdeltri.so.0 PYTHONPATH=src/api/python test_python.py DELTRI SOURCE_DIR"""
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+import deltri
+
+failures = []
+
+
+def check(condition, what):
+    print(('ok   ' if condition else 'FAIL ') + what)
+    if not condition:
+        failures.append(what)
+
+
+def lines(path):
+    return [l for l in (raw.split('#')[0].split() for raw in open(path)) if l]
+
+
+def read_poly(path):
+    """A .poly as the `triangle` package's dict (numbered from 0)."""
+    L = lines(path)
+    n, _, na, nm = (int(x) for x in L[0][:4])
+    first = int(L[1][0])
+    v = L[1:1 + n]
+    d = {'vertices': [[float(f[1]), float(f[2])] for f in v]}
+    if na:
+        d['vertex_attributes'] = [[float(x) for x in f[3:3 + na]] for f in v]
+    if nm:
+        d['vertex_markers'] = [[int(f[3 + na])] for f in v]
+    k = 1 + n
+    ns, sm = (int(x) for x in (L[k] + ['0'])[:2])
+    s = L[k + 1:k + 1 + ns]
+    d['segments'] = [[int(f[1]) - first, int(f[2]) - first] for f in s]
+    if sm:
+        d['segment_markers'] = [[int(f[3])] for f in s]
+    k += 1 + ns
+    nh = int(L[k][0])
+    if nh:
+        d['holes'] = [[float(f[1]), float(f[2])] for f in L[k + 1:k + 1 + nh]]
+    k += 1 + nh
+    if k < len(L) and int(L[k][0]):
+        d['regions'] = [[float(x) for x in f[1:5]] for f in L[k + 1:k + 1 + int(L[k][0])]]
+    return d
+
+
+def cli(deltri_path, source, switches, work):
+    shutil.copy(source, work)
+    name = os.path.basename(source)
+    subprocess.run([deltri_path, '-' + switches, name], cwd=work, check=True, capture_output=True)
+    stem = os.path.join(work, name.rsplit('.', 1)[0] + '.1')
+    node, ele = lines(stem + '.node'), lines(stem + '.ele')
+    n, _, na, nm = (int(x) for x in node[0][:4])
+    f0 = int(node[1][0])  # as in Triangle, the input's first index numbers the files, -z or not
+
+    def ix(x):
+        return int(x) - f0 if int(x) >= 0 else int(x)
+    t, c, ta = (int(x) for x in ele[0][:3])
+    out = {'vertices': np.array([[float(f[1]), float(f[2])] for f in node[1:1 + n]]),
+           'triangles': np.array([[ix(x) for x in f[1:1 + c]] for f in ele[1:1 + t]])}
+    if na:
+        out['vertex_attributes'] = np.array([[float(x) for x in f[3:3 + na]] for f in node[1:1 + n]])
+    if nm:
+        out['vertex_markers'] = np.array([[int(f[3 + na])] for f in node[1:1 + n]])
+    if ta:
+        out['triangle_attributes'] = np.array([[float(x) for x in f[1 + c:1 + c + ta]] for f in ele[1:1 + t]])
+    poly = lines(stem + '.poly')
+    ns = int(poly[1][0])
+    out['segments'] = np.array([[ix(f[1]), ix(f[2])] for f in poly[2:2 + ns]])
+    out['segment_markers'] = np.array([[int(f[3])] for f in poly[2:2 + ns]])
+    if os.path.exists(stem + '.edge'):
+        edge = lines(stem + '.edge')
+        out['edges'] = np.array([[ix(f[1]), ix(f[2])] for f in edge[1:]])
+        out['edge_markers'] = np.array([[int(f[3])] for f in edge[1:]])
+    if os.path.exists(stem + '.neigh'):
+        out['neighbors'] = np.array([[ix(x) for x in f[1:4]] for f in lines(stem + '.neigh')[1:]])
+    return out
+
+
+def areas(m):
+    p = m['vertices'][m['triangles'][:, :3]]
+    return 0.5 * ((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1]) - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0]))
+
+
+def main():
+    deltri_path, source_dir = sys.argv[1:3]
+    work = tempfile.mkdtemp()
+    try:
+        # 1. The dict round trip: the module's arrays are the command line's files, value for value.
+        for source, opts in (('data/guitar.poly', 'pq30a0.5en'), ('tests/api/inputs/plate_attr.poly', 'pq25aAe'),
+                             ('data/box.poly', 'pq30a0.05o2')):
+            path = os.path.join(source_dir, source)
+            d = read_poly(path)
+            got = deltri.triangulate(d, opts)
+            want = cli(deltri_path, path, opts + 'z', work)
+            keys = sorted(want)
+            same = all(k in got and got[k].shape == want[k].shape and np.array_equal(got[k], want[k]) for k in keys)
+            check(same, 'round trip %s -%s: %s equal to deltri -%sz\'s files' % (source, opts, ', '.join(keys), opts))
+            if 'holes' in d:
+                check(np.array_equal(got['holes'], np.array(d['holes'])), 'round trip %s: holes returned as given' % source)
+            for k in ('vertices', 'segments', 'triangles'):
+                check(k not in got or got[k].flags['C_CONTIGUOUS'], 'round trip %s: %s is a C-contiguous array' % (source, k))
+        # 2. The size callback: finer where it asks (x < 0.5), coarse elsewhere.
+        square = {'vertices': [[0, 0], [1, 0], [1, 1], [0, 1]], 'segments': [[0, 1], [1, 2], [2, 3], [3, 0]]}
+
+        def size(corners, area):
+            x = sum(c[0] for c in corners) / 3.0
+            return area > (0.0005 if x < 0.5 else 0.02)
+        m = deltri.triangulate(square, 'pq30', size=size)
+        a = areas(m)
+        cx = m['vertices'][m['triangles']].mean(axis=1)[:, 0]
+        left, right = a[cx < 0.5], a[cx >= 0.5]
+        check(left.max() <= 0.0005 and right.max() <= 0.02 and math.isclose(a.sum(), 1.0, rel_tol=1e-12),
+              'size callback: every triangle within its asked area (left %.2e <= 5e-4, right %.2e <= 2e-2), areas sum to 1' %
+              (left.max(), right.max()))
+        check(left.mean() * 3 < right.mean() and len(left) > 3 * len(right),
+              'size callback: finer where asked (%d triangles of mean area %.2e left of x = 0.5, %d of %.2e right)' %
+              (len(left), left.mean(), len(right), right.mean()))
+        plain = deltri.triangulate(square, 'pq30')
+        check(len(plain['triangles']) < len(right), 'size callback: without it %d triangles' % len(plain['triangles']))
+        # 3. Errors: the library's message as DeltriError; the callback's own exception passes through.
+        try:
+            deltri.triangulate({'vertices': [[0, 0], [1, 0], [0, 1]], 'segments': [[0, 1], [1, 7]]}, 'p')
+            check(False, 'bad segment: no exception')
+        except deltri.DeltriError as e:
+            check(str(e) == 'segment 1: second endpoint 7 is not a vertex (vertices are numbered 0 to 2)' and e.code == 1,
+                  'bad segment: DeltriError "%s"' % e)
+        try:
+            deltri.triangulate({'vertices': [[0, 0], [1, 0], [float('nan'), 1]]}, '')
+            check(False, 'NaN: no exception')
+        except deltri.DeltriError as e:
+            check('vertex 2: x coordinate is not a finite number (nan)' in str(e), 'NaN vertex: DeltriError "%s"' % e)
+        try:
+            deltri.triangulate(square, 'pq70')
+            check(False, 'q70: no exception')
+        except deltri.DeltriError as e:
+            check(e.code == 2, 'switch q70: DeltriError "%s"' % e)
+
+        def broken(corners, area):
+            raise ValueError('from the callback')
+        try:
+            deltri.triangulate(square, 'pq', size=broken)
+            check(False, 'callback exception: none raised')
+        except ValueError as e:
+            check(str(e) == 'from the callback', 'callback exception: raised to the caller as it was')
+        # 4. r: the output refined again through the dict.
+        first = deltri.triangulate(square, 'pq30')
+        again = deltri.triangulate(first, 'rpq30a0.01')
+        check(areas(again).max() <= 0.01 and len(again['triangles']) > len(first['triangles']),
+              'r: the output refined again to area 0.01 (%d -> %d triangles)' % (len(first['triangles']), len(again['triangles'])))
+        check(deltri.version().count('.') == 2, 'version %s' % deltri.version())
+    finally:
+        shutil.rmtree(work)
+    if failures:
+        print('%d failures' % len(failures))
+        sys.exit(1)
+
+
+main()
