@@ -35,54 +35,29 @@ bool left_of_or_on(const Point& a, const Point& b, const Point& p) {
 AreaField AreaField::of(const Mesh& mesh) {
   AreaField field;
   if (!bounds_vary(mesh)) return field;
-  double hi_x = -HUGE_VAL, hi_y = -HUGE_VAL;
-  field.lo_x_ = field.lo_y_ = HUGE_VAL;
+  std::vector<Box> boxes;
+  Box all;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     const Triangle tri{mesh.point(mesh.corner[3 * t]), mesh.point(mesh.corner[3 * t + 1]),
                        mesh.point(mesh.corner[3 * t + 2]), mesh.area_bound[t]};
-    for (const Point& p : {tri.a, tri.b, tri.c}) {
-      field.lo_x_ = std::min(field.lo_x_, p.x), field.lo_y_ = std::min(field.lo_y_, p.y);
-      hi_x = std::max(hi_x, p.x), hi_y = std::max(hi_y, p.y);
-    }
+    Box box;
+    for (const Point& p : {tri.a, tri.b, tri.c}) box.add(p), all.add(p);
+    boxes.push_back(box);
     field.triangles_.push_back(tri);
   }
   // About two triangles a cell.
-  const double width = std::max(hi_x - field.lo_x_, hi_y - field.lo_y_);
+  const double width = std::max(all.width(), all.height());
   const double cells = std::max(1.0, field.triangles_.size() / 2.0);
-  field.cell_size_ = width > 0.0 ? width / std::ceil(std::sqrt(cells)) : 1.0;
-  field.columns_ = static_cast<std::size_t>((hi_x - field.lo_x_) / field.cell_size_) + 1;
-  field.rows_ = static_cast<std::size_t>((hi_y - field.lo_y_) / field.cell_size_) + 1;
-  // Two passes over the triangles' boxes: count per cell, then fill.
-  std::vector<std::uint32_t> count(field.columns_ * field.rows_ + 1, 0);
-  const auto each_cell = [&](const Triangle& t, auto&& visit) {
-    const std::size_t c0 = field.cell_of(std::min({t.a.x, t.b.x, t.c.x}), std::min({t.a.y, t.b.y, t.c.y}));
-    const std::size_t c1 = field.cell_of(std::max({t.a.x, t.b.x, t.c.x}), std::max({t.a.y, t.b.y, t.c.y}));
-    for (std::size_t row = c0 / field.columns_; row <= c1 / field.columns_; ++row)
-      for (std::size_t col = c0 % field.columns_; col <= c1 % field.columns_; ++col) visit(row * field.columns_ + col);
-  };
-  for (const Triangle& t : field.triangles_) each_cell(t, [&](std::size_t c) { ++count[c + 1]; });
-  for (std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
-  field.cell_start_ = count;
-  field.cell_list_.resize(count.back());
-  for (std::uint32_t i = 0; i < field.triangles_.size(); ++i)
-    each_cell(field.triangles_[i], [&](std::size_t c) { field.cell_list_[count[c]++] = i; });
+  field.grid_ = TriangleGrid(boxes, all, width > 0.0 ? width / std::ceil(std::sqrt(cells)) : 1.0);
   return field;
 }
 
-std::size_t AreaField::cell_of(double x, double y) const {
-  const auto clamp = [](double v, std::size_t n) {
-    return static_cast<std::size_t>(std::clamp(v, 0.0, static_cast<double>(n - 1)));
-  };
-  return clamp((y - lo_y_) / cell_size_, rows_) * columns_ + clamp((x - lo_x_) / cell_size_, columns_);
-}
-
 double AreaField::bound_at(const Point& p) const {
-  const std::size_t c = cell_of(p.x, p.y);
   double inside = 0.0, anywhere = 0.0;
   bool found = false;
-  for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
-    const Triangle& t = triangles_[cell_list_[k]];
+  for (std::uint32_t k : grid_.near(p)) {
+    const Triangle& t = triangles_[k];
     anywhere = tighter(anywhere, t.bound);
     if (left_of_or_on(t.a, t.b, p) && left_of_or_on(t.b, t.c, p) && left_of_or_on(t.c, t.a, p)) {
       inside = found ? tighter(inside, t.bound) : t.bound;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "geometry/point.h"
+#include "geometry/triangle_grid.h"
 #include "mesh/mesh.h"
 
 namespace deltri {
@@ -32,12 +33,8 @@ class AreaField {
     Point a, b, c;
     double bound;
   };
-  std::size_t cell_of(double x, double y) const;
   std::vector<Triangle> triangles_;
-  std::vector<std::uint32_t> cell_start_;  // triangles of cell i: cell_list_[cell_start_[i] .. [i+1])
-  std::vector<std::uint32_t> cell_list_;
-  double lo_x_ = 0.0, lo_y_ = 0.0, cell_size_ = 1.0;
-  std::size_t columns_ = 1, rows_ = 1;
+  TriangleGrid grid_;
 };
 
 }  // namespace deltri

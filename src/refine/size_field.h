@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "geometry/point.h"
+#include "geometry/triangle_grid.h"
 #include "refine/size_test.h"
 
 namespace deltri {
@@ -35,14 +36,10 @@ class SizeField {
   };
   bool interpolate(const Triangle& t, const Point& p, double& h) const;
   double nearest_vertex_length(const Point& p) const;
-  std::size_t cell_of(double x, double y) const;
   std::vector<Point> points_;
   std::vector<double> lengths_;
   std::vector<Triangle> triangles_;
-  std::vector<std::uint32_t> cell_start_;  // triangles of cell i: cell_list_[cell_start_[i] .. [i+1])
-  std::vector<std::uint32_t> cell_list_;
-  double lo_x_ = 0.0, lo_y_ = 0.0, cell_size_ = 1.0;
-  std::size_t columns_ = 1, rows_ = 1;
+  TriangleGrid grid_;
 };
 
 }  // namespace deltri
