@@ -8,29 +8,11 @@
 #include <string>
 #include <vector>
 
-#define DELTRI_INTERNAL
-#include "deltri/deltri.hpp"
-#include "deltri/triangle.h"
-
+#include "api/c_support.h"
 #include "cli/version.h"
 
 namespace deltri {
 namespace {
-
-[[noreturn]] void fail(int code, const std::string& message) { throw api::Error(code, message); }
-
-// The values of an input array: `count` items of `per_item` values, from `list`, which may be NULL
-// only when there are none, or (`optional`) always (then: none).
-template <class T>
-std::vector<T> input_array(const T* list, long long count, long long per_item, const char* name, const char* count_name,
-                           bool optional = false) {
-  if (count < 0) fail(DELTRI_INPUT_ERROR, std::string(count_name) + " is " + std::to_string(count) + ", must not be negative");
-  const long long values = count * per_item;
-  if (values == 0 || (list == nullptr && optional)) return {};
-  if (list == nullptr)
-    fail(DELTRI_INPUT_ERROR, std::string(name) + " is NULL but " + count_name + " is " + std::to_string(count));
-  return std::vector<T>(list, list + values);
-}
 
 // Before anything is read through the pointer: a count beyond the readers' limit is refused, not
 // trusted (the arrays' sizes are otherwise the caller's word, as in Triangle).
@@ -177,15 +159,9 @@ void write_outputs(const api::Mesh& m, const triangulateio& in, triangulateio& o
   }
 }
 
-void set_status(deltri_status* status, int code, const char* message) {
-  if (!status) return;
-  status->code = code;
-  std::snprintf(status->message, sizeof status->message, "%s", message);
-}
-
 int triangulate_arrays(const char* switches, triangulateio* in, triangulateio* out, triangulateio* vorout,
                        deltri_size_test test, void* user, deltri_status* status) {
-  try {
+  return with_status(status, [&] {
     if (switches == nullptr) switches = "";
     if (in == nullptr || out == nullptr) fail(DELTRI_USAGE_ERROR, "the input and output structs must not be NULL");
     const bool voronoi = has(switches, 'v');
@@ -195,18 +171,7 @@ int triangulate_arrays(const char* switches, triangulateio* in, triangulateio* o
     if (test) size = [test, user](const double* o, const double* d, const double* a, double area) { return test(o, d, a, area, user) != 0; };
     const api::Mesh mesh = api::triangulate(input, switches, size);
     write_outputs(mesh, *in, *out, voronoi ? vorout : nullptr, switches);
-  } catch (const api::Error& e) {
-    set_status(status, e.code(), e.what());
-    return e.code();
-  } catch (const std::bad_alloc&) {
-    set_status(status, DELTRI_MEMORY_ERROR, "out of memory");
-    return DELTRI_MEMORY_ERROR;
-  } catch (const std::exception& e) {
-    set_status(status, DELTRI_INTERNAL_ERROR, (std::string("internal error: ") + e.what()).c_str());
-    return DELTRI_INTERNAL_ERROR;
-  }
-  set_status(status, DELTRI_OK, "");
-  return DELTRI_OK;
+  });
 }
 
 }  // namespace

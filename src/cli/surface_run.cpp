@@ -5,32 +5,19 @@
 #include <cstdio>
 #include <numbers>
 
-#include "api/pipeline.h"
+#include "api/surface_pipeline.h"
 #include "cli/interrupt_cleanup.h"
 #include "cli/run.h"
 #include "io/facet_file.h"
 #include "io/output_names.h"
 #include "io/output_set.h"
 #include "io/surface_files.h"
-#include "surface/check_surface.h"
-#include "surface/surface_mesher.h"
 
 namespace deltri {
 namespace {
 
 std::string plural(std::size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
-// The switches mean the same for a facet as for a PSLG; -a without a number has no bounds to use.
-FacetMeshOptions facet_options(const Switches& sw) {
-  FacetMeshOptions o;
-  o.algorithm = sw.algorithm;
-  o.threads = sw.threads;
-  o.refine = sw.quality || sw.fixed_area || sw.user_test || sw.conforming_delaunay;
-  o.refinement = refine_options(sw, false);
-  o.refinement.use_triangle_area_bounds = false;
-  return o;
 }
 
 void note_ignored_switches(const Switches& sw) {
@@ -107,14 +94,12 @@ int run_surface(const Switches& sw, const std::string& path) {
   const auto start = std::chrono::steady_clock::now();
   note_ignored_switches(sw);
   const FacetInput input = read_facet_file(path);
-  SurfaceReport report;
-  const SurfaceMesh mesh = mesh_surface(input, facet_options(sw), report);
-  if (sw.check) {
-    const SurfaceCheck check = check_surface(mesh);
-    if (!check.ok()) {
-      std::fprintf(stderr, "deltri: -C: the surface mesh is not consistent; no files written\n%s", check.summary().c_str());
-      return kExitCheck;
-    }
+  const SurfaceResult result = run_surface_pipeline(input, sw);
+  const SurfaceMesh& mesh = result.mesh;
+  const SurfaceReport& report = result.report;
+  if (result.check_failed()) {
+    std::fprintf(stderr, "deltri: -C: the surface mesh is not consistent; no files written\n%s", result.check->summary().c_str());
+    return kExitCheck;
   }
   if (!report.converged)
     std::fprintf(stderr,

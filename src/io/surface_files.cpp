@@ -47,7 +47,7 @@ void write_surface_edge(ByteSink& sink, const SurfaceMesh& mesh, const SurfaceWr
     line.integer(static_cast<long long>(s) + options.first_index);
     line.next_integer(static_cast<long long>(e.a) + options.first_index);
     line.next_integer(static_cast<long long>(e.b) + options.first_index);
-    if (options.markers) line.next_integer(mesh.facet_marker[mesh.segment_facets[e.segment].front()]);
+    if (options.markers) line.next_integer(mesh.subsegment_marker(s));
     line.end_line();
   }
   out.finish();

@@ -34,6 +34,8 @@ struct SurfaceMesh {
   std::vector<std::vector<std::uint32_t>> segment_facets;  // per input segment: the facets holding it
 
   std::size_t triangle_count() const { return triangle_facet.size(); }
+  // A subsegment's marker (.edge, the library's edge markers): that of the first facet holding its segment.
+  int subsegment_marker(std::size_t s) const { return facet_marker[segment_facets[subsegments[s].segment].front()]; }
 };
 
 }  // namespace deltri

@@ -82,14 +82,53 @@ using SizeFunction = std::function<bool(const double* org, const double* dest, c
 // deltri::Error. A size function, if given, is applied along with the switches' bounds.
 DELTRI_EXPORT Mesh triangulate(const Input& input, const std::string& switches, const SizeFunction& size = {});
 
+
+// Facets in 3-D (docs/surfaces.md), as TetGen's .poly and .smesh carry them: points in space and
+// planar facets, each a list of polygons (vertex numbers: one is a vertex in the facet, two a
+// segment, three or more a closed loop), hole points in its plane and a marker. Vertex numbers
+// start at 1, or at 0 with the switch z.
+struct Facet {
+  std::vector<std::vector<int>> polygons;
+  std::vector<double> holes;               // x, y, z per hole point
+  int marker = 0;
+};
+struct Facets {
+  std::vector<double> points;              // x, y, z per point
+  std::vector<int> point_markers;          // one per point, or empty: none
+  std::vector<Facet> facets;
+};
+
+// The surface mesh, numbered as the input (z: from 0): the input's points first, then the new ones.
+struct Surface {
+  int point_count = 0;
+  std::vector<double> points;              // x, y, z per point
+  std::vector<int> point_markers;          // when the input has them, unless B (0 for new points)
+  int triangle_count = 0;
+  std::vector<int> triangles;              // three corners per triangle, wound about its facet's normal
+  std::vector<double> triangle_attributes; // one per triangle: its facet's marker
+  std::vector<int> triangle_facets;        // one per triangle: its facet's number
+  int edge_count = 0;
+  std::vector<int> edges;                  // two ends per subsegment (every piece of every input segment)
+  std::vector<int> edge_markers;           // one per subsegment, unless B: the marker of the first facet holding it
+};
+
+// Meshes the facets as the switches say ("pq30a0.02", as for deltri -pq30a0.02 on a .poly with a
+// 3-D node section: the same mesh as the command line's files). Prints nothing; throws
+// deltri::Error (a facet that is not planar: "input: facet 3: not planar: ...").
+DELTRI_EXPORT Surface mesh_surface(const Facets& facets, const std::string& switches);
+
 }  // namespace deltri::api
 
 #ifndef DELTRI_INTERNAL
 namespace deltri {
 using api::Error;
+using api::Facet;
+using api::Facets;
+using api::mesh_surface;
 using api::Input;
 using api::Mesh;
 using api::SizeFunction;
+using api::Surface;
 using api::triangulate;
 }  // namespace deltri
 #endif

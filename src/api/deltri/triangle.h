@@ -1,7 +1,8 @@
 /* deltri's C library: the interface of Jonathan Shewchuk's Triangle (struct triangulateio,
  * triangulate(), trifree()), so that a program written for Triangle's library compiles against it
  * unchanged, plus entry points that return a status and a message instead of printing
- * (deltri_triangulate) and take a size test with a user pointer (deltri_triangulate_sized).
+ * (deltri_triangulate) and take a size test with a user pointer (deltri_triangulate_sized), and
+ * one for facets in 3-D (deltri_mesh_surface).
  * Plain C (C89 and later, C++, and Fortran through ISO_C_BINDING). See docs/library.md.
  *
  * Reentrant: the library keeps no global state, so any number of threads may call it at once
@@ -97,6 +98,50 @@ typedef int (*deltri_size_test)(const double *org, const double *dest, const dou
 DELTRI_EXPORT int deltri_triangulate_sized(const char *switches, struct triangulateio *in,
                                            struct triangulateio *out, struct triangulateio *vorout,
                                            deltri_size_test test, void *user, struct deltri_status *status);
+
+/* Facets in 3-D (docs/surfaces.md), as TetGen's .poly and .smesh carry them: points in space and
+ * planar facets, each a run of polygons (vertex numbers: one is a vertex in the facet, two a segment,
+ * three or more a closed loop), a run of hole points in its plane, and a marker. Vertex numbers
+ * start at 1, or at 0 with the switch z. Only read by the library. */
+struct deltri_facets {
+  double *pointlist;               /* 3 per point: x, y, z */
+  int *pointmarkerlist;            /* 1 per point, or NULL: none */
+  int numberofpoints;
+  int *cornerlist;                 /* every polygon's corners, one polygon after another */
+  int *polygonsizelist;            /* 1 per polygon: its number of corners */
+  int numberofpolygons;
+  double *holelist;                /* 3 per hole point: x, y, z */
+  int numberofholes;
+  int *facetpolygonlist;           /* 1 per facet: how many of the polygons, in order, are its own */
+  int *facetholelist;              /* 1 per facet: how many of the hole points, in order; NULL: none */
+  int *facetmarkerlist;            /* 1 per facet, or NULL: all 0 */
+  int numberoffacets;
+};
+
+/* The surface mesh, numbered as the input: the input's points first, then the new ones. Every
+ * array is allocated by the library (NULL when empty); release them with deltri_surface_free. */
+struct deltri_surface {
+  double *pointlist;               /* 3 per point */
+  int *pointmarkerlist;            /* 1 per point when the input has markers, unless B (0 for new points) */
+  int numberofpoints;
+  int *trianglelist;               /* 3 per triangle, wound about its facet's normal */
+  double *triangleattributelist;   /* 1 per triangle: its facet's marker (the .ele attribute) */
+  int *trianglefacetlist;          /* 1 per triangle: its facet's number */
+  int numberoftriangles;
+  int *edgelist;                   /* 2 per subsegment (every piece of every input segment) */
+  int *edgemarkerlist;             /* 1 per subsegment, unless B: the first facet's marker that holds it */
+  int numberofedges;
+};
+
+/* Meshes the facets as the switches say ("pq30a0.02": the same mesh as deltri -pq30a0.02 on a .poly
+ * with a 3-D node section, and the same items as its .node, .ele and .edge). Never prints, never
+ * exits: returns status->code (status may be NULL). On success *out is overwritten (its previous
+ * pointers are not freed); on an error it is untouched. A facet that is not planar is an input
+ * error naming it and its distance from the best plane. */
+DELTRI_EXPORT int deltri_mesh_surface(const char *switches, const struct deltri_facets *in, struct deltri_surface *out,
+                                      struct deltri_status *status);
+/* Releases the arrays of a deltri_surface and sets them to NULL and its counts to 0. */
+DELTRI_EXPORT void deltri_surface_free(struct deltri_surface *surface);
 
 /* The library's version, "MAJOR.MINOR.PATCH". */
 DELTRI_EXPORT const char *deltri_version(void);

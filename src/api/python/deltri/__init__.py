@@ -13,7 +13,7 @@ import os
 
 import numpy as np
 
-__all__ = ['triangulate', 'DeltriError', 'version']
+__all__ = ['triangulate', 'mesh_surface', 'DeltriError', 'version']
 
 
 class DeltriError(Exception):
@@ -39,6 +39,22 @@ class _TriangulateIO(ctypes.Structure):
                 ('holelist', _D), ('numberofholes', ctypes.c_int),
                 ('regionlist', _D), ('numberofregions', ctypes.c_int),
                 ('edgelist', _I), ('edgemarkerlist', _I), ('normlist', _D), ('numberofedges', ctypes.c_int)]
+
+
+class _Facets(ctypes.Structure):
+    # struct deltri_facets (deltri/triangle.h).
+    _fields_ = [('pointlist', _D), ('pointmarkerlist', _I), ('numberofpoints', ctypes.c_int),
+                ('cornerlist', _I), ('polygonsizelist', _I), ('numberofpolygons', ctypes.c_int),
+                ('holelist', _D), ('numberofholes', ctypes.c_int),
+                ('facetpolygonlist', _I), ('facetholelist', _I), ('facetmarkerlist', _I), ('numberoffacets', ctypes.c_int)]
+
+
+class _Surface(ctypes.Structure):
+    # struct deltri_surface (deltri/triangle.h).
+    _fields_ = [('pointlist', _D), ('pointmarkerlist', _I), ('numberofpoints', ctypes.c_int),
+                ('trianglelist', _I), ('triangleattributelist', _D), ('trianglefacetlist', _I),
+                ('numberoftriangles', ctypes.c_int),
+                ('edgelist', _I), ('edgemarkerlist', _I), ('numberofedges', ctypes.c_int)]
 
 
 class _Status(ctypes.Structure):
@@ -69,6 +85,10 @@ def _load():
     lib.deltri_triangulate_sized.argtypes = [ctypes.c_char_p, io, io, io, _SIZE_TEST, ctypes.c_void_p,
                                              ctypes.POINTER(_Status)]
     lib.deltri_triangulate_sized.restype = ctypes.c_int
+    lib.deltri_mesh_surface.argtypes = [ctypes.c_char_p, ctypes.POINTER(_Facets), ctypes.POINTER(_Surface),
+                                        ctypes.POINTER(_Status)]
+    lib.deltri_mesh_surface.restype = ctypes.c_int
+    lib.deltri_surface_free.argtypes = [ctypes.POINTER(_Surface)]
     lib.trifree.argtypes = [ctypes.c_void_p]
     lib.deltri_version.restype = ctypes.c_char_p
     return lib
@@ -205,4 +225,70 @@ def triangulate(d, opts='', size=None):
     for key in ('holes', 'regions'):
         if key in d and 'p' in opts and 'r' not in opts:
             result[key] = np.array(d[key], dtype=np.float64)
+    return result
+
+
+def _copy(pointer, count, columns, dtype):
+    """Copies count x columns values of an array the library owns (released afterwards as a whole)."""
+    if not pointer or count <= 0:
+        return None
+    return np.ctypeslib.as_array(pointer, shape=(count * columns,)).astype(dtype).reshape(count, columns)
+
+
+def _facets_in(d, io, keep):
+    vertices = _array(d, 'vertices', np.float64, 3)
+    if vertices is None:
+        raise DeltriError(1, "the input has no 'vertices'")
+    io.numberofpoints = len(vertices)
+    _set(io, 'pointlist', vertices, keep)
+    _set(io, 'pointmarkerlist', _array(d, 'vertex_markers', np.intc, 1), keep)
+    corners, sizes, per_facet, holes, holes_per_facet, markers = [], [], [], [], [], []
+    for facet in d.get('facets', []):
+        polygons = facet.get('polygons', [])
+        per_facet.append(len(polygons))
+        for polygon in polygons:
+            polygon = np.asarray(polygon, dtype=np.intc).reshape(-1)
+            sizes.append(len(polygon))
+            corners.extend(polygon.tolist())
+        facet_holes = np.asarray(facet.get('holes', []), dtype=np.float64).reshape(-1, 3)
+        holes_per_facet.append(len(facet_holes))
+        holes.extend(facet_holes.reshape(-1).tolist())
+        markers.append(int(facet.get('marker', 0)))
+    lists = [('cornerlist', corners, np.intc), ('polygonsizelist', sizes, np.intc), ('holelist', holes, np.float64),
+             ('facetpolygonlist', per_facet, np.intc), ('facetholelist', holes_per_facet, np.intc),
+             ('facetmarkerlist', markers, np.intc)]
+    for field, values, dtype in lists:
+        _set(io, field, np.ascontiguousarray(values, dtype=dtype) if values else None, keep)
+    io.numberofpolygons, io.numberofholes, io.numberoffacets = len(sizes), len(holes) // 3, len(per_facet)
+
+
+def mesh_surface(d, opts=''):
+    """Meshes facets in 3-D (docs/surfaces.md): d has 'vertices' (n x 3), optionally
+    'vertex_markers', and 'facets', a list of dicts with 'polygons' (lists of vertex numbers from
+    0: one is a vertex in the facet, two a segment, three or more a closed loop), optionally
+    'holes' (points in the facet's plane, k x 3) and 'marker'. `opts` are Triangle's switches as
+    for the command line on a 3-D .poly ('pq30a0.02'); numbering is from 0 (z is always added).
+    Returns a dict of numpy arrays: vertices (m x 3), vertex_markers (when given, unless 'B'),
+    triangles (t x 3), triangle_attributes (t x 1, the facet markers), triangle_facets (t), edges
+    (the subsegments, s x 2) and edge_markers (unless 'B'). Raises DeltriError on bad input."""
+    keep = []
+    io_in, io_out, status = _Facets(), _Surface(), _Status()
+    _facets_in(d, io_in, keep)
+    code = _lib.deltri_mesh_surface(('z' + opts).encode(), ctypes.byref(io_in), ctypes.byref(io_out),
+                                    ctypes.byref(status))
+    if code != 0:
+        raise DeltriError(code, status.message.decode(errors='replace'))
+    items = [('vertices', io_out.pointlist, io_out.numberofpoints, 3, np.float64),
+             ('vertex_markers', io_out.pointmarkerlist, io_out.numberofpoints, 1, np.intc),
+             ('triangles', io_out.trianglelist, io_out.numberoftriangles, 3, np.intc),
+             ('triangle_attributes', io_out.triangleattributelist, io_out.numberoftriangles, 1, np.float64),
+             ('triangle_facets', io_out.trianglefacetlist, io_out.numberoftriangles, 1, np.intc),
+             ('edges', io_out.edgelist, io_out.numberofedges, 2, np.intc),
+             ('edge_markers', io_out.edgemarkerlist, io_out.numberofedges, 1, np.intc)]
+    result = {}
+    for key, pointer, count, columns, dtype in items:
+        a = _copy(pointer, count, columns, dtype)
+        if a is not None:
+            result[key] = a.reshape(-1) if key == 'triangle_facets' else a
+    _lib.deltri_surface_free(ctypes.byref(io_out))
     return result

@@ -1,0 +1,73 @@
+#include "api/library_support.h"
+
+#include <new>
+#include <system_error>
+#include <vector>
+
+#include "pslg/errors.h"
+
+namespace deltri {
+namespace {
+
+// A bare u (no length after it) asks for the caller's size test, as Triangle's u does; the
+// command-line parser knows only u<length>, so the library takes a bare one out first.
+std::string without_bare_u(const std::string& switches, bool& bare_u) {
+  std::string rest;
+  for (std::size_t i = 0; i < switches.size(); ++i) {
+    const char next = i + 1 < switches.size() ? switches[i + 1] : '\0';
+    if (switches[i] == 'u' && !((next >= '0' && next <= '9') || next == '.')) {
+      bare_u = true;
+      continue;
+    }
+    rest += switches[i];
+  }
+  return rest;
+}
+
+std::string without_suffix(std::string text, const std::string& suffix) {
+  if (text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0)
+    text.erase(text.size() - suffix.size());
+  return text;
+}
+
+}  // namespace
+
+Switches parse_library_switches(const std::string& given, bool size_function) {
+  bool bare_u = false;
+  std::string word = without_bare_u(given, bare_u);
+  if (!word.empty() && word[0] == '-') word.erase(0, 1);
+  if (bare_u && !size_function)
+    throw api::Error(DELTRI_USAGE_ERROR, "u: a bare u asks for a size test, and none was given (or give a length, u0.05)");
+  std::vector<std::string> args = {"deltri"};
+  if (!word.empty()) args.push_back("-" + word);
+  args.push_back("input");
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  Switches sw = parse_switches(static_cast<int>(argv.size()), argv.data());
+  sw.quiet = true;
+  return sw;
+}
+
+void rethrow_as_library_error() {
+  using api::Error;
+  try {
+    throw;
+  } catch (const Error&) {
+    throw;
+  } catch (const InputError& e) {
+    throw Error(DELTRI_INPUT_ERROR, e.what());
+  } catch (const UsageError& e) {
+    throw Error(DELTRI_USAGE_ERROR, without_suffix(e.what(), " (see deltri -h)"));
+  } catch (const MemoryError& e) {
+    throw Error(DELTRI_MEMORY_ERROR, e.what());
+  } catch (const std::bad_alloc&) {
+    throw Error(DELTRI_MEMORY_ERROR, "out of memory");
+  } catch (const std::system_error& e) {
+    if (e.code() == std::errc::resource_unavailable_try_again) throw Error(DELTRI_MEMORY_ERROR, "out of memory (cannot start a thread)");
+    throw Error(DELTRI_INTERNAL_ERROR, std::string("internal error: ") + e.what());
+  } catch (const std::exception& e) {
+    throw Error(DELTRI_INTERNAL_ERROR, std::string("internal error: ") + e.what());
+  }
+}
+
+}  // namespace deltri
