@@ -41,3 +41,19 @@ add_test(NAME api.no_global_state COMMAND sh ${API_DIR}/global_state.sh $<TARGET
 set_tests_properties(api.no_global_state PROPERTIES SKIP_RETURN_CODE 77)
 add_test(NAME docs.library_examples COMMAND /usr/bin/python3 ${API_DIR}/library_examples.py ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR} "${API_SANITIZE_FLAGS}")
 set_tests_properties(docs.library_examples PROPERTIES ENVIRONMENT "${API_PYTHON_ENV}" TIMEOUT 600)
+# Facets in 3-D through the library (deltri_mesh_surface, deltri::mesh_surface, deltri.mesh_surface):
+# a C and a C++ client on the shared library and the Python module, against the command line's
+# files and independent facts (tests/api/surface_clients.py).
+add_executable(test_api_surface_c ${API_DIR}/surface_client.c)
+set_target_properties(test_api_surface_c PROPERTIES C_STANDARD 99 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF)
+target_compile_options(test_api_surface_c PRIVATE -Wall -Wextra -pedantic)
+target_link_libraries(test_api_surface_c PRIVATE deltri_shared)
+target_include_directories(test_api_surface_c PRIVATE ${CMAKE_SOURCE_DIR}/src/api)
+add_executable(test_api_surface_cpp ${API_DIR}/surface_client.cpp)
+target_compile_options(test_api_surface_cpp PRIVATE ${DELTRI_WARNINGS})
+target_link_libraries(test_api_surface_cpp PRIVATE deltri_shared)
+target_include_directories(test_api_surface_cpp PRIVATE ${CMAKE_SOURCE_DIR}/src/api)
+add_test(NAME api.surface COMMAND sh -c "/usr/bin/python3 -c 'import numpy' 2>/dev/null || exit 77; exec /usr/bin/python3 \"$@\"" sh
+         ${API_DIR}/surface_clients.py $<TARGET_FILE:deltri> $<TARGET_FILE:test_api_surface_c>
+         $<TARGET_FILE:test_api_surface_cpp> ${CMAKE_SOURCE_DIR})
+set_tests_properties(api.surface PROPERTIES ENVIRONMENT "${API_PYTHON_ENV}" SKIP_RETURN_CODE 77 TIMEOUT 600)
