@@ -14,15 +14,7 @@
 
 #include "deltri/triangle.h"
 
-static int read_count(FILE *f) {
-  int n = 0;
-  if (fscanf(f, "%d", &n) != 1) {
-    fprintf(stderr, "surface_client: bad input file\n");
-    exit(1);
-  }
-  return n;
-}
-
+/* The next number of the file (counts and vertex numbers too: they are exact as doubles). */
 static double read_real(FILE *f) {
   double x = 0;
   if (fscanf(f, "%lf", &x) != 1) {
@@ -33,6 +25,8 @@ static double read_real(FILE *f) {
 }
 
 /* Grows a list by one item (the lists are small). */
+static int read_count(FILE *f) { return (int)read_real(f); }
+
 static void *grow(void *list, size_t count, size_t size) {
   void *p = realloc(list, (count + 1) * size);
   if (p == NULL) exit(1);

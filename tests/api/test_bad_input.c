@@ -53,6 +53,42 @@ static void expect_error(const char *row, const char *switches, struct triangula
   }
 }
 
+/* Facets in 3-D (deltri_mesh_surface): a unit square in the plane z = 0 as one facet. */
+static double square3[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+static int square3_corners[] = {1, 2, 3, 4}, square3_sizes[] = {4}, one_polygon[] = {1};
+
+static void base_facets(struct deltri_facets *in) {
+  memset(in, 0, sizeof *in);
+  in->pointlist = square3;
+  in->numberofpoints = 4;
+  in->cornerlist = square3_corners;
+  in->polygonsizelist = square3_sizes;
+  in->numberofpolygons = 1;
+  in->facetpolygonlist = one_polygon;
+  in->numberoffacets = 1;
+}
+
+/* As expect_error, for deltri_mesh_surface: the output struct must be left as it was. */
+static void expect_surface_error(const char *row, struct deltri_facets *in, int code, const char *expect) {
+  struct deltri_surface out, before;
+  struct deltri_status status;
+  int got;
+  memset(&out, 0, sizeof out);
+  out.numberofpoints = out.numberoftriangles = out.numberofedges = -7;
+  before = out;
+  ++cases;
+  got = deltri_mesh_surface("pq30", in, in ? &out : NULL, &status);
+  if (got != code || status.code != code || strstr(status.message, expect) == NULL) {
+    fprintf(report, "FAIL %s: gave %d '%s', expected %d '...%s...'\n", row, got, status.message, code, expect);
+    ++failures;
+  } else if (memcmp(&out, &before, sizeof out) != 0) {
+    fprintf(report, "FAIL %s: the output struct was changed by a failing call\n", row);
+    ++failures;
+  } else {
+    fprintf(report, "ok %-28s %s\n", row, status.message);
+  }
+}
+
 int main(void) {
   struct triangulateio in;
   double p[16];
@@ -143,6 +179,46 @@ int main(void) {
     }
     trifree(out.pointlist); trifree(out.pointmarkerlist); trifree(out.trianglelist);
     trifree(out.segmentlist); trifree(out.segmentmarkerlist);
+  }
+
+  /* Facets in 3-D: the C struct's own misuses (the facets' contents are tests/api/surface_clients.py's). */
+  {
+    struct deltri_facets f;
+    double bent[12];
+    int corners[4] = {1, 2, 3, 5}, two[1] = {2}, sizes[1] = {-1};
+    base_facets(&f); f.cornerlist = NULL;
+    expect_surface_error("surface: NULL corners", &f, DELTRI_INPUT_ERROR, "cornerlist is NULL but the sum of polygonsizelist is 4");
+    base_facets(&f); f.numberoffacets = -1;
+    expect_surface_error("surface: negative facets", &f, DELTRI_INPUT_ERROR, "numberoffacets is -1, must not be negative");
+    base_facets(&f); f.facetpolygonlist = two;
+    expect_surface_error("surface: polygon runs", &f, DELTRI_INPUT_ERROR, "facetpolygonlist adds up to 2, but numberofpolygons is 1");
+    base_facets(&f); f.polygonsizelist = sizes;
+    expect_surface_error("surface: negative size", &f, DELTRI_INPUT_ERROR, "polygonsizelist holds a negative size, -1");
+    base_facets(&f); f.numberofholes = 1; f.holelist = square3;
+    expect_surface_error("surface: holes, no runs", &f, DELTRI_INPUT_ERROR, "holelist has hole points but facetholelist is NULL");
+    base_facets(&f); f.cornerlist = corners;
+    expect_surface_error("surface: corner range", &f, DELTRI_INPUT_ERROR, "facet 1: corner 5 is not a point (points are numbered 1 to 4)");
+    base_facets(&f); f.numberofpolygons = 0; f.facetpolygonlist = sizes + 0; sizes[0] = 0;
+    expect_surface_error("surface: empty facet", &f, DELTRI_INPUT_ERROR, "facet 1: it has no polygons");
+    memcpy(bent, square3, sizeof bent); bent[8] = 0.5; base_facets(&f); f.pointlist = bent;
+    expect_surface_error("surface: not planar", &f, DELTRI_INPUT_ERROR, "facet 1: not planar: a point lies 0.118 from the best plane");
+    bent[8] = NAN;
+    expect_surface_error("surface: NaN", &f, DELTRI_INPUT_ERROR, "point 3: a coordinate is not a finite number");
+    expect_surface_error("surface: NULL structs", NULL, DELTRI_USAGE_ERROR, "the input and output structs must not be NULL");
+  }
+  {
+    struct deltri_facets f;
+    struct deltri_surface out;
+    struct deltri_status status;
+    base_facets(&f);
+    memset(&out, 0, sizeof out);
+    if (deltri_mesh_surface("pq30a0.1", &f, &out, &status) != DELTRI_OK || out.numberoftriangles < 10 ||
+        out.trianglefacetlist[0] != 1 || out.edgelist == NULL) {
+      fprintf(report, "FAIL: a good surface call after the bad ones: %d triangles, '%s'\n", out.numberoftriangles, status.message);
+      ++failures;
+    }
+    deltri_surface_free(&out);
+    deltri_surface_free(NULL);
   }
 
   fflush(stdout);

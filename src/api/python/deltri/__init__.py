@@ -118,12 +118,16 @@ def _set(io, field, array, keep):
     setattr(io, field, array.ctypes.data_as(ctype))
 
 
-def _fill_input(d, io, keep):
-    vertices = _array(d, 'vertices', np.float64, 2)
+def _vertices(d, io, keep, dimension):
+    vertices = _array(d, 'vertices', np.float64, dimension)
     if vertices is None:
         raise DeltriError(1, "the input has no 'vertices'")
     io.numberofpoints = len(vertices)
     _set(io, 'pointlist', vertices, keep)
+
+
+def _fill_input(d, io, keep):
+    _vertices(d, io, keep, 2)
     attributes = _array(d, 'vertex_attributes', np.float64, None)
     if attributes is not None:
         io.numberofpointattributes = attributes.shape[1]
@@ -154,12 +158,18 @@ def _fill_input(d, io, keep):
         _set(io, 'trianglearealist', _array(d, 'triangle_max_area', np.float64, 1), keep)
 
 
-def _take(pointer, count, columns, dtype):
-    """Copies count x columns values the library allocated, then releases them."""
+def _copy(pointer, count, columns, dtype):
+    """Copies count x columns values of an array the library owns (released afterwards as a whole)."""
     if not pointer or count <= 0 or columns <= 0:
         return None
-    a = np.ctypeslib.as_array(pointer, shape=(count * columns,)).astype(dtype).reshape(count, columns)
-    _lib.trifree(ctypes.cast(pointer, ctypes.c_void_p))
+    return np.ctypeslib.as_array(pointer, shape=(count * columns,)).astype(dtype).reshape(count, columns)
+
+
+def _take(pointer, count, columns, dtype):
+    """Copies count x columns values the library allocated, then releases them."""
+    a = _copy(pointer, count, columns, dtype)
+    if a is not None:
+        _lib.trifree(ctypes.cast(pointer, ctypes.c_void_p))
     return a
 
 
@@ -228,19 +238,8 @@ def triangulate(d, opts='', size=None):
     return result
 
 
-def _copy(pointer, count, columns, dtype):
-    """Copies count x columns values of an array the library owns (released afterwards as a whole)."""
-    if not pointer or count <= 0:
-        return None
-    return np.ctypeslib.as_array(pointer, shape=(count * columns,)).astype(dtype).reshape(count, columns)
-
-
 def _facets_in(d, io, keep):
-    vertices = _array(d, 'vertices', np.float64, 3)
-    if vertices is None:
-        raise DeltriError(1, "the input has no 'vertices'")
-    io.numberofpoints = len(vertices)
-    _set(io, 'pointlist', vertices, keep)
+    _vertices(d, io, keep, 3)
     _set(io, 'pointmarkerlist', _array(d, 'vertex_markers', np.intc, 1), keep)
     corners, sizes, per_facet, holes, holes_per_facet, markers = [], [], [], [], [], []
     for facet in d.get('facets', []):
