@@ -39,9 +39,7 @@ std::vector<std::uint32_t> read_polygon(const std::vector<int>& polygon, const F
   const long long last = first + static_cast<long long>(out.points.size()) - 1;
   std::vector<std::uint32_t> corners;
   for (const int v : polygon) {
-    if (v < first || v > last)
-      fail("facet " + std::to_string(facet) + ": corner " + std::to_string(v) + " is not a point (points are numbered " +
-           std::to_string(first) + " to " + std::to_string(last) + ")");
+    if (v < first || v > last) fail(corner_not_a_point(facet, v, first, last));
     corners.push_back(static_cast<std::uint32_t>(v - first));
   }
   return corners;

@@ -81,9 +81,7 @@ std::uint32_t read_corner(LineReader& in, const FacetInput& out, long long facet
   const long long first = out.first_index;
   const long long last = first + static_cast<long long>(out.points.size()) - 1;
   const long long v = in.read_int({"facet", facet, "corner"}, LLONG_MIN, LLONG_MAX);
-  if (v < first || v > last)
-    in.fail("facet " + std::to_string(facet) + ": corner " + std::to_string(v) + " is not a point (points are numbered " +
-            std::to_string(first) + " to " + std::to_string(last) + ")");
+  if (v < first || v > last) in.fail(corner_not_a_point(facet, v, first, last));
   return static_cast<std::uint32_t>(v - first);
 }
 

@@ -10,6 +10,12 @@
 
 namespace deltri {
 
+// The one message for a facet corner that names no point (the facet reader's and the library's).
+inline std::string corner_not_a_point(long long facet, long long corner, long long first, long long last) {
+  return "facet " + std::to_string(facet) + ": corner " + std::to_string(corner) + " is not a point (points are numbered " +
+         std::to_string(first) + " to " + std::to_string(last) + ")";
+}
+
 struct FacetInput {
   struct Facet {
     // Each polygon is a list of vertex indices: one index is a lone vertex in the facet, two a
