@@ -299,8 +299,8 @@ foreach(input ${E2E_INPUTS}/plate.poly ${E2E_DATA}/guitar.poly ${E2E_DATA}/water
     add_test(NAME e2e.area_inheritance.${stem}.${mode}
              COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/e2e/area_inheritance.py $<TARGET_FILE:deltri>
                      ${CMAKE_CURRENT_BINARY_DIR}/area_inheritance/${stem}.${mode} ${input} -pq30 ${mode})
-    # A guard, not a measure: water.sparse takes 85 s of CPU (exact arithmetic in Python), 321 s of
-    # wall time at load 19 on 2 cores, where the old 600 s was too close.
+    # A guard, not a measure: water.sparse takes 85 s of CPU (exact arithmetic in Python), and 683 s
+    # of wall time in a full ctest -j2 at load 20 on 2 cores, past the old 600 s.
     set_tests_properties(e2e.area_inheritance.${stem}.${mode} PROPERTIES TIMEOUT 1800)
   endforeach()
 endforeach()
