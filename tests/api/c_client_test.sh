@@ -6,7 +6,8 @@
 #   c_client_test.sh SOURCE_DIR BUILD_DIR [SANITIZER_FLAGS]
 set -u
 src=$1 build=$2 sanitize=${3:-}
-command -v pkg-config >/dev/null && command -v gcc >/dev/null || { echo "pkg-config or gcc missing (make test installs pkg-config)"; exit 77; }
+command -v pkg-config >/dev/null && command -v gcc >/dev/null ||
+  { echo "SKIP: missing pkg-config or gcc; install with: sudo apt-get install -y pkg-config gcc"; exit 77; }
 work=$(mktemp -d) || exit 1
 trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" >"$work/log" 2>&1 || { cat "$work/log"; echo "FAIL: cmake --install"; exit 1; }

@@ -6,7 +6,8 @@
 #   global_state.sh LIBDELTRI_SO
 set -u
 lib=$1
-command -v objdump >/dev/null || { echo "objdump missing"; exit 77; }
+command -v objdump >/dev/null && command -v c++filt >/dev/null ||
+  { echo "SKIP: missing objdump, c++filt; install with: sudo apt-get install -y binutils"; exit 77; }
 objects=$(objdump -t "$lib" | awk '$0 ~ / (\.data|\.bss|\.tdata|\.tbss)[ \t]/ && $3 == "O" { print $NF }' | c++filt | LC_ALL=C sort -u)
 unexpected=$(printf '%s\n' "$objects" | grep -v -x \
   -e 'completed.0' -e '__dso_handle' -e '__TMC_END__' -e 'DW.ref.*' \

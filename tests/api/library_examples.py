@@ -23,7 +23,18 @@ def run(cmd, **kw):
     return r.stdout
 
 
+def skip_when_missing():
+    """Exit 77 (CTest: skipped) when pkg-config or numpy is missing, with the command that installs it."""
+    missing = [] if shutil.which('pkg-config') else ['pkg-config']
+    if subprocess.run(['/usr/bin/python3', '-c', 'import numpy'], capture_output=True).returncode != 0:
+        missing.append('python3-numpy')
+    if missing:
+        print('SKIP: missing %s; install with: sudo apt-get install -y %s' % (', '.join(missing), ' '.join(missing)))
+        sys.exit(77)
+
+
 def main():
+    skip_when_missing()
     source, build = sys.argv[1:3]
     sanitize = sys.argv[3] if len(sys.argv) > 3 else ''
     found = blocks(os.path.join(source, 'docs', 'library.md'))
@@ -44,6 +55,8 @@ def main():
         env = dict(os.environ, PKG_CONFIG_PATH=os.path.join(prefix, 'lib', 'pkgconfig'),
                    LD_LIBRARY_PATH=os.path.join(prefix, 'lib'))
         env.pop('DELTRI_LIBRARY', None)
+        for name in ('MAKEFLAGS', 'MFLAGS', 'MAKELEVEL', 'MAKEOVERRIDES', 'GNUMAKEFLAGS'):
+            env.pop(name, None)  # how the surrounding make was called must not reach cmake --build
         for name, text in (('box.c', programs['c']), ('box.cpp', programs['cpp']), ('CMakeLists.txt', programs['cmake']),
                            ('box.py', programs['python'])):
             open(os.path.join(work, name), 'w').write(text)

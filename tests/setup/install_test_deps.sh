@@ -16,6 +16,7 @@ PY=/usr/bin/python3
 PACKAGES='python3-meshio|py:meshio
 python3-numpy|py:numpy
 pkg-config|cmd:pkg-config
+binutils|cmd:objdump
 gmsh|cmd:gmsh
 librsvg2-bin|cmd:rsvg-convert
 getdp|cmd:getdp

@@ -13,15 +13,24 @@ cp "$here/../../../data/guitar.poly" .
 fail=0
 # Starts a run big enough that its write takes a while, waits until its temporaries exist, then
 # sends the signal. env --default-signal: a background job of sh starts with SIGINT ignored.
+# On a busy machine the run may finish its write before this shell sees the temporaries or sends
+# the signal (exit 0): that attempt shows nothing, and the run is started again (up to 10 times).
 interrupt() {  # signal
-  rm -f guitar.1.*
-  env --default-signal=INT "$deltri" -Qpqa0.0001 guitar.poly >/dev/null 2>stderr &
-  pid=$!
-  i=0
-  while [ $i -lt 6000 ] && ! ls guitar.1.*.tmp.* >/dev/null 2>&1; do sleep 0.01; i=$((i + 1)); done
-  kill -"$1" $pid
-  wait $pid
-  status=$?
+  attempt=0 status=0
+  while [ $status = 0 ] && [ $attempt -lt 10 ]; do
+    attempt=$((attempt + 1))
+    rm -f guitar.1.*
+    env --default-signal=INT "$deltri" -Qpqa0.0001 guitar.poly >/dev/null 2>stderr &
+    pid=$!
+    i=0
+    while [ $i -lt 6000 ] && ! ls guitar.1.*.tmp.* >/dev/null 2>&1 && kill -0 $pid 2>/dev/null; do
+      sleep 0.01
+      i=$((i + 1))
+    done
+    kill -"$1" $pid 2>/dev/null
+    wait $pid
+    status=$?
+  done
 }
 for sig in INT TERM HUP; do
   interrupt $sig
