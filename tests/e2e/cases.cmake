@@ -327,6 +327,10 @@ strict_case(small_input_angles ${E2E_DATA}/touching-holes6.poly -pq30 0
 strict_case(steiner_limit ${G} -pq30S10 3
             "deltri: warning: guitar.poly: refinement stopped at the -S limit of Steiner points"
             "q['missing_bounds_by_cause']['steiner_limits'] > 0 and q['missing_bounds_by_cause']['other'] == 0")
+# The same with an area bound: the triangles left above it are size misses of the -S limit.
+strict_case(steiner_limit_area ${G} -pa1S10 3
+            "deltri: warning: guitar.poly: refinement stopped at the -S limit of Steiner points"
+            "q['triangles_above_size_bound'] == q['missing_bounds_by_cause']['steiner_limits'] == q['triangles_missing_bounds'] > 0")
 
 # Issue 16: thin domains (rectangles 1 x 1e-2 to 1 x 1e-5, an L-shaped channel) meet the angle
 # bound with at most 1.1 times Triangle 1.6's triangle count (counts in thin_domains.md).

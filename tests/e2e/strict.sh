@@ -5,8 +5,8 @@
 # EXPECTED_EXIT, stderr must hold the line WARNING, the mesh files must still be written, and the
 # JSON report (read by python3's json) must satisfy the Python expression JSON_CHECK on `q`
 # (its "quality" object) and `m` (its "mesh" object). Beyond that, for every case:
-#   * the JSON's count of triangles below the -q angle equals the count computed here from the
-#     .node/.ele (the causes must add up to the total);
+#   * the JSON's counts of triangles below the -q angle and above the -a area equal the counts
+#     computed here from the .node/.ele (the causes must add up to the total);
 #   * a run refused for misses the input does not force names them in a warning, exactly (the
 #     line's numbers are the JSON's), unless refinement's own "triangles miss" warning does;
 #   * the same run with -V prints the same counts in its "Bounds (final mesh)" lines.
@@ -60,7 +60,9 @@ def smallest_angle(a, b, c):
         ux, uy, vx, vy = r[0] - p[0], r[1] - p[1], s[0] - p[0], s[1] - p[1]
         return math.degrees(math.atan2(abs(ux * vy - uy * vx), ux * vx + uy * vy))
     return min(at(a, b, c), at(b, c, a), at(c, a, b))
-angles = [smallest_angle(*(points[int(v)] for v in t[1:4])) for t in (next(eles) for _ in range(count))]
+corners = [[points[int(v)] for v in t[1:4]] for t in (next(eles) for _ in range(count))]
+angles = [smallest_angle(*c) for c in corners]
+areas = [abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2 for a, b, c in corners]
 if q["min_angle_bound"] is not None:
     bound = q["min_angle_bound"]
     low = sum(a < bound * (1 - 1e-9) for a in angles)
@@ -68,6 +70,13 @@ if q["min_angle_bound"] is not None:
     if not low <= q["triangles_below_angle_bound"] <= high:
         fail(f"JSON: {q['triangles_below_angle_bound']} triangles below {bound} degrees; the .ele has {low} (to {high})")
     print(f"  .ele: {low} of {count} triangles below {bound} degrees, as the JSON says")
+if q["max_area_bound"] is not None and q["max_edge_length_bound"] is None:
+    bound = q["max_area_bound"]
+    low = sum(a > bound * (1 + 1e-9) for a in areas)
+    high = sum(a > bound * (1 - 1e-9) for a in areas)
+    if not low <= q["triangles_above_size_bound"] <= high:
+        fail(f"JSON: {q['triangles_above_size_bound']} triangles above the area {bound}; the .ele has {low} (to {high})")
+    print(f"  .ele: {low} of {count} triangles above the area {bound}, as the JSON says")
 stderr = open("stderr").read().splitlines()
 refine_line = re.compile(rf"deltri: warning: {re.escape(name)}: \d+ triangles? miss(es)? the requested bounds(,| \()")
 reason = (f"deltri: warning: {name}: {q['triangles_missing_bounds_not_forced_by_input']} "
