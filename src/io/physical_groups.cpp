@@ -20,16 +20,28 @@ PhysicalGroups group(const std::vector<double>& per_element) {
   return g;
 }
 
+// Rules 1 and 2 on g's values; returns the first tag after them.
+long long tag_markers(PhysicalGroups& g) {
+  long long next = 1;
+  for (double v : g.values)
+    if (own_tag(v)) next = std::max(next, static_cast<long long>(v) + 1);
+  for (double v : g.values) g.tags.push_back(own_tag(v) ? static_cast<long long>(v) : next++);
+  return next;
+}
+
 }  // namespace
 
 MeshPhysicalGroups physical_groups(const std::vector<double>& line_markers, const std::vector<double>& surface_values) {
   MeshPhysicalGroups m{group(line_markers), group(surface_values)};
-  long long next = 1;
-  for (double v : m.lines.values)
-    if (own_tag(v)) next = std::max(next, static_cast<long long>(v) + 1);
-  for (double v : m.lines.values) m.lines.tags.push_back(own_tag(v) ? static_cast<long long>(v) : next++);
+  long long next = tag_markers(m.lines);
   for (std::size_t g = 0; g < m.surfaces.values.size(); ++g) m.surfaces.tags.push_back(next++);
   return m;
+}
+
+PhysicalGroups marker_groups(const std::vector<double>& markers) {
+  PhysicalGroups g = group(markers);
+  tag_markers(g);
+  return g;
 }
 
 std::string value_text(double value) {

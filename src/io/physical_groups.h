@@ -1,7 +1,8 @@
-// Physical groups for formats whose groups carry positive integer tags (Gmsh MSH, and the
-// "gmsh:physical" cell data of the .vtu). Many solvers (GetDP, FreeFem++, DOLFINx via its
-// reader) name a region by its tag alone, whatever its dimension, so a line group and a surface
-// group must never share a tag: the rule below gives every group of the mesh a distinct tag.
+// Physical groups for the formats whose groups carry positive integer tags: Gmsh MSH, of a 2-D
+// mesh (io/msh_file) and of a surface in 3-D (io/surface_exports). Many solvers (GetDP, FreeFem++,
+// DOLFINx via its reader) name a region by its tag alone, whatever its dimension, so a line group
+// and a surface group must never share a tag: the rule below gives every group of the mesh a
+// distinct tag. (The .vtu carries markers and attributes as cell values, not as groups.)
 #pragma once
 
 #include <cstdint>
@@ -31,6 +32,10 @@ struct MeshPhysicalGroups {
 // So with markers 1, 2, 3 the domain is surface 4; with markers 0 and 1 marker 0 is curve 2 and
 // the domain surface 3; without lines (-B) the domain is surface 1.
 MeshPhysicalGroups physical_groups(const std::vector<double>& line_markers, const std::vector<double>& surface_values);
+
+// Rules 1 and 2 alone, for a mesh whose only groups are markers: a surface in 3-D, whose
+// triangles are grouped by facet marker (no line groups to stay clear of).
+PhysicalGroups marker_groups(const std::vector<double>& markers);
 
 // The value as the files write it (shortest round-trip text).
 std::string value_text(double value);

@@ -1,6 +1,8 @@
 // The single-file formats of a surface mesh (declared in surface_files.h): OFF, STL, MSH 2.2, VTU.
 #include "io/surface_files.h"
 
+#include "io/physical_groups.h"
+
 namespace deltri {
 namespace {
 
@@ -56,9 +58,24 @@ void write_surface_stl(ByteSink& sink, const SurfaceMesh& mesh) {
   out.finish();
 }
 
+// Triangles grouped by facet marker, tagged by the rule of io/physical_groups.h (a marker that is
+// a positive integer is its own tag; 0 and negative markers, which Gmsh cannot take as tags, the
+// next ones).
 void write_surface_msh(ByteSink& sink, const SurfaceMesh& mesh) {
+  std::vector<double> markers;
+  markers.reserve(mesh.triangle_count());
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) markers.push_back(mesh.facet_marker[mesh.triangle_facet[t]]);
+  const PhysicalGroups groups = marker_groups(markers);
   TextWriter out(sink);
-  out.text("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n");
+  out.text("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n");
+  out.integer(static_cast<long long>(groups.values.size()));
+  out.end_line();
+  for (std::size_t g = 0; g < groups.values.size(); ++g) {
+    out.text("2 ");
+    out.integer(groups.tags[g]);
+    out.text(" \"marker " + value_text(groups.values[g]) + "\"\n");
+  }
+  out.text("$EndPhysicalNames\n$Nodes\n");
   out.integer(static_cast<long long>(mesh.points.size()));
   out.end_line();
   for (std::size_t v = 0; v < mesh.points.size(); ++v) {
@@ -77,7 +94,7 @@ void write_surface_msh(ByteSink& sink, const SurfaceMesh& mesh) {
     line.integer(static_cast<long long>(t) + 1);
     line.next_integer(2);  // a 3-node triangle
     line.next_integer(2);  // two tags
-    line.next_integer(mesh.facet_marker[mesh.triangle_facet[t]]);
+    line.next_integer(groups.tags[groups.group[t]]);
     line.next_integer(static_cast<long long>(mesh.triangle_facet[t]) + 1);
     for (int i = 0; i < 3; ++i) line.next_integer(static_cast<long long>(mesh.triangles[3 * t + i]) + 1);
     line.end_line();

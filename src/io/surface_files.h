@@ -4,7 +4,8 @@
 //   .edge  <#subsegments> <#markers 0|1>      then <index> <a> <b> [<marker>]   (marker: the
 //          marker of the first facet holding the subsegment's segment)
 // and for other programs: .off (-g, Geomview OFF), ASCII .stl (--stl), Gmsh MSH 2.2 ASCII (--msh;
-// each triangle's physical tag is its facet's marker, its elementary tag the facet's number) and
+// each triangle's physical tag is its facet's marker by io/physical_groups.h's rule, named in
+// $PhysicalNames, its elementary tag the facet's number) and
 // VTK .vtu ASCII (--vtu; cell data facet_marker).
 #pragma once
 

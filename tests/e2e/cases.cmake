@@ -316,6 +316,11 @@ endfunction()
 strict_case(crossings ${E2E_DATA}/water.poly -pq30 3
             "deltri: warning: water.poly: 19 segment crossings split at a new vertex"
             "q['missing_bounds_by_cause']['repaired_crossing_or_overlap'] > 0 and q['triangles_missing_bounds_not_forced_by_input'] > 0")
+# tiny_crossing.poly: two segments crossing at 0.014 degrees (the issue 18 report: a corpus outline
+# whose segments cross at tiny angles gave exit 0 and 0 misses); every miss is next to that crossing.
+strict_case(tiny_crossing ${E2E_INPUTS}/tiny_crossing.poly -pq30 3
+            "deltri: warning: tiny_crossing.poly: 1 segment crossing split at a new vertex"
+            "q['triangles_missing_bounds_not_forced_by_input'] == q['missing_bounds_by_cause']['repaired_crossing_or_overlap'] == q['triangles_missing_bounds'] > 0 and q['smallest_angle'] < 0.015")
 # corner_cases.poly: no closed boundary, every triangle is outside the segments.
 strict_case(empty ${E2E_DATA}/corner_cases.poly -pq30 3
             "deltri: warning: corner_cases.poly: every triangle lies outside the segments or in a hole: the mesh is empty (try -c or -O)"
@@ -328,6 +333,10 @@ strict_case(small_input_angles ${E2E_DATA}/touching-holes6.poly -pq30 0
 strict_case(steiner_limit ${G} -pq30S10 3
             "deltri: warning: guitar.poly: refinement stopped at the -S limit of Steiner points"
             "q['missing_bounds_by_cause']['steiner_limits'] > 0 and q['missing_bounds_by_cause']['other'] == 0")
+# The same with an area bound: the triangles left above it are size misses of the -S limit.
+strict_case(steiner_limit_area ${G} -pa1S10 3
+            "deltri: warning: guitar.poly: refinement stopped at the -S limit of Steiner points"
+            "q['triangles_above_size_bound'] == q['missing_bounds_by_cause']['steiner_limits'] == q['triangles_missing_bounds'] > 0")
 
 # Issue 16: thin domains (rectangles 1 x 1e-2 to 1 x 1e-5, an L-shaped channel) meet the angle
 # bound with at most 1.1 times Triangle 1.6's triangle count (counts in thin_domains.md).

@@ -4,7 +4,8 @@ of the same run (read here by a few lines of our own, not by deltri).
 
   check_formats.py DELTRI DATA_DIR INPUTS_DIR what...   (what: msh vtu svg json pipe strict)
 
-.msh: meshio (python3-meshio) and gmsh itself; .vtu: meshio; .svg: rsvg-convert renders it, the
+.msh: meshio (python3-meshio) and gmsh itself (its binary rewrite and node data views read back);
+.vtu: meshio; .svg: rsvg-convert renders it, the
 PNG is decoded here and must be large and colourful, and the legend's counts must match the angles
 computed from .node/.ele; JSON: parsed, counts and smallest angle against .node/.ele; pipe:
 `cat X.poly | deltri -pq30 --msh=- - > a.msh` loads in gmsh and equals the file run's mesh.
@@ -217,18 +218,84 @@ def check_msh(r, quadratic, markers=True, msh=None):
         check([int(x) for x in m.point_data["marker"]] == r.vmarkers, f"{r.label}: .msh node markers differ from the .node")
     for k in range(len(r.vattrs[0]) if r.vattrs else 0):
         check([float(x) for x in m.point_data[f"attribute {k + 1}"]] == [a[k] for a in r.vattrs], f"{r.label}: .msh node attribute {k + 1} differs")
-    # Gmsh itself: it must read the file without an error, see as many nodes and elements, and
-    # write back a mesh meshio reads with the same physical groups.
-    again = r.path(".gmsh.msh")
-    g = subprocess.run(["gmsh", msh, "-0", "-o", again], capture_output=True, text=True)
+    check_with_gmsh(r, msh, quadratic, markers, expected_lines)
+
+
+def check_with_gmsh(r, msh, quadratic, markers, expected_lines):
+    """Gmsh itself reads the file: no error, as many nodes and elements, and what it writes back
+    (binary, so every double stays exact: the mesh, and each $NodeData view as a file of its own)
+    holds the .node's coordinates, the .ele's triangles with their attributes' groups, the boundary
+    and segment edges with their markers' groups, and the .node's markers and attributes. Gmsh may
+    renumber nodes, so everything is compared by coordinates."""
+    import meshio
+    scratch = tempfile.mkdtemp(prefix="deltri-gmsh-")  # gmsh's files, apart from the run's
+    again, script, views = (os.path.join(scratch, f) for f in ("again.msh", "read.geo", "view"))
+    with open(script, "w") as f:
+        f.write(f'Merge "{msh}";\nPostProcessing.SaveMesh = 0;\nFor i In {{0:PostProcessing.NbViews-1}}\n'
+                f'  Save View[i] StrCat("{views}", Sprintf("%g", i), ".msh");\nEndFor\n')
+    g = subprocess.run(["gmsh", script, "-0", "-bin", "-o", again], capture_output=True, text=True)
     log = g.stdout + g.stderr
     check(g.returncode == 0 and "Error" not in log, f"{r.label}: gmsh could not read the .msh:\n{log}")
     check(re.search(rf"\b{len(r.points)} nodes\b", log), f"{r.label}: gmsh did not see {len(r.points)} nodes:\n{log}")
     elements = len(r.tris) + len(expected_lines)
     check(re.search(rf"\b{elements} elements\b", log), f"{r.label}: gmsh did not see {elements} elements:\n{log}")
-    m2 = meshio.read(again)
-    tags = sorted({int(t) for block in m2.cell_data["gmsh:physical"] for t in block})
-    check(tags == sorted({int(v[0]) for v in m.field_data.values()}), f"{r.label}: gmsh's own rewrite has physical groups {tags}")
+    label = f"{r.label} {os.path.basename(msh)}, as gmsh wrote it back"
+    m = meshio.read(again)
+    xyz = lambda p: (float(p[0]), float(p[1]), float(p[2]))
+    # (From MSH 2.2 Gmsh writes back only the nodes that elements use, from 4.1 all of them, which
+    # sit in the surface's node block; it read them all, as its log said.)
+    used = {v for nodes, _ in r.tris for v in nodes} | {v for e in expected_lines for v in e}
+    got = sorted(map(xyz, m.points))
+    check(got in (sorted((r.points[v][0], r.points[v][1], 0.0) for v in used), sorted((x, y, 0.0) for x, y in r.points)),
+          f"{label}: other node coordinates than the .node")
+    names = {(int(v[0]), int(v[1])): k for k, v in m.field_data.items()}
+    tri_type = "triangle6" if quadratic else "triangle"
+    got_tris, got_lines = [], []
+    for block, phys in zip(m.cells, m.cell_data["gmsh:physical"]):
+        for cell, tag in zip(block.data, phys):
+            corners = tuple(xyz(m.points[i]) for i in cell)
+            if block.type == tri_type:
+                name = names[(int(tag), 2)]
+                got_tris.append((corners, () if name == "domain" else (float(name.split()[1]),)))
+            else:
+                got_lines.append((tuple(sorted(corners[:2])), int(names[(int(tag), 1)].split()[1])))
+    at = lambda v: (r.points[v][0], r.points[v][1], 0.0)
+    want_tris = [(tuple(at(v) for v in gmsh_order(nodes)), tuple(attrs[:1])) for nodes, attrs in r.tris]
+    check(sorted(got_tris) == sorted(want_tris), f"{label}: the triangles (corners, attribute group) differ from the .ele")
+    want_lines = [(tuple(sorted(at(v) for v in e)), marker) for e, marker in expected_lines.items()]
+    check(sorted(got_lines) == sorted(want_lines), f"{label}: the lines (ends, marker group) differ from the .edge")
+    # The $NodeData views: "marker" (unless -B), then "attribute 1", ... Gmsh writes each view's
+    # values by node tag, and keeps deltri's tags (1, 2, ... in .node order); compared on the nodes
+    # it wrote back (for the ones it dropped, it writes entries under meaningless tags).
+    want = {"marker": [float(x) for x in r.vmarkers]} if markers else {}
+    want.update({f"attribute {k + 1}": [a[k] for a in r.vattrs] for k in range(len(r.vattrs[0]) if r.vattrs else 0)})
+    got = dict(gmsh_view(f"{views}{i}.msh") for i in range(len(want)) if os.path.exists(f"{views}{i}.msh"))
+    check(sorted(got) == sorted(want), f"{label}: node data views {sorted(got)}, expected {sorted(want)}")
+    for name, values in want.items():
+        check({v + 1: got[name].get(v + 1) for v in used} == {v + 1: values[v] for v in used}, f"{label}: node data {name!r} differs from the .node")
+    shutil.rmtree(scratch)
+
+
+def gmsh_view(path):
+    """(name, {node tag: value}) of the one-component $NodeData of a view Gmsh saved in binary MSH."""
+    data = open(path, "rb").read()
+    pos = data.index(b"$NodeData\n") + len(b"$NodeData\n")
+
+    def line():
+        nonlocal pos
+        end = data.index(b"\n", pos)
+        text, pos = data[pos:end].decode(), end + 1
+        return text
+
+    strings = [line() for _ in range(int(line()))]
+    [line() for _ in range(int(line()))]
+    ints = [int(line()) for _ in range(int(line()))]
+    check(ints[1] == 1, f"{path}: a view of {ints[1]} components")
+    values = {}
+    for k in range(ints[2]):
+        tag, value = struct.unpack_from("<id", data, pos + 12 * k)
+        values[tag] = value
+    return strings[0].strip().strip('"'), values
 
 
 def check_vtu(r, quadratic, markers=True, vtu=None):
@@ -405,7 +472,7 @@ def main():
         check(open(os.path.join(r.dir, "a.msh"), "rb").read() == open(r.path(".msh"), "rb").read(), "the piped .msh differs from the file run's")
         shutil.copy(os.path.join(r.dir, "a.msh"), r.path(".msh"))
         check_msh(r, False)
-        check(sorted(os.listdir(r.dir)) == sorted([r.name, "a.msh", "guitar.1.node", "guitar.1.ele", "guitar.1.poly", "guitar.1.edge", "guitar.1.msh", "guitar.1.gmsh.msh"]),
+        check(sorted(os.listdir(r.dir)) == sorted([r.name, "a.msh", "guitar.1.node", "guitar.1.ele", "guitar.1.poly", "guitar.1.edge", "guitar.1.msh"]),
               f"the pipe wrote files: {os.listdir(r.dir)}")
         print(f"  {sh}: gmsh and meshio read it; equal to the file run ({len(r.tris)} triangles)")
         r.done()

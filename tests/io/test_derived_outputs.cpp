@@ -100,3 +100,11 @@ TEST(physical_groups_keep_positive_integer_markers_and_never_share_a_tag) {
   const MeshPhysicalGroups no_lines = physical_groups({}, {1});
   CHECK(no_lines.surfaces.tags == (std::vector<long long>{1}));
 }
+
+TEST(marker_groups_are_the_line_rule_alone) {
+  // A surface in 3-D: facet markers -3, 0, 6, 5 (0 and -3 are no Gmsh tags: 7 and 8 after 6).
+  const PhysicalGroups g = marker_groups({6, -3, 0, 5, 6});
+  CHECK(g.values == (std::vector<double>{-3, 0, 5, 6}));
+  CHECK(g.tags == (std::vector<long long>{7, 8, 5, 6}));
+  CHECK(g.group == (std::vector<std::uint32_t>{3, 0, 1, 2, 3}));
+}

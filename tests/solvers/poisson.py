@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """A real solver on deltri's meshes, read straight from deltri's .msh in the format it reads natively.
 
-  poisson.py DELTRI getdp|freefem
+  poisson.py DELTRI getdp|freefem [old-tag-rule]
 
 -Laplace(u) = f on the L-shaped domain of lshape.poly with u = sin(pi x) cos(pi y) + x y, Dirichlet on
 segment marker 1 and Neumann on markers 2 and 3, meshed by deltri -pq30a<A> at four successively
@@ -13,6 +13,11 @@ halved area bounds. Asserted, from the solver's own output:
     reads 3-node triangles only) with its P2 space on the linear meshes.
 The rate is the least-squares slope of log(error) against log(h), h = sqrt(area / triangles).
 Exits 77 (skipped) when the solver is not installed.
+
+With old-tag-rule, the test of the test: every mesh (MSH 2.2 ASCII then) has its domain moved to
+physical tag 1 as the rule before issue 18 tagged it (surfaces numbered apart from the lines, so
+marker 1 and the domain shared tag 1), and the run must fail on the regions check: exit 0 when it
+does, 1 when the test passes or fails for another reason.
 """
 import math
 import os
@@ -24,22 +29,48 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DELTRI, SOLVER = os.path.abspath(sys.argv[1]), sys.argv[2]
+OLD_TAG_RULE = sys.argv[3:] == ["old-tag-rule"]
 BOUNDS = [0.01, 0.005, 0.0025, 0.00125]
 LENGTHS = {1: 4.0, 2: 2.0, 3: 2.0}
 AREA = 3.0
 
 
-def fail(message):
-    print("FAIL:", message)
-    sys.exit(1)
+class Failure(Exception):
+    def __init__(self, message, regions=False):
+        super().__init__(message)
+        self.regions = regions  # the regions check failed (what the old tag rule must cause)
+
+
+def fail(message, regions=False):
+    raise Failure(message, regions)
+
+
+def old_tag_rule(path):
+    """Rewrites an MSH 2.2 ASCII file to the tag rule before issue 18: the domain is surface 1."""
+    lines, section = open(path).read().split("\n"), None
+    for i, line in enumerate(lines):
+        if line.startswith("$"):
+            section = line
+            continue
+        fields = line.split()
+        if section == "$PhysicalNames" and len(fields) == 3 and fields[0] == "2":
+            lines[i] = '2 1 "domain"'
+        elif section == "$Elements" and len(fields) > 3 and fields[1] in ("2", "9"):
+            fields[3] = "1"
+            lines[i] = " ".join(fields)
+    open(path, "w").write("\n".join(lines))
 
 
 def mesh(work, area, switches, msh_format):
+    if OLD_TAG_RULE:
+        msh_format = "2.2"
     name = f"a{area}{switches}{msh_format.replace(',', '-')}.msh"
     p = subprocess.run([DELTRI, f"-pq30a{area}{switches}", "-Q", f"--msh={name}", f"--msh-format={msh_format}", "lshape.poly"],
                        cwd=work, capture_output=True, text=True)
     if p.returncode != 0:
         fail(f"deltri: {p.stderr}")
+    if OLD_TAG_RULE:
+        old_tag_rule(os.path.join(work, name))
     with open(os.path.join(work, "lshape.1.ele")) as f:
         triangles = int(f.readline().split()[0])
     return name, triangles
@@ -67,7 +98,7 @@ def freefem(work, msh, order):
     lengths = dict(zip(LENGTHS, (float(x) for x in lengths.split())))
     # Every boundary edge carries exactly one of the labels: the three add up to the whole boundary.
     if abs(sum(lengths.values()) - float(total)) > 1e-9 or abs(area - total_area) > 1e-9:
-        fail(f"FreeFem++ on {msh}: labels do not cover the boundary / region 4 is not the whole domain: {found}")
+        fail(f"FreeFem++ on {msh}: labels do not cover the boundary / region 4 is not the whole domain: {found}", regions=True)
     return float(found["err2"]), area, lengths
 
 
@@ -83,7 +114,7 @@ def study(work, label, switches, msh_format, solve):
         msh, triangles = mesh(work, area, switches, msh_format)
         err2, domain, lengths = solve(msh)
         if abs(domain - AREA) > 1e-9 or any(abs(lengths[k] - LENGTHS[k]) > 1e-9 for k in LENGTHS):
-            fail(f"{label} -a{area}: regions arrived wrong: domain (region 4) area {domain}, marker lengths {lengths}, expected {AREA} and {LENGTHS}")
+            fail(f"{label} -a{area}: regions arrived wrong: domain (region 4) area {domain}, marker lengths {lengths}, expected {AREA} and {LENGTHS}", regions=True)
         hs.append(math.sqrt(AREA / triangles))
         errors.append(math.sqrt(err2))
         print(f"  {label} -pq30a{area}{switches} --msh-format={msh_format}: {triangles} triangles, L2 error {errors[-1]:.4e}")
@@ -111,7 +142,17 @@ def main():
     if not p2 > 2.6:
         fail(f"P2 L2 rate {p2:.3f} not above 2.6")
     shutil.rmtree(work)
-    print("poisson: ok")
 
 
-main()
+try:
+    main()
+except Failure as failure:
+    print("FAIL:", failure)
+    if OLD_TAG_RULE and failure.regions:
+        print("poisson: with the old tag rule the test fails, as it must")
+        sys.exit(0)
+    sys.exit(1)
+if OLD_TAG_RULE:
+    print("FAIL: the test passed with the old tag rule")
+    sys.exit(1)
+print("poisson: ok")

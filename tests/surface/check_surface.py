@@ -17,7 +17,9 @@ parser and checks, from the input facets alone (numpy, no deltri code):
     wedge.poly has such corners: 15 degrees);
   * -a: no triangle larger than the bound;
   * --msh, --vtu, --stl and -g (OFF) read back by meshio with the same points and triangles, and
-    gmsh opens the .msh.
+    gmsh opens the .msh; the .msh's physical tags follow the documented rule (docs/formats.md,
+    "Physical groups") from the .ele's facet markers: a positive marker is its own tag, 0 and
+    negative markers the next tags in ascending order, each group named "marker <value>".
 """
 import math
 import os
@@ -31,8 +33,8 @@ try:
 except ImportError:  # main() reports the test as skipped, with the command that installs numpy
     np = None
 
-CLOSED = {"cube.smesh", "l_bracket.poly", "slot_box.poly", "elmer_L.poly", "wedge.poly"}
-INPUTS = ["cube.smesh", "l_bracket.poly", "tee.poly", "slot_box.poly", "elmer_L.poly", "pmg_example.poly", "wedge.poly"]
+CLOSED = {"cube.smesh", "cube_markers.smesh", "l_bracket.poly", "slot_box.poly", "elmer_L.poly", "wedge.poly"}
+INPUTS = ["cube.smesh", "cube_markers.smesh", "l_bracket.poly", "tee.poly", "slot_box.poly", "elmer_L.poly", "pmg_example.poly", "wedge.poly"]
 SWITCHES = [("-pq20C", 20, None), ("-pq30C", 30, None), ("-pq30a0.02C", 30, 0.02)]
 
 failures = []
@@ -266,14 +268,42 @@ def check_run(deltri, inp, work, sw, q, amax):
     if amax is not None and tri_area.max() > amax * (1 + 1e-9):
         fail(f"{tag}: a triangle of area {tri_area.max()} > {amax}")
     # 4. other formats
-    check_formats(tag, base, P, T)
+    check_formats(tag, base, P, T, M)
     print(f"ok {tag}: {len(T)} triangles, smallest angle {smallest:.2f}, {len(edges)} edges"
           + (f", {excused} below {q} at small input angles" if excused else ""))
 
 
-def check_formats(tag, base, P, T):
+def rule_tags(markers):
+    """The physical tag of each marker by the documented rule."""
+    values = sorted(set(markers))
+    next_tag = max([v for v in values if v >= 1], default=0) + 1
+    tags = {}
+    for v in values:
+        tags[v] = v if v >= 1 else next_tag
+        next_tag += v < 1
+    return tags
+
+
+def check_physical(tag, path, T, M):
+    import meshio
+    m = meshio.read(path)
+    tags = rule_tags(M.tolist())
+    names = {f"marker {v}": (t, 2) for v, t in tags.items()}
+    got = {k: (int(v[0]), int(v[1])) for k, v in m.field_data.items()}
+    if got != names:
+        fail(f"{tag}: the .msh's $PhysicalNames {got}, the rule gives {names}")
+    tri = np.concatenate([c.data for c in m.cells if c.type == "triangle"])
+    phys = np.concatenate([p for c, p in zip(m.cells, m.cell_data["gmsh:physical"]) if c.type == "triangle"])
+    got = sorted((tuple(sorted(c)), int(p)) for c, p in zip(tri.tolist(), phys))
+    want = sorted((tuple(sorted(c)), tags[int(k)]) for c, k in zip(T.tolist(), M))
+    if got != want:
+        fail(f"{tag}: the .msh's physical tags are not the .ele's facet markers by the rule")
+
+
+def check_formats(tag, base, P, T, M):
     import meshio
     key = sorted(map(tuple, np.sort(T, axis=1)))
+    check_physical(tag, f"{base}.1.msh", T, M)
     for ext in ("msh", "vtu", "stl", "off"):
         path = f"{base}.1.{ext}"
         m = meshio.read(path)
