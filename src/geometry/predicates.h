@@ -119,9 +119,25 @@ class Predicates {
     return incircle_adapt(a, b, c, d, plain.permanent);
   }
 
+  // incircle with its ties broken by a symbolic perturbation, so that the Delaunay triangulation
+  // is unique and every builder (divide and conquer, -F, -i) makes the same one. Each point's lift
+  // x^2 + y^2 is lowered by epsilon^rank, rank 1, 2, ... in lexicographic (x, y) order (an order of
+  // the coordinates alone, not of the input), for an infinitesimal epsilon > 0. Where the exact
+  // determinant is nonzero that changes nothing and this is incircle; where it is zero the sign is
+  // that of the highest-priority term (symbolic_perturbation.cpp). Zero only when all four points
+  // are collinear; never for a, b, c counter-clockwise and d distinct from them. The four points
+  // must be distinct. On a square the diagonal kept is the one through its lower left corner.
+  double incircle_perturbed(const Point& a, const Point& b, const Point& c, const Point& d) {
+    const double det = incircle(a, b, c, d);
+    return det != 0.0 ? det : incircle_tie(a, b, c, d);
+  }
+
   PredicateCounters counters;
 
  private:
+  // The sign of the perturbation's leading term for an exactly cocircular a, b, c, d: +1 or -1.
+  double incircle_tie(const Point& a, const Point& b, const Point& c, const Point& d);
+
   // A coordinate difference with which incircle's plain evaluation (products of up to four
   // differences, sums of six) neither underflows nor overflows.
   static bool filter_safe(double v) {
