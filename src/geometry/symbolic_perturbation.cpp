@@ -16,30 +16,33 @@
 // perturbed points, is a unique triangulation; it is also a Delaunay triangulation of the points
 // themselves (the perturbation only decides exact ties). Every point stays on the lower hull
 // (epsilon is infinitesimal), so the vertices and the convex hull edges do not change.
-#include <algorithm>
-
+//
+// Only the first term is ever needed: four distinct points with a zero determinant lie on one
+// circle (then no three are collinear, and every derivative is nonzero) or on one line (then every
+// derivative is zero). So the tie costs a search for the smallest point and one orientation.
 #include "geometry/predicates.h"
 
 namespace deltri {
 
-double Predicates::incircle_tie(const Point& a, const Point& b, const Point& c, const Point& d) {
+double Predicates::incircle_adapt_perturbed(const Point& a, const Point& b, const Point& c, const Point& d,
+                                            double permanent) {
+  const double det = incircle_adapt(a, b, c, d, permanent);
+  if (det != 0.0) return det;
   const Point* points[4] = {&a, &b, &c, &d};
-  int rank[4] = {0, 1, 2, 3};  // indices into points, highest priority (smallest x, then y) first
-  std::sort(rank, rank + 4, [&](int i, int j) {
-    const Point &p = *points[i], &q = *points[j];
-    return p.x < q.x || (p.x == q.x && p.y < q.y);
-  });
-  for (const int k : rank) {
-    double derivative = 0.0;
-    switch (k) {
-      case 0: derivative = orient2d(b, c, d); break;
-      case 1: derivative = orient2d(c, a, d); break;
-      case 2: derivative = orient2d(a, b, d); break;
-      default: derivative = -orient2d(a, b, c); break;
-    }
-    if (derivative != 0.0) return derivative > 0.0 ? -1.0 : 1.0;
+  int first = 0;  // the highest priority: smallest x, then smallest y
+  for (int k = 1; k < 4; ++k) {
+    const Point &p = *points[k], &q = *points[first];
+    if (p.x < q.x || (p.x == q.x && p.y < q.y)) first = k;
   }
-  return 0.0;  // all four collinear
+  double derivative = 0.0;
+  switch (first) {
+    case 0: derivative = orient2d(b, c, d); break;
+    case 1: derivative = orient2d(c, a, d); break;
+    case 2: derivative = orient2d(a, b, d); break;
+    default: derivative = -orient2d(a, b, c); break;
+  }
+  if (derivative == 0.0) return 0.0;  // all four collinear
+  return derivative > 0.0 ? -1.0 : 1.0;
 }
 
 }  // namespace deltri
