@@ -24,6 +24,11 @@
 // leaving a single point on one side moves the nearest point across so that both sides have two.
 // Each axis has its own total order (x then y; y then -x) so that a cut along y is a rotation of the
 // vertical case and ties are broken the same way.
+//
+// Cocircular ties: the merge's empty-circle tests are Predicates::incircle_perturbed, which breaks
+// an exact zero by a fixed symbolic perturbation of the points, so the triangulation is the unique
+// Delaunay triangulation of the perturbed points whatever the cuts and merge order (and -F and -i
+// end at the same one). On general-position input no test is zero and nothing changes.
 #include "delaunay/divide_and_conquer.h"
 
 #include <algorithm>
@@ -388,7 +393,7 @@ TriangleId Builder::merge(TriangleId left_ring, TriangleId right_ring, int axis,
     if (left_ok) {
       while (true) {
         const VertexId x2 = corner_[lprev(link_[3 * gl])];
-        if (x2 == kGhostVertex || pred.incircle(p_[l], p_[r], p_[x], p_[x2]) <= 0.0) break;
+        if (x2 == kGhostVertex || pred.incircle_perturbed(p_[l], p_[r], p_[x], p_[x2]) <= 0.0) break;
         gl = delete_by_flip(gl, true);
         x = x2;
       }
@@ -398,13 +403,13 @@ TriangleId Builder::merge(TriangleId left_ring, TriangleId right_ring, int axis,
     if (right_ok) {
       while (true) {
         const VertexId y2 = corner_[lprev(link_[3 * gr])];
-        if (y2 == kGhostVertex || pred.incircle(p_[l], p_[r], p_[y], p_[y2]) <= 0.0) break;
+        if (y2 == kGhostVertex || pred.incircle_perturbed(p_[l], p_[r], p_[y], p_[y2]) <= 0.0) break;
         gr = delete_by_flip(gr, false);
         y = y2;
       }
     }
     if (!left_ok && !right_ok) break;
-    if (!left_ok || (right_ok && pred.incircle(p_[l], p_[r], p_[x], p_[y]) > 0.0)) {
+    if (!left_ok || (right_ok && pred.incircle_perturbed(p_[l], p_[r], p_[x], p_[y]) > 0.0)) {
       // Cross triangle (r, y, l) from the right ghost; the new base is l->y.
       const EdgeRef ring = link_[3 * gr + 1];
       corner_[3 * gr + 2] = l;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <random>
 
+#include "delaunay/lawson_pass.h"
 #include "geometry/box.h"
 #include "mesh/operations.h"
 
@@ -154,6 +155,9 @@ void incremental_delaunay(Mesh& mesh, Predicates& pred,
     if (r.status == InsertStatus::Inserted) hint = r.edge;
   }
   remove_ghosts(mesh);
+  // insert_vertex leaves cocircular ties as its insertion order made them; the tie rule picks
+  // divide and conquer's diagonals (one incircle test per edge on general-position input).
+  lawson_pass(mesh, pred);
 }
 
 }  // namespace deltri

@@ -15,8 +15,9 @@ namespace deltri {
 // (duplicate, kept) is appended to `duplicates`, in increasing order of the duplicate. Fewer than
 // three distinct points, or all of them collinear, leave no triangles. The insertion order is a
 // fixed-seed shuffle cut into rounds sorted along a Hilbert curve, so the output is the same on
-// every run. The result has no ghosts and no dead
-// slots; boundary edges have link == kNone; triangle attribute and area-bound arrays are emptied.
+// every run; cocircular ties end as Predicates::incircle_perturbed breaks them, so the triangles are
+// divide and conquer's. The result has no ghosts and no dead slots; boundary edges have
+// link == kNone; triangle attribute and area-bound arrays are emptied.
 void incremental_delaunay(Mesh& mesh, Predicates& pred,
                           std::vector<std::pair<VertexId, VertexId>>& duplicates);
 

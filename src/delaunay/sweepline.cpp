@@ -6,7 +6,7 @@
 #include <queue>
 
 #include "delaunay/incremental.h"
-#include "mesh/operations.h"
+#include "delaunay/lawson_pass.h"
 
 namespace deltri {
 namespace {
@@ -224,26 +224,6 @@ bool tiles_convex_hull(const Mesh& mesh, Predicates& pred, std::size_t distinct)
     e = f;
   }
   return e == first;
-}
-
-// Flips every edge whose opposite vertex lies strictly inside the circle of its triangle, until
-// none does (Lawson): repairs what inexact event order may have left.
-void lawson_pass(Mesh& mesh, Predicates& pred) {
-  std::vector<EdgeRef> stack;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
-    if (mesh.link[e] != kNone && mesh.link[e] > e) stack.push_back(e);
-  while (!stack.empty()) {
-    const EdgeRef e = stack.back();
-    stack.pop_back();
-    const EdgeRef f = mesh.link[e];
-    if (f == kNone) continue;
-    if (pred.incircle(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e)), mesh.point(mesh.apex(e)),
-                      mesh.point(mesh.apex(f))) <= 0)
-      continue;
-    const EdgeRef g = flip(mesh, e);
-    const EdgeRef h = mesh.link[g];
-    for (const EdgeRef x : {lnext(g), lprev(g), lnext(h), lprev(h)}) stack.push_back(x);
-  }
 }
 
 }  // namespace

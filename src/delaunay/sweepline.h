@@ -10,9 +10,9 @@
 // no triangle is lost; only the order of events and the breakpoints used to find the arc above a
 // site are floating point. Each breakpoint traces a Voronoi edge, whose two ends make the two
 // triangles sharing its dual edge, so triangles are linked as they are made. The result is checked
-// to tile the convex hull, and an exact Lawson pass flips any edge that inexact event order left
-// non-Delaunay. Where four or more points are cocircular the Delaunay triangulation is not unique:
-// the sweep picks the diagonals by its event order, divide and conquer by its merge order.
+// to tile the convex hull, and an exact Lawson pass (lawson_pass.h) flips any edge that inexact
+// event order left non-Delaunay, and any diagonal of a cocircular polygon that the tie rule of
+// Predicates::incircle_perturbed does not choose: the result is divide and conquer's, ties included.
 #pragma once
 
 #include <utility>

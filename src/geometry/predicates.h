@@ -107,6 +107,28 @@ class Predicates {
   // Positive if d lies inside the circle through a, b, c (given counter-clockwise), negative if
   // outside, zero if the four points are cocircular.
   double incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
+    return incircle_filtered<false>(a, b, c, d);
+  }
+
+  // incircle with its ties broken by a symbolic perturbation, so that the Delaunay triangulation
+  // is unique and every builder (divide and conquer, -F, -i) makes the same one. Each point's lift
+  // x^2 + y^2 is lowered by epsilon^rank, rank 1, 2, ... in lexicographic (x, y) order (an order of
+  // the coordinates alone, not of the input), for an infinitesimal epsilon > 0. Where the exact
+  // determinant is nonzero that changes nothing and this is incircle; where it is zero the sign is
+  // that of the highest-priority term (symbolic_perturbation.cpp). Zero only when all four points
+  // are collinear; never for a, b, c counter-clockwise and d distinct from them. The four points
+  // must be distinct. On a square the diagonal kept is the one through its lower left corner.
+  // The tie rule sits behind the adaptive stage (only a determinant the filter cannot decide can
+  // be zero), so a caller pays nothing for it on general-position input.
+  double incircle_perturbed(const Point& a, const Point& b, const Point& c, const Point& d) {
+    return incircle_filtered<true>(a, b, c, d);
+  }
+
+  PredicateCounters counters;
+
+ private:
+  template <bool kBreakTies>
+  double incircle_filtered(const Point& a, const Point& b, const Point& c, const Point& d) {
     ++counters.incircle_calls;
     const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y, cdx = c.x - d.x, cdy = c.y - d.y;
     const PlainIncircle<double> plain = plain_incircle(adx, ady, bdx, bdy, cdx, cdy);
@@ -116,12 +138,10 @@ class Predicates {
     if (std::fabs(plain.det) > bounds::kIncircleA * plain.permanent && filter_safe(adx) && filter_safe(ady) &&
         filter_safe(bdx) && filter_safe(bdy) && filter_safe(cdx) && filter_safe(cdy))
       return plain.det;
+    if constexpr (kBreakTies) return incircle_adapt_perturbed(a, b, c, d, plain.permanent);
     return incircle_adapt(a, b, c, d, plain.permanent);
   }
 
-  PredicateCounters counters;
-
- private:
   // A coordinate difference with which incircle's plain evaluation (products of up to four
   // differences, sums of six) neither underflows nor overflows.
   static bool filter_safe(double v) {
@@ -132,6 +152,9 @@ class Predicates {
   double orient2d_adapt(const Point& a, const Point& b, const Point& c, double detsum);
   double incircle_adapt(const Point& a, const Point& b, const Point& c, const Point& d,
                         double permanent);
+  // incircle_adapt, and where it finds zero the sign of the perturbation's leading term.
+  double incircle_adapt_perturbed(const Point& a, const Point& b, const Point& c, const Point& d,
+                                  double permanent);
 };
 
 }  // namespace deltri

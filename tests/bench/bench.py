@@ -152,8 +152,8 @@ def point_sets():
 
 def algorithms():
     """-F (Fortune's sweepline) against divide and conquer and -i on a million points, in memory
-    (tests/bench/sweepline_vs_dc.cpp); it also checks that -F gives divide and conquer's
-    triangulation, and fails the bench if not."""
+    (tests/bench/sweepline_vs_dc.cpp); it also checks that -F and -i give divide and conquer's
+    triangles, ties included, and fails the bench if not."""
     if only and only not in "sweepline":
         return
     print("## Delaunay algorithms: divide and conquer, sweepline (-F), incremental (-i), 1M points, in memory\n")

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "delaunay/triangulate.h"
+#include "geometry/exact_reference.h"
 #include "harness/check.h"
 #include "mesh/mesh_checks.h"
 
@@ -17,7 +18,6 @@ using meshcheck::hull_boundary_points;
 using meshcheck::mesh_of;
 using meshcheck::triangle_set;
 using meshcheck::uniform;
-using meshcheck::firm_edges;
 using meshcheck::gaussian;
 using meshcheck::shuffled_grid;
 
@@ -162,41 +162,128 @@ TEST(divide_and_conquer_agrees_with_incremental) {
   }
 }
 
-// ---- Fortune's sweepline (-F) against divide and conquer ----
+// ---- one triangulation, ties included: every algorithm against the perturbed reference ----
 namespace {
 
-// The sweepline's triangulation is Delaunay and, away from cocircular ties, the same as divide and
-// conquer's; with no ties (`exact`) the same triangles.
-void check_sweepline_matches(const std::vector<Point>& pts, bool exact) {
-  Mesh a = mesh_of(pts), b = mesh_of(pts);
-  const DelaunayReport ra = delaunay_triangulate(a, DelaunayAlgorithm::Sweepline, 1);
-  const DelaunayReport rb = delaunay_triangulate(b, DelaunayAlgorithm::DivideAndConquer, 1);
-  CHECK(!ra.sweepline_fell_back);
-  CHECK(ra.duplicates == rb.duplicates);
-  CHECK_EQ(faults(a, a.live_triangles() > 0), 0);
-  CHECK_EQ(a.live_triangles(), b.live_triangles());
-  if (exact) CHECK(triangle_set(a) == triangle_set(b));
-  CHECK(firm_edges(a) == firm_edges(b));
+// Interior edges that are not locally Delaunay under the symbolic perturbation, judged by the
+// independent reference (tests/geometry/exact_reference.h). None, in a triangulation of the convex
+// hull of the points, makes it the perturbed points' Delaunay triangulation, which is unique.
+int perturbed_faults(const Mesh& m) {
+  int bad = 0;
+  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+    if (!m.is_live(triangle_of(e)) || m.link[e] == kNone || m.link[e] < e) continue;
+    if (reference::perturbed_incircle_sign(m.point(m.org(e)), m.point(m.dest(e)), m.point(m.apex(e)),
+                                           m.point(m.apex(m.link[e]))) >= 0)
+      ++bad;
+  }
+  return bad;
+}
+
+// Divide and conquer (one and two threads, alternating and vertical cuts), the sweepline and
+// incremental insertion give the same triangles; with `reference` those are also checked against
+// the exact perturbed test (slow: arbitrary-precision 4x4 determinants).
+void check_one_triangulation(const std::vector<Point>& pts, bool reference) {
+  Mesh dc = mesh_of(pts);
+  const DelaunayReport rdc = delaunay_triangulate(dc, DelaunayAlgorithm::DivideAndConquer, 1);
+  const bool flat = dc.live_triangles() == 0;
+  CHECK_EQ(faults(dc, !flat), 0);
+  CHECK_EQ(static_cast<std::size_t>(dc.live_triangles()),
+           flat ? 0 : 2 * (pts.size() - rdc.duplicates.size()) - 2 - hull_boundary_points(pts));
+  if (reference) CHECK_EQ(perturbed_faults(dc), 0);
+  const auto expected = triangle_set(dc);
+  for (const auto& [algorithm, threads] : {std::pair{DelaunayAlgorithm::DivideAndConquer, 2}, std::pair{DelaunayAlgorithm::VerticalCuts, 1},
+                                           std::pair{DelaunayAlgorithm::Sweepline, 1}, std::pair{DelaunayAlgorithm::Incremental, 1}}) {
+    Mesh m = mesh_of(pts);
+    const DelaunayReport r = delaunay_triangulate(m, algorithm, threads);
+    CHECK(!r.sweepline_fell_back);
+    CHECK(r.duplicates == rdc.duplicates);
+    CHECK_EQ(faults(m, !flat), 0);
+    CHECK(triangle_set(m) == expected);
+  }
+}
+
+std::vector<Point> regular_polygon(int n, double radius, Point centre, bool with_centre) {
+  std::vector<Point> pts;
+  for (int i = 0; i < n; ++i)
+    pts.push_back({centre.x + radius * std::cos(2 * M_PI * i / n), centre.y + radius * std::sin(2 * M_PI * i / n)});
+  if (with_centre) pts.push_back(centre);
+  return pts;
+}
+
+// A polygon symmetric about both axes and both diagonals exactly (mirrored doubles), so that any
+// two mirror pairs are exactly cocircular, on circles of several radii.
+std::vector<Point> mirrored_rings(int per_octant, int rings) {
+  std::vector<Point> pts{{0, 0}};
+  for (int r = 1; r <= rings; ++r)
+    for (int i = 0; i < per_octant; ++i) {
+      const double angle = (i + 0.5 * (r % 2)) * M_PI / (4 * per_octant);
+      const double x = r * std::cos(angle), y = r * std::sin(angle);
+      for (const Point p : {Point{x, y}, Point{y, x}})
+        for (const Point s : {Point{1, 1}, Point{-1, 1}, Point{1, -1}, Point{-1, -1}}) pts.push_back({s.x * p.x, s.y * p.y});
+    }
+  return pts;
+}
+
+// The lattice points on circles x^2 + y^2 = r^2 with many representations (exactly cocircular).
+std::vector<Point> lattice_circles(std::initializer_list<int> radii, Point centre) {
+  std::vector<Point> pts;
+  for (const int r : radii)
+    for (int x = -r; x <= r; ++x)
+      for (int y = -r; y <= r; ++y)
+        if (x * x + y * y == r * r) pts.push_back({centre.x + x, centre.y + y});
+  pts.push_back(centre);
+  return pts;
+}
+
+// A random subset of a w x h lattice, with some points repeated.
+std::vector<Point> lattice_subset(int w, int h, double keep, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point> pts;
+  for (int i = 0; i < w; ++i)
+    for (int j = 0; j < h; ++j)
+      if (u(rng) < keep) pts.push_back({i * 0.5, j * 0.5});
+  for (std::size_t k = 0; k < pts.size(); k += 17) pts.push_back(pts[k]);
+  std::shuffle(pts.begin(), pts.end(), rng);
+  return pts;
 }
 
 }  // namespace
 
-TEST(sweepline_small_sizes_and_degenerate_sets) {
-  for (std::size_t n = 3; n <= 40; ++n)
-    for (unsigned seed = 0; seed < 20; ++seed) check_point_set(uniform(n, seed * 100 + n), DelaunayAlgorithm::Sweepline);
-  for (int w = 1; w <= 7; ++w)
-    for (int h = 1; h <= 7; ++h)
-      if (w * h >= 3) check_sweepline_matches(shuffled_grid(w, h, static_cast<unsigned>(w * 10 + h)), false);
-  std::vector<Point> circle;
-  for (int i = 0; i < 64; ++i) circle.push_back({std::cos(i * M_PI / 32), std::sin(i * M_PI / 32)});
-  circle.push_back({0, 0});
-  check_sweepline_matches(circle, false);
-  check_sweepline_matches({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {0, 0}}, false);  // collinear, a duplicate
+TEST(one_triangulation_on_grids_and_lines) {
+  for (int w = 1; w <= 9; ++w)
+    for (int h = 1; h <= 9; ++h)
+      if (w * h >= 3) check_one_triangulation(shuffled_grid(w, h, static_cast<unsigned>(w * 10 + h)), true);
+  check_one_triangulation({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {0, 0}}, true);  // collinear, a duplicate
+  std::vector<Point> far_grid;
+  for (int i = 0; i < 30; ++i)
+    for (int j = 0; j < 20; ++j) far_grid.push_back({1e9 + i * 1e-7, -1e9 + j * 1e-7});
+  std::shuffle(far_grid.begin(), far_grid.end(), std::mt19937(5));
+  check_one_triangulation(far_grid, true);
 }
 
-// The ctest-sized version of `make bench`'s million-point comparison (tests/bench/sweepline_vs_dc).
-TEST(sweepline_equals_divide_and_conquer_20k) {
-  check_sweepline_matches(uniform(20000, 31), true);
-  check_sweepline_matches(gaussian(20000, 32), true);
-  check_sweepline_matches(shuffled_grid(141, 142, 33), false);
+TEST(one_triangulation_on_cocircular_sets) {
+  for (int n = 3; n <= 40; ++n) {
+    check_one_triangulation(regular_polygon(n, 1.0, {0, 0}, false), true);
+    check_one_triangulation(regular_polygon(n, 2.5, {3, -1}, true), true);
+  }
+  check_one_triangulation(mirrored_rings(5, 4), true);
+  check_one_triangulation(mirrored_rings(16, 12), true);
+  check_one_triangulation(lattice_circles({5, 25, 65}, {0, 0}), true);
+  check_one_triangulation(lattice_circles({65, 85, 125}, {0.5, 1000}), true);
+  for (unsigned seed = 0; seed < 10; ++seed) check_one_triangulation(lattice_subset(12, 10, 0.5, seed), true);
+  check_one_triangulation(lattice_subset(150, 130, 0.3, 11), false);
+}
+
+TEST(one_triangulation_on_random_points) {
+  for (std::size_t n = 3; n <= 30; ++n)
+    for (unsigned seed = 0; seed < 5; ++seed) check_one_triangulation(uniform(n, seed * 100 + n), true);
+  check_one_triangulation(uniform(20000, 31), false);
+  check_one_triangulation(gaussian(20000, 32), false);
+  check_one_triangulation(shuffled_grid(141, 142, 33), false);
+}
+
+TEST(sweepline_small_sizes) {
+  for (std::size_t n = 3; n <= 40; ++n)
+    for (unsigned seed = 0; seed < 20; ++seed) check_point_set(uniform(n, seed * 100 + n), DelaunayAlgorithm::Sweepline);
 }

@@ -350,3 +350,11 @@ foreach(item refine_o2 z crossing_attributes lenient messages poly_output split_
   add_test(NAME e2e.triangle_compat.${item}
            COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/triangle_compat.sh $<TARGET_FILE:deltri> ${E2E_INPUTS} ${item})
 endforeach()
+
+# ---- one triangulation, cocircular ties included (issue 23): divide and conquer, -l, -i and -F give
+# the same triangles with the checker on, and those are the Delaunay triangulation of the
+# symbolically perturbed points, judged with exact rationals in the script ----
+add_test(NAME e2e.one_triangulation
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/e2e/one_triangulation.py $<TARGET_FILE:deltri>
+                 ${CMAKE_CURRENT_BINARY_DIR}/one_triangulation)
+set_tests_properties(e2e.one_triangulation PROPERTIES TIMEOUT 300)

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "geometry/point.h"
@@ -153,6 +154,7 @@ struct Dyadic {
   BigInt mantissa;
   int exponent = 0;
 
+  Dyadic() = default;  // zero
   explicit Dyadic(double v) {
     if (v == 0.0) return;
     int e = 0;
@@ -218,6 +220,52 @@ inline int incircle_sign(const deltri::Point& a, const deltri::Point& b, const d
                      r1.y * (r2.x * r3.lift - r2.lift * r3.x) +
                      r1.lift * (r2.x * r3.y - r2.y * r3.x);
   return -det.sign();
+}
+
+// The 4x4 determinant by Leibniz's formula: the sum over all 24 permutations.
+inline Dyadic determinant4(const Dyadic (&m)[4][4]) {
+  int perm[4] = {0, 1, 2, 3};
+  Dyadic total(0.0);
+  do {
+    int inversions = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) inversions += perm[i] > perm[j];
+    const Dyadic term = m[0][perm[0]] * m[1][perm[1]] * m[2][perm[2]] * m[3][perm[3]];
+    total = inversions % 2 ? total - term : total + term;
+  } while (std::next_permutation(perm, perm + 4));
+  return total;
+}
+
+// The sign deltri's incircle_perturbed must give: that of the 4x4 determinant of the rows
+// (x, y, x^2 + y^2 - eps^rank, 1) of a, b, c, d (positive when d is inside the circle of a
+// counter-clockwise a, b, c) for an infinitesimal eps > 0, rank 1, 2, ... in lexicographic (x, y)
+// order of the four points. The determinant is affine in the lifts, so it is D0 minus, for each
+// point, eps^rank times the determinant with the lift column replaced by that point's unit vector;
+// the sign is that of the lowest power of eps with a nonzero coefficient. Points must be distinct.
+inline int perturbed_incircle_sign(const deltri::Point& a, const deltri::Point& b, const deltri::Point& c,
+                                   const deltri::Point& d) {
+  const deltri::Point pts[4] = {a, b, c, d};
+  Dyadic m[4][4];
+  for (int i = 0; i < 4; ++i) {
+    const Dyadic x(pts[i].x), y(pts[i].y);
+    m[i][0] = x;
+    m[i][1] = y;
+    m[i][2] = x * x + y * y;
+    m[i][3] = Dyadic(1.0);
+  }
+  const int unperturbed = determinant4(m).sign();
+  if (unperturbed != 0) return unperturbed;
+  std::vector<std::pair<std::pair<double, double>, int>> order;
+  for (int i = 0; i < 4; ++i) order.push_back({{pts[i].x, pts[i].y}, i});
+  std::sort(order.begin(), order.end());
+  for (const auto& entry : order) {
+    Dyadic unit[4][4];
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) unit[i][j] = j != 2 ? m[i][j] : Dyadic(i == entry.second ? 1.0 : 0.0);
+    const int coefficient = -determinant4(unit).sign();
+    if (coefficient != 0) return coefficient;
+  }
+  return 0;
 }
 
 // (a - p) . (b - p).

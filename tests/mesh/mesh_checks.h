@@ -136,23 +136,6 @@ inline std::vector<Point> shuffled_grid(int w, int h, unsigned seed) {
   return pts;
 }
 
-// The edges both Delaunay triangulations of a point set must have: every hull edge, and every
-// interior edge whose two triangles are not cocircular (exact incircle). Where four or more points
-// are cocircular the diagonals are a free choice; each algorithm makes its own.
-inline std::set<std::pair<VertexId, VertexId>> firm_edges(const Mesh& m) {
-  Predicates pred;
-  std::set<std::pair<VertexId, VertexId>> edges;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
-    if (!m.is_live(triangle_of(e))) continue;
-    const EdgeRef f = m.link[e];
-    if (f != kNone && (f < e || pred.incircle(m.point(m.org(e)), m.point(m.dest(e)), m.point(m.apex(e)), m.point(m.apex(f))) == 0))
-      continue;
-    edges.emplace(std::min(m.org(e), m.dest(e)), std::max(m.org(e), m.dest(e)));
-  }
-  return edges;
-}
-
-
 // Distinct points on the convex hull boundary, corners and points on hull edges alike.
 inline std::size_t hull_boundary_points(std::vector<Point> pts) {
   Predicates pred;
