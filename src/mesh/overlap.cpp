@@ -113,19 +113,42 @@ class OverlapFinder {
     for (std::uint32_t k = 0; k < ranges_.size(); ++k) for_cells(ranges_[k], [&](std::uint32_t c) { in_cell_[next[c]++] = k; });
   }
 
+  // A pair is tested in the cell of its boxes' intersection's lower-left corner: the larger of
+  // their first rows and the larger of their first columns, so at least one of the two starts in
+  // this row and one (the same or the other) in this column. Only such pairs are enumerated: each
+  // triangle starting here against all the cell's triangles, and those starting in this row only
+  // against those starting in this column only. Trying every pair of every cell would visit a pair
+  // once per shared cell, which made long slivers (a fan, a crowded crossing) cubic.
   std::optional<OverlapFinding> scan_cell(std::uint32_t c) {
-    for (std::size_t i = cell_start_[c]; i < cell_start_[c + 1]; ++i)
-      for (std::size_t j = i + 1; j < cell_start_[c + 1]; ++j) {
-        const std::uint32_t p = in_cell_[i], q = in_cell_[j];
-        const Box &a = boxes_[p], &b = boxes_[q];
-        const double lo_x = std::max(a.lo_x, b.lo_x), lo_y = std::max(a.lo_y, b.lo_y);
-        if (lo_x > std::min(a.hi_x, b.hi_x) || lo_y > std::min(a.hi_y, b.hi_y)) continue;
-        // The cell of the intersection's lower-left corner (cell indices are monotone).
-        const std::uint32_t row = std::max(ranges_[p].r0, ranges_[q].r0), column = std::max(ranges_[p].c0, ranges_[q].c0);
-        if (row * grid_.columns + column != c) continue;  // tested in that cell
-        if (auto found = test(std::min(live_[p], live_[q]), std::max(live_[p], live_[q]))) return found;
+    const std::uint32_t row = c / grid_.columns, column = c % grid_.columns;
+    corner_here_.clear(), row_here_.clear(), column_here_.clear();
+    for (std::size_t i = cell_start_[c]; i < cell_start_[c + 1]; ++i) {
+      const std::uint32_t k = in_cell_[i];
+      const bool starts_row = ranges_[k].r0 == row, starts_column = ranges_[k].c0 == column;
+      if (starts_row && starts_column) corner_here_.push_back(k);
+      else if (starts_row) row_here_.push_back(k);
+      else if (starts_column) column_here_.push_back(k);
+    }
+    for (std::size_t i = 0; i < corner_here_.size(); ++i) {
+      const std::uint32_t p = corner_here_[i];
+      for (std::size_t j = cell_start_[c]; j < cell_start_[c + 1]; ++j) {
+        const std::uint32_t q = in_cell_[j];
+        const bool q_corner_here = ranges_[q].r0 == row && ranges_[q].c0 == column;
+        if (q == p || (q_corner_here && q < p)) continue;  // a pair of two starting here: once
+        if (auto found = test_if_boxes_meet(p, q)) return found;
       }
+    }
+    for (const std::uint32_t p : row_here_)
+      for (const std::uint32_t q : column_here_)
+        if (auto found = test_if_boxes_meet(p, q)) return found;
     return std::nullopt;
+  }
+
+  std::optional<OverlapFinding> test_if_boxes_meet(std::uint32_t p, std::uint32_t q) {
+    const Box &a = boxes_[p], &b = boxes_[q];
+    if (std::max(a.lo_x, b.lo_x) > std::min(a.hi_x, b.hi_x) || std::max(a.lo_y, b.lo_y) > std::min(a.hi_y, b.hi_y))
+      return std::nullopt;
+    return test(std::min(live_[p], live_[q]), std::max(live_[p], live_[q]));
   }
 
   bool is_corner(VertexId v, TriangleId t) const {
@@ -175,6 +198,7 @@ class OverlapFinder {
   Grid grid_;
   std::vector<std::size_t> cell_start_;
   std::vector<std::uint32_t> in_cell_;
+  std::vector<std::uint32_t> corner_here_, row_here_, column_here_;  // scratch of scan_cell
 };
 
 }  // namespace

@@ -8,8 +8,9 @@
 // boxes' intersection) with exact orient2d: two counter-clockwise triangles have disjoint
 // interiors exactly when an edge line of one has the other on its closed outer side (separating
 // axes), and a corner of u on the closed triangle t that is not a corner of t is on t's boundary
-// or inside it. Linear time on meshes whose triangles are of similar size; slower, but still
-// exact, on meshes of long slivers.
+// or inside it. Linear time on meshes whose triangles are of similar size; on long slivers whose
+// boxes overlap (a fan of n triangles from one vertex, slivers crowded at a crossing) the number
+// of pairs to test, and so the time, grows as n^2 (docs/reliability.md, open finding 10).
 #pragma once
 
 #include <optional>

@@ -157,6 +157,18 @@ def main():
         again = deltri.triangulate(first, 'rpq30a0.01')
         check(areas(again).max() <= 0.01 and len(again['triangles']) > len(first['triangles']),
               'r: the output refined again to area 0.01 (%d -> %d triangles)' % (len(first['triangles']), len(again['triangles'])))
+        # 5. Issue 17 item 9, the same rule as the command line's: a region point exactly on a segment
+        # (here on the segment at y = 0.1 that splits the unit square) has no side and is ignored;
+        # one inside a part applies to that part only.
+        split = {'vertices': [[0, 0], [1, 0], [1, 1], [0, 1], [0, 0.1], [1, 0.1]],
+                 'segments': [[0, 1], [1, 5], [5, 2], [2, 3], [3, 4], [4, 0], [4, 5]]}
+        for at, expected in (([0.5, 0.1], 'none'), ([0, 0.1], 'none'), ([0.5, 0.05], 'below')):
+            m = deltri.triangulate(dict(split, regions=[at + [7, 0.001]]), 'pA')
+            ys = m['vertices'][m['triangles']].mean(axis=1)[:, 1]
+            seven = m['triangle_attributes'][:, 0] == 7
+            got = 'none' if not seven.any() else 'below' if (seven == (ys < 0.1)).all() else 'mixed'
+            check(got == expected, 'region point at (%g, %g): attribute 7 on %s of the triangles (%s expected)' %
+                  (at[0], at[1], got, expected))
         check(deltri.version().count('.') == 2, 'version %s' % deltri.version())
     finally:
         shutil.rmtree(work)

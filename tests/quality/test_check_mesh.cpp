@@ -3,7 +3,10 @@
 #include <map>
 #include <string>
 
+#include <cmath>
+
 #include "harness/check.h"
+#include "mesh/overlap.h"
 #include "quality/check_mesh.h"
 #include "quality/mesh_builders.h"
 
@@ -334,3 +337,74 @@ TEST(corner_on_an_edge_is_reported) {
 
 // Neighbours across an edge and around a vertex are not overlaps.
 TEST(a_sound_fan_has_no_overlap) { CHECK(check_mesh(square_fan(), CheckOptions{}).ok()); }
+
+namespace {
+
+// A fan of n - 2 long slivers: vertex 0 and n - 1 more on an arc of a unit circle, triangles
+// (0, i, i + 1). Every triangle's bounding box meets most of the others', so the overlap test's
+// grid cells are crowded (open finding 10 of docs/reliability.md).
+Mesh arc_fan(std::uint32_t n) {
+  std::vector<Point> points;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const double a = 3.0 * static_cast<double>(i) / n;  // 0 to 3 radians: a convex arc
+    points.push_back({std::cos(a), std::sin(a)});
+  }
+  Mesh m = mesh_of(points);
+  for (VertexId i = 1; i + 1 < n; ++i) m.add_triangle(0, i, i + 1);
+  return m;
+}
+
+}  // namespace
+
+// A sound fan of slivers has no overlap; a small triangle inside any one of them (a second sheet
+// of one triangle) overlaps exactly that one, and must be found wherever it lies in the grid.
+TEST(overlap_in_a_crowded_fan_is_found_wherever_it_is) {
+  Predicates pred;
+  CHECK(!find_overlap(arc_fan(400), pred).has_value());
+  for (const TriangleId k : {0u, 1u, 57u, 199u, 311u, 397u}) {
+    Mesh m = arc_fan(400);
+    const Point a = m.point(0), b = m.point(k + 1), c = m.point(k + 2);
+    const auto inside = [&](double wa, double wb, double wc) {
+      return Point{wa * a.x + wb * b.x + wc * c.x, wa * a.y + wb * b.y + wc * c.y};
+    };
+    const VertexId v = m.add_vertex(inside(0.6, 0.2, 0.2), VertexKind::Input);
+    m.add_vertex(inside(0.2, 0.6, 0.2), VertexKind::Input);
+    m.add_vertex(inside(0.2, 0.2, 0.6), VertexKind::Input);
+    const TriangleId extra = m.add_triangle(v, v + 1, v + 2);
+    const auto found = find_overlap(m, pred);
+    CHECK(found.has_value());
+    if (!found) continue;
+    CHECK_EQ(found->first, k);
+    CHECK_EQ(found->second, extra);
+    CHECK(found->interiors_overlap);
+  }
+}
+
+// Two slivers crossing like a plus sign among many small disjoint triangles (so that the grid is
+// fine): neither box's lower-left cell is the cell where the boxes' intersection begins, so the
+// pair is found only among the triangles that begin in that cell's row and column.
+TEST(crossing_slivers_among_many_triangles_are_found) {
+  Mesh m;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j) {
+      const double x = 0.05 * i + 0.01, y = 0.05 * j + 0.01;  // off the lines x = 0.5, y = 0.5
+      const VertexId v = m.add_vertex({x, y}, VertexKind::Input);
+      m.add_vertex({x + 0.01, y}, VertexKind::Input);
+      m.add_vertex({x, y + 0.01}, VertexKind::Input);
+      m.add_triangle(v, v + 1, v + 2);
+    }
+  const VertexId h = m.add_vertex({0.003, 0.5}, VertexKind::Input);
+  m.add_vertex({0.997, 0.5}, VertexKind::Input);
+  m.add_vertex({0.5, 0.5005}, VertexKind::Input);
+  const TriangleId horizontal = m.add_triangle(h, h + 1, h + 2);
+  const VertexId w = m.add_vertex({0.5003, 0.002}, VertexKind::Input);
+  m.add_vertex({0.5004, 0.998}, VertexKind::Input);
+  m.add_vertex({0.4996, 0.4}, VertexKind::Input);
+  const TriangleId vertical = m.add_triangle(w, w + 1, w + 2);
+  Predicates pred;
+  const auto found = find_overlap(m, pred);
+  CHECK(found.has_value());
+  if (!found) return;
+  CHECK_EQ(found->first, horizontal);
+  CHECK_EQ(found->second, vertical);
+}

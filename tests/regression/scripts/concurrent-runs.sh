@@ -2,7 +2,8 @@
 # Issue 17 item 5: runs writing the same output names at once must leave one run's complete set
 # (.node, .ele and .poly of the same run), never a .node of one and an .ele of another. Four
 # runs with different switches race each time; the expected sets come from the same runs made one
-# after the other. (Before the fix about 1 race in 20 to 100 left a mixed set.)
+# after the other. (Before the fix about 1 race in 20 to 100 left a mixed set.) Then a run whose
+# output another process replaces while it writes must warn.
 #   concurrent-runs.sh DELTRI [ROUNDS]
 set -u
 deltri=$1 rounds=${2:-60}
@@ -36,4 +37,20 @@ while [ $i -lt "$rounds" ]; do
 done
 echo "$rounds races of 4 runs: $mixed mixed sets; $warned runs reported another run"
 [ $mixed -eq 0 ] || { echo "FAIL: mixed output sets"; exit 1; }
+# The run that finds its outputs replaced by another process while it wrote must say so. Made
+# certain rather than left to a race: a large run is stopped while its temporaries are being
+# written (they exist), guitar.1.node is replaced, and the run continues.
+rm -f guitar.1.*
+env --default-signal=INT "$deltri" -Qpqa0.0001 guitar.poly 2>err.big &
+pid=$!
+i=0
+while [ $i -lt 6000 ] && ! ls guitar.1.*.tmp.* >/dev/null 2>&1; do sleep 0.01; i=$((i + 1)); done
+kill -STOP $pid
+cp set1.node guitar.1.node
+kill -CONT $pid
+wait $pid || { echo "FAIL: the large run failed"; cat err.big; exit 1; }
+echo "a run whose guitar.1.node was replaced meanwhile: $(cat err.big)"
+grep -q "warning: 1 output file changed on disk while this run was writing" err.big ||
+  { echo "FAIL: the run did not report the replaced output"; exit 1; }
+cmp -s guitar.1.node set1.node && { echo "FAIL: the replaced .node was kept beside the run's .ele"; exit 1; }
 echo ok
