@@ -1,8 +1,9 @@
 """The library's facets in 3-D (deltri_mesh_surface, deltri::mesh_surface, deltri.mesh_surface)
 against the command line and against independent facts.
     surface_clients.py DELTRI C_CLIENT CPP_CLIENT SOURCE_DIR
-For the cube, the L-bracket with a through-hole, the T (three facets at one segment) and a real
-TetGen file with point markers (tests/surface/inputs), each with several switch strings:
+For the cube, the L-bracket with a through-hole, the T (three facets at one segment), the house
+(point markers, a window cut through a facet, a segment inside a facet) and a real TetGen surface
+whose points are in a separate .node (tests/surface/inputs), each with one or more switch strings:
   * the C client (tests/api/surface_client.c), the C++ client (surface_client.cpp) and the Python
     module give the same arrays as the command line's .node, .ele and .edge for the same switches
     (points bit for bit, numbering shifted only by the 0/1 first index);
@@ -34,7 +35,8 @@ CASES = [  # input, closed, switch strings (without the dash)
     ('cube.smesh', True, ['pq30', 'pq30a0.02', 'pzq20']),
     ('l_bracket.poly', True, ['pq30', 'pq30a0.05', 'pBq25']),
     ('tee.poly', False, ['pq30', 'pq30a0.01', 'pzq30a0.05']),
-    ('pmg_example.poly', False, ['pq30', 'pq30a1']),
+    ('house.poly', False, ['pq30', 'pq30a0.02']),
+    ('pynastran_sphere.smesh', True, ['pq30a0.05']),
 ]
 failures = []
 
@@ -49,6 +51,9 @@ def read_input(path):
     pts, facets = facts.read_facets(path)
     lines = facts.data_lines(path)
     head = next(lines)
+    if int(head[0]) == 0:  # TetGen's layout: the points are in <base>.node
+        lines = facts.data_lines(facts.companion_node(path))
+        head = next(lines)
     rows = [next(lines) for _ in range(int(head[0]))]
     markers = [int(r[4 + (int(head[2]) if len(head) > 2 else 0)]) for r in rows] \
         if len(head) > 3 and int(head[3]) else None
@@ -223,6 +228,8 @@ def check_case(deltri_cli, c_client, cpp_client, src, work, name, closed, sw):
     path = os.path.join(src, 'tests', 'surface', 'inputs', name)
     pts, facets, file_first, markers = read_input(path)
     shutil.copy(path, work)
+    if os.path.exists(facts.companion_node(path)):
+        shutil.copy(facts.companion_node(path), work)
     run = subprocess.run([deltri_cli, '-Q' + sw, name], cwd=work, capture_output=True, text=True)
     if run.returncode != 0:
         fail('%s -%s: the command line failed: %s' % (name, sw, run.stderr.strip()))

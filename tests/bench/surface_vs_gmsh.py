@@ -5,7 +5,7 @@ usage: surface_vs_gmsh.py DELTRI INPUT_DIR [AREA]
 
 For each TetGen facet file in tests/surface/inputs it runs `deltri -pq30a<AREA>` and writes a .geo
 of the same facets (points, one line per segment, a curve loop per polygon, a plane surface per
-outer loop with the loops around hole points as its holes, lone vertices embedded), which gmsh
+outer loop with the loops around hole points as its holes, lone vertices and segments inside a facet embedded), which gmsh
 meshes with its default 2-D algorithm at a uniform size chosen so that the triangle counts match
 (one correction of the size from the first run's count). Prints a Markdown table: triangles,
 smallest angle, wall time of the whole program run (best of 3; both write their files).
@@ -22,9 +22,12 @@ import meshio
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "surface"))
-from check_surface import frame, inside, read_facets  # noqa: E402
+from check_surface import companion_node, frame, inside, read_facets  # noqa: E402
 
-INPUTS = ["cube.smesh", "l_bracket.poly", "tee.poly", "slot_box.poly", "elmer_L.poly", "pmg_example.poly", "wedge.poly"]
+# pynastran_gear.smesh is left out: 59 wide, it would need its own area bound, and below about
+# -a20 deltri's facets do not agree on their shared segments (docs/surfaces.md)
+INPUTS = ["cube.smesh", "l_bracket.poly", "tee.poly", "slot_box.poly", "house.poly", "pynastran_sphere.smesh",
+          "wedge.poly"]
 
 
 def best_time(args, runs=3):
@@ -80,6 +83,8 @@ def write_geo(path, pts, facets):
             for p in polys:
                 if len(p) == 1:
                     out.append(f"Point{{{p[0] + 1}}} In Surface{{{surf_id}}};")
+                elif len(p) == 2:  # a segment inside the facet
+                    out.append(f"Curve{{{abs(line(p[0], p[1]))}}} In Surface{{{surf_id}}};")
     with open(path, "w") as f:
         f.write("\n".join(out) + "\n")
 
@@ -100,6 +105,8 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         for name in INPUTS:
             shutil.copy(os.path.join(indir, name), work)
+            if os.path.exists(companion_node(os.path.join(indir, name))):
+                shutil.copy(companion_node(os.path.join(indir, name)), work)
             src = os.path.join(work, name)
             base = src.rsplit(".", 1)[0]
             t_d = best_time([deltri, f"-pq30a{area:g}", "-Q", src])

@@ -10,11 +10,12 @@ parser and checks, from the input facets alone (numpy, no deltri code):
   * per marker, the triangles' areas sum to the facets' areas (polygon areas from the input: the
     loops not inside another loop, minus the inner loops around a hole point) to 1e-9 relative;
   * conformity: an edge lying along an input segment is in exactly as many triangles as there are
-    facets holding that segment, any other edge in exactly two; for closed inputs every edge is
+    facets holding that segment on their border (two for a facet holding it inside, as a 2-point
+    polygon), any other edge in exactly two; for closed inputs every edge is
     in exactly two triangles (watertight);
   * no angle below the -q bound, except a triangle whose smallest angle is at an input point where
     a facet's polygon has a corner angle below 60 degrees, and is no smaller than that angle (only
-    wedge.poly has such corners: 15 degrees);
+    wedge.poly has such corners: 15 degrees, and the two TetGen surfaces, whose facets are triangles);
   * -a: no triangle larger than the bound;
   * --msh, --vtu, --stl and -g (OFF) read back by meshio with the same points and triangles, and
     gmsh opens the .msh; the .msh's physical tags follow the documented rule (docs/formats.md,
@@ -33,9 +34,16 @@ try:
 except ImportError:  # main() reports the test as skipped, with the command that installs numpy
     np = None
 
-CLOSED = {"cube.smesh", "cube_markers.smesh", "l_bracket.poly", "slot_box.poly", "elmer_L.poly", "wedge.poly"}
-INPUTS = ["cube.smesh", "cube_markers.smesh", "l_bracket.poly", "tee.poly", "slot_box.poly", "elmer_L.poly", "pmg_example.poly", "wedge.poly"]
-SWITCHES = [("-pq20C", 20, None), ("-pq30C", 30, None), ("-pq30a0.02C", 30, 0.02)]
+CLOSED = {"cube.smesh", "cube_markers.smesh", "l_bracket.poly", "slot_box.poly", "wedge.poly", "pynastran_gear.smesh", "pynastran_sphere.smesh"}
+INPUTS = ["cube.smesh", "cube_markers.smesh", "l_bracket.poly", "tee.poly", "slot_box.poly", "wedge.poly", "pynastran_gear.smesh",
+          "pynastran_sphere.smesh", "house.poly"]
+# the area bound of the third switch set, for the inputs whose size is not about 1 (the gear is 59 wide)
+AREA = {"pynastran_gear.smesh": 50.0}
+
+
+def switches(name):
+    a = AREA.get(name, 0.02)
+    return [("-pq20C", 20, None), ("-pq30C", 30, None), (f"-pq30a{a:g}C", 30, a)]
 
 failures = []
 
@@ -53,11 +61,7 @@ def data_lines(path):
                 yield line
 
 
-def read_facets(path):
-    it = data_lines(path)
-    head = next(it)
-    n = int(head[0])
-    markers = len(head) > 3 and int(head[3]) != 0
+def read_points(it, n):
     pts = []
     first = None
     for _ in range(n):
@@ -65,7 +69,23 @@ def read_facets(path):
         if first is None:
             first = int(l[0])
         pts.append([float(l[1]), float(l[2]), float(l[3])])
-    pts = np.array(pts)
+    return np.array(pts), first
+
+
+def companion_node(path):
+    """TetGen's layout: a node count of 0 means the points are in <base>.node."""
+    return path.rsplit(".", 1)[0] + ".node"
+
+
+def read_facets(path):
+    it = data_lines(path)
+    head = next(it)
+    n = int(head[0])
+    if n == 0:
+        nodes = data_lines(companion_node(path))
+        pts, first = read_points(nodes, int(next(nodes)[0]))
+    else:
+        pts, first = read_points(it, n)
     l = next(it)
     nf, fmark = int(l[0]), len(l) > 1 and int(l[1]) != 0
     facets = []
@@ -164,6 +184,8 @@ def check_run(deltri, inp, work, sw, q, amax):
     name = os.path.basename(inp)
     base = os.path.join(work, name.rsplit(".", 1)[0])
     shutil.copy(inp, work)
+    if os.path.exists(companion_node(inp)):
+        shutil.copy(companion_node(inp), work)
     args = [deltri, sw, "--msh", "--vtu", "--stl", "-g", "-Q", os.path.join(work, name)]
     r = subprocess.run(args, capture_output=True, text=True)
     tag = f"{name} {sw}"
@@ -186,39 +208,36 @@ def check_run(deltri, inp, work, sw, q, amax):
     tri_area = 0.5 * np.linalg.norm(np.cross(B - A, C - A), axis=1)
     if (tri_area <= 0).any():
         fail(f"{tag}: degenerate triangles")
-    # 1. each triangle in the plane (and box) of a facet with its marker; areas per facet found
-    area_by_facet = np.zeros(len(facets))
-    for t in range(len(T)):
-        found = False
-        for k, (m, polys, holes) in enumerate(facets):
-            if m != M[t]:
-                continue
-            c, u, v, n = frames[k]
-            tol = 1e-9 * sizes[k]
-            if max(abs(np.dot(X[t] - c, n)) for X in (A, B, C)) > tol:
-                continue
-            ids = [v for p in polys for v in p]
-            lo, hi = pts_in[ids].min(axis=0) - tol, pts_in[ids].max(axis=0) + tol
-            if all(((X[t] >= lo) & (X[t] <= hi)).all() for X in (A, B, C)):
-                area_by_facet[k] += tri_area[t]
-                found = True
-                break
-        if not found:
-            fail(f"{tag}: triangle {t + first} lies in no facet with marker {M[t]}")
-            break
+    # 1. each triangle in the plane (and box) of a facet with its marker (the first such facet
+    # takes it; vectorised over the triangles, one facet at a time)
+    unplaced = np.ones(len(T), dtype=bool)
+    for k, (m, polys, holes) in enumerate(facets):
+        c, u, v, n = frames[k]
+        tol = 1e-9 * sizes[k]
+        ids = [w for p in polys for w in p]
+        lo, hi = pts_in[ids].min(axis=0) - tol, pts_in[ids].max(axis=0) + tol
+        ok = unplaced & (M == m)
+        for X in (A, B, C):
+            ok &= (np.abs((X - c) @ n) <= tol) & (X >= lo).all(axis=1) & (X <= hi).all(axis=1)
+        unplaced &= ~ok
+    if unplaced.any():
+        t = int(np.argmax(unplaced))
+        fail(f"{tag}: triangle {t + first} lies in no facet with marker {M[t]}")
     for m in sorted(set(f[0] for f in facets)):
         want = sum(facet_area(pts_in, f[1], f[2], frames[k]) for k, f in enumerate(facets) if f[0] == m)
         got = tri_area[M == m].sum()
         if abs(got - want) > 1e-9 * max(1.0, want):
             fail(f"{tag}: marker {m}: triangles cover {got!r}, the facets {want!r}")
     # 2. conformity along segments, watertightness
+    # segment -> the triangles expected on each of its edges: one per facet whose polygon edge it
+    # is, two per facet that holds it as a 2-point polygon (a segment inside the facet)
     seg_facets = {}
     for k, (m, polys, holes) in enumerate(facets):
         for p in polys:
             e = len(p) if len(p) >= 3 else (1 if len(p) == 2 else 0)
             for i in range(e):
                 a, b = p[i], p[(i + 1) % len(p)]
-                seg_facets.setdefault((min(a, b), max(a, b)), set()).add(k)
+                seg_facets.setdefault((min(a, b), max(a, b)), {})[k] = 2 if len(p) == 2 else 1
     edges = {}
     for t in T:
         for i in range(3):
@@ -240,7 +259,7 @@ def check_run(deltri, inp, work, sw, q, amax):
         tol = 1e-9 * np.sqrt(L2)
         on = (da <= tol) & (db <= tol) & (ta >= -1e-12) & (ta <= 1 + 1e-12) & (tb >= -1e-12) & (tb <= 1 + 1e-12)
         if on.any():
-            expected = len(segs[int(np.argmax(on))][1])
+            expected = sum(segs[int(np.argmax(on))][1].values())
         if name in CLOSED and count != 2:
             fail(f"{tag}: edge {a + first}-{b + first} is in {count} triangles (closed input: must be 2)")
             bad += 1
@@ -366,7 +385,7 @@ def main():
         return 77
     with tempfile.TemporaryDirectory() as work:
         for name in INPUTS:
-            for sw, q, amax in SWITCHES:
+            for sw, q, amax in switches(name):
                 check_run(deltri, os.path.join(indir, name), work, sw, q, amax)
         check_errors(deltri, indir, work)
     print(f"{len(failures)} failures")
