@@ -65,8 +65,7 @@ void push_link_of(const Mesh& m, EdgeRef out, EdgeStack& stack) {
 
 // Lawson's flips on the link of v; `must_flip(e)` decides each edge opposite v.
 template <class FlipRule>
-void restore_delaunay(Mesh& m, VertexId v, EdgeRef out, std::vector<EdgeRef>* flipped,
-                      FlipRule&& must_flip) {
+void restore_delaunay(Mesh& m, VertexId v, EdgeRef out, FlipRule&& must_flip) {
   EdgeStack stack;
   push_link_of(m, out, stack);
   while (!stack.empty()) {
@@ -75,7 +74,6 @@ void restore_delaunay(Mesh& m, VertexId v, EdgeRef out, std::vector<EdgeRef>* fl
     if (m.apex(e) != v || !must_flip(e)) continue;
     const EdgeRef f = m.link[e];
     const EdgeRef g = flip(m, e);  // v -> old apex of f; the link of v is now lnext(g), lprev(f)
-    if (flipped) flipped->push_back(g);
     stack.push_back(lnext(g));
     stack.push_back(lprev(f));
   }
@@ -110,11 +108,11 @@ InsertResult split_at(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint, bo
 }  // namespace
 
 InsertResult insert_vertex(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint,
-                           bool split_subsegments, std::vector<EdgeRef>* flipped) {
+                           bool split_subsegments) {
   const InsertResult split = split_at(mesh, pred, v, hint, split_subsegments);
   if (split.status != InsertStatus::Inserted) return split;
-  restore_delaunay(mesh, v, split.edge, flipped, [&](EdgeRef e) { return must_flip(mesh, pred, e, v); });
-  // Flips keep v in the slot that was split (undo_insertion relies on this edge being there).
+  restore_delaunay(mesh, v, split.edge, [&](EdgeRef e) { return must_flip(mesh, pred, e, v); });
+  // Flips keep v in the slot that was split.
   return {InsertStatus::Inserted, leaving(mesh, triangle_of(split.edge), v)};
 }
 
@@ -126,7 +124,7 @@ InsertResult insert_vertex_into_cavity(Mesh& mesh, Predicates& pred, VertexId v,
   const InsertResult split = split_at(mesh, pred, v, container, false);
   if (split.status != InsertStatus::Inserted) return split;
   // The triangle beyond a link edge never holds v, so its slot still names an original triangle.
-  restore_delaunay(mesh, v, split.edge, nullptr, [&](EdgeRef e) {
+  restore_delaunay(mesh, v, split.edge, [&](EdgeRef e) {
     const EdgeRef f = mesh.link[e];
     return f != kNone && !detail::carries_subsegment(mesh, e) && cavity.contains(triangle_of(f));
   });

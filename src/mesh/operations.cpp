@@ -1,6 +1,5 @@
-// Edge flips. The layout is fixed so that a flip can be taken back exactly (see unflip): the new
-// edge takes the slot of the old edge in each triangle, and every outer edge keeps the triangle it
-// bounds. Undo relies on slots coming back unchanged, so both functions must agree on it.
+// Edge flips. The new edge takes the slot of the old edge in each triangle, and every outer edge
+// keeps the triangle it bounds.
 #include "mesh/internal.h"
 #include "mesh/operations.h"
 
@@ -29,26 +28,4 @@ EdgeRef flip(Mesh& mesh, EdgeRef e) {
   return e;
 }
 
-namespace detail {
-
-void unflip(Mesh& m, EdgeRef r) {
-  const EdgeRef f = m.link[r];
-  const EdgeRef e1 = lnext(r), e2 = lprev(r), f1 = lnext(f), f2 = lprev(f);
-  const VertexId c = m.corner[r], d = m.corner[e1], b = m.corner[e2], a = m.corner[f2];
-  const EdgeSurround db = surround_of(m, e1), bc = surround_of(m, e2);
-  const EdgeSurround ca = surround_of(m, f1), ad = surround_of(m, f2);
-  m.corner[r] = a;
-  m.corner[e1] = b;
-  m.corner[e2] = c;
-  m.corner[f] = b;
-  m.corner[f1] = a;
-  m.corner[f2] = d;
-  attach(m, e1, bc);
-  attach(m, e2, ca);
-  attach(m, f1, ad);
-  attach(m, f2, db);
-  bond_inner(m, r, f);
-}
-
-}  // namespace detail
 }  // namespace deltri

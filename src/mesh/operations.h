@@ -56,12 +56,11 @@ struct InsertResult {
 // Inserts existing vertex v (already in mesh.points) by locating it from `hint`, splitting the
 // triangle or edge it falls in, and restoring the (constrained) Delaunay property with Lawson
 // flips that never flip an edge carrying a subsegment. `split_subsegments` allows a vertex on a
-// subsegment to split it. When `flipped` is given, every flip is appended to it as the new edge,
-// so a caller can undo the insertion (see undo_insertion in mesh/undo.h). Where ghost triangles
+// subsegment to split it. Where ghost triangles
 // (corner kGhostVertex) cover the outside of the hull, a point beyond it is inserted and the hull
 // grows; only a plain boundary edge (link kNone) makes the answer Outside.
 InsertResult insert_vertex(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint,
-                           bool split_subsegments = true, std::vector<EdgeRef>* flipped = nullptr);
+                           bool split_subsegments = true);
 
 // The triangles an insertion will destroy, found beforehand (refine/candidate_probe.h): either
 // the `count` slots of `list`, or (list null) the slots t < size with stamp[t] == mark. The search
