@@ -1,5 +1,7 @@
 #include "cdt/edit.h"
 
+#include "mesh/operations.h"
+
 namespace deltri {
 
 CdtEditor::CdtEditor(Mesh& m, Predicates& p) : mesh(m), pred(p) {
@@ -28,23 +30,7 @@ void move_edge(Mesh& mesh, EdgeRef from, EdgeRef to) {
 
 void CdtEditor::flip(EdgeRef e) {
   const EdgeRef f = mesh.link[e];
-  const VertexId r = mesh.apex(e), s = mesh.apex(f);
-  const EdgeRef qr = lnext(e), ps = lnext(f);
-  // Save the two edges that change triangles before their slots are overwritten.
-  const EdgeRef qr_twin = mesh.link[qr], ps_twin = mesh.link[ps];
-  const SubsegmentId qr_sub = mesh.subseg[qr], ps_sub = mesh.subseg[ps];
-  // With e = p->q: the triangle of e becomes (p, s, r) laid out as e: p->s, lnext: s->r, lprev: r->p.
-  mesh.corner[lnext(e)] = s;
-  // Triangle of f becomes (q, r, s) laid out as f: q->r, lnext: r->s, lprev: s->q.
-  mesh.corner[lnext(f)] = r;
-  mesh.link[e] = ps_twin;
-  if (ps_twin != kNone) mesh.link[ps_twin] = e;
-  mesh.subseg[e] = ps_sub;
-  mesh.link[f] = qr_twin;
-  if (qr_twin != kNone) mesh.link[qr_twin] = f;
-  mesh.subseg[f] = qr_sub;
-  mesh.bond(lnext(e), lnext(f));
-  mesh.subseg[lnext(e)] = mesh.subseg[lnext(f)] = kNone;
+  deltri::flip<FlipLayout::KeepOrigins>(mesh, e);
   touch(triangle_of(e));
   touch(triangle_of(f));
 }

@@ -22,9 +22,9 @@ struct CdtEditor {
   // Makes sure a (new) vertex has a slot in the map.
   void grow_to_vertices();
 
-  // Flips edge e = (p, q) with apexes r (left) and s (right). Afterwards slot e holds p->s, slot
-  // link(e) holds q->r and the new diagonal s->r, r->s sits at lnext of each, so the callers know
-  // where every edge went. Subsegments travel with their edges; e itself must carry none.
+  // The kernel's flip in its KeepOrigins layout (mesh/operations.h): for e = (p, q) with apexes r
+  // (left) and s (right), slot e holds p->s, slot link(e) holds q->r and the new diagonal s->r,
+  // r->s sits at lnext of each, so the callers know where every edge went. Then the map is updated.
   void flip(EdgeRef e);
   // Whether flipping e gives two strictly counter-clockwise triangles.
   bool flippable(EdgeRef e);

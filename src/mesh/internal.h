@@ -66,15 +66,6 @@ inline unsigned corner_index(const Mesh& m, TriangleId t, VertexId v) {
   return i;
 }
 
-// The exact inverse of flip(): restores both slots to their contents before the flip that
-// returned `flipped`, side for side.
-void unflip(Mesh& m, EdgeRef flipped);
-
-// The exact inverses of split_triangle and split_edge, given the slot that existed before the
-// split (it still holds the new vertex) once every later change has been undone.
-void unsplit_triangle(Mesh& m, TriangleId original);
-void unsplit_edge(Mesh& m, TriangleId original, unsigned vertex_side);
-
 // Replaces the triangles of `cavity` (a disk with no vertex inside, v strictly inside it and
 // seeing every boundary edge from the inside) by the fan of triangles from v to its recorded
 // boundary. Returns an edge leaving v, or kNone, with nothing changed, when the cavity is not

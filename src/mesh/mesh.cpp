@@ -98,4 +98,27 @@ void Mesh::compact_triangles() {
   free_triangles.clear();
 }
 
+Mesh Mesh::without_triangles() const {
+  Mesh m;
+  m.points = points;
+  m.kind = kind;
+  m.marker = marker;
+  m.num_attributes = num_attributes;
+  m.attributes = attributes;
+  m.num_triangle_attributes = num_triangle_attributes;
+  m.subsegments = subsegments;
+  return m;
+}
+
+void Mesh::take_vertices(Mesh& from, VertexId first) {
+  const std::size_t na = static_cast<std::size_t>(from.num_attributes);
+  for (VertexId v = first; v < from.vertex_count(); ++v) {
+    kind.push_back(from.kind[v]);
+    if (!from.marker.empty()) marker.push_back(from.marker[v]);
+  }
+  move_appending(from.points, points, [](const Point& p) { return p; }, first);
+  attributes.insert(attributes.end(), from.attributes.begin() + static_cast<std::ptrdiff_t>(first * na),
+                    from.attributes.end());
+}
+
 }  // namespace deltri

@@ -59,7 +59,7 @@ struct Subsegment {
 };
 
 struct Mesh {
-  // Vertices.
+  // Vertices. A new per-vertex array must also be carried by without_triangles and take_vertices.
   BigVector<Point> points;
   std::vector<VertexKind> kind;
   std::vector<int> marker;          // empty when nothing carries markers
@@ -120,6 +120,14 @@ struct Mesh {
   }
   // Moves live triangles over dead slots so that every slot is live (ids change).
   void compact_triangles();
+
+  // --- sub-meshes (refine/halves.cpp cuts a mesh in two and joins the halves again) ---
+  // A mesh with this one's vertices (every per-vertex array), subsegment records and attribute
+  // layouts, and no triangles, into which part of the triangles can be moved with their ids kept.
+  Mesh without_triangles() const;
+  // Appends from's vertices with ids from `first` on, with all their per-vertex data (as the
+  // vertices numbered after this mesh's own); from's points are freed as they are copied.
+  void take_vertices(Mesh& from, VertexId first);
 };
 
 }  // namespace deltri

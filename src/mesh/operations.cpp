@@ -1,54 +1,48 @@
-// Edge flips. The layout is fixed so that a flip can be taken back exactly (see unflip): the new
-// edge takes the slot of the old edge in each triangle, and every outer edge keeps the triangle it
-// bounds. Undo relies on slots coming back unchanged, so both functions must agree on it.
+// The one edge flip. Both layouts below are the same code: the two new triangles are written by
+// place(), which differs only in which slot takes which triangle and where each triangle starts.
 #include "mesh/internal.h"
 #include "mesh/operations.h"
 
 namespace deltri {
+namespace {
 
-// Before:  t = (a, b, c) at sides (e, e1, e2), u = (b, a, d) at sides (f, f1, f2).
-// After:   t = (c, d, b),                       u = (d, c, a).
-// Outer edges b->c and d->b end up in t, c->a and a->d in u.
+// Writes triangle (x0, x1, x2) into the triangle of edge `at`, x0 at the side `shift` steps
+// (lnext) past `at`. Its edge x0->x1 is the new diagonal, bonded later; edges x1->x2 and x2->x0 get
+// the saved surroundings s1 and s2. Returns the side of the diagonal.
+template <unsigned shift>
+EdgeRef place(Mesh& m, EdgeRef at, VertexId x0, VertexId x1, VertexId x2, detail::EdgeSurround s1,
+              detail::EdgeSurround s2) {
+  const EdgeRef side0 = shift == 0 ? at : shift == 1 ? lnext(at) : lprev(at);
+  const EdgeRef side1 = lnext(side0), side2 = lprev(side0);
+  m.corner[side0] = x0;
+  m.corner[side1] = x1;
+  m.corner[side2] = x2;
+  detail::attach(m, side1, s1);
+  detail::attach(m, side2, s2);
+  return side0;
+}
+
+}  // namespace
+
+// Before: t = (a, b, c) at sides (e, e1, e2), u = (b, a, d) at sides (f, f1, f2). The new
+// triangles are T = (c, d, b) and U = (d, c, a), with the diagonal c->d first in T and d->c in U.
+template <FlipLayout layout>
 EdgeRef flip(Mesh& mesh, EdgeRef e) {
   const EdgeRef f = mesh.link[e];
   const EdgeRef e1 = lnext(e), e2 = lprev(e), f1 = lnext(f), f2 = lprev(f);
   const VertexId a = mesh.corner[e], b = mesh.corner[e1], c = mesh.corner[e2], d = mesh.corner[f2];
   const detail::EdgeSurround bc = detail::surround_of(mesh, e1), ca = detail::surround_of(mesh, e2);
   const detail::EdgeSurround ad = detail::surround_of(mesh, f1), db = detail::surround_of(mesh, f2);
-  mesh.corner[e] = c;
-  mesh.corner[e1] = d;
-  mesh.corner[e2] = b;
-  mesh.corner[f] = d;
-  mesh.corner[f1] = c;
-  mesh.corner[f2] = a;
-  detail::attach(mesh, e1, db);
-  detail::attach(mesh, e2, bc);
-  detail::attach(mesh, f1, ca);
-  detail::attach(mesh, f2, ad);
-  detail::bond_inner(mesh, e, f);
-  return e;
+  // Turn: T's c at e, U's d at f.  KeepOrigins: U's a at e (so d at lnext(e)), T's b at f.
+  constexpr unsigned shift = layout == FlipLayout::Turn ? 0 : 1;
+  const EdgeRef at_t = layout == FlipLayout::Turn ? e : f, at_u = layout == FlipLayout::Turn ? f : e;
+  const EdgeRef cd = place<shift>(mesh, at_t, c, d, b, db, bc);
+  const EdgeRef dc = place<shift>(mesh, at_u, d, c, a, ca, ad);
+  detail::bond_inner(mesh, cd, dc);
+  return cd;
 }
 
-namespace detail {
+template EdgeRef flip<FlipLayout::Turn>(Mesh&, EdgeRef);
+template EdgeRef flip<FlipLayout::KeepOrigins>(Mesh&, EdgeRef);
 
-void unflip(Mesh& m, EdgeRef r) {
-  const EdgeRef f = m.link[r];
-  const EdgeRef e1 = lnext(r), e2 = lprev(r), f1 = lnext(f), f2 = lprev(f);
-  const VertexId c = m.corner[r], d = m.corner[e1], b = m.corner[e2], a = m.corner[f2];
-  const EdgeSurround db = surround_of(m, e1), bc = surround_of(m, e2);
-  const EdgeSurround ca = surround_of(m, f1), ad = surround_of(m, f2);
-  m.corner[r] = a;
-  m.corner[e1] = b;
-  m.corner[e2] = c;
-  m.corner[f] = b;
-  m.corner[f1] = a;
-  m.corner[f2] = d;
-  attach(m, e1, bc);
-  attach(m, e2, ca);
-  attach(m, f1, ad);
-  attach(m, f2, db);
-  bond_inner(m, r, f);
-}
-
-}  // namespace detail
 }  // namespace deltri

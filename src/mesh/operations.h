@@ -28,10 +28,21 @@ struct Location {
 // leaves the mesh and never loops: a walk that would cycle falls back to a scan.
 Location locate(const Mesh& mesh, Predicates& pred, const Point& p, EdgeRef hint);
 
-// Flips the edge e shared by two triangles (the quadrilateral must be strictly convex and the edge
-// must not carry a subsegment). Returns the new edge, oriented from the old apex of e to the old
-// apex of sym(e).
+// Flips the edge e = a->b shared by t = (a, b, c) and u = (b, a, d); the quadrilateral must be
+// strictly convex and e must carry no subsegment. The new triangles are (c, d, b) and (d, c, a);
+// every outer edge keeps its twin and subsegment. Returns the new edge c->d. Which slot holds which
+// new triangle is the layout (the output numbers triangles by slot, so each caller keeps the layout
+// its stage has always had):
+//   Turn         t = (c, d, b) with c->d at e's slot, u = (d, c, a) with d->c at f's slot. Used by
+//                vertex insertion, deletion, the sweepline and refinement.
+//   KeepOrigins  t = (a, d, c) and u = (b, c, d): each slot keeps its origin (a at e, b at f) and
+//                the new edge sits at lnext of each, d->c in t and c->d in u, so the outer edges
+//                are at e, lprev(e), f and lprev(f). Used by the constrained Delaunay stage.
+enum class FlipLayout { Turn, KeepOrigins };
+template <FlipLayout layout = FlipLayout::Turn>
 EdgeRef flip(Mesh& mesh, EdgeRef e);
+extern template EdgeRef flip<FlipLayout::Turn>(Mesh&, EdgeRef);
+extern template EdgeRef flip<FlipLayout::KeepOrigins>(Mesh&, EdgeRef);
 
 // Splits triangle_of(e) into three around the new vertex v (which must lie strictly inside).
 // Returns an edge leaving v.
@@ -56,12 +67,11 @@ struct InsertResult {
 // Inserts existing vertex v (already in mesh.points) by locating it from `hint`, splitting the
 // triangle or edge it falls in, and restoring the (constrained) Delaunay property with Lawson
 // flips that never flip an edge carrying a subsegment. `split_subsegments` allows a vertex on a
-// subsegment to split it. When `flipped` is given, every flip is appended to it as the new edge,
-// so a caller can undo the insertion (see undo_insertion in mesh/undo.h). Where ghost triangles
+// subsegment to split it. Where ghost triangles
 // (corner kGhostVertex) cover the outside of the hull, a point beyond it is inserted and the hull
 // grows; only a plain boundary edge (link kNone) makes the answer Outside.
 InsertResult insert_vertex(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef hint,
-                           bool split_subsegments = true, std::vector<EdgeRef>* flipped = nullptr);
+                           bool split_subsegments = true);
 
 // The triangles an insertion will destroy, found beforehand (refine/candidate_probe.h): either
 // the `count` slots of `list`, or (list null) the slots t < size with stamp[t] == mark. The search

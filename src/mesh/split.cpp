@@ -1,6 +1,5 @@
-// Splitting a triangle or an edge at a new vertex, and the exact inverses used by undo. The
-// original slots keep their place and most of their corners (only one corner becomes the new
-// vertex), which is what lets the inverses find and restore them.
+// Splitting a triangle or an edge at a new vertex. The original slots keep their place and most of
+// their corners (only one corner becomes the new vertex).
 #include "mesh/internal.h"
 #include "mesh/operations.h"
 
@@ -64,52 +63,4 @@ EdgeRef split_edge(Mesh& mesh, EdgeRef e, VertexId v) {
   return lnext(e);
 }
 
-namespace detail {
-
-void unsplit_triangle(Mesh& m, TriangleId t) {
-  const EdgeRef t0 = 3 * t;
-  const TriangleId n1 = triangle_of(m.link[t0 + 1]), n2 = triangle_of(m.link[t0 + 2]);
-  const EdgeSurround bc = surround_of(m, 3 * n1 + 1), ca = surround_of(m, 3 * n2 + 1);
-  m.corner[t0 + 2] = m.corner[3 * n1 + 2];
-  attach(m, t0 + 1, bc);
-  attach(m, t0 + 2, ca);
-  release(m, n1);
-  release(m, n2);
-}
-
-// Gives the subsegment halves on both sides of v back to the record that existed before the split
-// and drops the newer record when it is the last one (records are only ever appended).
-SubsegmentId merge_subsegment(Mesh& m, SubsegmentId h1, SubsegmentId h2) {
-  if (h1 == kNone) return kNone;
-  const SubsegmentId keep = h1 < h2 ? h1 : h2, drop = h1 < h2 ? h2 : h1;
-  m.subsegments[keep].b = m.subsegments[drop].b;
-  if (drop + 1 == m.subsegments.size()) m.subsegments.pop_back();
-  return keep;
-}
-
-void unsplit_edge(Mesh& m, TriangleId t, unsigned vertex_side) {
-  const EdgeRef out = 3 * t + vertex_side;  // v->c
-  const EdgeRef e = lprev(out);              // a->v
-  const TriangleId n1 = triangle_of(m.link[out]);
-  const EdgeRef f = m.link[3 * n1];          // b->v in u, if any
-  const SubsegmentId seg =
-      m.subseg.empty() ? kNone : merge_subsegment(m, m.subseg[e], m.subseg[3 * n1]);
-  const EdgeSurround bc = surround_of(m, 3 * n1 + 1);
-  m.corner[out] = m.corner[3 * n1 + 1];
-  attach(m, out, bc);
-  release(m, n1);
-  if (f != kNone) {
-    const TriangleId n2 = triangle_of(m.link[e]);
-    const EdgeSurround ad = surround_of(m, 3 * n2 + 1);
-    m.corner[lnext(f)] = m.corner[e];
-    attach(m, lnext(f), ad);
-    release(m, n2);
-    m.bond(e, f);
-  } else {
-    m.link[e] = kNone;
-  }
-  if (!m.subseg.empty()) m.set_subsegment(e, seg);
-}
-
-}  // namespace detail
 }  // namespace deltri

@@ -64,13 +64,7 @@ struct Cut {
 Cut cut_off_right(Mesh& mesh, const std::vector<std::uint8_t>& side) {
   Cut cut;
   Mesh& r = cut.right;
-  r.points = mesh.points;
-  r.kind = mesh.kind;
-  r.marker = mesh.marker;
-  r.num_attributes = mesh.num_attributes;
-  r.attributes = mesh.attributes;
-  r.num_triangle_attributes = mesh.num_triangle_attributes;
-  r.subsegments = mesh.subsegments;
+  r = mesh.without_triangles();
   cut.right_records.assign(mesh.subsegments.size(), 0);
   cut.seam_records.assign(mesh.subsegments.size(), 0);
   std::vector<TriangleId> slot(mesh.triangle_slots(), kNone);
@@ -120,30 +114,6 @@ struct RightIds {
   EdgeRef edge(EdgeRef e) const { return e == kNone ? kNone : 3 * triangle_base + e; }
 };
 
-// Appends f(x) for every x of `from` to `to` and frees `from`, giving its pages back as they are
-// copied, so that the two arrays never hold their whole size at once (that set the peak memory).
-template <class T, class U, class F>
-void move_appending(BigVector<T>& from, BigVector<U>& to, F f, std::size_t first = 0) {
-  constexpr std::size_t kChunk = std::size_t{1} << 16;
-  for (std::size_t i = first; i < from.size(); i += kChunk) {
-    const std::size_t end = std::min(from.size(), i + kChunk);
-    for (std::size_t k = i; k < end; ++k) to.push_back(f(from[k]));
-    release_pages(from.data() + i, (end - i) * sizeof(T));
-  }
-  BigVector<T>().swap(from);
-}
-
-void append_vertices(Mesh& l, Mesh& r, const RightIds& ids) {
-  const std::size_t na = static_cast<std::size_t>(r.num_attributes);
-  for (VertexId v = ids.v0; v < r.vertex_count(); ++v) {
-    l.kind.push_back(r.kind[v]);
-    if (!r.marker.empty()) l.marker.push_back(r.marker[v]);
-  }
-  move_appending(r.points, l.points, [](const Point& p) { return p; }, ids.v0);
-  l.attributes.insert(l.attributes.end(), r.attributes.begin() + static_cast<std::ptrdiff_t>(ids.v0 * na),
-                      r.attributes.end());
-}
-
 void append_records(Mesh& l, const Mesh& r, const RightIds& ids, const std::vector<char>& right_records) {
   const auto moved = [&](Subsegment s) {
     s.a = ids.vertex(s.a);
@@ -160,7 +130,7 @@ void append_records(Mesh& l, const Mesh& r, const RightIds& ids, const std::vect
 void append_right(Mesh& l, Mesh& r, const RightIds& ids) {
   const auto links_and_vertices = [&] {
     move_appending(r.link, l.link, [&](EdgeRef e) { return ids.edge(e); });
-    append_vertices(l, r, ids);
+    l.take_vertices(r, ids.v0);
   };
   const auto corners_and_subsegments = [&] {
     move_appending(r.corner, l.corner, [&](VertexId v) { return ids.vertex(v); });

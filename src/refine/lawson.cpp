@@ -1,7 +1,7 @@
 #include "refine/lawson.h"
 
-#include <vector>
 
+#include "mesh/lawson.h"
 #include "mesh/operations.h"
 #include "refine/edge_finder.h"
 
@@ -17,21 +17,9 @@ bool must_flip(const Mesh& mesh, Predicates& pred, EdgeRef e) {
 }
 
 // Lawson's flips on the link of v (the edges opposite it), as after an exact insertion.
-EdgeRef flip_link(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef out) {
-  std::vector<EdgeRef> stack;
-  for_each_around(mesh, out, [&](EdgeRef e) { stack.push_back(lnext(e)); });
-  EdgeRef leaving = out;
-  while (!stack.empty()) {
-    const EdgeRef e = stack.back();
-    stack.pop_back();
-    if (mesh.apex(e) != v || !must_flip(mesh, pred, e)) continue;
-    const EdgeRef twin = mesh.link[e];
-    const EdgeRef g = flip(mesh, e);  // v -> the far apex
-    leaving = g;
-    stack.push_back(lnext(g));
-    stack.push_back(lprev(twin));
-  }
-  return mesh.org(leaving) == v ? leaving : out;
+EdgeRef flip_link_of(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef out) {
+  const EdgeRef last = flip_link(mesh, v, out, [&](EdgeRef e) { return must_flip(mesh, pred, e); });
+  return last != kNone && mesh.org(last) == v ? last : out;
 }
 
 // A spoke v -> x that is not locally Delaunay, or kNone. Only a rounded v can have one: v then
@@ -54,11 +42,11 @@ EdgeRef bad_spoke(const Mesh& mesh, Predicates& pred, EdgeRef out) {
 }  // namespace
 
 EdgeRef restore_delaunay_around(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef out) {
-  EdgeRef leaving = flip_link(mesh, pred, v, out);
+  EdgeRef leaving = flip_link_of(mesh, pred, v, out);
   // Each flip removes a locally non-Delaunay edge, so the loop ends (Lawson).
   for (EdgeRef spoke = bad_spoke(mesh, pred, leaving); spoke != kNone; spoke = bad_spoke(mesh, pred, leaving)) {
     const EdgeRef g = flip(mesh, spoke);       // apex -> far apex; its twin's triangle keeps v
-    leaving = flip_link(mesh, pred, v, lprev(mesh.link[g]));
+    leaving = flip_link_of(mesh, pred, v, lprev(mesh.link[g]));
   }
   return leaving;
 }

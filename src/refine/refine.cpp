@@ -99,17 +99,7 @@ RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& aske
 }
 
 void add_counts(RefineReport& to, const RefineReport& from) {
-  to.interior_steiner += from.interior_steiner;
-  to.segment_steiner += from.segment_steiner;
-  to.vertices_deleted += from.vertices_deleted;
-  to.encroached_splits += from.encroached_splits;
-  to.rejected_candidates += from.rejected_candidates;
-  to.declined_splits += from.declined_splits;
-  to.guard_refusals += from.guard_refusals;
-  to.kept_boundary_refusals += from.kept_boundary_refusals;
-  to.locked_subsegments += from.locked_subsegments;
-  to.bottom_scale_searches += from.bottom_scale_searches;
-  to.bottom_scale_refusals += from.bottom_scale_refusals;
+  for (std::uint64_t RefineWork::*count : kWorkCounts) to.*count += from.*count;
   to.hopeless_edges = std::max(to.hopeless_edges, from.hopeless_edges);  // both count the same initial edges
   to.stopped_by_guard = to.stopped_by_guard || from.stopped_by_guard;
   to.stopped_by_max_steiner = to.stopped_by_max_steiner || from.stopped_by_max_steiner;

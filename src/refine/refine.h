@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <iterator>
 
 #include "geometry/point.h"
 #include "geometry/predicates.h"
@@ -68,7 +69,9 @@ enum class CapKind : std::uint8_t {
   Memory,   // the memory budget
 };
 
-struct RefineReport {
+// The counts of work done that add up over the parts of one refinement (stages, halves): only
+// std::uint64_t counters, each listed in kWorkCounts below, which add_counts sums.
+struct RefineWork {
   std::uint64_t interior_steiner = 0;     // free vertices inserted (circumcentres, off-centres)
   std::uint64_t segment_steiner = 0;      // vertices inserted on subsegments
   std::uint64_t vertices_deleted = 0;     // free vertices deleted before a split (Chew; Fig. 39 l.40)
@@ -80,6 +83,20 @@ struct RefineReport {
   std::uint64_t locked_subsegments = 0;   // subsegments left unsplit: doubles could not split them
   std::uint64_t bottom_scale_searches = 0;  // Steiner points chosen among nearby doubles (bottom_scale.h)
   std::uint64_t bottom_scale_refusals = 0;  // of those, triangles no nearby double improved
+};
+
+// Every counter of RefineWork, once: the static_assert fails when a counter is added to the struct
+// and not here, so the sum cannot silently miss one.
+inline constexpr std::uint64_t RefineWork::*kWorkCounts[] = {
+    &RefineWork::interior_steiner,       &RefineWork::segment_steiner,        &RefineWork::vertices_deleted,
+    &RefineWork::encroached_splits,      &RefineWork::rejected_candidates,    &RefineWork::declined_splits,
+    &RefineWork::guard_refusals,         &RefineWork::kept_boundary_refusals, &RefineWork::locked_subsegments,
+    &RefineWork::bottom_scale_searches,  &RefineWork::bottom_scale_refusals,
+};
+static_assert(sizeof(RefineWork) == std::size(kWorkCounts) * sizeof(std::uint64_t),
+              "every RefineWork counter must be listed in kWorkCounts");
+
+struct RefineReport : RefineWork {
   std::uint64_t hopeless_edges = 0;         // initial edges no double can give a good triangle
   bool stopped_by_guard = false;
   bool stopped_by_max_steiner = false;

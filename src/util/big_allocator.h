@@ -72,4 +72,18 @@ class BigBytes {
   std::size_t size_ = 0;
 };
 
+// Appends f(x) for every x of `from` from index `first` on to `to` and frees `from`, giving its
+// pages back as they are copied, so that the two arrays never hold their whole size at once (that
+// set the peak memory of refine/halves.cpp's join).
+template <class T, class U, class F>
+void move_appending(BigVector<T>& from, BigVector<U>& to, F f, std::size_t first = 0) {
+  constexpr std::size_t kChunk = std::size_t{1} << 16;
+  for (std::size_t i = first; i < from.size(); i += kChunk) {
+    const std::size_t end = from.size() < i + kChunk ? from.size() : i + kChunk;
+    for (std::size_t k = i; k < end; ++k) to.push_back(f(from[k]));
+    release_pages(from.data() + i, (end - i) * sizeof(T));
+  }
+  BigVector<T>().swap(from);
+}
+
 }  // namespace deltri

@@ -1,0 +1,77 @@
+#!/bin/sh
+# The topology kernel's fence (issue 20): only src/mesh/ (and the divide-and-conquer builder, which
+# keeps raw arrays in its own file) may write triangle corners, links and subsegment flags, and
+# only src/mesh/ may spell out slot arithmetic like 3 * t + i. Not every stage is on the kernel yet,
+# so the files that still do it are listed below with their count of such lines: the test fails
+# when a file not listed does it, or a listed file does it more often. Lower a count (or drop the
+# line) when a file moves onto the kernel; the goal is an empty list.
+# usage: topology_writers.sh SOURCE_DIR
+cd "$1/src" || exit 2
+WRITE='(\b(corner|link|subseg)\[[^]]*\][[:space:]]*=[^=])|(\.(bond|set_subsegment|kill_triangle|add_triangle|append_triangle)\()|(\b(corner|link|subseg)\.(resize|assign|push_back|swap)\()'
+INDEX='\b3 \* [a-z_]'
+allowed() {  # kind file -> the listed count, or 0
+  sed -n "s|^$1 $2 ||p" <<'LIST' | head -n 1
+write cdt/convex_hull.cpp 5
+write cdt/edit.cpp 20
+write cdt/holes_and_regions.cpp 2
+write cdt/rebuild_mesh.cpp 5
+write cdt/recover_edge.cpp 1
+write cdt/segment_inserter.cpp 3
+write delaunay/incremental.cpp 5
+write delaunay/sweepline.cpp 2
+write refine/halves.cpp 10
+index api/output_arrays.cpp 5
+index cdt/convex_hull.cpp 1
+index cdt/edit.cpp 16
+index cdt/flood.cpp 1
+index cdt/holes_and_regions.cpp 1
+index cdt/rebuild_mesh.cpp 3
+index cdt/recover_edge.cpp 1
+index cdt/walk.cpp 6
+index cli/surface_run.cpp 3
+index delaunay/divide_and_conquer.cpp 43
+index delaunay/incremental.cpp 5
+index delaunay/sweepline.cpp 4
+index io/edge_file.cpp 2
+index io/ele_file.cpp 2
+index io/midpoints.cpp 1
+index io/msh_file.cpp 1
+index io/neigh_file.cpp 1
+index io/off_file.cpp 1
+index io/output_numbering.cpp 1
+index io/poly_file.cpp 1
+index io/surface_exports.cpp 6
+index io/surface_files.cpp 1
+index io/svg_file.cpp 5
+index io/voronoi_file.cpp 2
+index io/vtu_file.cpp 7
+index quality/bound_misses.cpp 8
+index quality/check_mesh.cpp 4
+index quality/statistics.cpp 4
+index refine/area_field.cpp 2
+index refine/bad_triangles.cpp 6
+index refine/bottom_scale.cpp 2
+index refine/candidate_probe.cpp 8
+index refine/edge_finder.cpp 2
+index refine/halves.cpp 6
+index refine/termination_guard.cpp 4
+index refine/terminator.cpp 12
+index surface/check_surface.cpp 3
+LIST
+}
+check() {  # kind pattern exempt-regex
+  grep -rncE "$2" --include=*.cpp --include=*.h . | sed 's|^\./||' | grep -v ':0$' | grep -vE "$3" |
+    while IFS=: read -r file count; do
+      limit=$(allowed "$1" "$file"); limit=${limit:-0}
+      if [ "$count" -gt "$limit" ]; then
+        echo "$file: $count lines of $1 outside the kernel (allowed $limit)"
+        grep -nE "$2" "$file" | head -n 5
+      fi
+    done
+}
+out=$( { check write "$WRITE" '^(mesh/|delaunay/divide_and_conquer\.cpp:)'; check index "$INDEX" '^mesh/'; } )
+if [ -n "$out" ]; then
+  echo "$out"
+  exit 1
+fi
+echo "no topology writes or slot arithmetic outside src/mesh/ beyond the listed files"
