@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "util/invariant.h"
+
 namespace deltri {
 
 // Above this angle bound Delaunay refinement is not proven to terminate and can cascade (Sec. 7.3,
@@ -18,6 +20,7 @@ class AngleBound {
   AngleBound() = default;  // none asked (no -q)
   // -q theta; theta = 0 asks for refinement with no angle bound.
   explicit AngleBound(double theta_deg) : asked_(true), degrees_(theta_deg) {
+    DELTRI_ASSERT(theta_deg < 60.0);  // no triangle has a smallest angle above 60 degrees
     if (!(theta_deg > 0.0)) {
       degrees_ = 0.0;
       return;

@@ -13,6 +13,7 @@
 #include "refine/mirrored_split.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"
+#include "util/invariant.h"
 
 namespace deltri {
 
@@ -153,6 +154,7 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_
   EdgeRef out = split_edge(mesh_, s, v);  // Fig. 39 l.44
   pieces_.record_split(mesh_, v, piece);
   out = restore_delaunay_around(mesh_, pred_, v, out);
+  DELTRI_ASSERT(mesh_.org(out) == v && mesh_.subseg[out] != kNone);  // v is on the subsegment's halves
   ++report_.segment_steiner;
   ++report_.encroached_splits;
   new_vertex(out, queue_triangles);  // Fig. 39 l.45
@@ -181,7 +183,10 @@ bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pe
   return true;
 }
 
-void Terminator::enqueue_subsegment(EdgeRef e) { encroached_.push({e, mesh_.org(e), mesh_.dest(e)}); }
+void Terminator::enqueue_subsegment(EdgeRef e) {
+  DELTRI_ASSERT(mesh_.subseg[e] != kNone);
+  encroached_.push({e, mesh_.org(e), mesh_.dest(e)});
+}
 
 EdgeRef Terminator::current_edge(const EncroachedSubsegment& entry) {
   const auto is_it = [&](EdgeRef e) {

@@ -14,6 +14,7 @@
 #include "refine/split_permitted.h"
 #include "refine/steiner_point.h"
 #include "refine/termination_guard.h"
+#include "util/invariant.h"
 #include "util/run_both.h"
 
 namespace deltri {
@@ -363,6 +364,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
       drop_last_vertex();
       return;
     }
+    DELTRI_ASSERT(mesh_.org(inserted.edge) == v);
     ++report_.interior_steiner;
     new_vertex(inserted.edge, true);  // Fig. 38 l.17
     return;
@@ -428,6 +430,7 @@ bool Terminator::shell_exempt(EdgeRef shortest) const {
 void Terminator::enqueue_if_bad(TriangleId t) {
   const Assessment a = assess(t);
   if (!a.bad()) return;
+  DELTRI_ASSERT(mesh_.is_live(t));
   const QueuedTriangle entry{t, mesh_.corner[3 * t], mesh_.corner[3 * t + 1], mesh_.corner[3 * t + 2]};
   bad_triangles_.push(entry, {a.skinny, a.shape.ratio2_over_bound2, a.shape.shortest_length2});
 }
