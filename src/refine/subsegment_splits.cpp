@@ -154,7 +154,7 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_
   EdgeRef out = split_edge(mesh_, s, v);  // Fig. 39 l.44
   pieces_.record_split(mesh_, v, piece);
   out = restore_delaunay_around(mesh_, pred_, v, out);
-  DELTRI_ASSERT(mesh_.org(out) == v && mesh_.subseg[out] != kNone);  // v is on the subsegment's halves
+  DELTRI_ASSERT(mesh_.org(out) == v);  // new_vertex walks v's star from out
   ++report_.segment_steiner;
   ++report_.encroached_splits;
   new_vertex(out, queue_triangles);  // Fig. 39 l.45
