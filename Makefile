@@ -5,7 +5,7 @@ CMAKE_FLAGS ?=
 PREFIX ?= /usr/local
 DESTDIR ?=
 
-.PHONY: all build configure demo test bench clean check-sanitize check-tsan check-fresh fuzz install uninstall
+.PHONY: all build configure demo test bench clean check-sanitize check-debug check-tsan check-fresh fuzz install uninstall
 
 all: build
 
@@ -33,6 +33,15 @@ bench: build
 
 check-sanitize:
 	@$(MAKE) --no-print-directory test BUILD=build-sanitize CMAKE_FLAGS="-DDELTRI_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo"
+
+# The end-to-end and regression tests (the program on every sample and case, checked by
+# deltri_mesh_verify) on a checked build: optimised but without NDEBUG, so every run also checks the
+# mesh after each stage (api/pipeline.cpp) and the invariants of src/util/invariant.h. Only the
+# program and the checker are built; the unit tests run in `make test` and `make check-sanitize`.
+check-debug:
+	@cmake -S . -B build-debug -DDELTRI_CHECKED=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+	@cmake --build build-debug -j $(JOBS) --target deltri deltri_mesh_verify
+	@cd build-debug && ctest --output-on-failure -j $(JOBS) -R '^(e2e|regression)\.'
 
 # The library's thread test (8 threads calling the C++ API at once, tests/api/test_threads.cpp)
 # under ThreadSanitizer, which must report nothing: its own build, of that test only.
@@ -76,4 +85,4 @@ fuzz:
 	@sh tests/fuzz/run.sh $(CURDIR)/build-fuzz $(FUZZ_TARGET) $(FUZZ_SECONDS) "$(FUZZ_FLAGS)"
 
 clean:
-	rm -rf $(BUILD) build-sanitize build-tsan build-fuzz
+	rm -rf $(BUILD) build-sanitize build-debug build-tsan build-fuzz

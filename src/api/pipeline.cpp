@@ -139,12 +139,17 @@ void rebuild(Mesh& mesh, const Pslg& pslg, const PipelineSource& source, const S
 
 bool area_bounds_read(const PipelineSource& source) { return source.previous && source.previous->area_bounds; }
 
+// The bounds asked for, made once from the switches: refinement and the account of misses both take them.
+AngleBound angle_bound(const Switches& sw) { return sw.quality ? AngleBound(sw.min_angle) : AngleBound(); }
+
+SizeBounds size_bounds(const Switches& sw, bool area_file) {
+  return {sw.fixed_area ? sw.max_area : 0.0, sw.variable_area || area_file, sw.user_test ? sw.max_edge_length : 0.0};
+}
+
 BoundRequest bound_request(const Switches& sw, const PipelineSource& source, const RunReport& report) {
   BoundRequest r;
-  r.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
-  r.max_area = sw.fixed_area ? sw.max_area : 0.0;
-  r.area_bounds = sw.variable_area || area_bounds_read(source);
-  r.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
+  r.angle = angle_bound(sw);
+  r.size = size_bounds(sw, area_bounds_read(source));
   r.steiner_limited = report.refine && report.refine->stopped_by_max_steiner;
   r.segments_kept_whole = sw.no_boundary_steiner > 0;
   return r;
@@ -154,10 +159,8 @@ BoundRequest bound_request(const Switches& sw, const PipelineSource& source, con
 
 RefineOptions refine_options(const Switches& sw, bool area_file) {
   RefineOptions opt;
-  opt.quality = sw.quality;
-  opt.min_angle_deg = sw.quality ? sw.min_angle : 0.0;
-  opt.max_area = sw.fixed_area ? sw.max_area : 0.0;
-  opt.use_triangle_area_bounds = sw.variable_area || area_file;
+  opt.angle = angle_bound(sw);
+  opt.size = size_bounds(sw, area_file);
   opt.lenses = !sw.conforming_delaunay;
   opt.conforming_delaunay = sw.conforming_delaunay;
   opt.no_steiner_on_segments = sw.no_boundary_steiner;
@@ -165,7 +168,6 @@ RefineOptions refine_options(const Switches& sw, bool area_file) {
   opt.off_centers = !sw.circumcenters_only;
   opt.queue_order = sw.queue_order;
   opt.decline_cluster_splits = sw.decline_cluster_splits;
-  opt.max_edge_length = sw.user_test ? sw.max_edge_length : 0.0;
   opt.threads = sw.threads;
   opt.memory_budget = memory_budget();
   return opt;

@@ -12,7 +12,7 @@ FacetMeshOptions facet_options(const Switches& sw) {
   o.threads = sw.threads;
   o.refine = sw.quality || sw.fixed_area || sw.user_test || sw.conforming_delaunay;
   o.refinement = refine_options(sw, false);
-  o.refinement.use_triangle_area_bounds = false;
+  o.refinement.size.triangle_bounds = false;
   return o;
 }
 

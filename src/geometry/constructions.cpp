@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "geometry/exact_determinants.h"
 #include "geometry/expansion.h"
@@ -20,17 +19,6 @@ double accurate_cross(const Point& a, const Point& b, const Point& c) {
   const double cross = left - right;
   if (std::fabs(cross) >= 0x1p-10 * (std::fabs(left) + std::fabs(right))) return cross;
   return exact::orient2d_value(a, b, c);
-}
-
-struct ShortestEdge {
-  Point p, q, opposite;
-};
-
-ShortestEdge shortest_edge(const Point& a, const Point& b, const Point& c) {
-  const double ab = squared_distance(a, b), bc = squared_distance(b, c), ca = squared_distance(c, a);
-  if (ab <= bc && ab <= ca) return {a, b, c};
-  if (bc <= ca) return {b, c, a};
-  return {c, a, b};
 }
 
 // Clamping to the overlap of the two ranges cannot move a correct answer and keeps a rounded one
@@ -66,39 +54,21 @@ Point circumcenter(const Point& a, const Point& b, const Point& c) {
   return {a.x + (cy * b_len2 - by * c_len2) * inverse, a.y + (bx * c_len2 - cx * b_len2) * inverse};
 }
 
-double radius_edge_ratio_squared(const Point& a, const Point& b, const Point& c) {
-  // R = |ab| |bc| |ca| / (2 |cross|), so (R / shortest)^2 is the product of the two longer squared
-  // edges over 4 cross^2.
-  double edges[3] = {squared_distance(a, b), squared_distance(b, c), squared_distance(c, a)};
-  std::sort(edges, edges + 3);
-  const double cross = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-  if (cross == 0.0) return std::numeric_limits<double>::infinity();
-  return edges[1] * edges[2] / (4.0 * cross * cross);
-}
-
-double radius_edge_ratio(const Point& a, const Point& b, const Point& c) {
-  return std::sqrt(radius_edge_ratio_squared(a, b, c));
-}
-
-Point off_center(const Point& a, const Point& b, const Point& c, double beta) {
-  // Let pq (length l, midpoint m) be the shortest edge. A point x on pq's bisector at distance h
-  // from m forms an isosceles triangle pqx; its apex angle t is its smallest angle when h is large,
-  // and its radius-edge ratio is 1 / (2 sin t). Asking for ratio beta gives sin t = 1 / (2 beta)
-  // and h = (l / 2) cot(t / 2) = l (beta + sqrt(beta^2 - 1/4)). The circumcentre lies on the same
-  // bisector, on the side of the third vertex r (the angle at r is the smallest, below 90 degrees);
-  // if it is no farther from m than h it is the better choice, otherwise the off-centre is the point
-  // at distance h toward it. Then x = m + k n with n = pq rotated a quarter turn toward r, |n| = l
-  // and k = beta + sqrt(beta^2 - 1/4).
-  const Point centre = circumcenter(a, b, c);
-  if (!(beta > 0.5)) return centre;
-  const ShortestEdge e = shortest_edge(a, b, c);
-  const double ex = e.q.x - e.p.x, ey = e.q.y - e.p.y;
-  const Point mid{e.p.x + 0.5 * ex, e.p.y + 0.5 * ey};
-  const double k = beta + std::sqrt(beta * beta - 0.25);
-  if (squared_distance(mid, centre) <= k * k * (ex * ex + ey * ey)) return centre;
-  const double toward_r = ex * (e.opposite.y - e.p.y) - ey * (e.opposite.x - e.p.x);
-  const double side = toward_r < 0.0 ? -1.0 : 1.0;
-  return {mid.x - side * k * ey, mid.y + side * k * ex};
+Point off_center(const Point& p, const Point& q, const Point& r, double factor) {
+  const double bx = q.x - p.x, by = q.y - p.y, cx = r.x - p.x, cy = r.y - p.y;
+  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  const double denominator = 2.0 * (bx * cy - by * cx);
+  const Point centre{p.x + (cy * b2 - by * c2) / denominator, p.y + (bx * c2 - cx * b2) / denominator};
+  if (factor <= 0.0) return centre;
+  // The circumcentre lies on pq's bisector, on r's side when the angle at r is acute (the smallest
+  // angle is), so the off-centre is the point at the wanted height on the way to it.
+  const Point mid{0.5 * (p.x + q.x), 0.5 * (p.y + q.y)};
+  const double dx = centre.x - mid.x, dy = centre.y - mid.y;
+  const double to_centre = std::sqrt(dx * dx + dy * dy);
+  const double height = factor * std::sqrt(b2);
+  if (!(height < to_centre)) return centre;
+  const double s = height / to_centre;
+  return Point{mid.x + s * dx, mid.y + s * dy};
 }
 
 namespace {

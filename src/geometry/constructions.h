@@ -10,19 +10,22 @@
 
 namespace deltri {
 
-// Centre of the circle through a, b, c. The triangle must not be degenerate (for collinear points
-// the result is infinite or NaN).
+// Centre of the circle through a, b, c, to nearly full accuracy even for a thin triangle (its
+// denominator is exact when the floating-point cross product cancels): the Voronoi vertices deltri
+// writes (-v). The triangle must not be degenerate (for collinear points the result is infinite
+// or NaN).
 Point circumcenter(const Point& a, const Point& b, const Point& c);
 
-// Circumradius divided by the shortest edge length (1/sqrt(3) for an equilateral triangle, infinite
-// for a degenerate one). Its square avoids the square root when only comparisons are needed.
-double radius_edge_ratio(const Point& a, const Point& b, const Point& c);
-double radius_edge_ratio_squared(const Point& a, const Point& b, const Point& c);
-
-// Üngör's off-centre of triangle abc for the radius-edge bound beta (> 1/2, normally >= 1/sqrt(3)):
-// the circumcentre if it is close enough to the shortest edge, otherwise the point on that edge's
-// bisector whose triangle with the edge has radius-edge ratio exactly beta.
-Point off_center(const Point& a, const Point& b, const Point& c, double beta);
+// Where Delaunay refinement splits a bad triangle pqr whose shortest edge is pq (Fig. 38 l.13):
+// Ungor's off-centre, the point on pq's bisector, on the side of r, at height factor |pq| above
+// pq's midpoint, when that is nearer the edge than the circumcentre; otherwise the circumcentre.
+// factor is AngleBound::off_center_factor(), 0.475 cot(theta / 2) (geometry/mesh_bounds.h): the
+// new triangle on pq then has an apex angle a little above theta. factor <= 0 gives the
+// circumcentre. The circumcentre here is the plain quotient of floating-point determinants taken
+// relative to p, not circumcenter()'s: the refinement probes the point exactly before inserting
+// it (refine/candidate_probe.h), and every mesh deltri makes depends on these bits. pqr must not
+// be flat (the result is then infinite or NaN).
+Point off_center(const Point& p, const Point& q, const Point& r, double factor);
 
 // Where segments ab and cd cross; the caller guarantees that they do cross properly. The result is
 // within a few ulps of the exact crossing and inside both segments' bounding boxes. For parallel

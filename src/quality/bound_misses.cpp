@@ -33,12 +33,12 @@ bool misses_angle(const Mesh& m, TriangleId t, double bound) {
 bool misses_size(const Mesh& m, TriangleId t, const BoundRequest& r) {
   const Point &a = m.points[m.corner[3 * t]], &b = m.points[m.corner[3 * t + 1]], &c = m.points[m.corner[3 * t + 2]];
   const double area = 0.5 * std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
-  if (r.max_area > 0.0 && area > r.max_area * (1.0 + kMargin)) return true;
-  if (r.area_bounds && m.area_bound.size() == m.triangle_slots() && m.area_bound[t] > 0.0 &&
+  if (r.size.max_area > 0.0 && area > r.size.max_area * (1.0 + kMargin)) return true;
+  if (r.size.triangle_bounds && m.area_bound.size() == m.triangle_slots() && m.area_bound[t] > 0.0 &&
       area > m.area_bound[t] * (1.0 + kMargin))
     return true;
   const double longest = std::max({length(a, b), length(b, c), length(c, a)});
-  return r.max_edge_length > 0.0 && longest > r.max_edge_length * (1.0 + kMargin);
+  return r.size.max_edge_length > 0.0 && longest > r.size.max_edge_length * (1.0 + kMargin);
 }
 
 bool at_precision_limit(const Mesh& m, TriangleId t) {
@@ -180,7 +180,7 @@ BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
   std::vector<char> missing(m.triangle_slots(), 0);
   for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
-    const bool angle = misses_angle(m, t, r.min_angle_deg), size = misses_size(m, t, r);
+    const bool angle = misses_angle(m, t, r.angle.degrees()), size = misses_size(m, t, r);
     out.below_angle += angle;
     out.above_size += size;
     missing[t] = angle || size;
@@ -190,7 +190,7 @@ BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
   const SegmentVertices s = collect_spokes(m);
   for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t) || !missing[t]) continue;
-    const VertexId j = misses_angle(m, t, r.min_angle_deg) ? explaining_junction(m, s, t) : kNone;
+    const VertexId j = misses_angle(m, t, r.angle.degrees()) ? explaining_junction(m, s, t) : kNone;
     bool touches_repair = false, touches_segment = false;
     for (int i = 0; i < 3; ++i) {
       const VertexId v = m.corner[3 * t + i];

@@ -26,6 +26,7 @@
 
 #include <cstdint>
 
+#include "geometry/mesh_bounds.h"
 #include "mesh/mesh.h"
 
 namespace deltri {
@@ -33,10 +34,8 @@ namespace deltri {
 inline constexpr double kPrecisionUlps = 64.0;
 
 struct BoundRequest {
-  double min_angle_deg = 0.0;       // 0: no angle bound
-  double max_area = 0.0;            // 0: none
-  bool area_bounds = false;         // also mesh.area_bound[t] where positive
-  double max_edge_length = 0.0;     // 0: none
+  AngleBound angle;                 // degrees() 0: no angle bound
+  SizeBounds size;                  // triangle_bounds: also mesh.area_bound[t] where positive
   bool steiner_limited = false;     // -S was reached
   bool segments_kept_whole = false; // -Y or -YY
 };

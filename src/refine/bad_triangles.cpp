@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "geometry/constructions.h"
 
@@ -15,21 +14,8 @@ bool has_subsegment(const Mesh& mesh, EdgeRef e) {
 
 }  // namespace
 
-QualityRules make_quality_rules(double min_angle_deg, bool quality, double max_area,
-                                bool use_area_bounds, double max_edge_length) {
-  QualityRules rules;
-  if (quality && min_angle_deg > 0.0) {
-    const double s = std::sin(min_angle_deg * std::numbers::pi / 180.0);
-    rules.sin2_theta = s * s;
-  }
-  rules.max_area = max_area;
-  rules.use_area_bounds = use_area_bounds;
-  rules.max_edge_length = max_edge_length;
-  return rules;
-}
-
 double area_bound_of(const Mesh& mesh, TriangleId t, const QualityRules& rules) {
-  if (!rules.use_area_bounds || mesh.area_bound.empty()) return 0.0;
+  if (!rules.size.triangle_bounds || mesh.area_bound.empty()) return 0.0;
   if (rules.area_field == nullptr || rules.area_field->empty()) return mesh.area_bound[t];
   const Point& a = mesh.point(mesh.corner[3 * t]);
   const Point& b = mesh.point(mesh.corner[3 * t + 1]);
@@ -76,9 +62,9 @@ TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta
 
 Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& rules) {
   Assessment out;
-  out.shape = measure_triangle(mesh, t, rules.sin2_theta);
+  out.shape = measure_triangle(mesh, t, rules.angle.sin2());
   const double* len2 = out.shape.length2;
-  if (rules.sin2_theta > 0.0 && out.shape.ratio2_over_bound2 > 1.0) {
+  if (rules.angle.sin2() > 0.0 && out.shape.ratio2_over_bound2 > 1.0) {
     // With ties for the shortest edge, any tied smallest angle between subsegments exempts t.
     bool exempt = false;
     for (unsigned i = 0; i < 3 && !exempt; ++i)
@@ -86,10 +72,10 @@ Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& r
     out.skinny = !exempt;
   }
   const double area = out.shape.area;
-  if (rules.max_area > 0.0 && area > rules.max_area) out.too_large = true;
+  if (rules.size.max_area > 0.0 && area > rules.size.max_area) out.too_large = true;
   if (const double bound = area_bound_of(mesh, t, rules); bound > 0.0 && area > bound) out.too_large = true;
-  if (rules.max_edge_length > 0.0) {
-    const double limit2 = rules.max_edge_length * rules.max_edge_length;
+  if (rules.size.max_edge_length > 0.0) {
+    const double limit2 = rules.size.max_edge_length * rules.size.max_edge_length;
     for (unsigned i = 0; i < 3; ++i)
       if (len2[i] > limit2) out.too_large = true;
   }
@@ -102,11 +88,11 @@ Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& r
 
 double size_excess(const Mesh& mesh, TriangleId t, const TriangleShape& shape, const QualityRules& rules) {
   double excess = 0.0;
-  if (rules.max_area > 0.0) excess = std::max(excess, shape.area / rules.max_area);
+  if (rules.size.max_area > 0.0) excess = std::max(excess, shape.area / rules.size.max_area);
   if (const double bound = area_bound_of(mesh, t, rules); bound > 0.0) excess = std::max(excess, shape.area / bound);
-  if (rules.max_edge_length > 0.0) {
+  if (rules.size.max_edge_length > 0.0) {
     const double longest2 = std::max({shape.length2[0], shape.length2[1], shape.length2[2]});
-    excess = std::max(excess, longest2 / (rules.max_edge_length * rules.max_edge_length));
+    excess = std::max(excess, longest2 / (rules.size.max_edge_length * rules.size.max_edge_length));
   }
   return excess;
 }

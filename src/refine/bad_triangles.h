@@ -3,6 +3,7 @@
 // those too large for the user (delta(t)).
 #pragma once
 
+#include "geometry/mesh_bounds.h"
 #include "mesh/mesh.h"
 #include "refine/area_field.h"
 #include "refine/quality_queue.h"
@@ -11,10 +12,8 @@
 namespace deltri {
 
 struct QualityRules {
-  double sin2_theta = 0.0;        // sin^2 of the minimum angle; 0 turns the angle test off
-  double max_area = 0.0;          // <= 0: none
-  bool use_area_bounds = false;   // also honour mesh.area_bound[t] when positive
-  double max_edge_length = 0.0;   // <= 0: none
+  AngleBound angle;  // its sin2() is the angle test; 0 turns it off
+  SizeBounds size;   // triangle_bounds: also honour mesh.area_bound[t] when positive
   // With bounds that vary within a region (-r with an .area file), the field gives each triangle
   // its bound instead of mesh.area_bound (refine/area_field.h); null or empty: not used.
   const AreaField* area_field = nullptr;
@@ -23,9 +22,6 @@ struct QualityRules {
 
 // The area bound that applies to t (<= 0: none), as rules say.
 double area_bound_of(const Mesh& mesh, TriangleId t, const QualityRules& rules);
-
-QualityRules make_quality_rules(double min_angle_deg, bool quality, double max_area,
-                                bool use_area_bounds, double max_edge_length);
 
 struct TriangleShape {
   EdgeRef shortest = kNone;  // the triangle's shortest edge

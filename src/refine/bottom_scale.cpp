@@ -29,7 +29,7 @@ std::optional<Point> Terminator::bottom_scale_point(TriangleId t, const Point& i
   const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
   const double l2 = a.shape.shortest_length2;
   const double t_sine2 = triangle_sine2(mesh_, t);
-  const double good2 = rules_.sin2_theta;
+  const double good2 = opt_.angle.sin2();
   std::optional<Point> best;
   double best_near = 0.0, best_all = 0.0;
   for (const Point& c : candidates) {
@@ -116,6 +116,6 @@ std::uint64_t count_hopeless_edges(const Mesh& mesh, double sin2_theta) {
   return count;
 }
 
-void Terminator::find_hopeless_edges() { report_.hopeless_edges = count_hopeless_edges(mesh_, rules_.sin2_theta); }
+void Terminator::find_hopeless_edges() { report_.hopeless_edges = count_hopeless_edges(mesh_, opt_.angle.sin2()); }
 
 }  // namespace deltri

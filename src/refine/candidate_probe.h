@@ -21,6 +21,7 @@
 #include "mesh/mesh.h"
 #include "mesh/operations.h"
 #include "refine/encroached.h"
+#include "util/invariant.h"
 
 namespace deltri {
 
@@ -135,6 +136,7 @@ Probe probe_candidate(const Mesh& mesh, Predicates& pred, TriangleId t, const Po
   probe.container = walk.container;
   probe.strictly_inside = !walk.on_edge;
   probe.status = probe.encroached.empty() ? ProbeStatus::Clear : ProbeStatus::Encroaches;
+  DELTRI_ASSERT(probe.status != ProbeStatus::Clear || mesh.is_live(triangle_of(probe.container)));
   return probe;
 }
 

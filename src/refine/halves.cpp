@@ -294,15 +294,13 @@ std::vector<TriangleId> sew_and_flip(Mesh& mesh, Predicates& pred, const RightId
 
 bool halves_apply(const Mesh& mesh, const RefineOptions& opt) {
   if (!opt.in_halves || !mesh.has_subsegments()) return false;
-  const bool bounded = opt.quality || opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0;
+  const bool bounded = opt.angle.asked() || opt.size.any();
   if (!bounded || opt.size_test || opt.max_steiner >= 0 || opt.no_steiner_on_segments != 0 || opt.conforming_delaunay ||
       opt.decline_cluster_splits || opt.queue_order != QueueOrder::Ratio)
     return false;
-  if (opt.quality && opt.min_angle_deg > kCascadeAngleDeg) return false;
+  if (opt.angle.cascades()) return false;
   if (mesh.live_triangles() < kHalvesMinTriangles) return false;
-  const QualityRules rules = make_quality_rules(opt.min_angle_deg, opt.quality, opt.max_area,
-                                                opt.use_triangle_area_bounds, opt.max_edge_length);
-  return count_hopeless_edges(mesh, rules.sin2_theta) == 0;
+  return count_hopeless_edges(mesh, opt.angle.sin2()) == 0;
 }
 
 RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {

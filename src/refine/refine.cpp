@@ -19,7 +19,7 @@ namespace {
 // before it starts, instead of refining until the memory runs out.
 void refuse_impossible_size_bounds(const Mesh& mesh, const RefineOptions& opt) {
   if (!(opt.memory_budget > 0.0)) return;
-  const double wanted = 2.0 * triangles_wanted(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
+  const double wanted = 2.0 * triangles_wanted(mesh, opt.size);
   const double bytes = wanted * kBytesPerTriangle;
   if (!(bytes > opt.memory_budget)) return;
   constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
@@ -35,8 +35,6 @@ RefineReport refine_within_reach(Mesh& mesh, Predicates& pred, const RefineOptio
   Terminator terminator(mesh, pred, opt);
   return terminator.run();
 }
-
-bool can_cascade(const RefineOptions& opt) { return opt.quality && opt.min_angle_deg > kCascadeAngleDeg; }
 
 std::uint64_t steiner_of(const RefineReport& r) { return r.interior_steiner + r.segment_steiner; }
 
@@ -72,12 +70,12 @@ RefineReport refine_beyond_reach(Mesh& mesh, Predicates& pred, const RefineOptio
 RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& asked) {
   refuse_impossible_size_bounds(mesh, asked);
   const bool given = asked.area_field != nullptr && !asked.area_field->empty();
-  const AreaField field = asked.use_triangle_area_bounds && !given ? AreaField::of(mesh) : AreaField{};
+  const AreaField field = asked.size.triangle_bounds && !given ? AreaField::of(mesh) : AreaField{};
   RefineOptions opt = asked;
   if (!given) opt.area_field = &field;
-  if (!can_cascade(opt)) return refine_within_reach(mesh, pred, opt);
+  if (!opt.angle.cascades()) return refine_within_reach(mesh, pred, opt);
   RefineOptions reach = opt;
-  reach.min_angle_deg = kCascadeAngleDeg;
+  reach.angle = AngleBound(kCascadeAngleDeg);
   const RefineReport first = refine_within_reach(mesh, pred, reach);
   Mesh first_mesh = mesh;
   RefineReport report = refine_beyond_reach(mesh, pred, after(opt, steiner_of(first)));

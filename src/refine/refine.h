@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <iterator>
 
+#include "geometry/mesh_bounds.h"
 #include "geometry/point.h"
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
@@ -26,16 +27,13 @@ namespace deltri {
 class AreaField;
 
 struct RefineOptions {
-  double min_angle_deg = 20.0;          // theta (-q)
-  bool quality = false;                 // apply the angle bound at all
-  double max_area = 0.0;                // <= 0: none (-a with a number)
-  bool use_triangle_area_bounds = false;  // honour mesh.area_bound (-a alone, or regions)
+  AngleBound angle;                     // theta (-q), and what refinement derives from it
+  SizeBounds size;                      // -a, -u (mesh.area_bound for -a alone, regions, .area)
   bool lenses = true;                   // false with -D: diametral circles
   bool conforming_delaunay = false;     // -D: the result must be Delaunay, not only constrained
   int no_steiner_on_segments = 0;       // 0, 1 = not on boundary segments (-Y), 2 = none (-YY)
   long max_steiner = -1;                // -S; -1 unlimited
   bool off_centers = true;              // Ungor's off-centres instead of circumcentres
-  double max_edge_length = 0.0;         // <= 0: none; the -u size test
   // A caller's size test (refine/size_test.h), or null. Its wishes are unknown in advance, so only
   // the memory budget caps the Steiner points, and refinement stays on one thread (halves.h).
   const SizeTest* size_test = nullptr;

@@ -13,6 +13,7 @@
 #include "refine/mirrored_split.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"
+#include "util/invariant.h"
 
 namespace deltri {
 
@@ -45,7 +46,7 @@ Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
   for (EdgeRef e : marks_.boundary()) {  // the cavity's vertices are its boundary's
     const VertexId w = mesh_.org(e);
     const Point& q = mesh_.point(w);
-    if (mesh_.kind[w] == VertexKind::Free && in_diametral_circle(pa, pb, q)) continue;
+    if (mesh_.kind[w] == VertexKind::Free && strictly_inside_diametral_circle(pa, pb, q)) continue;
     nearest2 = std::min(nearest2, squared_distance(q, p));
   }
   return {now, std::sqrt(nearest2)};
@@ -59,7 +60,7 @@ EdgeRef Terminator::delete_free_vertices_near(EdgeRef s, bool queue_triangles) {
   const VertexId a = mesh_.org(s), b = mesh_.dest(s);
   const Point& pa = mesh_.point(a);
   const Point& pb = mesh_.point(b);
-  const auto inside = [&](VertexId w) { return in_diametral_circle(pa, pb, mesh_.point(w)); };
+  const auto inside = [&](VertexId w) { return strictly_inside_diametral_circle(pa, pb, mesh_.point(w)); };
   marks_.begin();
   std::vector<TriangleId> todo{triangle_of(s)};
   marks_.mark(todo[0]);
@@ -153,6 +154,7 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_
   EdgeRef out = split_edge(mesh_, s, v);  // Fig. 39 l.44
   pieces_.record_split(mesh_, v, piece);
   out = restore_delaunay_around(mesh_, pred_, v, out);
+  DELTRI_ASSERT(mesh_.org(out) == v);  // new_vertex walks v's star from out
   ++report_.segment_steiner;
   ++report_.encroached_splits;
   new_vertex(out, queue_triangles);  // Fig. 39 l.45
@@ -175,13 +177,16 @@ bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pe
     const Point& d = mesh_.point(mesh_.dest(e));
     const VertexId apex = mesh_.apex(e);
     const Point& c = mesh_.point(apex);
-    if (chew_pending && mesh_.kind[apex] == VertexKind::Free && in_diametral_circle(o, d, c)) continue;
+    if (chew_pending && mesh_.kind[apex] == VertexKind::Free && strictly_inside_diametral_circle(o, d, c)) continue;
     if (pred_.orient2d(o, p, c) <= 0 || pred_.orient2d(p, d, c) <= 0) return false;
   }
   return true;
 }
 
-void Terminator::enqueue_subsegment(EdgeRef e) { encroached_.push({e, mesh_.org(e), mesh_.dest(e)}); }
+void Terminator::enqueue_subsegment(EdgeRef e) {
+  DELTRI_ASSERT(mesh_.subseg[e] != kNone);
+  encroached_.push({e, mesh_.org(e), mesh_.dest(e)});
+}
 
 EdgeRef Terminator::current_edge(const EncroachedSubsegment& entry) {
   const auto is_it = [&](EdgeRef e) {

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "geometry/mesh_bounds.h"
 #include "mesh/mesh.h"
 
 namespace deltri {
@@ -35,10 +36,9 @@ std::vector<double> initial_feature_sizes(const Mesh& mesh);
 // test.poly, whose segments cross at 2e-6 radians, kept 222 triangles under -q30 with the floor
 // unscaled and 45 (all at the then precision floor of 2^-36) with it scaled, and none since the
 // floor is a quarter ulp.
-// The scaling applies up to kCascadeAngleDeg: above it refinement can cascade (Sec. 7.3) and the
-// unscaled floor stops it sooner (fan120 at -q40: 173,577 triangles left in 0.86 s unscaled,
+// The scaling applies up to kCascadeAngleDeg (geometry/mesh_bounds.h): above it refinement can
+// cascade (Sec. 7.3) and the unscaled floor stops it sooner (fan120 at -q40: 173,577 triangles left in 0.86 s unscaled,
 // 302,722 in 1.22 s scaled, both at the Steiner cap).
-inline constexpr double kCascadeAngleDeg = 34.0;
 double smallest_input_angle(const Mesh& mesh);
 double angle_scale(double angle);
 
@@ -92,11 +92,6 @@ inline constexpr double kBytesPerTriangle = kBytesPerSteiner / 2.0;
 // vertex adds log2(1 + longest edge / f), the octaves the mesh grades over around it.
 double feature_work(const Mesh& mesh);
 
-struct SizeBounds {
-  double max_area = 0.0;        // <= 0: none
-  bool triangle_bounds = false; // mesh.area_bound holds per-triangle bounds
-  double max_edge_length = 0.0; // <= 0: none
-};
 std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds);
 // The Steiner points that fit in `memory_budget` bytes beside the mesh (UINT64_MAX for a budget of 0:
 // none).

@@ -14,6 +14,7 @@
 #include "refine/split_permitted.h"
 #include "refine/steiner_point.h"
 #include "refine/termination_guard.h"
+#include "util/invariant.h"
 #include "util/run_both.h"
 
 namespace deltri {
@@ -21,12 +22,12 @@ namespace {
 
 // The edge length the size bounds ask for: sqrt of the smallest area bound, or the edge bound.
 double size_floor_of(const Mesh& mesh, const RefineOptions& opt) {
-  double smallest = opt.max_area > 0.0 ? opt.max_area : HUGE_VAL;
-  if (opt.use_triangle_area_bounds)
+  double smallest = opt.size.max_area > 0.0 ? opt.size.max_area : HUGE_VAL;
+  if (opt.size.triangle_bounds)
     for (TriangleId t = 0; t < mesh.area_bound.size(); ++t)
       if (mesh.is_live(t) && mesh.area_bound[t] > 0.0) smallest = std::min(smallest, mesh.area_bound[t]);
   double floor = std::sqrt(smallest);
-  if (opt.max_edge_length > 0.0) floor = std::min(floor, opt.max_edge_length);
+  if (opt.size.max_edge_length > 0.0) floor = std::min(floor, opt.size.max_edge_length);
   return std::isfinite(floor) ? floor : 0.0;
 }
 
@@ -40,8 +41,7 @@ double guard_floor_of(const Mesh& mesh, const RefineOptions& opt) {
   const std::vector<double> features = initial_feature_sizes(mesh);
   const double smallest = features.empty() ? 0.0 : *std::min_element(features.begin(), features.end());
   // Beyond the practical range the floor is what stops cascades, so it stays unscaled there.
-  const bool cascading = opt.quality && opt.min_angle_deg > kCascadeAngleDeg;
-  const double scale = cascading ? 1.0 : angle_scale(smallest_input_angle(mesh));
+  const double scale = opt.angle.cascades() ? 1.0 : angle_scale(smallest_input_angle(mesh));
   return guard_floor(smallest * scale, size_floor_of(mesh, opt));
 }
 
@@ -76,10 +76,9 @@ constexpr double kMaxReservedTriangles = 3.2e7;
 constexpr double kQualityGrowth = 6.0;
 
 void reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
-  const double wanted =
-      triangles_wanted(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
+  const double wanted = triangles_wanted(mesh, opt.size);
   const double slots = mesh.triangle_slots();
-  const double added = wanted > 0.0 ? 2.0 * wanted : opt.quality ? (kQualityGrowth - 1.0) * slots : 0.0;
+  const double added = wanted > 0.0 ? 2.0 * wanted : opt.angle.asked() ? (kQualityGrowth - 1.0) * slots : 0.0;
   if (!(added > 0.0) || slots + added > kMaxReservedTriangles) return;  // let such runs grow as needed
   const std::size_t triangles = static_cast<std::size_t>(slots + added);
   const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(added / 2.0);
@@ -107,8 +106,8 @@ void note_array(PageWarmer& warmer, unsigned slot, const Array& a) {
 constexpr double kLeastLensDeg = 0.01;
 
 EncroachRule rule_for(const RefineOptions& opt) {
-  if (!opt.lenses || opt.conforming_delaunay) return diametral_circle_rule();
-  return diametral_lens_rule(std::max(opt.quality ? opt.min_angle_deg : 0.0, kLeastLensDeg));
+  if (!opt.lenses || opt.conforming_delaunay) return EncroachRule::circle();
+  return EncroachRule::lens(std::max(opt.angle.degrees(), kLeastLensDeg));
 }
 
 }  // namespace
@@ -119,7 +118,7 @@ TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) 
   TerminatorStart start;
   const auto floor = [&] { start.guard_floor = guard_floor_of(mesh, opt); };
   const auto rest = [&] {
-    start.steiner_cap = deltri::steiner_cap(mesh, {opt.max_area, opt.use_triangle_area_bounds, opt.max_edge_length});
+    start.steiner_cap = deltri::steiner_cap(mesh, opt.size);
     if (opt.size_test) start.steiner_cap = UINT64_MAX;  // what it asks for is unknown: memory alone caps it
     if (const std::uint64_t memory = memory_cap(mesh, opt.memory_budget); memory < start.steiner_cap) {
       start.steiner_cap = memory;
@@ -144,10 +143,9 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
     : mesh_(mesh),
       pred_(pred),
       opt_(opt),
-      rules_(make_quality_rules(opt.min_angle_deg, opt.quality, opt.max_area,
-                                opt.use_triangle_area_bounds, opt.max_edge_length)),
+      rules_{opt.angle, opt.size, opt.area_field, opt.size_test},
       rule_(rule_for(opt)),
-      off_constant_(off_center_constant(opt.quality ? opt.min_angle_deg : 0.0, opt.off_centers)),
+      off_center_factor_(opt.off_centers ? opt.angle.off_center_factor() : 0.0),
       guard_floor_(start.guard_floor),
       steiner_cap_(start.steiner_cap),
       cap_kind_(start.cap_kind),
@@ -159,11 +157,8 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       locked_(std::move(start.locked)),
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
-  rules_.area_field = opt.area_field;
-  rules_.size_test = opt.size_test;
   report_.guard_length = guard_floor_;
-  const bool size_bounds =
-      opt.max_area > 0.0 || opt.use_triangle_area_bounds || opt.max_edge_length > 0.0 || opt.size_test;
+  const bool size_bounds = opt.size.any() || opt.size_test;
   bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
   if (bottom_possible_) {
     if (start.hopeless_edges >= 0) report_.hopeless_edges = static_cast<std::uint64_t>(start.hopeless_edges);
@@ -325,7 +320,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
     refuse_by_guard();
     return;
   }
-  Point c = steiner_point(mesh_, assessment.shape.shortest, off_constant_);  // Fig. 38 l.13
+  Point c = steiner_point(mesh_, assessment.shape.shortest, off_center_factor_);  // Fig. 38 l.13
   // A triangle flat to rounding (its measured area 0) has no usable circumcentre: the walk
   // towards a NaN point has no exit side.
   if (!std::isfinite(c.x) || !std::isfinite(c.y)) return;
@@ -337,7 +332,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
     // A shortest edge that no double can make a good triangle with stays bad: refuse at once
     // rather than grade the mesh down around it.
     if (assessment.skinny && !assessment.too_large &&
-        hopeless_edge(mesh_.point(mesh_.org(shortest)), mesh_.point(mesh_.dest(shortest)), rules_.sin2_theta)) {
+        hopeless_edge(mesh_.point(mesh_.org(shortest)), mesh_.point(mesh_.dest(shortest)), opt_.angle.sin2())) {
       ++report_.bottom_scale_refusals;
       refuse_by_guard();
       return;
@@ -369,6 +364,7 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
       drop_last_vertex();
       return;
     }
+    DELTRI_ASSERT(mesh_.org(inserted.edge) == v);
     ++report_.interior_steiner;
     new_vertex(inserted.edge, true);  // Fig. 38 l.17
     return;
@@ -434,6 +430,7 @@ bool Terminator::shell_exempt(EdgeRef shortest) const {
 void Terminator::enqueue_if_bad(TriangleId t) {
   const Assessment a = assess(t);
   if (!a.bad()) return;
+  DELTRI_ASSERT(mesh_.is_live(t));
   const QueuedTriangle entry{t, mesh_.corner[3 * t], mesh_.corner[3 * t + 1], mesh_.corner[3 * t + 2]};
   bad_triangles_.push(entry, {a.skinny, a.shape.ratio2_over_bound2, a.shape.shortest_length2});
 }
@@ -486,7 +483,7 @@ void Terminator::drop_last_vertex() {
 
 // The closing survey of slots [from, to) into `into`, whose survey fields start at zero.
 void Terminator::survey(TriangleId from, TriangleId to, RefineReport& into) const {
-  const double sin_theta = std::sqrt(rules_.sin2_theta);
+  const double sin_theta = std::sqrt(opt_.angle.sin2());
   for (TriangleId t = from; t < to; ++t) {
     // The corners come in slot order, their points from anywhere: fetch those a few slots ahead.
     if (const TriangleId ahead = t + kSurveyPrefetch; ahead < to && mesh_.is_live(ahead))

@@ -142,7 +142,7 @@ class Terminator {
   const RefineOptions opt_;
   QualityRules rules_;
   EncroachRule rule_;
-  double off_constant_ = 0.0;
+  double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;

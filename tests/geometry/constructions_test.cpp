@@ -1,10 +1,14 @@
-// Constructions: circumcentres, radius-edge ratios, off-centres and segment crossings.
+// Constructions (geometry/constructions.h), exactly what the program calls: circumcenter (the
+// Voronoi vertices), off_center (every Steiner point of refinement, its circumcentre included),
+// segment_intersection (crossing segments). The references are exact dyadic rationals
+// (exact_reference.h), which share no code with the functions under test.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "geometry/constructions.h"
 #include "geometry/exact_reference.h"
+#include "geometry/mesh_bounds.h"
 #include "geometry/random_support.h"
 #include "harness/check.h"
 
@@ -17,9 +21,70 @@ using testing_support::Random;
 
 double distance(const Point& a, const Point& b) { return std::sqrt(deltri::squared_distance(a, b)); }
 
-double largest_coordinate(const Point& a, const Point& b, const Point& c) {
-  return std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y), std::fabs(c.x),
-                   std::fabs(c.y)});
+constexpr long double kEps = 0x1p-53L;
+constexpr long double kPiL = 3.141592653589793238462643383279502884L;
+
+using reference::Dyadic;
+
+// The exact circumcentre of abc, a + (nx, ny) / d with d = 2 (b - a) x (c - a), and the a-priori
+// bound on the error of its evaluation in doubles (as a + n / d, the differences, squares and
+// cross product each rounded): 8 eps times the numerators' and the denominator's condition, and
+// 2 eps of the result.
+struct ExactCentre {
+  Point a;
+  Dyadic nx{0.0}, ny{0.0}, d{0.0};
+  long double tolerance = 0.0;
+  long double x() const { return a.x + quotient(nx); }
+  long double y() const { return a.y + quotient(ny); }
+  long double quotient(const Dyadic& n) const { return static_cast<long double>(n.approximate()) / d.approximate(); }
+};
+
+ExactCentre exact_centre(const Point& a, const Point& b, const Point& c) {
+  ExactCentre e;
+  e.a = a;
+  const Dyadic bx = Dyadic(b.x) - Dyadic(a.x), by = Dyadic(b.y) - Dyadic(a.y);
+  const Dyadic cx = Dyadic(c.x) - Dyadic(a.x), cy = Dyadic(c.y) - Dyadic(a.y);
+  const Dyadic b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  e.nx = cy * b2 - by * c2;
+  e.ny = bx * c2 - cx * b2;
+  e.d = (bx * cy - by * cx) * Dyadic(2.0);
+  const long double fbx = b.x - a.x, fby = b.y - a.y, fcx = c.x - a.x, fcy = c.y - a.y;
+  const long double fb2 = fbx * fbx + fby * fby, fc2 = fcx * fcx + fcy * fcy;
+  const long double d = std::fabs(static_cast<long double>(e.d.approximate()));
+  const long double qx = std::fabs(e.nx.approximate() / d), qy = std::fabs(e.ny.approximate() / d);
+  const long double cond_d = 2 * (std::fabs(fbx * fcy) + std::fabs(fby * fcx)) / d;
+  const long double numerators = std::max(std::fabs(fcy) * fb2 + std::fabs(fby) * fc2, std::fabs(fbx) * fc2 + std::fabs(fcx) * fb2);
+  const long double magnitude = std::max(std::fabs(e.x()), std::fabs(e.y()));
+  e.tolerance = 8 * kEps * (numerators / d + std::max(qx, qy) * cond_d) + 2 * kEps * magnitude;
+  return e;
+}
+
+// Whether o is within e's bound of the exact centre, the error computed exactly: for x,
+// ((o.x - a.x) d - nx) / d.
+bool within_bound(const Point& o, const ExactCentre& e) {
+  const double d = e.d.approximate();
+  const double ex = ((Dyadic(o.x) - Dyadic(e.a.x)) * e.d - e.nx).approximate() / d;
+  const double ey = ((Dyadic(o.y) - Dyadic(e.a.y)) * e.d - e.ny).approximate() / d;
+  return std::fabs(ex) <= e.tolerance && std::fabs(ey) <= e.tolerance;
+}
+
+struct Triangle {
+  Point a, b, c;
+};
+
+// Triangles of five kinds: in the unit square, far from the origin, tiny, large, and on an integer
+// grid (exact differences, cocircular ties likely).
+Triangle random_triangle(Random& rng, int i) {
+  const struct {
+    double offset, size;
+  } kinds[] = {{0.0, 1.0}, {1e9, 1.0}, {-3e5, 1e-3}, {0.0, 1e6}};
+  if (i % 5 == 4) {
+    const auto grid = [&] { return Point{double(rng.integer(-1000, 1000)), double(rng.integer(-1000, 1000))}; };
+    return {grid(), grid(), grid()};
+  }
+  const double offset = kinds[i % 5].offset, size = kinds[i % 5].size;
+  const auto at = [&] { return Point{offset + size * rng.uniform(-1, 1), offset + size * rng.uniform(-1, 1)}; };
+  return {at(), at(), at()};
 }
 
 // True if the line through a and b passes through the box of +-k ulps around p: the corners must
@@ -38,24 +103,14 @@ bool line_within_ulps(const Point& a, const Point& b, const Point& p, int k) {
 
 }  // namespace
 
-TEST(circumcenter_is_equidistant) {
+TEST(circumcenter_matches_the_exact_centre) {
   Random rng(40);
-  const double offsets[] = {0.0, 1e9, -3e5};
-  for (int i = 0; i < 10000; ++i) {
-    const double offset = offsets[i % 3];
-    const double size = std::pow(10.0, rng.integer(-3, 3));
-    const Point a{offset + size * rng.uniform(-1, 1), offset + size * rng.uniform(-1, 1)};
-    const Point b{offset + size * rng.uniform(-1, 1), offset + size * rng.uniform(-1, 1)};
-    const Point c{offset + size * rng.uniform(-1, 1), offset + size * rng.uniform(-1, 1)};
-    if (orient_sign(a, b, c) == 0) continue;
-    const Point o = deltri::circumcenter(a, b, c);
-    const double ra = distance(o, a), rb = distance(o, b), rc = distance(o, c);
-    // Input rounding is a few ulps of the largest coordinate, magnified by the triangle's shape
-    // (the circumradius over the shortest edge).
-    const double ulp = largest_coordinate(a, b, c) * 0x1p-52;
-    const double tolerance = 1e-12 * ra + 16 * ulp * deltri::radius_edge_ratio(a, b, c);
-    CHECK_NEAR(ra, rb, tolerance);
-    CHECK_NEAR(ra, rc, tolerance);
+  for (int i = 0; i < 12000; ++i) {
+    const Triangle t = random_triangle(rng, i);
+    if (orient_sign(t.a, t.b, t.c) == 0) continue;
+    const ExactCentre e = exact_centre(t.a, t.b, t.c);
+    CHECK(within_bound(deltri::circumcenter(t.a, t.b, t.c), e));
+    CHECK(within_bound(deltri::circumcenter(t.b, t.c, t.a), exact_centre(t.b, t.c, t.a)));
   }
 }
 
@@ -89,73 +144,76 @@ TEST(circumcenter_exact_cases) {
   CHECK_EQ(f.y, 1e9);
 }
 
-TEST(radius_edge_ratio_known_values) {
-  CHECK_NEAR(deltri::radius_edge_ratio({0, 0}, {1, 0}, {0.5, std::sqrt(0.75)}), 1 / std::sqrt(3.0), 1e-15);
-  CHECK_NEAR(deltri::radius_edge_ratio({0, 0}, {1, 0}, {0, 1}), std::sqrt(0.5), 1e-15);
-  CHECK_NEAR(deltri::radius_edge_ratio_squared({0, 0}, {3, 0}, {0, 4}), 6.25 / 9.0, 1e-15);
-  CHECK(std::isinf(deltri::radius_edge_ratio({0, 0}, {1, 1}, {2, 2})));
-  // Ratio and 1 / (2 sin(smallest angle)) agree.
-  Random rng(41);
-  for (int i = 0; i < 2000; ++i) {
-    const Point a = rng.point(-1, 1), b = rng.point(-1, 1), c = rng.point(-1, 1);
-    auto angle = [](const Point& p, const Point& q, const Point& r) {
-      const double ux = q.x - p.x, uy = q.y - p.y, vx = r.x - p.x, vy = r.y - p.y;
-      return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy);
-    };
-    const double smallest = std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
-    if (smallest < 1e-3) continue;
-    CHECK_NEAR(deltri::radius_edge_ratio(a, b, c) * 2 * std::sin(smallest), 1.0, 1e-9);
-  }
-}
-
-TEST(off_center_gives_ratio_beta_on_shortest_edge) {
+// The Steiner point refinement computes (its circumcentre when factor is 0), for the factors the
+// angle bounds give, on random triangles and needles: within the a-priori bound of the exact
+// circumcentre, or of the exact off-centre (the point at height factor |pq| on the way from pq's
+// midpoint to the exact circumcentre) when that is nearer pq. Where the two distances are too
+// close to call in doubles, either point may come out.
+TEST(off_center_matches_the_exact_construction) {
   Random rng(42);
-  const double betas[] = {std::sqrt(2.0), 1.0, 0.8, 2.5};
+  const double thetas[] = {10.0, 20.0, 25.0, 30.0, 33.0, 34.0, 40.0};
   int off_centres = 0, circumcentres = 0;
-  for (int i = 0; i < 10000; ++i) {
-    const double beta = betas[i % 4];
-    const Point a = rng.point(-1, 1), b = rng.point(-1, 1), c = rng.point(-1, 1);
-    if (orient_sign(a, b, c) == 0 || deltri::radius_edge_ratio(a, b, c) > 1e6) continue;
-    // Find the shortest edge pq and the opposite corner r.
-    Point p = a, q = b, r = c;
-    if (deltri::squared_distance(b, c) < deltri::squared_distance(p, q)) p = b, q = c, r = a;
-    if (deltri::squared_distance(c, a) < deltri::squared_distance(p, q)) p = c, q = a, r = b;
-    const Point x = deltri::off_center(a, b, c, beta);
-    const Point centre = deltri::circumcenter(a, b, c);
-    // The triangle on pq through the circumcentre has apex angle 2 * (angle at r); the off-centre
-    // is used exactly when that apex is sharper than the apex t of ratio beta, sin t = 1 / (2 beta).
-    const double ux = p.x - r.x, uy = p.y - r.y, vx = q.x - r.x, vy = q.y - r.y;
-    const double angle_r = std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy);
-    const double half_apex = 0.5 * std::asin(1 / (2 * beta));
-    if (x == centre) {
+  for (int i = 0; i < 14000; ++i) {
+    const double factor = deltri::AngleBound(thetas[i % 7]).off_center_factor();
+    Triangle t = random_triangle(rng, i);
+    if (i % 3 == 0) t.b = {t.a.x + 0.01 * (t.b.x - t.a.x), t.a.y + 0.01 * (t.b.y - t.a.y)};  // a needle
+    if (orient_sign(t.a, t.b, t.c) == 0) continue;
+    // pq the shortest edge, pqr counter-clockwise, as the Terminator passes them.
+    Point p = t.a, q = t.b, r = t.c;
+    if (deltri::squared_distance(q, r) < deltri::squared_distance(p, q)) p = t.b, q = t.c, r = t.a;
+    if (deltri::squared_distance(t.c, t.a) < deltri::squared_distance(p, q)) p = t.c, q = t.a, r = t.b;
+    if (orient_sign(p, q, r) < 0) std::swap(p, q);
+    const ExactCentre e = exact_centre(p, q, r);
+    const Point centre = deltri::off_center(p, q, r, 0.0);
+    CHECK(within_bound(centre, e));
+    const Point x = deltri::off_center(p, q, r, factor);
+    // The exact off-centre, from the exact centre (long double is ample for a reference point).
+    const long double mx = 0.5L * p.x + 0.5L * q.x, my = 0.5L * p.y + 0.5L * q.y;
+    // a - m is exact in long double; only the small quotient rounds.
+    const long double dx = (p.x - mx) + e.quotient(e.nx), dy = (p.y - my) + e.quotient(e.ny);
+    const long double d = std::sqrt(dx * dx + dy * dy);
+    const long double pq = std::sqrt(static_cast<long double>(deltri::squared_distance(p, q)));
+    const long double h = factor * pq;
+    const long double slack = e.tolerance + 1e-9L * d;
+    if (std::fabs(h - d) <= slack) continue;
+    if (h > d) {
       ++circumcentres;
-      CHECK(angle_r >= half_apex - 1e-9);
+      CHECK(x == centre);
       continue;
     }
     ++off_centres;
-    CHECK(angle_r <= half_apex + 1e-9);
-    CHECK_NEAR(deltri::radius_edge_ratio(p, q, x) / beta, 1.0, 1e-9);
-    CHECK_NEAR(distance(x, p) / distance(x, q), 1.0, 1e-12);
-    CHECK_EQ(orient_sign(p, q, x), orient_sign(p, q, r));
-    // The off-centre lies between the edge and the circumcentre.
-    const Point mid{(p.x + q.x) / 2, (p.y + q.y) / 2};
-    CHECK(distance(mid, x) < distance(mid, centre));
-    CHECK(deltri::radius_edge_ratio(a, b, c) > beta);
+    const long double ox = mx + h / d * dx, oy = my + h / d * dy;
+    const long double tolerance = e.tolerance + 8 * kEps * (std::fabs(mx) + std::fabs(my) + h);
+    CHECK(std::fabs(x.x - ox) <= tolerance && std::fabs(x.y - oy) <= tolerance);
+    // The new triangle on pq has its apex angle 2 atan(1 / (2 factor)), a little above theta.
+    const long double hx = 0.5L * (p.x - q.x), hy = 0.5L * (p.y - q.y);  // p - m, exactly
+    const long double ux = hx - h / d * dx, uy = hy - h / d * dy, vx = -hx - h / d * dx, vy = -hy - h / d * dy;
+    const long double apex = std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / kPiL;
+    CHECK(std::fabs(apex - 2 * std::atan(0.5L / factor) * 180 / kPiL) < 1e-6L);
+    CHECK(apex > thetas[i % 7]);
   }
   CHECK(off_centres > 1000);
   CHECK(circumcentres > 1000);
 }
 
-TEST(off_center_of_good_triangle_is_circumcenter) {
-  const Point a{0, 0}, b{1, 0}, c{0.5, std::sqrt(0.75)};
-  const Point centre = deltri::circumcenter(a, b, c);
-  CHECK(deltri::off_center(a, b, c, std::sqrt(2.0)) == centre);
-  CHECK(deltri::off_center(a, b, c, 0.4) == centre);
-  // A needle with beta = 1 (30 degrees): the new triangle on the short edge is isosceles with a
-  // 30-degree apex, at distance (beta + sqrt(beta^2 - 1/4)) |pq| from the edge's midpoint.
-  const Point x = deltri::off_center({0, 0}, {1, 0}, {0.5, 100}, 1.0);
-  CHECK_NEAR(x.x, 0.5, 1e-15);
-  CHECK_NEAR(x.y, 1 + std::sqrt(0.75), 1e-14);
+TEST(off_center_exact_cases) {
+  // A needle with a 10 degree apex over the base from (-1, 0) to (1, 0), theta 30: the off-centre
+  // at height 0.475 cot(15 degrees) |pq| = 3.5454 on the bisector, below the circumcentre (5.67).
+  const double h = 1.0 / std::tan(5 * kPiL / 180);
+  const double factor = deltri::AngleBound(30.0).off_center_factor();
+  CHECK_NEAR(factor, 0.475 / std::tan(15 * kPiL / 180), 1e-15);
+  const Point x = deltri::off_center({-1, 0}, {1, 0}, {0, h}, factor);
+  CHECK_EQ(x.x, 0.0);
+  CHECK_NEAR(x.y, 2 * factor, 1e-14);
+  CHECK(deltri::off_center({-1, 0}, {1, 0}, {0, h}, 0.0) == deltri::circumcenter({-1, 0}, {1, 0}, {0, h}));
+  // A good triangle keeps its circumcentre; no angle bound (factor 0) always does.
+  const Point centre = deltri::off_center({0, 0}, {2, 0}, {1, 1.6}, factor);
+  CHECK(centre == deltri::off_center({0, 0}, {2, 0}, {1, 1.6}, 0.0));
+  CHECK_EQ(deltri::AngleBound().off_center_factor(), 0.0);
+  CHECK_EQ(deltri::AngleBound(0.0).off_center_factor(), 0.0);
+  const Point o = deltri::off_center({0, 0}, {2, 0}, {0, 2}, 0.0);
+  CHECK_EQ(o.x, 1.0);
+  CHECK_EQ(o.y, 1.0);
 }
 
 TEST(segment_intersection_is_within_ulps_of_both_lines) {

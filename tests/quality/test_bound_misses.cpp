@@ -30,7 +30,7 @@ Mesh wedge(bool segments, VertexKind apex) {
 
 BoundRequest angle(double degrees) {
   BoundRequest r;
-  r.min_angle_deg = degrees;
+  r.angle = AngleBound(degrees);
   return r;
 }
 
@@ -89,14 +89,14 @@ TEST(size_bounds_count_separately_and_good_triangles_not_at_all) {
   m.add_triangle(0, 1, 2);
   CHECK_EQ(count_bound_misses(m, angle(59.9)).total, 0u);
   BoundRequest r = angle(30);
-  r.max_area = 0.4;
+  r.size.max_area = 0.4;
   BoundMisses b = count_bound_misses(m, r);
   CHECK_EQ(b.above_size, 1u);
   CHECK_EQ(b.below_angle, 0u);
   CHECK_EQ(b.other, 1u);
-  r.max_area = 0.5;
-  r.max_edge_length = 0.99;
+  r.size.max_area = 0.5;
+  r.size.max_edge_length = 0.99;
   CHECK_EQ(count_bound_misses(m, r).above_size, 1u);
-  r.max_edge_length = 1.01;
+  r.size.max_edge_length = 1.01;
   CHECK_EQ(count_bound_misses(m, r).total, 0u);
 }

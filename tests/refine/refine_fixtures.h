@@ -22,8 +22,7 @@ using namespace deltri;
 // Options asking for the angle bound theta and nothing else.
 inline RefineOptions quality(double theta) {
   RefineOptions opt;
-  opt.quality = true;
-  opt.min_angle_deg = theta;
+  opt.angle = AngleBound(theta);
   return opt;
 }
 

@@ -45,7 +45,7 @@ Mesh scattered_square_with_chain() {
 
 RefineOptions bounds_with(int threads, bool in_halves = true) {
   RefineOptions opt = quality(30);
-  opt.use_triangle_area_bounds = true;
+  opt.size.triangle_bounds = true;
   opt.threads = threads;
   opt.in_halves = in_halves;
   return opt;
@@ -98,7 +98,7 @@ TEST(halves_apply_only_where_they_cannot_disagree) {
   opt.conforming_delaunay = true;
   CHECK(!halves_apply(m, opt));
   opt = bounds_with(2);
-  opt.min_angle_deg = 40;  // can cascade (termination_guard.h)
+  opt.angle = AngleBound(40);  // can cascade (termination_guard.h)
   CHECK(!halves_apply(m, opt));
   CHECK(!halves_apply(unit_square(), bounds_with(2)));  // too small to pay
 }

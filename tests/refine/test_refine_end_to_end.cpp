@@ -65,7 +65,7 @@ TEST(unit_square_q30_area) {
   Mesh m = unit_square();
   Predicates pred;
   RefineOptions opt = quality(30);
-  opt.max_area = 0.0002;
+  opt.size.max_area = 0.0002;
   const RefineReport r = refine_mesh(m, pred, opt);
   print("square -q30a0.0002", m, r);
   check_valid(m, 1.0, 4.0);
@@ -135,7 +135,7 @@ TEST(five_degree_spike_terminates) {
   Mesh m = spiked_square();
   Predicates pred;
   RefineOptions opt = quality(30);
-  opt.max_area = 0.01;  // forces refinement into the spike
+  opt.size.max_area = 0.01;  // forces refinement into the spike
   const RefineReport r = refine_mesh(m, pred, opt);
   print("spike -q30a0.01", m, r);
   CHECK(facts_of(m).max_area <= 0.01);
@@ -204,7 +204,7 @@ TEST(fan_q34_and_q40_terminate_and_report) {
     Mesh m = fan();
     Predicates pred;
     RefineOptions opt = quality(theta);
-    opt.max_area = 0.002;
+    opt.size.max_area = 0.002;
     const RefineReport r = refine_mesh(m, pred, opt);
     print(theta == 34.0 ? "fan -q34" : "fan -q40", m, r);
     check_valid(m, fan_area(), fan_perimeter());
@@ -215,7 +215,7 @@ TEST(fan_q34_and_q40_terminate_and_report) {
     std::vector<char> bad(m.triangle_slots(), 0);
     for (TriangleId t : skinny_triangles(m, theta - 1e-9)) bad[t] = !smallest_angle_between_subsegments(m, t);
     for (TriangleId t = 0; t < m.triangle_slots(); ++t)
-      if (m.is_live(t) && area_of(m, t) > opt.max_area) bad[t] = 1;
+      if (m.is_live(t) && area_of(m, t) > opt.size.max_area) bad[t] = 1;
     const auto left = static_cast<std::uint64_t>(std::count(bad.begin(), bad.end(), 1));
     CHECK(r.bad_triangles_left <= left);
     // At 40 degrees the spokes 2 degrees apart cannot all be fixed before the guard's floor.
@@ -228,7 +228,7 @@ TEST(max_steiner_stops) {
   Mesh m = unit_square();
   Predicates pred;
   RefineOptions opt = quality(30);
-  opt.max_area = 0.001;
+  opt.size.max_area = 0.001;
   opt.max_steiner = 10;
   const RefineReport r = refine_mesh(m, pred, opt);
   CHECK_EQ(r.interior_steiner + r.segment_steiner, std::uint64_t{10});
@@ -247,7 +247,7 @@ TEST(no_steiner_on_boundary) {
     Mesh m = unit_square();
     Predicates pred;
     RefineOptions opt = quality(20);
-    opt.max_area = area;
+    opt.size.max_area = area;
     opt.no_steiner_on_segments = 1;
     const RefineReport r = refine_mesh(m, pred, opt);
     print("square -Yq20a", m, r);
@@ -286,7 +286,7 @@ TEST(varying_area_bounds_are_kept_through_every_split) {
   }
   Predicates pred;
   RefineOptions opt = quality(20);
-  opt.use_triangle_area_bounds = true;
+  opt.size.triangle_bounds = true;
   const RefineReport r = refine_mesh(m, pred, opt);
   print("bounds on every third triangle", m, r);
   check_valid(m, 9.0, 12.0);
@@ -316,7 +316,7 @@ TEST(attributes_area_bounds_and_markers_are_inherited) {
   m.area_bound.assign(m.triangle_slots(), 0.005);
   Predicates pred;
   RefineOptions opt = quality(20);
-  opt.use_triangle_area_bounds = true;
+  opt.size.triangle_bounds = true;
   refine_mesh(m, pred, opt);
   check_valid(m, 1.0, 4.0);
   CHECK(facts_of(m).max_area <= 0.005);
@@ -336,7 +336,7 @@ TEST(chews_deletion_with_lenses_only) {
     Mesh m = fan();
     Predicates pred;
     RefineOptions opt = quality(30);
-    opt.max_area = 0.0005;
+    opt.size.max_area = 0.0005;
     opt.lenses = lenses;
     opt.conforming_delaunay = !lenses;
     const RefineReport r = refine_mesh(m, pred, opt);

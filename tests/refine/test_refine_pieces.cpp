@@ -28,58 +28,8 @@ using namespace refine_test;
 namespace {
 constexpr double kPi = std::numbers::pi;
 double rad(double deg) { return deg * kPi / 180.0; }
+QualityRules rules_of(AngleBound angle, SizeBounds size) { return {angle, size}; }
 }  // namespace
-
-TEST(circle_encroachment_is_exact_on_the_circle) {
-  Predicates pred;
-  const EncroachRule circle = diametral_circle_rule();
-  const Point x{0, 0}, y{2, 0};
-  CHECK(encroaches(pred, x, y, {1, 1}, circle));               // on the circle: 90 degrees
-  CHECK(encroaches(pred, x, y, {1, 0.5}, circle));             // inside
-  CHECK(!encroaches(pred, x, y, {1, std::nextafter(1.0, 2.0)}, circle));  // one ulp outside
-}
-
-// Points within two units of the diametral circle of xy, all coordinates integers below 2^51
-// (exact doubles): x = c + (u, v), y = c - (u, v) and w = c + (-v, u) plus a nudge, so w is on the
-// circle before the nudge. The products in (x - w).(y - w) need up to 104 bits, so the float dot
-// product rounds and gets about one sign in 300 wrong here; the reference is the same expression in
-// 128-bit integers.
-TEST(circle_encroachment_matches_an_exact_integer_reference_near_the_circle) {
-  Predicates pred;
-  const EncroachRule circle = diametral_circle_rule();
-  std::mt19937_64 rng(11);
-  std::uniform_int_distribution<std::int64_t> coord(-(std::int64_t{1} << 50), std::int64_t{1} << 50);
-  std::uniform_int_distribution<int> nudge(-2, 2);
-  int inside = 0, outside = 0;
-  for (int i = 0; i < 20000; ++i) {
-    const std::int64_t cx = coord(rng), cy = coord(rng), u = coord(rng), v = coord(rng);
-    const std::int64_t X[2] = {cx + u, cy + v}, Y[2] = {cx - u, cy - v}, W[2] = {cx - v + nudge(rng), cy + u + nudge(rng)};
-    const __int128 dot = static_cast<__int128>(X[0] - W[0]) * (Y[0] - W[0]) + static_cast<__int128>(X[1] - W[1]) * (Y[1] - W[1]);
-    const auto pt = [](const std::int64_t* p) { return Point{static_cast<double>(p[0]), static_cast<double>(p[1])}; };
-    const bool expected = dot <= 0;
-    (expected ? inside : outside) += 1;
-    CHECK_EQ(encroaches(pred, pt(X), pt(Y), pt(W), circle), expected);
-  }
-  CHECK(inside > 1000 && outside > 1000);  // both sides of the circle were tried
-}
-
-TEST(lens_encroachment_follows_the_apex_angle) {
-  Predicates pred;
-  const EncroachRule lens = diametral_lens_rule(30.0);  // 120 degrees
-  CHECK_NEAR(lens.min_apex_angle_deg, 120.0, 1e-12);
-  const Point x{0, 0}, y{2, 0};
-  // Apex angle 2 atan(1 / h) at (1, h): 120 degrees at h = 1 / sqrt(3).
-  CHECK(encroaches(pred, x, y, {1, 0.99 / std::sqrt(3.0)}, lens));
-  CHECK(!encroaches(pred, x, y, {1, 1.01 / std::sqrt(3.0)}, lens));
-  CHECK(!encroaches(pred, x, y, {1, 0.9}, lens));               // in the circle, not the lens
-  CHECK(encroaches(pred, x, y, {1, 0.9}, diametral_circle_rule()));
-  // theta = 0: only the open subsegment itself.
-  const EncroachRule none = diametral_lens_rule(0.0);
-  CHECK(encroaches(pred, x, y, {0.5, 0}, none));
-  CHECK(!encroaches(pred, x, y, {1, 1e-9}, none));
-  CHECK(!encroaches(pred, x, y, {3, 0}, none));
-  CHECK_NEAR(diametral_lens_rule(50.0).min_apex_angle_deg, 90.0, 0.0);  // never wider than circle
-}
 
 TEST(subsegment_encroached_by_either_apex) {
   // Square with a vertex just above the bottom side's midpoint.
@@ -88,7 +38,7 @@ TEST(subsegment_encroached_by_either_apex) {
   Predicates pred;
   int encroached = 0;
   for (EdgeRef e = 0; e < m.corner.size(); ++e)
-    if (m.subseg[e] != kNone && is_encroached(m, pred, e, diametral_circle_rule())) {
+    if (m.subseg[e] != kNone && is_encroached(m, pred, e, EncroachRule::circle())) {
       ++encroached;
       CHECK_EQ(m.point(m.org(e)).y + m.point(m.dest(e)).y, 0.0);  // the bottom side only
     }
@@ -132,28 +82,28 @@ TEST(bad_triangle_test) {
   // Isosceles triangle with apex angle 20 degrees: skinny at 30, fine at 19.
   const double h = 1.0 / std::tan(rad(10));
   Mesh m = triangulated({{-1, 0}, {1, 0}, {0, h}});
-  const QualityRules q30 = make_quality_rules(30, true, 0, false, 0);
-  const QualityRules q19 = make_quality_rules(19, true, 0, false, 0);
+  const QualityRules q30 = rules_of(AngleBound(30), {0, false, 0});
+  const QualityRules q19 = rules_of(AngleBound(19), {0, false, 0});
   CHECK(assess_triangle(m, 0, q30).skinny);
   CHECK(!assess_triangle(m, 0, q19).skinny);
   // (r / B)^2: r / l = 1 / (2 sin 20deg), B = 1 / (2 sin 30deg).
   const double expected = std::pow(std::sin(rad(30)) / std::sin(rad(20)), 2);
   CHECK_NEAR(assess_triangle(m, 0, q30).shape.ratio2_over_bound2, expected, 1e-12);
   // Size tests.
-  CHECK(assess_triangle(m, 0, make_quality_rules(0, false, h - 0.01, false, 0)).too_large);
-  CHECK(!assess_triangle(m, 0, make_quality_rules(0, false, h + 0.01, false, 0)).too_large);
-  CHECK(assess_triangle(m, 0, make_quality_rules(0, false, 0, false, 5.0)).too_large);
+  CHECK(assess_triangle(m, 0, rules_of(AngleBound(), {h - 0.01, false, 0})).too_large);
+  CHECK(!assess_triangle(m, 0, rules_of(AngleBound(), {h + 0.01, false, 0})).too_large);
+  CHECK(assess_triangle(m, 0, rules_of(AngleBound(), {0, false, 5.0})).too_large);
   m.area_bound.assign(1, 1.0);
-  CHECK(assess_triangle(m, 0, make_quality_rules(0, false, 0, true, 0)).too_large);
+  CHECK(assess_triangle(m, 0, rules_of(AngleBound(), {0, true, 0})).too_large);
   // How far over: the area h against bounds of h / 4 and 2h, the legs' squared length 1 + h^2
   // against an edge bound of 2; the smallest area bound that applies counts.
   const TriangleShape shape = measure_triangle(m, 0, 0.0);
-  CHECK_NEAR(size_excess(m, 0, shape, make_quality_rules(0, false, h / 4, false, 0)), 4.0, 1e-12);
-  CHECK_NEAR(size_excess(m, 0, shape, make_quality_rules(0, false, 2 * h, false, 0)), 0.5, 1e-12);
+  CHECK_NEAR(size_excess(m, 0, shape, rules_of(AngleBound(), {h / 4, false, 0})), 4.0, 1e-12);
+  CHECK_NEAR(size_excess(m, 0, shape, rules_of(AngleBound(), {2 * h, false, 0})), 0.5, 1e-12);
   m.area_bound.assign(1, h / 8);
-  CHECK_NEAR(size_excess(m, 0, shape, make_quality_rules(0, false, h / 4, true, 0)), 8.0, 1e-12);
-  CHECK_NEAR(size_excess(m, 0, shape, make_quality_rules(0, false, 0, false, 2.0)), (1 + h * h) / 4, 1e-12);
-  CHECK(!assess_triangle(m, 0, make_quality_rules(0, false, 0, false, 0)).too_large);
+  CHECK_NEAR(size_excess(m, 0, shape, rules_of(AngleBound(), {h / 4, true, 0})), 8.0, 1e-12);
+  CHECK_NEAR(size_excess(m, 0, shape, rules_of(AngleBound(), {0, false, 2.0})), (1 + h * h) / 4, 1e-12);
+  CHECK(!assess_triangle(m, 0, rules_of(AngleBound(), {0, false, 0})).too_large);
 }
 
 TEST(small_angle_between_two_subsegments_is_not_split) {
@@ -161,7 +111,7 @@ TEST(small_angle_between_two_subsegments_is_not_split) {
   Mesh m = triangulated({{0, 0}, {1, 0}, {1, 0.1}, {0, 1}});
   mark_boundary(m);
   CHECK(mark_segment(m, 0, 2));
-  const QualityRules q = make_quality_rules(20, true, 0, false, 0);
+  const QualityRules q = rules_of(AngleBound(20), {0, false, 0});
   for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
     const Assessment a = assess_triangle(m, t, q);
     if (min_angle_deg(m, t) < 10) {
@@ -289,8 +239,8 @@ TEST(off_center_is_nearer_than_circumcenter_on_the_bisector) {
   const double h = 1.0 / std::tan(rad(5));  // 10 degree apex: circumcentre at y ~ 5.67
   Mesh m = triangulated({{-1, 0}, {1, 0}, {0, h}});
   const TriangleShape s = measure_triangle(m, 0, 0.25);
-  const Point centre = circumcenter_of(m.point(0), m.point(1), m.point(2));
-  const Point off = steiner_point(m, s.shortest, off_center_constant(30, true));
+  const Point centre = off_center(m.point(0), m.point(1), m.point(2), 0.0);
+  const Point off = steiner_point(m, s.shortest, AngleBound(30).off_center_factor());
   CHECK_NEAR(off.x, 0.0, 1e-12);
   CHECK_NEAR(off.y, 0.475 / std::tan(rad(15)) * 2.0, 1e-12);  // from the midpoint of the base
   CHECK(off.y < centre.y);
@@ -298,13 +248,13 @@ TEST(off_center_is_nearer_than_circumcenter_on_the_bisector) {
   // At a 20 degree apex the off-centre (y ~ 3.55) would lie beyond the circumcentre (y ~ 2.75).
   Mesh wide = triangulated({{-1, 0}, {1, 0}, {0, 1.0 / std::tan(rad(10))}});
   const TriangleShape w = measure_triangle(wide, 0, 0.25);
-  CHECK(steiner_point(wide, w.shortest, off_center_constant(30, true)) ==
-        circumcenter_of(wide.point(0), wide.point(1), wide.point(2)));
+  CHECK(steiner_point(wide, w.shortest, AngleBound(30).off_center_factor()) ==
+        off_center(wide.point(0), wide.point(1), wide.point(2), 0.0));
   // A triangle near the bound keeps its circumcentre.
   Mesh fine = triangulated({{0, 0}, {1, 0}, {0.5, 0.8}});
   const TriangleShape f = measure_triangle(fine, 0, 0.25);
-  CHECK(steiner_point(fine, f.shortest, off_center_constant(30, true)) ==
-        circumcenter_of(fine.point(0), fine.point(1), fine.point(2)));
+  CHECK(steiner_point(fine, f.shortest, AngleBound(30).off_center_factor()) ==
+        off_center(fine.point(0), fine.point(1), fine.point(2), 0.0));
 }
 
 TEST(probe_leaves_the_mesh_untouched_and_finds_encroachment) {
@@ -316,9 +266,9 @@ TEST(probe_leaves_the_mesh_untouched_and_finds_encroachment) {
   const Snapshot before(m);
   const auto all = [](EdgeRef) { return true; };
   for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
-    const Point c = circumcenter_of(m.point(m.corner[3 * t]), m.point(m.corner[3 * t + 1]),
-                                    m.point(m.corner[3 * t + 2]));
-    const Probe p = probe_candidate(m, pred, t, c, diametral_lens_rule(30), marks, all);
+    const Point c = off_center(m.point(m.corner[3 * t]), m.point(m.corner[3 * t + 1]),
+                               m.point(m.corner[3 * t + 2]), 0.0);
+    const Probe p = probe_candidate(m, pred, t, c, EncroachRule::lens(30), marks, all);
     if (c.y < 0) {
       CHECK(p.status == ProbeStatus::Encroaches);
       CHECK(p.blocked);
@@ -329,7 +279,7 @@ TEST(probe_leaves_the_mesh_untouched_and_finds_encroachment) {
   CHECK(Snapshot(m) == before);
   // A point in the middle is clear; its insertion radius is its distance to the nearest vertex
   // of its cavity.
-  const Probe p = probe_candidate(m, pred, 0, {2, 2}, diametral_lens_rule(30), marks, all);
+  const Probe p = probe_candidate(m, pred, 0, {2, 2}, EncroachRule::lens(30), marks, all);
   CHECK(p.status == ProbeStatus::Clear);
   CHECK_NEAR(p.insertion_radius, 1.8, 1e-12);
 }

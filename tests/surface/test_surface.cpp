@@ -30,8 +30,7 @@ FacetInput tee() {
 FacetMeshOptions quality30() {
   FacetMeshOptions opt;
   opt.refine = true;
-  opt.refinement.quality = true;
-  opt.refinement.min_angle_deg = 30.0;
+  opt.refinement.angle = deltri::AngleBound(30.0);
   return opt;
 }
 
@@ -135,7 +134,7 @@ TEST(two_threads_give_the_same_surface) {
   square({id(0, 0, 0), id(0, 1, 0), id(0, 1, 1), id(0, 0, 1)});
   square({id(2, 0, 0), id(2, 1, 0), id(2, 1, 1), id(2, 0, 1)});
   FacetMeshOptions one = quality30();
-  one.refinement.max_area = 0.003;
+  one.refinement.size.max_area = 0.003;
   FacetMeshOptions two = one;
   two.threads = 2;
   SurfaceReport r1, r2;
