@@ -20,7 +20,9 @@ write cdt/segment_inserter.cpp 3
 write delaunay/incremental.cpp 5
 write delaunay/sweepline.cpp 2
 write refine/halves.cpp 10
+index api/c_surface.cpp 1
 index api/output_arrays.cpp 5
+index api/surface_library.cpp 1
 index cdt/convex_hull.cpp 1
 index cdt/edit.cpp 16
 index cdt/flood.cpp 1
