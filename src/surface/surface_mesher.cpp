@@ -186,7 +186,8 @@ std::vector<std::pair<std::uint32_t, double>> SurfaceBuilder::new_cuts(std::uint
 // Meshes the given facets (on two threads with options.threads > 1: facets share nothing while
 // they are meshed, and the cuts are merged afterwards in facet order, so the result does not
 // depend on the threads); with `record`, adds the cuts to the segments' splits and returns the
-// segments that gained some. (The guard's last pass records nothing: the facets' vertex maps
+// facets to mesh again: those holding a segment that gained a split, and those whose own cut was
+// not taken. (The guard's last pass records nothing: the facets' vertex maps
 // must keep naming the splits as they were built.)
 std::vector<std::uint32_t> SurfaceBuilder::mesh_facets(const std::vector<std::uint32_t>& facets,
                                                        const FacetMeshOptions& options, bool record) {
@@ -201,20 +202,26 @@ std::vector<std::uint32_t> SurfaceBuilder::mesh_facets(const std::vector<std::ui
     run_both([&] { mesh_every_other(1); }, [&] { mesh_every_other(0); });
   else
     for (std::size_t first : {0, 1}) mesh_every_other(first);
-  std::vector<std::uint32_t> changed;
-  for (const auto& list : cuts)
-    for (const auto& [g, t] : list) {
+  // A facet whose cut another facet's split (or a segment's end) stood in for has a vertex of its
+  // own on the segment where the others have none: it is meshed again on the splits as they are.
+  // Declaring the surface converged with such a facet left subsegments that are no edge of it.
+  std::vector<std::uint32_t> again;
+  for (std::size_t i = 0; i < facets.size(); ++i)
+    for (const auto& [g, t] : cuts[i]) {
       std::vector<double>& splits = segments_[g].splits;
       const auto at = std::lower_bound(splits.begin(), splits.end(), t);
       const bool near_next = at != splits.end() && *at - t < kSameParameter;
       const bool near_prev = at != splits.begin() && t - *(at - 1) < kSameParameter;
-      if (near_next || near_prev || t < kSameParameter || t > 1.0 - kSameParameter) continue;
+      if (near_next || near_prev || t < kSameParameter || t > 1.0 - kSameParameter) {
+        again.push_back(facets[i]);
+        continue;
+      }
       splits.insert(at, t);
-      changed.push_back(g);
+      again.insert(again.end(), segments_[g].facets.begin(), segments_[g].facets.end());
     }
-  std::sort(changed.begin(), changed.end());
-  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
-  return changed;
+  std::sort(again.begin(), again.end());
+  again.erase(std::unique(again.begin(), again.end()), again.end());
+  return again;
 }
 
 SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
@@ -225,15 +232,11 @@ SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
   report.converged = false;
   for (report.rounds = 1; report.rounds <= max_rounds_; ++report.rounds) {
     report.facet_meshings += dirty.size();
-    const std::vector<std::uint32_t> changed = mesh_facets(dirty, options_);
-    if (changed.empty()) {
+    dirty = mesh_facets(dirty, options_);
+    if (dirty.empty()) {
       report.converged = true;
       break;
     }
-    dirty.clear();
-    for (std::uint32_t g : changed) dirty.insert(dirty.end(), segments_[g].facets.begin(), segments_[g].facets.end());
-    std::sort(dirty.begin(), dirty.end());
-    dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
   }
   if (!report.converged) {
     // The guard: mesh every facet with its segments kept as they are now.

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "harness/check.h"
+#include "io/facet_file.h"
 #include "pslg/errors.h"
 #include "surface/check_surface.h"
 #include "surface/surface_mesher.h"
@@ -109,6 +110,19 @@ TEST(round_cap_guard_still_conforms) {
   double total = 0.0;
   for (std::size_t t = 0; t < m.triangle_count(); ++t) total += area(m, t);
   CHECK_NEAR(total, 3.5, 1e-12);
+}
+
+// A facet whose cut was not taken (another facet's split or a segment's end within 1e-10 stood in
+// for it) keeps a vertex of its own on the segment. On the pyNastran gear at -q30a20 the splits
+// near one small corner run down to that spacing within 100 rounds; the mesher then declared the
+// surface converged with such facets, and 203 subsegments were no edge of a facet holding them.
+TEST(a_cut_not_taken_meshes_its_facet_again) {
+  const FacetInput in = read_facet_file(DELTRI_SOURCE_DIR "/tests/surface/inputs/pynastran_gear.smesh");
+  FacetMeshOptions opt = quality30();
+  opt.refinement.size.max_area = 20.0;
+  SurfaceReport report;
+  const SurfaceMesh m = mesh_surface(in, opt, report, 100);
+  CHECK(check_surface(m).ok());
 }
 
 TEST(two_threads_give_the_same_surface) {
