@@ -36,17 +36,37 @@ void note_ignored_switches(const Switches& sw) {
   if (sw.strict) note("--strict");
 }
 
-// The smallest angle of any triangle in space, in degrees.
+// The smallest angle of triangle t in space, in degrees.
+double smallest_angle(const SurfaceMesh& m, std::size_t t) {
+  double best = 180.0;
+  for (int i = 0; i < 3; ++i) {
+    const Point3& o = m.points[m.triangles[3 * t + i]];
+    const Point3 a = m.points[m.triangles[3 * t + (i + 1) % 3]] - o;
+    const Point3 b = m.points[m.triangles[3 * t + (i + 2) % 3]] - o;
+    best = std::min(best, std::atan2(norm(cross(a, b)), dot(a, b)) * 180.0 / std::numbers::pi);
+  }
+  return best;
+}
+
 double smallest_angle(const SurfaceMesh& m) {
   double best = 180.0;
-  for (std::size_t t = 0; t < m.triangle_count(); ++t)
-    for (int i = 0; i < 3; ++i) {
-      const Point3& o = m.points[m.triangles[3 * t + i]];
-      const Point3 a = m.points[m.triangles[3 * t + (i + 1) % 3]] - o;
-      const Point3 b = m.points[m.triangles[3 * t + (i + 2) % 3]] - o;
-      best = std::min(best, std::atan2(norm(cross(a, b)), dot(a, b)) * 180.0 / std::numbers::pi);
-    }
+  for (std::size_t t = 0; t < m.triangle_count(); ++t) best = std::min(best, smallest_angle(m, t));
   return best;
+}
+
+// The guard's pass keeps the segments as they are, so bounds may be missed: say how many.
+void warn_not_converged(const SurfaceMesh& m, const Switches& sw) {
+  std::size_t below = 0, above = 0;
+  for (std::size_t t = 0; t < m.triangle_count(); ++t) {
+    below += sw.quality && smallest_angle(m, t) < sw.min_angle;
+    const Point3& a = m.points[m.triangles[3 * t]];
+    const double area = 0.5 * norm(cross(m.points[m.triangles[3 * t + 1]] - a, m.points[m.triangles[3 * t + 2]] - a));
+    above += sw.fixed_area && area > sw.max_area;
+  }
+  std::fprintf(stderr,
+               "deltri: warning: the facets did not agree on their shared segments within %d rounds; meshed again "
+               "with no Steiner points on segments: %zu of %zu triangles below the -q angle, %zu above the -a area\n",
+               kMaxSurfaceRounds, below, m.triangle_count(), above);
 }
 
 std::string requested(const Switches::FileRequest& r, const std::string& out, const char* extension) {
@@ -101,11 +121,7 @@ int run_surface(const Switches& sw, const std::string& path) {
     std::fprintf(stderr, "deltri: -C: the surface mesh is not consistent; no files written\n%s", result.check->summary().c_str());
     return kExitCheck;
   }
-  if (!report.converged)
-    std::fprintf(stderr,
-                 "deltri: warning: the facets did not agree on their shared segments within %d rounds; meshed again "
-                 "with no Steiner points on segments (some triangles may miss the bounds)\n",
-                 kMaxSurfaceRounds);
+  if (!report.converged) warn_not_converged(mesh, sw);
   std::string extension;
   const std::string base = path.ends_with(".smesh") ? path.substr(0, path.size() - 6) : input_base(path, &extension);
   OutputSet outputs;
