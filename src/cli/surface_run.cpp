@@ -1,5 +1,6 @@
 #include "cli/surface_run.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -36,13 +37,17 @@ void note_ignored_switches(const Switches& sw) {
   if (sw.strict) note("--strict");
 }
 
+std::array<Point3, 3> corners(const SurfaceMesh& m, std::size_t t) {
+  const std::uint32_t* v = &m.triangles[3 * t];
+  return {m.points[v[0]], m.points[v[1]], m.points[v[2]]};
+}
+
 // The smallest angle of triangle t in space, in degrees.
 double smallest_angle(const SurfaceMesh& m, std::size_t t) {
+  const std::array<Point3, 3> p = corners(m, t);
   double best = 180.0;
   for (int i = 0; i < 3; ++i) {
-    const Point3& o = m.points[m.triangles[3 * t + i]];
-    const Point3 a = m.points[m.triangles[3 * t + (i + 1) % 3]] - o;
-    const Point3 b = m.points[m.triangles[3 * t + (i + 2) % 3]] - o;
+    const Point3 a = p[(i + 1) % 3] - p[i], b = p[(i + 2) % 3] - p[i];
     best = std::min(best, std::atan2(norm(cross(a, b)), dot(a, b)) * 180.0 / std::numbers::pi);
   }
   return best;
@@ -59,8 +64,8 @@ void warn_not_converged(const SurfaceMesh& m, const Switches& sw) {
   std::size_t below = 0, above = 0;
   for (std::size_t t = 0; t < m.triangle_count(); ++t) {
     below += sw.quality && smallest_angle(m, t) < sw.min_angle;
-    const Point3& a = m.points[m.triangles[3 * t]];
-    const double area = 0.5 * norm(cross(m.points[m.triangles[3 * t + 1]] - a, m.points[m.triangles[3 * t + 2]] - a));
+    const std::array<Point3, 3> p = corners(m, t);
+    const double area = 0.5 * norm(cross(p[1] - p[0], p[2] - p[0]));
     above += sw.fixed_area && area > sw.max_area;
   }
   std::fprintf(stderr,

@@ -30,7 +30,7 @@ index cdt/holes_and_regions.cpp 1
 index cdt/rebuild_mesh.cpp 3
 index cdt/recover_edge.cpp 1
 index cdt/walk.cpp 6
-index cli/surface_run.cpp 3
+index cli/surface_run.cpp 1
 index delaunay/divide_and_conquer.cpp 43
 index delaunay/incremental.cpp 5
 index delaunay/sweepline.cpp 4
