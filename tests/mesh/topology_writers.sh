@@ -57,7 +57,7 @@ index refine/candidate_probe.cpp 8
 index refine/edge_finder.cpp 2
 index refine/halves.cpp 6
 index refine/termination_guard.cpp 4
-index refine/terminator.cpp 12
+index refine/terminator.cpp 11
 index surface/check_surface.cpp 3
 LIST
 }
