@@ -15,8 +15,8 @@ namespace deltri {
 namespace {
 
 double triangle_sine2(const Mesh& mesh, TriangleId t) {
-  return smallest_angle_sine2(mesh.point(mesh.corner[3 * t]), mesh.point(mesh.corner[3 * t + 1]),
-                              mesh.point(mesh.corner[3 * t + 2]));
+  const auto [a, b, c] = mesh.corner_points(t);
+  return smallest_angle_sine2(a, b, c);
 }
 
 }  // namespace

@@ -111,9 +111,7 @@ EdgeRef exit_side(const Mesh& mesh, Predicates& pred, TriangleId t, const Point&
 
 WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const Point& c) {
   WalkResult result;
-  const Point& a = mesh.point(mesh.corner[3 * t]);
-  const Point& b = mesh.point(mesh.corner[3 * t + 1]);
-  const Point& d = mesh.point(mesh.corner[3 * t + 2]);
+  const auto [a, b, d] = mesh.corner_points(t);
   const Point q{(a.x + b.x + d.x) / 3.0, (a.y + b.y + d.y) / 3.0};
   const std::uint64_t limit = 2 * static_cast<std::uint64_t>(mesh.triangle_slots()) + 16;
   for (std::uint64_t step = 0; step < limit; ++step) {
@@ -157,11 +155,9 @@ inline bool cross_or_bound(const Mesh& mesh, Predicates& pred, EdgeRef e, const 
   }
   const TriangleId n = triangle_of(twin);
   if (marks.contains(n)) return false;  // an edge inside the cavity, seen from its other side
-  prefetch(&mesh.link[3 * n]);  // needed when n joins the cavity
-  if (mesh.has_subsegments()) prefetch(&mesh.subseg[3 * n]);
-  const Point& x = mesh.point(mesh.corner[3 * n]);
-  const Point& y = mesh.point(mesh.corner[3 * n + 1]);
-  const Point& z = mesh.point(mesh.corner[3 * n + 2]);
+  prefetch(&mesh.link[edge_of(n, 0)]);  // needed when n joins the cavity
+  if (mesh.has_subsegments()) prefetch(&mesh.subseg[edge_of(n, 0)]);
+  const auto [x, y, z] = mesh.corner_points(n);
   if (pred.incircle(x, y, z, c) > 0) {
     marks.add(n);
     marks.todo().push_back(n);

@@ -83,9 +83,7 @@ void reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
   const std::size_t triangles = static_cast<std::size_t>(slots + added);
   const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(added / 2.0);
   try {
-    mesh.corner.reserve(3 * triangles);
-    mesh.link.reserve(3 * triangles);
-    if (mesh.has_subsegments()) mesh.subseg.reserve(3 * triangles);
+    mesh.reserve_triangles(triangles);
     mesh.points.reserve(vertices);
     mesh.kind.reserve(vertices);
   } catch (const std::bad_alloc&) {
@@ -217,7 +215,7 @@ std::vector<EdgeRef> Terminator::initially_encroached() {
 void Terminator::refine_around(std::span<const TriangleId> triangles) {
   for (TriangleId t : triangles) {
     if (t >= mesh_.triangle_slots() || !mesh_.is_live(t)) continue;
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e)
+    for (EdgeRef e : edges_of(t))
       if (mesh_.subseg[e] != kNone && is_splittable(e) && is_encroached(mesh_, pred_, e, rule_))
         enqueue_subsegment(e);
   }
@@ -265,7 +263,7 @@ void Terminator::warm_pages() {
 void Terminator::prefetch_queued() const {
   const QueuedTriangle* next = bad_triangles_.peek(kPrefetchDistance);
   if (next == nullptr) return;
-  const std::size_t e = 3 * static_cast<std::size_t>(next->triangle);
+  const std::size_t e = edge_of(next->triangle, 0);
   if (e >= mesh_.corner.size()) return;
   prefetch(&mesh_.corner[e]);
   prefetch(&mesh_.link[e]);
@@ -276,7 +274,7 @@ void Terminator::prefetch_queued() const {
   // search reads first.
   const QueuedTriangle* nearer = bad_triangles_.peek(kPrefetchDistance / 2);
   if (nearer == nullptr) return;
-  const std::size_t f = 3 * static_cast<std::size_t>(nearer->triangle);
+  const std::size_t f = edge_of(nearer->triangle, 0);
   if (f >= mesh_.corner.size()) return;
   for (std::size_t i = 0; i < 3; ++i)
     if (const EdgeRef twin = mesh_.link[f + i]; twin != kNone) prefetch(&mesh_.corner[twin - twin % 3]);
@@ -286,7 +284,8 @@ void Terminator::enqueue_if_bad(TriangleId t) {
   const Assessment a = assess(t);
   if (!a.bad()) return;
   DELTRI_ASSERT(mesh_.is_live(t));
-  const QueuedTriangle entry{t, mesh_.corner[3 * t], mesh_.corner[3 * t + 1], mesh_.corner[3 * t + 2]};
+  const auto [u, v, w] = mesh_.corners(t);
+  const QueuedTriangle entry{t, u, v, w};
   bad_triangles_.push(entry, {a.skinny, a.shape.ratio2_over_bound2, a.shape.shortest_length2});
 }
 
@@ -296,7 +295,7 @@ VertexId Terminator::add_free_vertex(const Point& p, EdgeRef container) {
   const int na = mesh_.num_attributes;
   if (na == 0) return v;
   const TriangleId t = triangle_of(container);
-  const VertexId a = mesh_.corner[3 * t], b = mesh_.corner[3 * t + 1], c = mesh_.corner[3 * t + 2];
+  const auto [a, b, c] = mesh_.corners(t);
   const Point &pa = mesh_.point(a), &pb = mesh_.point(b), &pc = mesh_.point(c);
   const double area = (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
   const double wb = ((p.x - pa.x) * (pc.y - pa.y) - (p.y - pa.y) * (pc.x - pa.x)) / area;
@@ -310,9 +309,7 @@ VertexId Terminator::add_free_vertex(const Point& p, EdgeRef container) {
 }
 
 Point Terminator::centroid_of(TriangleId t) const {
-  const Point& p = mesh_.point(mesh_.corner[3 * t]);
-  const Point& q = mesh_.point(mesh_.corner[3 * t + 1]);
-  const Point& r = mesh_.point(mesh_.corner[3 * t + 2]);
+  const auto [p, q, r] = mesh_.corner_points(t);
   return Point{(p.x + q.x + r.x) / 3.0, (p.y + q.y + r.y) / 3.0};
 }
 
