@@ -11,29 +11,12 @@ WRITE='(\b(corner|link|subseg)\[[^]]*\][[:space:]]*=[^=])|(\.(bond|set_subsegmen
 INDEX='\b3 \* [a-z_]'
 allowed() {  # kind file -> the listed count, or 0
   sed -n "s|^$1 $2 ||p" <<'LIST' | head -n 1
-write cdt/convex_hull.cpp 5
-write cdt/edit.cpp 20
-write cdt/holes_and_regions.cpp 2
-write cdt/rebuild_mesh.cpp 5
-write cdt/recover_edge.cpp 1
-write cdt/segment_inserter.cpp 3
-write delaunay/incremental.cpp 5
-write delaunay/sweepline.cpp 2
 write refine/halves.cpp 10
 index api/c_surface.cpp 1
 index api/output_arrays.cpp 5
 index api/surface_library.cpp 1
-index cdt/convex_hull.cpp 1
-index cdt/edit.cpp 16
-index cdt/flood.cpp 1
-index cdt/holes_and_regions.cpp 1
-index cdt/rebuild_mesh.cpp 3
-index cdt/recover_edge.cpp 1
-index cdt/walk.cpp 6
 index cli/surface_run.cpp 1
 index delaunay/divide_and_conquer.cpp 43
-index delaunay/incremental.cpp 5
-index delaunay/sweepline.cpp 4
 index io/edge_file.cpp 2
 index io/ele_file.cpp 2
 index io/midpoints.cpp 1
@@ -54,7 +37,6 @@ index refine/area_field.cpp 2
 index refine/bad_triangles.cpp 6
 index refine/bottom_scale.cpp 2
 index refine/candidate_probe.cpp 8
-index refine/edge_finder.cpp 2
 index refine/halves.cpp 6
 index refine/termination_guard.cpp 4
 index refine/terminator.cpp 12
