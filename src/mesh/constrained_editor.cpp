@@ -7,8 +7,7 @@ namespace deltri {
 void ConstrainedEditor::flip(EdgeRef e) {
   const EdgeRef f = mesh.link[e];
   deltri::flip<FlipLayout::KeepOrigins>(mesh, e);
-  touch(triangle_of(e));
-  touch(triangle_of(f));
+  flipped(e, f);
 }
 
 bool ConstrainedEditor::flippable(EdgeRef e) {
@@ -71,10 +70,7 @@ void ConstrainedEditor::legalize_from(EdgeRef e) {
 
 void ConstrainedEditor::legalize_link(std::vector<EdgeRef>& stack, VertexId v) {
   lawson<FlipLayout::KeepOrigins, LawsonScope::Link>(mesh, stack, v, [this](EdgeRef g) { return may_flip(g); },
-                                                    [this](EdgeRef g, EdgeRef f) {
-                                                      touch(triangle_of(g));
-                                                      touch(triangle_of(f));
-                                                    });
+                                                    [this](EdgeRef g, EdgeRef f) { flipped(g, f); });
 }
 
 }  // namespace deltri

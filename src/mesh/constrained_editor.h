@@ -57,14 +57,17 @@ class ConstrainedEditor {
   // the caller's test (which must imply may_flip; segment recovery confines it to its cavity).
   template <class MayFlip>
   void legalize(std::vector<EdgeRef>& stack, MayFlip&& test) {
-    lawson<FlipLayout::KeepOrigins, LawsonScope::Everywhere>(mesh, stack, kNone, test, [this](EdgeRef e, EdgeRef f) {
-      touch(triangle_of(e));
-      touch(triangle_of(f));
-    });
+    lawson<FlipLayout::KeepOrigins, LawsonScope::Everywhere>(mesh, stack, kNone, test,
+                                                             [this](EdgeRef e, EdgeRef f) { flipped(e, f); });
   }
 
  private:
   void touch(TriangleId t) { index_.touch(mesh, t); }
+  // After a flip of e and its old twin f: both triangles were rewritten.
+  void flipped(EdgeRef e, EdgeRef f) {
+    touch(triangle_of(e));
+    touch(triangle_of(f));
+  }
   // Lawson flips from the given edges, each opposite the new vertex v in its triangle.
   void legalize_link(std::vector<EdgeRef>& stack, VertexId v);
 
