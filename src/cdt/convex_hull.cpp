@@ -7,20 +7,11 @@
 #include <vector>
 
 #include "geometry/constructions.h"
+#include "mesh/subsegments.h"
 
 namespace deltri {
 
-std::size_t enclose_convex_hull(Mesh& mesh) {
-  mesh.enable_subsegments();
-  std::size_t added = 0;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
-    if (mesh.corner[e] == kNone || mesh.link[e] != kNone || mesh.subseg[e] != kNone) continue;
-    mesh.subsegments.push_back({mesh.org(e), mesh.dest(e), 1, kNone});
-    mesh.set_subsegment(e, static_cast<SubsegmentId>(mesh.subsegments.size() - 1));
-    ++added;
-  }
-  return added;
-}
+std::size_t enclose_convex_hull(Mesh& mesh) { return constrain_boundary(mesh, 1); }
 
 namespace {
 
@@ -106,17 +97,7 @@ std::size_t absorb_near_hull_vertices(Mesh& mesh, Predicates& pred) {
     if (!((pv.x - pa.x) * ex + (pv.y - pa.y) * ey > 0.0) || !((pb.x - pv.x) * ex + (pb.y - pv.y) * ey > 0.0))
       continue;
     if (on_boundary(mesh, lprev(e))) continue;
-    const EdgeRef av = mesh.link[lprev(e)];  // a -> v in the neighbour
-    const EdgeRef vb = mesh.link[lnext(e)];  // v -> b in the neighbour
-    const SubsegmentId id = mesh.subseg[e];
-    const Subsegment old = mesh.subsegments[id];
-    const TriangleId t = triangle_of(e);
-    mesh.kill_triangle(t);
-    for (unsigned i = 0; i < 3; ++i) mesh.subseg[3 * t + i] = kNone;
-    mesh.subsegments[id] = {a, v, old.marker, kNone};
-    mesh.set_subsegment(av, id);
-    mesh.subsegments.push_back({v, b, old.marker, kNone});
-    mesh.set_subsegment(vb, static_cast<SubsegmentId>(mesh.subsegments.size() - 1));
+    const auto [av, vb] = peel_boundary_triangle(mesh, e);
     run_of[av] = r;
     run_of[vb] = r;
     work.push_back(av);

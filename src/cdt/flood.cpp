@@ -21,7 +21,7 @@ std::vector<TriangleId> flood(const Mesh& mesh, std::vector<TriangleId> seeds,
     stack.pop_back();
     reached.push_back(t);
     for (unsigned i = 0; i < 3; ++i) {
-      const EdgeRef e = 3 * t + i;
+      const EdgeRef e = edge_of(t, i);
       const EdgeRef f = mesh.link[e];
       if (f == kNone || (constrained && mesh.subseg[e] != kNone)) continue;
       const TriangleId n = triangle_of(f);

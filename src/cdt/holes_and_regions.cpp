@@ -1,8 +1,9 @@
 #include "cdt/holes_and_regions.h"
 
 #include "cdt/flood.h"
-#include "cdt/subsegment_table.h"
-#include "cdt/walk.h"
+#include "mesh/operations.h"
+#include "mesh/remove_triangles.h"
+#include "mesh/subsegments.h"
 
 namespace deltri {
 
@@ -26,15 +27,17 @@ bool touches_subsegment(const Mesh& mesh, EdgeRef from) {
 }
 
 // The triangle a hole point infects, or kNone (the point is then reported).
-TriangleId hole_triangle(const Mesh& mesh, const PointLocation& at) {
-  switch (at.kind) {
-    case PointLocation::Kind::InTriangle:
+// Which of the triangles at an edge or vertex does not matter: without a subsegment there, the
+// flood reaches all of them.
+TriangleId hole_triangle(const Mesh& mesh, const Location& at) {
+  switch (at.status) {
+    case LocateStatus::InTriangle:
       return triangle_of(at.edge);
-    case PointLocation::Kind::OnEdge:
+    case LocateStatus::OnEdge:
       return constrained(mesh, at.edge) ? kNone : triangle_of(at.edge);
-    case PointLocation::Kind::OnVertex:
+    case LocateStatus::OnVertex:
       return touches_subsegment(mesh, at.edge) ? kNone : triangle_of(at.edge);
-    case PointLocation::Kind::Outside:
+    case LocateStatus::Outside:
       break;
   }
   return kNone;
@@ -48,25 +51,6 @@ std::vector<TriangleId> hull_seeds(const Mesh& mesh) {
   return seeds;
 }
 
-// Deletes subsegment records no live edge carries any more.
-std::size_t drop_orphan_subsegments(Mesh& mesh) {
-  if (!mesh.has_subsegments()) return 0;
-  std::vector<char> used(mesh.subsegments.size(), 0);
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
-    if (mesh.corner[e] != kNone && mesh.subseg[e] != kNone) used[mesh.subseg[e]] = 1;
-  std::size_t dropped = 0;
-  for (SubsegmentId s = 0; s < used.size(); ++s)
-    if (!used[s] && mesh.subsegments[s].a != kNone) {
-      mesh.subsegments[s].a = kNone;
-      ++dropped;
-    }
-  // kill_triangle leaves subseg entries in dead slots; clear them before renumbering.
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
-    if (mesh.corner[e] == kNone) mesh.subseg[e] = kNone;
-  drop_dead_subsegments(mesh);
-  return dropped;
-}
-
 }  // namespace
 
 HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& holes,
@@ -74,13 +58,13 @@ HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& h
   HoleReport report;
   std::vector<TriangleId> seeds;
   if (!keep_convex_hull) seeds = hull_seeds(mesh);
-  // Locate every hole before anything is deleted: the mesh is still convex, so a blocked straight
-  // walk proves the point outside.
+  // Locate every hole before anything is deleted, so that the flood starts from the mesh the
+  // segments made (locate itself copes with non-convex meshes by its scan).
   EdgeRef hint = kNone;
   for (std::size_t i = 0; i < holes.size(); ++i) {
-    const PointLocation at = locate_point(mesh, pred, holes[i], hint);
-    if (at.kind != PointLocation::Kind::Outside) hint = at.edge;
-    if (at.kind == PointLocation::Kind::Outside) {
+    const Location at = locate(mesh, pred, holes[i], hint);
+    if (at.status != LocateStatus::Outside) hint = at.edge;
+    if (at.status == LocateStatus::Outside) {
       report.outside.push_back(i);
       continue;
     }
@@ -89,11 +73,10 @@ HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& h
     else seeds.push_back(t);
   }
   std::vector<std::uint32_t> infected(mesh.triangle_slots(), 0);
-  for (const TriangleId t : flood(mesh, std::move(seeds), infected, 1)) {
-    mesh.kill_triangle(t);
-    ++report.triangles_removed;
-  }
-  report.subsegments_removed = drop_orphan_subsegments(mesh);
+  const std::vector<TriangleId> exterior = flood(mesh, std::move(seeds), infected, 1);
+  remove_triangles(mesh, exterior);
+  report.triangles_removed = exterior.size();
+  report.subsegments_removed = drop_unused_subsegments(mesh);
   mesh.compact_triangles();
   return report;
 }
@@ -112,9 +95,9 @@ void add_region_attribute(Mesh& mesh) {
 
 // The triangle a region point seeds, or kNone; `where` says why not.
 TriangleId region_triangle(const Mesh& mesh, Predicates& pred, const Point& at, EdgeRef hint,
-                           PointLocation::Kind& where) {
-  const PointLocation location = locate_point(mesh, pred, at, hint);
-  where = location.kind;
+                           LocateStatus& where) {
+  const Location location = locate(mesh, pred, at, hint);
+  where = location.status;
   return hole_triangle(mesh, location);  // the same rule as for hole points
 }
 
@@ -131,10 +114,10 @@ RegionReport spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg
   std::vector<TriangleId> starts;
   EdgeRef hint = kNone;
   for (std::size_t i = 0; i < regions.size(); ++i) {
-    PointLocation::Kind where = PointLocation::Kind::Outside;
+    LocateStatus where = LocateStatus::Outside;
     starts.push_back(region_triangle(mesh, pred, regions[i].at, hint, where));
-    if (starts.back() != kNone) hint = 3 * starts.back();
-    else if (where == PointLocation::Kind::Outside) report.outside.push_back(i);
+    if (starts.back() != kNone) hint = edge_of(starts.back(), 0);
+    else if (where == LocateStatus::Outside) report.outside.push_back(i);
     else report.on_segment.push_back(i);
   }
   std::vector<std::uint32_t> visited(mesh.triangle_slots(), 0);

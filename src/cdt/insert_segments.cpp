@@ -6,7 +6,7 @@
 
 #include "cdt/repeated_segments.h"
 #include "cdt/segment_inserter.h"
-#include "cdt/subsegment_table.h"
+#include "mesh/subsegments.h"
 
 namespace deltri {
 

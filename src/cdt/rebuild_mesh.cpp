@@ -1,61 +1,32 @@
 #include "cdt/rebuild_mesh.h"
 
-#include <algorithm>
 #include <cstdint>
 
-#include "cdt/edit.h"
+#include "mesh/assemble.h"
+#include "mesh/constrained_editor.h"
 #include "mesh/overlap.h"
+#include "mesh/subsegments.h"
 #include "pslg/errors.h"
 
 namespace deltri {
 namespace {
 
-struct EdgeKey {
-  std::uint64_t key;  // smaller vertex id in the high half
-  EdgeRef edge;
-  bool operator<(const EdgeKey& o) const { return key < o.key || (key == o.key && edge < o.edge); }
-};
-
-std::uint64_t undirected(VertexId a, VertexId b) {
-  const VertexId lo = std::min(a, b), hi = std::max(a, b);
-  return (static_cast<std::uint64_t>(lo) << 32) | hi;
-}
-
 std::string triangle_name(TriangleId t) { return "triangle #" + std::to_string(t + 1) + " (in file order)"; }
 
-void add_triangles(Mesh& mesh, Predicates& pred, const EleData& ele, const std::string& path) {
-  const std::uint32_t n = ele.triangle_count();
-  const std::uint32_t stride = ele.nodes_per_triangle;
-  mesh.corner.assign(3 * static_cast<std::size_t>(n), kNone);
-  mesh.link.assign(3 * static_cast<std::size_t>(n), kNone);
-  mesh.free_triangles.clear();
-  for (TriangleId t = 0; t < n; ++t) {
-    const std::uint32_t* c = &ele.corners[static_cast<std::size_t>(t) * stride];
-    if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0])
-      throw InputError(path, 0, triangle_name(t) + " repeats a vertex");
-    if (pred.orient2d(mesh.point(c[0]), mesh.point(c[1]), mesh.point(c[2])) <= 0)
-      throw InputError(path, 0, triangle_name(t) + " is not counter-clockwise");
-    for (unsigned i = 0; i < 3; ++i) mesh.corner[3 * t + i] = c[i];
-  }
-}
-
-void pair_edges(Mesh& mesh, const std::string& path) {
-  std::vector<EdgeKey> keys(mesh.corner.size());
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) keys[e] = {undirected(mesh.org(e), mesh.dest(e)), e};
-  std::sort(keys.begin(), keys.end());
-  for (std::size_t i = 0; i < keys.size();) {
-    std::size_t j = i + 1;
-    while (j < keys.size() && keys[j].key == keys[i].key) ++j;
-    const EdgeRef e = keys[i].edge;
-    if (j - i > 2)
-      throw InputError(path, 0, "an edge is shared by more than two triangles (" + triangle_name(triangle_of(e)) + ")");
-    if (j - i == 2) {
-      const EdgeRef f = keys[i + 1].edge;
-      if (mesh.org(e) == mesh.org(f))
-        throw InputError(path, 0, triangle_name(triangle_of(e)) + " and " + triangle_name(triangle_of(f)) + " overlap");
-      mesh.bond(e, f);
-    }
-    i = j;
+// The assembly's refusal as the one-line error a user reads.
+void throw_problem(const AssemblyProblem& p, const std::string& path) {
+  using Kind = AssemblyProblem::Kind;
+  switch (p.kind) {
+    case Kind::None:
+      return;
+    case Kind::RepeatedVertex:
+      throw InputError(path, 0, triangle_name(p.first) + " repeats a vertex");
+    case Kind::Clockwise:
+      throw InputError(path, 0, triangle_name(p.first) + " is not counter-clockwise");
+    case Kind::SharedEdge:
+      throw InputError(path, 0, "an edge is shared by more than two triangles (" + triangle_name(p.first) + ")");
+    case Kind::Overlap:
+      throw InputError(path, 0, triangle_name(p.first) + " and " + triangle_name(p.second) + " overlap");
   }
 }
 
@@ -78,8 +49,7 @@ void drop_midpoint_nodes(Mesh& mesh, const EleData& ele) {
 }  // namespace
 
 void rebuild_mesh(Mesh& mesh, Predicates& pred, const EleData& ele, const std::string& ele_path) {
-  add_triangles(mesh, pred, ele, ele_path);
-  pair_edges(mesh, ele_path);
+  throw_problem(assemble_triangles(mesh, pred, ele.corners, ele.triangle_count(), ele.nodes_per_triangle), ele_path);
   // Paired edges and counter-clockwise triangles can still cross or lie over one another.
   if (const auto found = find_overlap(mesh, pred))
     throw InputError(ele_path, 0,
@@ -87,22 +57,13 @@ void rebuild_mesh(Mesh& mesh, Predicates& pred, const EleData& ele, const std::s
                          (found->interiors_overlap ? " overlap" : " meet other than at shared corners (a corner of one lies on the other)"));
   mesh.num_triangle_attributes = ele.num_attributes;
   mesh.triangle_attributes = ele.attributes;
-  mesh.subseg.clear();
   drop_midpoint_nodes(mesh, ele);
 }
 
-void protect_boundary(Mesh& mesh) {
-  mesh.enable_subsegments();
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
-    if (mesh.corner[e] == kNone || mesh.link[e] != kNone || mesh.subseg[e] != kNone) continue;
-    const SubsegmentId s = static_cast<SubsegmentId>(mesh.subsegments.size());
-    mesh.subsegments.push_back({mesh.org(e), mesh.dest(e), 1, kNone});
-    mesh.set_subsegment(e, s);
-  }
-}
+void protect_boundary(Mesh& mesh) { constrain_boundary(mesh, 1); }
 
 void make_constrained_delaunay(Mesh& mesh, Predicates& pred) {
-  CdtEditor editor(mesh, pred);
+  ConstrainedEditor editor(mesh, pred);
   for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
     if (mesh.corner[e] != kNone && mesh.link[e] != kNone && mesh.link[e] > e) editor.legalize_from(e);
 }

@@ -6,6 +6,7 @@
 #include "cdt/walk.h"
 #include "geometry/constructions.h"
 #include "geometry/exact_determinants.h"
+#include "mesh/subsegments.h"
 
 namespace deltri {
 
@@ -28,7 +29,7 @@ void SegmentInserter::record(EdgeRef e, const Piece& piece) {
   Mesh& mesh = ed_.mesh;
   const SubsegmentId old = mesh.subseg[e];
   if (old == kNone) {
-    mesh.set_subsegment(e, new_record(piece));
+    constrain(mesh, e, {piece.u, piece.v, piece.marker, piece.segment});
     return;
   }
   // Collinear overlap with an earlier segment (or a chain piece recovered twice).
@@ -43,8 +44,8 @@ void SegmentInserter::record(EdgeRef e, const Piece& piece) {
 void SegmentInserter::process(const Piece& piece) {
   Mesh& mesh = ed_.mesh;
   Predicates& pred = ed_.pred;
-  const EdgeRef from_u = ed_.vertex_edge[piece.u];
-  if (from_u == kNone || ed_.vertex_edge[piece.v] == kNone) {
+  const EdgeRef from_u = ed_.leaving(piece.u);
+  if (from_u == kNone || ed_.leaving(piece.v) == kNone) {
     ++counts_.unrecovered;
     return;
   }
@@ -121,7 +122,7 @@ bool SegmentInserter::split_at_midpoint(const Piece& piece, VertexId w) {
   const Point a = mesh.point(piece.u), b = mesh.point(w);
   const Point m{a.x + 0.5 * (b.x - a.x), a.y + 0.5 * (b.y - a.y)};
   if ((m.x == a.x && m.y == a.y) || (m.x == b.x && m.y == b.y)) return false;
-  const PointLocation at = walk_to_point(mesh, ed_.pred, ed_.vertex_edge[piece.u], m);
+  const PointLocation at = walk_to_point(mesh, ed_.pred, ed_.leaving(piece.u), m);
   if (at.kind == PointLocation::Kind::Outside || at.kind == PointLocation::Kind::OnVertex) return false;
   const VertexId x = mesh.add_vertex(m, VertexKind::Segment);
   mesh.interpolate_attributes(x, piece.u, w);
@@ -165,11 +166,7 @@ VertexId SegmentInserter::near_vertex(const Piece& piece, std::initializer_list<
 }
 
 void SegmentInserter::release(EdgeRef e, VertexId w) {
-  Mesh& mesh = ed_.mesh;
-  const SubsegmentId id = mesh.subseg[e];
-  Subsegment s = mesh.subsegments[id];
-  mesh.subsegments[id].a = kNone;
-  mesh.set_subsegment(e, kNone);
+  const Subsegment s = unconstrain(ed_.mesh, e);
   pending_.push_back({w, s.b, s.marker, s.segment});
   pending_.push_back({s.a, w, s.marker, s.segment});
 }
@@ -178,7 +175,7 @@ void SegmentInserter::release(EdgeRef e, VertexId w) {
 // for any vertex on a segment (Triangle interpolates along the subsegment it splits, too).
 VertexId SegmentInserter::place_crossing(const Piece& piece, const Subsegment& old, const Point& p) {
   Mesh& mesh = ed_.mesh;
-  const PointLocation at = walk_to_point(mesh, ed_.pred, ed_.vertex_edge[old.a], p);
+  const PointLocation at = walk_to_point(mesh, ed_.pred, ed_.leaving(old.a), p);
   switch (at.kind) {
     case PointLocation::Kind::OnVertex:
       return mesh.org(at.edge);
@@ -216,10 +213,7 @@ void SegmentInserter::split_crossing(const Piece& piece, EdgeRef g) {
   // Unconstrain g first so that the new vertex may flip it away (its halves are queued below),
   // and make the triangulation Delaunay without it: the new vertex may well miss g, and vertex
   // insertion restores the Delaunay property only if it held before.
-  const SubsegmentId id = mesh.subseg[g];
-  const Subsegment old = mesh.subsegments[id];
-  mesh.subsegments[id].a = kNone;
-  mesh.set_subsegment(g, kNone);
+  const Subsegment old = unconstrain(mesh, g);
   ed_.legalize_from(g);
   const VertexId w = place_crossing(piece, old, p);
   pending_.push_back({w, piece.v, piece.marker, piece.segment});

@@ -9,8 +9,8 @@
 #include <unordered_set>
 #include <vector>
 
-#include "cdt/edit.h"
-#include "cdt/recover_edge.h"
+#include "mesh/constrained_editor.h"
+#include "mesh/recover_edge.h"
 
 namespace deltri {
 
@@ -66,7 +66,7 @@ class SegmentInserter {
   // runs along) within kSnapUlps of the piece's interior, or kNone.
   VertexId near_vertex(const Piece& piece, std::initializer_list<VertexId> candidates) const;
 
-  CdtEditor ed_;
+  ConstrainedEditor ed_;
   EdgeRecovery recovery_;
   InsertionCounts counts_;
   std::vector<Piece> pending_;

@@ -129,41 +129,4 @@ PointLocation walk_to_point(const Mesh& mesh, Predicates& pred, EdgeRef from, co
   return out;
 }
 
-namespace {
-
-PointLocation scan_for_point(const Mesh& mesh, Predicates& pred, const Point& q) {
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
-    if (!mesh.is_live(t)) continue;
-    double o[3];
-    for (unsigned i = 0; i < 3; ++i)
-      o[i] = pred.orient2d(mesh.point(mesh.corner[3 * t + i]),
-                           mesh.point(mesh.corner[3 * t + (i + 1) % 3]), q);
-    if (o[0] < 0.0 || o[1] < 0.0 || o[2] < 0.0) continue;
-    for (unsigned i = 0; i < 3; ++i) {
-      if (mesh.point(mesh.corner[3 * t + i]) == q) return {Loc::OnVertex, 3 * t + i};
-    }
-    for (unsigned i = 0; i < 3; ++i)
-      if (o[i] == 0.0) return {Loc::OnEdge, 3 * t + i};
-    return {Loc::InTriangle, 3 * t};
-  }
-  return {};
-}
-
-}  // namespace
-
-PointLocation locate_point(const Mesh& mesh, Predicates& pred, const Point& q, EdgeRef hint) {
-  if (hint != kNone && hint < mesh.corner.size() && mesh.corner[hint] != kNone) {
-    const PointLocation found = walk_to_point(mesh, pred, hint, q);
-    if (found.kind != Loc::Outside) return found;
-    return scan_for_point(mesh, pred, q);
-  }
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
-    if (!mesh.is_live(t)) continue;
-    const PointLocation found = walk_to_point(mesh, pred, 3 * t, q);
-    if (found.kind != Loc::Outside) return found;
-    return scan_for_point(mesh, pred, q);
-  }
-  return {};
-}
-
 }  // namespace deltri

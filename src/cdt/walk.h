@@ -53,12 +53,8 @@ struct PointLocation {
 };
 
 // Walks the straight line from org(from) to q. Outside means the line left the mesh first, which
-// proves q outside only when the mesh is convex.
+// proves q outside only when the mesh is convex. The segment inserter uses it for points on the
+// segment it is inserting, from one of its ends; point location anywhere is mesh/locate (locate()).
 PointLocation walk_to_point(const Mesh& mesh, Predicates& pred, EdgeRef from, const Point& q);
-
-// Locates q anywhere in a mesh that may be non-convex or disconnected: a walk from the live
-// triangle of `hint` (or the first live one), then, if the walk was blocked, an exact scan of every
-// triangle. Pass the previous answer's edge as the hint when points come in spatial order.
-PointLocation locate_point(const Mesh& mesh, Predicates& pred, const Point& q, EdgeRef hint = kNone);
 
 }  // namespace deltri

@@ -1,7 +1,6 @@
 // Randomised incremental construction. The outside of the hull is covered by ghost triangles
-// (apex kGhostVertex) so that insert_vertex treats a point beyond the hull like any other: its
-// Lawson flips, with a ghost's circle taken as the open half-plane beyond its edge, widen the hull
-// exactly. A big enclosing triangle would instead leave its own edges in the hull.
+// (mesh/ghosts.h) so that insert_vertex treats a point beyond the hull like any other. A big
+// enclosing triangle would instead leave its own edges in the hull.
 #include "delaunay/incremental.h"
 
 #include <algorithm>
@@ -10,6 +9,8 @@
 
 #include "delaunay/lawson_pass.h"
 #include "geometry/box.h"
+#include "mesh/assemble.h"
+#include "mesh/ghosts.h"
 #include "mesh/operations.h"
 
 namespace deltri {
@@ -27,7 +28,7 @@ std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
   std::uint32_t d = 0;
   for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
     const std::uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
-    d += s * s * ((3 * rx) ^ ry);
+    d += s * s * ((rx * 3) ^ ry);
     if (ry == 0) {  // turn the lower-order quadrant so the curve stays continuous
       if (rx == 1) {
         x = ~x & 0xFFFFu;
@@ -82,41 +83,11 @@ bool front_triangle(const Mesh& mesh, Predicates& pred, std::vector<VertexId>& o
   return false;
 }
 
-// The counter-clockwise triangle a, b, c and one ghost beyond each of its edges.
-void seed_triangle(Mesh& mesh, VertexId a, VertexId b, VertexId c) {
-  const TriangleId t = mesh.add_triangle(a, b, c);
-  TriangleId ghost[3];
-  for (unsigned i = 0; i < 3; ++i) {
-    const EdgeRef e = 3 * t + i;
-    ghost[i] = mesh.add_triangle(mesh.dest(e), mesh.org(e), kGhostVertex);
-    mesh.bond(e, 3 * ghost[i]);
-  }
-  // Ghost i ends (side 2, ghost -> corner i+1) where ghost i+1 begins (side 1, corner i+1 ->
-  // ghost).
-  for (unsigned i = 0; i < 3; ++i) mesh.bond(3 * ghost[i] + 2, 3 * ghost[(i + 1) % 3] + 1);
-}
-
-void remove_ghosts(Mesh& mesh) {
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
-    if (!mesh.is_live(t)) continue;
-    const EdgeRef e = 3 * t;
-    if (mesh.corner[e] == kGhostVertex || mesh.corner[e + 1] == kGhostVertex ||
-        mesh.corner[e + 2] == kGhostVertex)
-      mesh.kill_triangle(t);
-  }
-  mesh.compact_triangles();
-}
-
 }  // namespace
 
 std::vector<VertexId> distinct_inputs(Mesh& mesh,
                                       std::vector<std::pair<VertexId, VertexId>>& duplicates) {
-  mesh.corner.clear();
-  mesh.link.clear();
-  mesh.subseg.clear();
-  mesh.free_triangles.clear();
-  mesh.triangle_attributes.clear();
-  mesh.area_bound.clear();
+  clear_triangles(mesh);
   std::vector<VertexId> ids;
   for (VertexId v = 0; v < mesh.vertex_count(); ++v)
     if (mesh.kind[v] == VertexKind::Input) ids.push_back(v);
@@ -148,7 +119,7 @@ void incremental_delaunay(Mesh& mesh, Predicates& pred,
   if (!front_triangle(mesh, pred, order)) return;
   if (pred.orient2d(mesh.point(order[0]), mesh.point(order[1]), mesh.point(order[2])) < 0)
     std::swap(order[0], order[1]);
-  seed_triangle(mesh, order[0], order[1], order[2]);
+  seed_with_ghosts(mesh, order[0], order[1], order[2]);
   EdgeRef hint = 0;
   for (std::size_t k = 3; k < order.size(); ++k) {
     const InsertResult r = insert_vertex(mesh, pred, order[k], hint);

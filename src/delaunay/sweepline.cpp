@@ -7,6 +7,7 @@
 
 #include "delaunay/incremental.h"
 #include "delaunay/lawson_pass.h"
+#include "mesh/assemble.h"
 
 namespace deltri {
 namespace {
@@ -44,9 +45,8 @@ class Sweep {
     hints_.assign(buckets, 0);
     scale_ = hi_x > lo_x ? static_cast<double>(buckets) / (hi_x - lo_x) : 0.0;
     arcs_.reserve(2 * sites + 1);
-    ends_.reserve(3 * sites);
-    mesh_.corner.reserve(6 * sites);
-    mesh_.link.reserve(6 * sites);
+    ends_.reserve(sites * 3);
+    reserve_triangles(mesh_, 2 * sites);
   }
 
   // `sites` sorted by y, then x. The triangles are appended to the mesh, linked to each other;
@@ -137,10 +137,10 @@ class Sweep {
     Arc& b = arcs_[e.arc];
     if (!b.alive || b.stamp != e.stamp) return;
     const std::uint32_t a = b.prev, c = b.next;
-    const TriangleId t = mesh_.append_triangle(arcs_[a].site, b.site, arcs_[c].site);
-    close(b.left_end, 3 * t);
-    close(arcs_[c].left_end, 3 * t + 1);
-    arcs_[c].left_end = new_end(3 * t + 2);
+    const TriangleId t = append_unlinked(mesh_, arcs_[a].site, b.site, arcs_[c].site);
+    close(b.left_end, edge_of(t, 0));
+    close(arcs_[c].left_end, edge_of(t, 1));
+    arcs_[c].left_end = new_end(edge_of(t, 2));
     b.alive = false;
     arcs_[a].next = c;
     arcs_[c].prev = a;
@@ -162,12 +162,7 @@ class Sweep {
       ends_[end] = e;
       return;
     }
-    const EdgeRef twin = ends_[end];
-    if (mesh_.org(twin) != mesh_.dest(e) || mesh_.dest(twin) != mesh_.org(e) || mesh_.link[twin] != kNone) {
-      consistent_ = false;
-      return;
-    }
-    mesh_.bond(e, twin);
+    if (!pair_twins(mesh_, e, ends_[end])) consistent_ = false;
   }
 
   // Queues the event where arc b vanishes, if its neighbours' breakpoints converge on it: exactly
@@ -250,8 +245,7 @@ bool sweepline_delaunay(Mesh& mesh, Predicates& pred, std::vector<std::pair<Vert
   const bool consistent = sweep.run(sites);
   if (mesh.corner.empty()) return true;  // all collinear
   if (!consistent || !tiles_convex_hull(mesh, pred, sites.size())) {
-    mesh.corner.clear();
-    mesh.link.clear();
+    clear_triangles(mesh);
     return false;
   }
   lawson_pass(mesh, pred);

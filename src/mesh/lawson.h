@@ -1,9 +1,13 @@
-// The kernel's one Lawson routine: flips on the link of a new vertex until no edge opposite it may
-// be flipped. Which edges may flip is the caller's test (an incircle test, a half-plane test for
-// ghost triangles, a lookup in a known cavity); the flips themselves are the kernel's flip in its
-// Turn layout (mesh/operations.h), so every caller sees the same slots afterwards.
+// The kernel's one Lawson routine, lawson(): flips until no stacked edge may be flipped. Which edges
+// may flip is the caller's test (an incircle test, the tie-broken one, a half-plane test for ghost
+// triangles, a lookup in a known cavity, "inside the recovered segment's cavity"); the flips are
+// the kernel's flip (mesh/operations.h) in the caller's layout, so a fix to either is made once.
+// Callers: flip_link below (vertex insertion, refinement), the constrained editor and segment
+// recovery (mesh/constrained_editor.h, mesh/recover_edge.h), the Delaunay builders' tie pass
+// (delaunay/lawson_pass.h).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -41,11 +45,54 @@ class EdgeStack {
 
 }  // namespace detail
 
+// After flip<layout>(e) with twin f, the four outer edges of the quadrilateral, in the order each
+// layout's callers have always stacked them (the order decides which of two cocircular diagonals
+// survives, and so the output). The first and the last are the two edges opposite the old apex
+// of e in the new triangles.
+template <FlipLayout layout>
+constexpr std::array<EdgeRef, 4> outer_edges(EdgeRef e, EdgeRef f) {
+  if constexpr (layout == FlipLayout::Turn) return {lnext(e), lprev(e), lnext(f), lprev(f)};
+  else return {e, lprev(e), f, lprev(f)};
+}
+
+// Where Lawson's flips spread: over the link of one vertex (an insertion: only the edges opposite
+// the new vertex can stop being locally Delaunay) or to every edge a flip touches (a constraint
+// was removed, or a whole triangulation is repaired).
+enum class LawsonScope { Link, Everywhere };
+
+// The kernel's one Lawson routine. Pops edges from `stack`; an edge that passes may_flip(e) is
+// flipped in `layout` and flipped(e, f) is told (a caller's index follows the slots), then the
+// outer edges of its quadrilateral are stacked: with Link scope only the two opposite v, and an
+// edge popped whose apex is no longer v is skipped. may_flip must refuse boundary edges and
+// subsegments and accept only edges whose quadrilateral is strictly convex (an incircle test does).
+// Ends when the stack is empty: every flip lowers the lifted surface, so it does (Lawson).
+// Returns the last flip's edge in e's slot (with Link scope and Turn, it leaves v), or kNone.
+template <FlipLayout layout, LawsonScope scope, class Stack, class MayFlip, class Flipped>
+EdgeRef lawson(Mesh& m, Stack& stack, VertexId v, MayFlip&& may_flip, Flipped&& flipped) {
+  EdgeRef last = kNone;
+  while (!stack.empty()) {
+    const EdgeRef x = stack.back();
+    stack.pop_back();
+    if (scope == LawsonScope::Link && m.apex(x) != v) continue;
+    if (!may_flip(x)) continue;
+    const EdgeRef f = m.link[x];
+    last = flip<layout>(m, x);
+    flipped(x, f);
+    const std::array<EdgeRef, 4> outer = outer_edges<layout>(x, f);
+    if constexpr (scope == LawsonScope::Link) {
+      stack.push_back(outer[0]);
+      stack.push_back(outer[3]);
+    } else {
+      for (const EdgeRef o : outer) stack.push_back(o);
+    }
+  }
+  return last;
+}
+
 // Lawson's flips on the link of v, where `out` leaves v: the edges opposite v in every triangle
 // around it (the fan may be open at the boundary) are stacked, turning counter-clockwise from out
-// and then clockwise; each popped edge that still has v as its apex and passes may_flip(e) is
-// flipped, and the two edges it brings opposite v are stacked. may_flip must refuse boundary
-// edges and subsegments. Returns the last flip's new edge (it left v when made), or kNone.
+// and then clockwise, and lawson() runs with Link scope in the Turn layout. Returns the last
+// flip's new edge (it left v when made), or kNone.
 template <class MayFlip>
 EdgeRef flip_link(Mesh& m, VertexId v, EdgeRef out, MayFlip&& may_flip) {
   detail::EdgeStack stack;
@@ -59,17 +106,7 @@ EdgeRef flip_link(Mesh& m, VertexId v, EdgeRef out, MayFlip&& may_flip) {
       e = lnext(s);
       stack.push_back(lnext(e));
     }
-  EdgeRef last = kNone;
-  while (!stack.empty()) {
-    const EdgeRef x = stack.back();
-    stack.pop_back();
-    if (m.apex(x) != v || !may_flip(x)) continue;
-    const EdgeRef f = m.link[x];
-    last = flip(m, x);  // v -> old apex of f; the link of v is now lnext(last), lprev(f)
-    stack.push_back(lnext(last));
-    stack.push_back(lprev(f));
-  }
-  return last;
+  return lawson<FlipLayout::Turn, LawsonScope::Link>(m, stack, v, may_flip, [](EdgeRef, EdgeRef) {});
 }
 
 }  // namespace deltri

@@ -44,9 +44,18 @@ EdgeRef flip(Mesh& mesh, EdgeRef e);
 extern template EdgeRef flip<FlipLayout::Turn>(Mesh&, EdgeRef);
 extern template EdgeRef flip<FlipLayout::KeepOrigins>(Mesh&, EdgeRef);
 
-// Splits triangle_of(e) into three around the new vertex v (which must lie strictly inside).
-// Returns an edge leaving v.
+// Splits triangle_of(e) = (a, b, c) into three around the new vertex v (which must lie strictly
+// inside): t keeps its slot as (a, b, v), and two new slots n1, n2 hold (v, b, c) and (v, c, a).
+// The layout says where v sits in the new slots (the output numbers corners by slot):
+//   VertexFirst  n1 = (v, b, c), n2 = (v, c, a). Used by vertex insertion and refinement.
+//   VertexLast   n1 = (b, c, v), n2 = (c, a, v), so the old edges b->c and c->a sit at side 0.
+//                Used by the constrained Delaunay editor.
+// Returns the edge v->a in t's slot.
+enum class SplitLayout { VertexFirst, VertexLast };
+template <SplitLayout layout = SplitLayout::VertexFirst>
 EdgeRef split_triangle(Mesh& mesh, EdgeRef e, VertexId v);
+extern template EdgeRef split_triangle<SplitLayout::VertexFirst>(Mesh&, EdgeRef, VertexId);
+extern template EdgeRef split_triangle<SplitLayout::VertexLast>(Mesh&, EdgeRef, VertexId);
 
 // Splits edge e (and its twin, if any) at the new vertex v, which must lie on e's relative interior.
 // A subsegment on e is split into two subsegments. Returns an edge leaving v.

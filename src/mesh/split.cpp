@@ -5,25 +5,32 @@
 
 namespace deltri {
 
-// t = (a, b, c) becomes t = (a, b, v) plus n1 = (v, b, c) and n2 = (v, c, a).
+// t = (a, b, c) becomes t = (a, b, v) plus n1 = (v, b, c) and n2 = (v, c, a), each new triangle's
+// corners rotated by the layout: logical side k of n sits at slot side (k + shift) % 3.
+template <SplitLayout layout>
 EdgeRef split_triangle(Mesh& mesh, EdgeRef e, VertexId v) {
+  constexpr unsigned shift = layout == SplitLayout::VertexFirst ? 0 : 2;
+  const auto side = [](TriangleId n, unsigned logical) { return edge_of(n, (logical + shift) % 3); };
   const TriangleId t = triangle_of(e);
-  const EdgeRef t0 = 3 * t;
+  const EdgeRef t0 = edge_of(t, 0);
   const VertexId a = mesh.corner[t0], b = mesh.corner[t0 + 1], c = mesh.corner[t0 + 2];
   const detail::EdgeSurround bc = detail::surround_of(mesh, t0 + 1);
   const detail::EdgeSurround ca = detail::surround_of(mesh, t0 + 2);
-  const TriangleId n1 = mesh.add_triangle(v, b, c);
-  const TriangleId n2 = mesh.add_triangle(v, c, a);
+  const TriangleId n1 = layout == SplitLayout::VertexFirst ? mesh.add_triangle(v, b, c) : mesh.add_triangle(b, c, v);
+  const TriangleId n2 = layout == SplitLayout::VertexFirst ? mesh.add_triangle(v, c, a) : mesh.add_triangle(c, a, v);
   detail::copy_triangle_data(mesh, t, n1);
   detail::copy_triangle_data(mesh, t, n2);
   mesh.corner[t0 + 2] = v;
-  detail::attach(mesh, 3 * n1 + 1, bc);
-  detail::attach(mesh, 3 * n2 + 1, ca);
-  detail::bond_inner(mesh, t0 + 1, 3 * n1);
-  detail::bond_inner(mesh, t0 + 2, 3 * n2 + 2);
-  detail::bond_inner(mesh, 3 * n1 + 2, 3 * n2);
+  detail::attach(mesh, side(n1, 1), bc);
+  detail::attach(mesh, side(n2, 1), ca);
+  detail::bond_inner(mesh, t0 + 1, side(n1, 0));
+  detail::bond_inner(mesh, t0 + 2, side(n2, 2));
+  detail::bond_inner(mesh, side(n1, 2), side(n2, 0));
   return t0 + 2;
 }
+
+template EdgeRef split_triangle<SplitLayout::VertexFirst>(Mesh&, EdgeRef, VertexId);
+template EdgeRef split_triangle<SplitLayout::VertexLast>(Mesh&, EdgeRef, VertexId);
 
 // e = a->b in t = (a, b, c), twin f in u = (b, a, d). Afterwards t = (a, v, c), n1 = (v, b, c),
 // u = (b, v, d), n2 = (v, a, d), with t and u keeping their sides. A subsegment on e keeps its

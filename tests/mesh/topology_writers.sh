@@ -11,25 +11,8 @@ WRITE='(\b(corner|link|subseg)\[[^]]*\][[:space:]]*=[^=])|(\.(bond|set_subsegmen
 INDEX='\b3 \* [a-z_]'
 allowed() {  # kind file -> the listed count, or 0
   sed -n "s|^$1 $2 ||p" <<'LIST' | head -n 1
-write cdt/convex_hull.cpp 5
-write cdt/edit.cpp 20
-write cdt/holes_and_regions.cpp 2
-write cdt/rebuild_mesh.cpp 5
-write cdt/recover_edge.cpp 1
-write cdt/segment_inserter.cpp 3
-write delaunay/incremental.cpp 5
-write delaunay/sweepline.cpp 2
 write refine/halves.cpp 10
-index cdt/convex_hull.cpp 1
-index cdt/edit.cpp 16
-index cdt/flood.cpp 1
-index cdt/holes_and_regions.cpp 1
-index cdt/rebuild_mesh.cpp 3
-index cdt/recover_edge.cpp 1
-index cdt/walk.cpp 6
 index delaunay/divide_and_conquer.cpp 43
-index delaunay/incremental.cpp 5
-index delaunay/sweepline.cpp 4
 index refine/halves.cpp 6
 LIST
 }

@@ -1,23 +1,6 @@
-#include "cdt/recover_edge.h"
+#include "mesh/recover_edge.h"
 
 namespace deltri {
-
-EdgeRef find_edge(const Mesh& mesh, EdgeRef from_u, VertexId v) {
-  EdgeRef e = from_u;
-  while (true) {
-    if (mesh.dest(e) == v) return e;
-    if (mesh.apex(e) == v) return lprev(e);
-    const EdgeRef n = mesh.onext(e);
-    if (n == kNone || n == from_u) break;
-    e = n;
-  }
-  for (e = from_u; mesh.link[e] != kNone;) {
-    e = lnext(mesh.link[e]);
-    if (e == from_u) break;
-    if (mesh.dest(e) == v) return e;
-  }
-  return kNone;
-}
 
 bool EdgeRecovery::crosses(EdgeRef e, VertexId u, VertexId v) {
   const Mesh& mesh = ed_.mesh;
@@ -40,7 +23,7 @@ void EdgeRecovery::remove_crossings(VertexId u, VertexId v, const std::vector<Ed
   while (!queue_.empty()) {
     const auto [a, b] = queue_.front();
     queue_.pop_front();
-    const EdgeRef e = find_edge(mesh, ed_.vertex_edge[a], b);
+    const EdgeRef e = ed_.find(a, b);
     if (!ed_.flippable(e)) {
       queue_.push_back({a, b});
       continue;
@@ -52,19 +35,16 @@ void EdgeRecovery::remove_crossings(VertexId u, VertexId v, const std::vector<Ed
 }
 
 void EdgeRecovery::restore_delaunay() {
-  Mesh& mesh = ed_.mesh;
+  const Mesh& mesh = ed_.mesh;
   stack_.clear();
   for (const TriangleId t : cavity_)
-    for (unsigned i = 0; i < 3; ++i) stack_.push_back(3 * t + i);
-  while (!stack_.empty()) {
-    const EdgeRef e = stack_.back();
-    stack_.pop_back();
+    for (unsigned i = 0; i < 3; ++i) stack_.push_back(edge_of(t, i));
+  // Flips reuse the cavity's slots, so the stamps still say which triangles are in it.
+  ed_.legalize(stack_, [&](EdgeRef e) {
     const EdgeRef f = mesh.link[e];
-    if (f == kNone || mesh.subseg[e] != kNone || !in_cavity(triangle_of(f))) continue;
-    if (!in_cavity(triangle_of(e)) || !ed_.violates_delaunay(e)) continue;
-    ed_.flip(e);
-    for (const EdgeRef outer : {e, lprev(e), f, lprev(f)}) stack_.push_back(outer);
-  }
+    if (f == kNone || mesh.subseg[e] != kNone || !in_cavity(triangle_of(f))) return false;
+    return in_cavity(triangle_of(e)) && ed_.violates_delaunay(e);
+  });
 }
 
 EdgeRef EdgeRecovery::recover(VertexId u, VertexId v, const std::vector<EdgeRef>& crossed,
@@ -83,11 +63,11 @@ EdgeRef EdgeRecovery::recover(VertexId u, VertexId v, const std::vector<EdgeRef>
         cavity_.push_back(t);
       }
   remove_crossings(u, v, crossed);
-  const EdgeRef uv = find_edge(mesh, ed_.vertex_edge[u], v);
+  const EdgeRef uv = ed_.find(u, v);
   // Constrained before the Lawson pass, so it is never flipped away.
   if (uv != kNone) mesh.set_subsegment(uv, id);
   restore_delaunay();
-  return uv == kNone ? kNone : find_edge(mesh, ed_.vertex_edge[u], v);
+  return uv == kNone ? kNone : ed_.find(u, v);
 }
 
 }  // namespace deltri

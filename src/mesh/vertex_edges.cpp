@@ -1,4 +1,4 @@
-#include "refine/edge_finder.h"
+#include "mesh/vertex_edges.h"
 
 #include <deque>
 
@@ -43,18 +43,18 @@ EdgeRef search_near(const Mesh& mesh, TriangleId start, VertexId v) {
 
 }  // namespace
 
-EdgeFinder::EdgeFinder(const Mesh& mesh) : out_(mesh.vertex_count(), kNone) {
+VertexEdges::VertexEdges(const Mesh& mesh) : out_(mesh.vertex_count(), kNone) {
   for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
     if (mesh.corner[e] != kNone) out_[mesh.corner[e]] = e;
 }
 
-void EdgeFinder::note(const Mesh& mesh, EdgeRef e) {
+void VertexEdges::note(const Mesh& mesh, EdgeRef e) {
   const VertexId v = mesh.org(e);
   if (v >= out_.size()) out_.resize(v + 1, kNone);
   out_[v] = e;
 }
 
-void EdgeFinder::note_star(const Mesh& mesh, EdgeRef out) {
+void VertexEdges::note_star(const Mesh& mesh, EdgeRef out) {
   for_each_around(mesh, out, [&](EdgeRef e) {
     note(mesh, e);
     note(mesh, lnext(e));
@@ -62,7 +62,7 @@ void EdgeFinder::note_star(const Mesh& mesh, EdgeRef out) {
   });
 }
 
-EdgeRef EdgeFinder::leaving(const Mesh& mesh, VertexId v) {
+EdgeRef VertexEdges::leaving(const Mesh& mesh, VertexId v) {
   if (v >= out_.size()) out_.resize(v + 1, kNone);
   const EdgeRef hint = out_[v];
   if (leaves(mesh, hint, v)) return hint;
@@ -74,7 +74,7 @@ EdgeRef EdgeFinder::leaving(const Mesh& mesh, VertexId v) {
   return found;
 }
 
-EdgeRef EdgeFinder::find(const Mesh& mesh, VertexId a, VertexId b) {
+EdgeRef VertexEdges::find(const Mesh& mesh, VertexId a, VertexId b) {
   const EdgeRef out = leaving(mesh, a);
   if (out == kNone) return kNone;
   EdgeRef found = kNone;

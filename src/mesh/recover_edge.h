@@ -8,6 +8,9 @@
 // locally Delaunay. Triangles outside the cavity stay constrained Delaunay when a constraint is
 // added, so the result is the constrained Delaunay triangulation. Flips cope with cavities that
 // touch themselves at a vertex, which recursive polygon retriangulation handles only with care.
+//
+// A kernel operation (it flips and attaches a subsegment): the constrained Delaunay stage calls it
+// through SegmentInserter. The Lawson pass is the kernel's one routine, confined to the cavity.
 #pragma once
 
 #include <cstdint>
@@ -15,13 +18,13 @@
 #include <utility>
 #include <vector>
 
-#include "cdt/edit.h"
+#include "mesh/constrained_editor.h"
 
 namespace deltri {
 
 class EdgeRecovery {
  public:
-  explicit EdgeRecovery(CdtEditor& editor) : ed_(editor) {}
+  explicit EdgeRecovery(ConstrainedEditor& editor) : ed_(editor) {}
 
   // `crossed` lists every edge crossing the open segment u-v (none carrying a subsegment, no
   // vertex on the open segment). Makes u-v an edge carrying subsegment `id` and returns it (either
@@ -34,15 +37,12 @@ class EdgeRecovery {
   void restore_delaunay();
   bool in_cavity(TriangleId t) const { return t < stamp_.size() && stamp_[t] == round_; }
 
-  CdtEditor& ed_;
+  ConstrainedEditor& ed_;
   std::vector<std::uint32_t> stamp_;  // stamp_[t] == round_: t is in the current cavity
   std::uint32_t round_ = 0;
   std::vector<TriangleId> cavity_;
   std::deque<std::pair<VertexId, VertexId>> queue_;
   std::vector<EdgeRef> stack_;
 };
-
-// An edge joining org(from_u) and v, or kNone.
-EdgeRef find_edge(const Mesh& mesh, EdgeRef from_u, VertexId v);
 
 }  // namespace deltri

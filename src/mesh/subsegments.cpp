@@ -1,0 +1,79 @@
+#include "mesh/subsegments.h"
+
+#include <vector>
+
+namespace deltri {
+
+SubsegmentId constrain(Mesh& mesh, EdgeRef e, const Subsegment& s) {
+  mesh.subsegments.push_back(s);
+  const SubsegmentId id = static_cast<SubsegmentId>(mesh.subsegments.size() - 1);
+  mesh.set_subsegment(e, id);
+  return id;
+}
+
+Subsegment unconstrain(Mesh& mesh, EdgeRef e) {
+  const SubsegmentId id = mesh.subseg[e];
+  const Subsegment old = mesh.subsegments[id];
+  mesh.subsegments[id].a = kNone;
+  mesh.set_subsegment(e, kNone);
+  return old;
+}
+
+std::size_t constrain_boundary(Mesh& mesh, int marker) {
+  mesh.enable_subsegments();
+  std::size_t added = 0;
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+    if (mesh.corner[e] == kNone || mesh.link[e] != kNone || mesh.subseg[e] != kNone) continue;
+    constrain(mesh, e, {mesh.org(e), mesh.dest(e), marker, kNone});
+    ++added;
+  }
+  return added;
+}
+
+void drop_dead_subsegments(Mesh& mesh) {
+  std::vector<SubsegmentId> renumber(mesh.subsegments.size(), kNone);
+  SubsegmentId next = 0;
+  for (SubsegmentId s = 0; s < mesh.subsegments.size(); ++s) {
+    if (mesh.subsegments[s].a == kNone) continue;
+    renumber[s] = next;
+    mesh.subsegments[next++] = mesh.subsegments[s];
+  }
+  if (next == mesh.subsegments.size()) return;
+  mesh.subsegments.resize(next);
+  for (SubsegmentId& s : mesh.subseg)
+    if (s != kNone) s = renumber[s];
+}
+
+std::size_t drop_unused_subsegments(Mesh& mesh) {
+  if (!mesh.has_subsegments()) return 0;
+  std::vector<char> used(mesh.subsegments.size(), 0);
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+    if (mesh.corner[e] != kNone && mesh.subseg[e] != kNone) used[mesh.subseg[e]] = 1;
+  std::size_t dropped = 0;
+  for (SubsegmentId s = 0; s < used.size(); ++s)
+    if (!used[s] && mesh.subsegments[s].a != kNone) {
+      mesh.subsegments[s].a = kNone;
+      ++dropped;
+    }
+  // kill_triangle leaves subseg entries in dead slots; clear them before renumbering.
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+    if (mesh.corner[e] == kNone) mesh.subseg[e] = kNone;
+  drop_dead_subsegments(mesh);
+  return dropped;
+}
+
+PeeledEdges peel_boundary_triangle(Mesh& mesh, EdgeRef e) {
+  const VertexId a = mesh.org(e), b = mesh.dest(e), v = mesh.apex(e);
+  const PeeledEdges out{mesh.link[lprev(e)], mesh.link[lnext(e)]};  // a -> v and v -> b beyond
+  const SubsegmentId id = mesh.subseg[e];
+  const Subsegment old = mesh.subsegments[id];
+  const TriangleId t = triangle_of(e);
+  mesh.kill_triangle(t);
+  for (unsigned i = 0; i < 3; ++i) mesh.subseg[edge_of(t, i)] = kNone;
+  mesh.subsegments[id] = {a, v, old.marker, old.segment};
+  mesh.set_subsegment(out.av, id);
+  constrain(mesh, out.vb, {v, b, old.marker, old.segment});
+  return out;
+}
+
+}  // namespace deltri
