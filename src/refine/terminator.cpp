@@ -146,6 +146,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       rules_{opt.angle, opt.size, opt.area_field, opt.size_test},
       rule_(rule_for(opt)),
       off_center_factor_(opt.off_centers ? opt.angle.off_center_factor() : 0.0),
+      kept_bound_sin2_(std::pow(std::sin(std::max(opt.angle.degrees(), kLeastLensDeg) * std::numbers::pi / 180.0), 2)),
       guard_floor_(start.guard_floor),
       steiner_cap_(start.steiner_cap),
       cap_kind_(start.cap_kind),
@@ -343,10 +344,9 @@ void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
   const Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, splittable);  // Fig. 38 l.14
   if (probe.status == ProbeStatus::Unusable) return;
-  if (probe.status == ProbeStatus::Clear && encroaches_kept_boundary(c, t)) {
+  if (probe.status == ProbeStatus::Clear && refused_by_kept_boundary(c, t)) {
     // Fig. 38 l.18 with a subsegment that -Y/-YY keeps whole: c is rejected and, as nothing may be
-    // split, t stays as it is (counted by the closing survey). Inserting c anyway would make a
-    // triangle against the subsegment no better than t.
+    // split, t stays as it is (counted by the closing survey).
     ++report_.kept_boundary_refusals;
     return;
   }

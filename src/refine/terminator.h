@@ -115,9 +115,11 @@ class Terminator {
   EdgeRef current_edge(const EncroachedSubsegment& entry);
   bool is_splittable(EdgeRef e) const;  // not kept by -Y / -YY, not a seam edge, not locked
   bool kept_by_switch(EdgeRef e) const;  // -Y / -YY keep the subsegment on e whole
-  // Whether c encroaches upon a subsegment on the boundary of the cavity just probed that -Y / -YY
-  // keep whole, making a triangle with it no better than t.
-  bool encroaches_kept_boundary(const Point& c, TriangleId t);
+  // -Y / -YY: whether c, for bad triangle t, is refused for the subsegments kept whole on the
+  // boundary of the cavity just probed (subsegment_splits.cpp has the three rules).
+  bool refused_by_kept_boundary(const Point& c, TriangleId t);
+  double smallest_made_sine2(const Point& c);  // over the triangles c makes with the cavity's boundary
+  double smallest_replaced_sine2();            // over the cavity's triangles
   bool budget_left();                   // -S
   VertexId add_free_vertex(const Point& p, EdgeRef container);
   VertexId add_segment_vertex(const Point& p, EdgeRef s);
@@ -143,6 +145,7 @@ class Terminator {
   QualityRules rules_;
   EncroachRule rule_;
   double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
+  double kept_bound_sin2_ = 0.0;    // -Y/-YY: sin^2 of the angle bound, of the least lens without -q
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;
