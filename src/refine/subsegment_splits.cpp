@@ -211,10 +211,17 @@ bool Terminator::kept_by_switch(EdgeRef e) const {
   return opt_.no_steiner_on_segments >= 2 || (opt_.no_steiner_on_segments == 1 && mesh_.link[e] == kNone);
 }
 
-// -Y/-YY: may c, whose probe was just made, be inserted? The triangle on a kept subsegment s
-// changes only when a new point lands in its circumcircle, that is when s is on the boundary of
-// the point's cavity (CavityMarks), and the point then becomes its apex; nothing can mend it later
-// but another such apex. So c is refused when, for a kept s on the cavity's boundary,
+// -Y/-YY: may c, whose probe was just made, be inserted? c replaces the triangles of its cavity
+// (CavityMarks) by those it makes with the cavity's boundary. It is refused when
+//  (0) it would make a triangle below the floor, min(angle bound, smallest angle of the mesh the
+//      Terminator started from), and worse than every triangle it replaces. Then no insertion
+//      lowers the smallest angle of the mesh below the floor; with -YY, where nothing else changes
+//      the mesh, the result has no angle below it (docs/refinement.md, "-Y, -YY": the initial
+//      constrained Delaunay triangulation shows the fixed boundary allows that much).
+// The triangle on a kept subsegment s changes only when a new point lands in its circumcircle,
+// that is when s is on the boundary of the point's cavity, and the point then becomes its apex;
+// nothing can mend it later but another such apex. So c is also refused when, for a kept s on the
+// cavity's boundary,
 //  (1) c encroaches upon s (lies in its lens): the rule of Fig. 38 l.18 with no split allowed,
 //      as in Triangle; or
 //  (2) c would make the triangle on s worse than it is and below the angle bound: refusing only
@@ -230,6 +237,9 @@ bool Terminator::kept_by_switch(EdgeRef e) const {
 // 16.8 degrees instead of 20). docs/refinement.md, "-Y", has the measurements.
 bool Terminator::refused_by_kept_boundary(const Point& c, TriangleId t) {
   if (opt_.no_steiner_on_segments == 0) return false;
+  const double made = smallest_made_sine2(c);
+  const double replaced = smallest_replaced_sine2();
+  if (made < floor_sin2_ && made < replaced) return true;  // (0)
   bool touches = false;
   for (EdgeRef e : marks_.boundary_subsegments()) {
     if (!kept_by_switch(e)) continue;
@@ -241,7 +251,7 @@ bool Terminator::refused_by_kept_boundary(const Point& c, TriangleId t) {
     if (made < kept_bound_sin2_ && made < smallest_angle_sine2(a, b, mesh_.point(mesh_.apex(e)))) return true;  // (2)
   }
   if (!touches || assess(t).skinny) return false;
-  return smallest_made_sine2(c) < std::min(kept_bound_sin2_, smallest_replaced_sine2());  // (3)
+  return made < std::min(kept_bound_sin2_, replaced);  // (3)
 }
 
 // The sin^2 of the smallest angle among the triangles that c makes with the cavity's boundary.

@@ -45,6 +45,19 @@ double guard_floor_of(const Mesh& mesh, const RefineOptions& opt) {
   return guard_floor(smallest * scale, size_floor_of(mesh, opt));
 }
 
+// sin^2 of the smallest angle of the live triangles, 1 for none.
+double smallest_sine2(const Mesh& mesh) {
+  double smallest = 1.0;
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    const Point& a = mesh.point(mesh.corner[3 * t]);
+    const Point& b = mesh.point(mesh.corner[3 * t + 1]);
+    const Point& c = mesh.point(mesh.corner[3 * t + 2]);
+    smallest = std::min(smallest, smallest_angle_sine2(a, b, c));
+  }
+  return smallest;
+}
+
 // The bounding box of the vertices.
 Box extent_of(const Mesh& mesh) {
   Box box;
@@ -159,6 +172,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
   report_.guard_length = guard_floor_;
+  if (opt.no_steiner_on_segments != 0) floor_sin2_ = std::min(kept_bound_sin2_, smallest_sine2(mesh));
   const bool size_bounds = opt.size.any() || opt.size_test;
   bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
   if (bottom_possible_) {

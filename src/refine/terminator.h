@@ -115,8 +115,8 @@ class Terminator {
   EdgeRef current_edge(const EncroachedSubsegment& entry);
   bool is_splittable(EdgeRef e) const;  // not kept by -Y / -YY, not a seam edge, not locked
   bool kept_by_switch(EdgeRef e) const;  // -Y / -YY keep the subsegment on e whole
-  // -Y / -YY: whether c, for bad triangle t, is refused for the subsegments kept whole on the
-  // boundary of the cavity just probed (subsegment_splits.cpp has the three rules).
+  // -Y / -YY: whether c, for bad triangle t, is refused: it would lower the smallest angle below
+  // floor_sin2_, or spoil a triangle next to a subsegment kept whole (subsegment_splits.cpp).
   bool refused_by_kept_boundary(const Point& c, TriangleId t);
   double smallest_made_sine2(const Point& c);  // over the triangles c makes with the cavity's boundary
   double smallest_replaced_sine2();            // over the cavity's triangles
@@ -146,6 +146,7 @@ class Terminator {
   EncroachRule rule_;
   double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
   double kept_bound_sin2_ = 0.0;    // -Y/-YY: sin^2 of the angle bound, of the least lens without -q
+  double floor_sin2_ = 0.0;         // -Y/-YY: sin^2 of min(that angle, the initial mesh's smallest)
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;
