@@ -10,9 +10,9 @@ fixed boundary allows: a -Y mesh with a smaller angle is worse than the input's 
 With -YY deltri guarantees the floor (docs/refinement.md, "-Y, -YY"). Angles are computed here from
 the written .node/.ele in doubles; nothing deltri reports about quality is used.
 
-Also fails when the run fails. Exit 0 when the check passes, 1 otherwise. On today's main before
+Also fails when the run fails. Exit 0 when the check passes, 1 otherwise. On main before
 issue 16 (9e54440) debug2.poly -pYYq33 failed: 0.0111 degrees against a floor of 0.0180 (Triangle
-1.6: 0.0123).
+1.6: 0.0123), and water-huge.poly -pYYq33: 0.0307 against 0.1282.
 """
 import math, os, re, shutil, subprocess, sys, tempfile
 
