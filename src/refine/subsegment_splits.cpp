@@ -265,8 +265,8 @@ double Terminator::smallest_made_sine2(const Point& c) {
 // The same for the triangles of the cavity: those with a boundary edge and the inner ones.
 double Terminator::smallest_replaced_sine2() {
   const auto of = [&](TriangleId u) {
-    return smallest_angle_sine2(mesh_.point(mesh_.corner[3 * u]), mesh_.point(mesh_.corner[3 * u + 1]),
-                                mesh_.point(mesh_.corner[3 * u + 2]));
+    const EdgeRef e = edge_of(u, 0);
+    return smallest_angle_sine2(mesh_.point(mesh_.org(e)), mesh_.point(mesh_.dest(e)), mesh_.point(mesh_.apex(e)));
   };
   double smallest = 1.0;
   for (EdgeRef e : marks_.boundary()) smallest = std::min(smallest, of(triangle_of(e)));

@@ -50,10 +50,9 @@ double smallest_sine2(const Mesh& mesh) {
   double smallest = 1.0;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    const Point& a = mesh.point(mesh.corner[3 * t]);
-    const Point& b = mesh.point(mesh.corner[3 * t + 1]);
-    const Point& c = mesh.point(mesh.corner[3 * t + 2]);
-    smallest = std::min(smallest, smallest_angle_sine2(a, b, c));
+    const EdgeRef e = edge_of(t, 0);
+    smallest = std::min(smallest, smallest_angle_sine2(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e)),
+                                                       mesh.point(mesh.apex(e))));
   }
   return smallest;
 }
