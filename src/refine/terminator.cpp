@@ -45,6 +45,17 @@ double guard_floor_of(const Mesh& mesh, const RefineOptions& opt) {
   return guard_floor(smallest * scale, size_floor_of(mesh, opt));
 }
 
+// sin^2 of the smallest angle of the live triangles, 1 for none.
+double smallest_sine2(const Mesh& mesh) {
+  double smallest = 1.0;
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    const auto [a, b, c] = mesh.corner_points(t);
+    smallest = std::min(smallest, smallest_angle_sine2(a, b, c));
+  }
+  return smallest;
+}
+
 // The bounding box of the vertices.
 Box extent_of(const Mesh& mesh) {
   Box box;
@@ -144,6 +155,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       rules_{opt.angle, opt.size, opt.area_field, opt.size_test},
       rule_(rule_for(opt)),
       off_center_factor_(opt.off_centers ? opt.angle.off_center_factor() : 0.0),
+      kept_bound_sin2_(std::pow(std::sin(std::max(opt.angle.degrees(), kLeastLensDeg) * std::numbers::pi / 180.0), 2)),
       guard_floor_(start.guard_floor),
       steiner_cap_(start.steiner_cap),
       cap_kind_(start.cap_kind),
@@ -156,6 +168,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
   report_.guard_length = guard_floor_;
+  if (opt.no_steiner_on_segments != 0) floor_sin2_ = std::min(kept_bound_sin2_, smallest_sine2(mesh));
   const bool size_bounds = opt.size.any() || opt.size_test;
   bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
   if (bottom_possible_) {

@@ -113,9 +113,11 @@ class Terminator {
   // chew_pending: free vertices in s's diametral circle do not count (Chew's step deletes them).
   bool split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pending);
   bool uses_lenses() const;
-  // Whether c encroaches upon a subsegment on the boundary of the cavity just probed that -Y / -YY
-  // keep whole, making a triangle with it no better than t.
-  bool encroaches_kept_boundary(const Point& c, TriangleId t);
+  // -Y / -YY: whether c, for bad triangle t, is refused: it would lower the smallest angle below
+  // floor_sin2_, or spoil a triangle next to a subsegment kept whole.
+  bool refused_by_kept_boundary(const Point& c, TriangleId t);
+  double smallest_made_sine2(const Point& c);  // over the triangles c makes with the cavity's boundary
+  double smallest_replaced_sine2();            // over the cavity's triangles
   bool budget_left();                   // the Steiner cap and -S
   double floor_at(const Point& p) const;  // the guard's edge floor where p lies
   double floor_for(const Assessment& a, const Point& p) const;  // the floor for splitting that triangle
@@ -170,6 +172,8 @@ class Terminator {
   QualityRules rules_;
   EncroachRule rule_;
   double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
+  double kept_bound_sin2_ = 0.0;    // -Y/-YY: sin^2 of the angle bound, of the least lens without -q
+  double floor_sin2_ = 0.0;         // -Y/-YY: sin^2 of min(that angle, the initial mesh's smallest)
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;

@@ -37,8 +37,9 @@ Outcome Terminator::split_bad_triangle(const QueuedTriangle& entry) {
 
 // l.15-17: E is empty (no splittable subsegment encroached upon).
 Outcome Terminator::insert_point(TriangleId t, const Assessment& a, const Candidate& c, const Probe& probe) {
-  // l.18 with a subsegment that -Y/-YY keep whole: nothing may be split, so t stays as it is.
-  if (encroaches_kept_boundary(c.point, t)) return Outcome::KeptBoundary;
+  // l.18 with a subsegment that -Y/-YY keep whole: nothing may be split, so t stays as it is
+  // (counted by the closing survey).
+  if (refused_by_kept_boundary(c.point, t)) return Outcome::KeptBoundary;
   if (const auto refusal = guard_insertion(a, c, probe.insertion_radius)) return *refusal;
   const VertexId v = add_free_vertex(c.point, probe.container);
   // The probe's cavity search left exactly the triangles c destroys marked.
