@@ -84,7 +84,7 @@ std::uint32_t vertices_in_triangles(const Mesh& m) {
 
 TEST(halves_apply_only_where_they_cannot_disagree) {
   const Mesh m = scattered_square_with_chain();
-  CHECK(m.live_triangles() >= kHalvesMinTriangles);
+  CHECK(part_depth(m, bounds_with(2)) == 1);  // 28,000 triangles: two parts of 10,000 or more
   CHECK(halves_apply(m, bounds_with(2)));
   CHECK(halves_apply(m, bounds_with(1)));  // the thread count does not decide
   CHECK(!halves_apply(m, bounds_with(2, false)));
