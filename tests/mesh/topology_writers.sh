@@ -19,7 +19,6 @@ write cdt/recover_edge.cpp 1
 write cdt/segment_inserter.cpp 3
 write delaunay/incremental.cpp 5
 write delaunay/sweepline.cpp 2
-write refine/halves.cpp 10
 index api/c_surface.cpp 1
 index api/output_arrays.cpp 5
 index api/surface_library.cpp 1
@@ -55,7 +54,6 @@ index refine/bad_triangles.cpp 6
 index refine/bottom_scale.cpp 2
 index refine/candidate_probe.cpp 8
 index refine/edge_finder.cpp 2
-index refine/halves.cpp 6
 index refine/termination_guard.cpp 4
 index refine/terminator.cpp 12
 index surface/check_surface.cpp 3
