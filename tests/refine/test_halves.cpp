@@ -234,3 +234,45 @@ TEST(halves_keep_random_segments_and_the_constrained_delaunay_property) {
   }
 }
 
+
+// A domain that starts with two triangles but whose area bound asks for many is refined coarsely
+// first (16 times the area), then in parts (halves.h, coarse_area_for_parts): the unit square at
+// -q30a1/20,000, with the first cut lowered to 1,000 triangles so that it is cut. The result meets
+// the bounds everywhere, is constrained Delaunay, and is the same on one thread and on three.
+TEST(a_square_of_two_triangles_is_refined_coarsely_then_in_parts) {
+  RefineOptions opt = quality(30);
+  opt.size.max_area = 1.0 / 20000;
+  opt.part_min_triangles = 1000;
+  const Mesh input = unit_square();
+  CHECK(!halves_apply(input, opt));  // two triangles: nothing to cut yet
+  CHECK_EQ(coarse_area_for_parts(input, opt), 16.0 / 20000);
+  RefineOptions whole_only = opt;
+  whole_only.in_halves = false;
+  CHECK_EQ(coarse_area_for_parts(input, whole_only), 0.0);
+  RefineOptions few = opt;
+  few.size.max_area = 1.0 / 10000;  // asks for 10,000 triangles: under 16 times the first cut
+  CHECK_EQ(coarse_area_for_parts(input, few), 0.0);
+  Mesh one = input, three = input;
+  Predicates p1, p3;
+  opt.threads = 1;
+  const RefineReport r = refine_mesh(one, p1, opt);
+  opt.threads = 3;
+  refine_mesh(three, p3, opt);
+  CHECK(Snapshot(one) == Snapshot(three));
+  CHECK(r.in_halves);
+  CHECK(r.parts >= 2);
+  const Facts f = facts_of(one);
+  std::printf("  %u parts: %u triangles, min angle %.4f, max area %.3g\n", r.parts, one.live_triangles(), f.min_angle,
+              f.max_area);
+  CHECK(f.all_ccw);
+  CHECK(f.links_ok);
+  CHECK(f.boundary_protected);
+  CHECK_EQ(f.non_delaunay_edges, std::size_t{0});
+  CHECK_NEAR(f.total_area, 1.0, 1e-12);
+  CHECK(f.min_angle >= 30.0 - 1e-9);
+  CHECK(f.max_area <= 1.0 / 20000);
+  CHECK_EQ(r.bad_triangles_left, std::uint64_t{0});
+  // Every Steiner point of both stages is counted once.
+  CHECK_EQ(static_cast<std::uint64_t>(vertices_in_triangles(one)),
+           4 + r.interior_steiner + r.segment_steiner - r.vertices_deleted);
+}
