@@ -1,8 +1,6 @@
 #include "refine/halves.h"
 
 #include <algorithm>
-#include <cmath>
-#include <stdexcept>
 #include <utility>
 #include <vector>
 
