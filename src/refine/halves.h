@@ -21,9 +21,6 @@
 // and whenever; with RefineOptions::threads = N the two sides of a cut run at once while threads
 // are left (the threads shared out between them), else one after the other.
 //
-// A domain with too few triangles to cut but a uniform area bound that asks for many is refined
-// coarsely first (coarse_area_for_parts, refine.cpp), then in parts.
-//
 // Used only where it pays and where the parts cannot disagree (halves_apply): RefineOptions::
 // in_halves (the default), a large initial mesh, and none of the options that make refinement depend on more than the
 // triangles it changes (-S, -Y, -D, declined cluster splits, angle bounds that can cascade, edges
