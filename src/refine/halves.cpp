@@ -216,31 +216,15 @@ int part_depth(const Mesh& mesh, const RefineOptions& opt) {
   return depth;
 }
 
-namespace {
-
-// The options under which parts cannot disagree about anything but the triangles near the seams.
-bool parts_allowed(const Mesh& mesh, const RefineOptions& opt) {
+bool halves_apply(const Mesh& mesh, const RefineOptions& opt) {
   if (!opt.in_halves || !mesh.has_subsegments()) return false;
   const bool bounded = opt.angle.asked() || opt.size.any();
   if (!bounded || opt.size_test || opt.max_steiner >= 0 || opt.no_steiner_on_segments != 0 || opt.conforming_delaunay ||
       opt.decline_cluster_splits || opt.queue_order != QueueOrder::Ratio)
     return false;
-  return !opt.angle.cascades();
-}
-
-}  // namespace
-
-bool halves_apply(const Mesh& mesh, const RefineOptions& opt) {
-  if (!parts_allowed(mesh, opt) || part_depth(mesh, opt) < 1) return false;
+  if (opt.angle.cascades()) return false;
+  if (part_depth(mesh, opt) < 1) return false;
   return count_hopeless_edges(mesh, opt.angle.sin2()) == 0;
-}
-
-double coarse_area_for_parts(const Mesh& mesh, const RefineOptions& opt) {
-  if (!parts_allowed(mesh, opt) || part_depth(mesh, opt) >= 1) return 0.0;
-  if (!(opt.size.max_area > 0.0) || opt.size.triangle_bounds || opt.size.max_edge_length > 0.0) return 0.0;
-  const double coarse = kCoarseAreaFactor * opt.size.max_area;
-  const double least = static_cast<double>(std::max<std::uint32_t>(2, opt.part_min_triangles));
-  return triangles_wanted(mesh, opt.size) >= kCoarseAreaFactor * least ? coarse : 0.0;
 }
 
 RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {

@@ -44,14 +44,6 @@ int part_depth(const Mesh& mesh, const RefineOptions& opt);
 
 bool halves_apply(const Mesh& mesh, const RefineOptions& opt);
 
-// A domain that starts with too few triangles to cut (the unit square: 2) but whose uniform area
-// bound (-a<number> alone) asks for kCoarseAreaFactor times part_min_triangles or more is first
-// refined whole to kCoarseAreaFactor times that bound, so that it has about a sixteenth of its final
-// triangles when it is cut: the area bound of that coarse stage, or 0 where it does not apply.
-// A rule of the input and the switches, as the parts' is.
-inline constexpr double kCoarseAreaFactor = 16.0;
-double coarse_area_for_parts(const Mesh& mesh, const RefineOptions& opt);
-
 RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions& opt);
 
 }  // namespace deltri

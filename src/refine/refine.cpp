@@ -30,23 +30,10 @@ void refuse_impossible_size_bounds(const Mesh& mesh, const RefineOptions& opt) {
   throw MemoryError(text);
 }
 
-RefineReport refine_whole_or_in_parts(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
+RefineReport refine_within_reach(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
   if (halves_apply(mesh, opt)) return refine_in_halves(mesh, pred, opt);
   Terminator terminator(mesh, pred, opt);
   return terminator.run();
-}
-
-// A mesh too small to cut whose area bound asks for many triangles is refined to a coarse area
-// bound first (halves.h, coarse_area_for_parts), then in parts; the report counts both stages.
-RefineReport refine_within_reach(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
-  const double coarse_area = coarse_area_for_parts(mesh, opt);
-  if (!(coarse_area > 0.0)) return refine_whole_or_in_parts(mesh, pred, opt);
-  RefineOptions coarse = opt;
-  coarse.size.max_area = coarse_area;
-  const RefineReport first = Terminator(mesh, pred, coarse).run();
-  RefineReport report = refine_whole_or_in_parts(mesh, pred, opt);
-  add_counts(report, first);
-  return report;
 }
 
 std::uint64_t steiner_of(const RefineReport& r) { return r.interior_steiner + r.segment_steiner; }
