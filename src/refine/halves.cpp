@@ -212,7 +212,7 @@ int part_depth(const Mesh& mesh, const RefineOptions& opt) {
   const std::uint64_t live = mesh.live_triangles();
   std::uint64_t least = std::max<std::uint64_t>(2, opt.part_min_triangles);
   int depth = 0;
-  for (; depth < kMaxPartDepth && live >= least; least *= 4) ++depth;
+  for (; depth < kMaxPartDepth && live >= least; least *= 8) ++depth;
   return depth;
 }
 

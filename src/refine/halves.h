@@ -34,7 +34,7 @@
 namespace deltri {
 
 // The parts' rule, a rule of the input and the switches only (never of the threads): 2^d parts,
-// d = 1 + floor(log4(live / 20,000)) for a mesh that starts with at least 20,000 live triangles
+// d = 1 + floor(log8(live / 20,000)) for a mesh that starts with at least 20,000 live triangles
 // (RefineOptions::part_min_triangles), at most kMaxPartDepth, else 0 (refined whole: the cut, the
 // join and the seam cost about as much as a few thousand triangles' refinement). The parts grow
 // with the square root of the mesh rather than with it because each part still carries a copy of

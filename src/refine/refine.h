@@ -51,7 +51,7 @@ struct RefineOptions {
   // or two: a rule of the input and this switch, so the mesh is the same for every thread count.
   bool in_halves = true;
   // The rule for the number of parts (refine/halves.h, part_depth): a mesh with this many live
-  // triangles is cut once, one with 4 times as many twice (4 parts), 16 times three times, ...
+  // triangles is cut once, one with 8 times as many twice (4 parts), 64 times three times, ...
   // Tests lower it to cut small meshes deeply; the program keeps the default.
   std::uint32_t part_min_triangles = 20000;
   // The memory refinement may use, in bytes (0: no limit): size bounds that need more are refused

@@ -1,10 +1,10 @@
 #!/bin/sh
 # Refinement in parts (refine/halves.h) gives the same files for every thread count (issue 24):
-# the 45x45 holes at -pq30 (133,652 initial triangles: 4 parts) with --threads=1, 2, 3, 4, 8 and 16
+# the 50x50 holes at -pq30 (165,002 initial triangles: 4 parts) with --threads=1, 2, 3, 4, 8 and 16
 # (oversubscribed on a small machine, which is fine), byte for byte, the N=1 mesh checked by -C and
 # by the independent checker of the end-to-end tests, and -V saying that it was cut into 4 parts.
 # usage: parts_threads.sh DELTRI BENCH_GEN MESH_VERIFY [HOLES]
-deltri=$1 gen=$2 verify=$3 holes=${4:-45}
+deltri=$1 gen=$2 verify=$3 holes=${4:-50}
 work=$(mktemp -d "${TMPDIR:-/tmp}/deltri-parts.XXXXXX") || exit 2
 trap 'rm -rf "$work"' EXIT
 fail() { echo "parts_threads: $*"; exit 1; }

@@ -44,7 +44,7 @@ Mesh scattered_square_with_chain() {
 }
 
 // part_min: RefineOptions::part_min_triangles; 20,000 (the program's) cuts the test meshes once,
-// 1,000 three times (8 parts).
+// 300 three times (8 parts).
 RefineOptions bounds_with(int threads, bool in_halves = true, std::uint32_t part_min = 20000) {
   RefineOptions opt = quality(30);
   opt.size.triangle_bounds = true;
@@ -87,8 +87,8 @@ std::uint32_t vertices_in_triangles(const Mesh& m) {
 
 TEST(halves_apply_only_where_they_cannot_disagree) {
   const Mesh m = scattered_square_with_chain();
-  CHECK_EQ(part_depth(m, bounds_with(2)), 1);  // 28,000 triangles: 20,000 or more, under 80,000
-  CHECK_EQ(part_depth(m, bounds_with(2, true, 1000)), 3);  // 16,000 or more, under 64,000
+  CHECK_EQ(part_depth(m, bounds_with(2)), 1);  // 28,000 triangles: 20,000 or more, under 160,000
+  CHECK_EQ(part_depth(m, bounds_with(2, true, 300)), 3);  // 19,200 or more, under 153,600
   CHECK(halves_apply(m, bounds_with(2)));
   CHECK(halves_apply(m, bounds_with(1)));  // the thread count does not decide
   CHECK(!halves_apply(m, bounds_with(2, false)));
@@ -109,13 +109,13 @@ TEST(halves_apply_only_where_they_cannot_disagree) {
 
 // Two parts and eight: every seam's triangles and subsegments meet the bounds too.
 TEST(halves_meet_the_bounds_and_keep_what_triangles_carry) {
-  for (std::uint32_t part_min : {20000u, 1000u}) {
+  for (std::uint32_t part_min : {20000u, 300u}) {
   Mesh m = scattered_square_with_chain();
   const std::uint32_t input_vertices = m.vertex_count();
   Predicates pred;
   const RefineReport r = refine_mesh(m, pred, bounds_with(2, true, part_min));
   const Facts f = facts_of(m);
-  CHECK_EQ(r.parts, part_min == 1000 ? 8u : 2u);
+  CHECK_EQ(r.parts, part_min == 300 ? 8u : 2u);
   std::printf("  %u parts: %u triangles, min angle %.4f, %llu + %llu Steiner, %llu deleted\n", r.parts, m.live_triangles(),
               f.min_angle, static_cast<unsigned long long>(r.interior_steiner),
               static_cast<unsigned long long>(r.segment_steiner), static_cast<unsigned long long>(r.vertices_deleted));
@@ -167,7 +167,7 @@ TEST(halves_are_deterministic_and_close_to_the_whole) {
 // the other, more run them at once (3: one side of the first cut gets two, the other one; 8 with
 // 8 parts: each its own). Two parts and eight.
 TEST(halves_give_the_same_mesh_on_one_to_eight_threads) {
-  for (std::uint32_t part_min : {20000u, 1000u}) {
+  for (std::uint32_t part_min : {20000u, 300u}) {
     Mesh one = scattered_square_with_chain();
     const Mesh input = one;
     Predicates p1;
@@ -210,7 +210,7 @@ TEST(halves_keep_random_segments_and_the_constrained_delaunay_property) {
     }
     RefineOptions opt = quality(28);
     opt.threads = 2;
-    if (seed >= 3) opt.part_min_triangles = 1500;  // 8 parts: seams across seams
+    if (seed >= 3) opt.part_min_triangles = 300;  // 8 parts: seams across seams
     REQUIRE(halves_apply(m, opt));
     Predicates pred;
     const RefineReport r = refine_mesh(m, pred, opt);
