@@ -48,7 +48,9 @@ api::Facets facets_of(const deltri_facets& in) {
       corner += static_cast<std::size_t>(sizes[polygon]);
     }
     const std::size_t h = holes_per_facet.empty() ? 0 : static_cast<std::size_t>(holes_per_facet[k]);
-    facet.holes.assign(holes.begin() + static_cast<std::ptrdiff_t>(3 * hole), holes.begin() + static_cast<std::ptrdiff_t>(3 * (hole + h)));
+    constexpr std::size_t kXyz = 3;  // coordinates per hole point
+    facet.holes.assign(holes.begin() + static_cast<std::ptrdiff_t>(kXyz * hole),
+                       holes.begin() + static_cast<std::ptrdiff_t>(kXyz * (hole + h)));
     hole += h;
     facet.marker = markers.empty() ? 0 : markers[k];
     f.facets.push_back(std::move(facet));

@@ -37,14 +37,14 @@ void fill_triangles(api::Mesh& out, const PipelineResult& result, const VertexNu
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     if (!sw.no_ele) {
-      for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) out.triangles.push_back(as_int(number(mesh.corner[e])));
+      for (EdgeRef e : edges_of(t)) out.triangles.push_back(as_int(number(mesh.corner[e])));
       if (mid)
-        for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) out.triangles.push_back(as_int(number((*mid)[e])));
+        for (EdgeRef e : edges_of(t)) out.triangles.push_back(as_int(number((*mid)[e])));
       for (std::size_t a = 0; a < na; ++a) out.triangle_attributes.push_back(mesh.triangle_attributes[t * na + a]);
     }
     if (sw.neighbors)
       for (unsigned k = 0; k < 3; ++k) {
-        const EdgeRef across = mesh.link[3 * t + (k + 1) % 3];
+        const EdgeRef across = mesh.link[edge_of(t, (k + 1) % 3)];
         out.neighbors.push_back(across == kNone ? -1 : as_int(triangle_number(numbers, triangle_of(across)) + number.first_index));
       }
   }
@@ -55,7 +55,7 @@ void fill_segments(api::Mesh& out, const Mesh& mesh, const VertexNumbering& numb
   if (!(poly_input || sw.convex_hull)) {
     for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
       if (mesh.is_live(t))
-        for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) out.segment_count += mesh.link[e] == kNone;
+        for (EdgeRef e : edges_of(t)) out.segment_count += mesh.link[e] == kNone;
     return;
   }
   const LiveSubsegments live = find_live_subsegments(mesh);
@@ -79,7 +79,7 @@ void fill_edges(api::Mesh& out, const Mesh& mesh, const VertexNumbering& number,
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     const int here = as_int(triangle_number(numbers, t) + number.first_index);
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
+    for (EdgeRef e : edges_of(t)) {
       if (!edge_written_here(mesh, e)) continue;
       if (sw.edges) {
         out.edges.push_back(as_int(number(mesh.org(e))));

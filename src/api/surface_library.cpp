@@ -20,8 +20,9 @@ void read_points(const api::Facets& in, FacetInput& out) {
   const std::size_t n = in.points.size() / 3;
   if (n < 3) fail("facets need at least 3 points, the input has " + count(n));
   if (n > 0xFFFFFFF0u) fail("too many points: " + count(n));
-  for (std::size_t k = 0; k < n; ++k) {
-    const Point3 p{in.points[3 * k], in.points[3 * k + 1], in.points[3 * k + 2]};
+  const double* xyz = in.points.data();
+  for (std::size_t k = 0; k < n; ++k, xyz += 3) {
+    const Point3 p{xyz[0], xyz[1], xyz[2]};
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       fail("point " + count(k + static_cast<std::size_t>(out.first_index)) + ": a coordinate is not a finite number");
     out.points.push_back(p);
@@ -75,7 +76,8 @@ api::Surface surface_arrays(const SurfaceMesh& m, const Switches& sw, int first_
   for (const Point3& p : m.points) s.points.insert(s.points.end(), {p.x, p.y, p.z});
   if (m.has_markers && !sw.no_markers) s.point_markers = m.markers;
   s.triangle_count = static_cast<int>(m.triangle_count());
-  for (const std::uint32_t v : m.triangles) s.triangles.push_back(static_cast<int>(v) + first_index);
+  for (const std::array<std::uint32_t, 3>& corners : m.triangles)
+    for (const std::uint32_t v : corners) s.triangles.push_back(static_cast<int>(v) + first_index);
   for (const std::uint32_t f : m.triangle_facet) {
     s.triangle_attributes.push_back(m.facet_marker[f]);
     s.triangle_facets.push_back(static_cast<int>(f) + first_index);

@@ -38,7 +38,7 @@ void note_ignored_switches(const Switches& sw) {
 }
 
 std::array<Point3, 3> corners(const SurfaceMesh& m, std::size_t t) {
-  const std::uint32_t* v = &m.triangles[3 * t];
+  const std::array<std::uint32_t, 3>& v = m.triangles[t];
   return {m.points[v[0]], m.points[v[1]], m.points[v[2]]};
 }
 

@@ -21,7 +21,7 @@ namespace deltri {
 int diametral_dot_sign(const Point& a, const Point& b, const Point& p);
 
 // p strictly inside the circle with diameter ab: the free vertices Chew's step deletes before a
-// subsegment is split (Fig. 39 l.40, refine/subsegment_splits.cpp). Not an encroachment test: a
+// subsegment is split (Fig. 39 l.40, refine/chew_step.cpp). Not an encroachment test: a
 // vertex on the circle encroaches, but is not deleted. Deleting it too would change deltri's
 // meshes (box.poly at -pa0.01: 70 deletions and 664 vertices instead of 62 and 659).
 inline bool strictly_inside_diametral_circle(const Point& a, const Point& b, const Point& p) {

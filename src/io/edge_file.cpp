@@ -8,7 +8,7 @@ std::uint32_t count_edges(const Mesh& mesh) {
   std::uint32_t count = 0;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
     if (mesh.is_live(t))
-      for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) count += edge_written_here(mesh, e);
+      for (EdgeRef e : edges_of(t)) count += edge_written_here(mesh, e);
   return count;
 }
 
@@ -23,7 +23,7 @@ void write_edge_file(ByteSink& sink, const Mesh& mesh, const EdgeWriteOptions& o
   long long index = options.first_index;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
+    for (EdgeRef e : edges_of(t)) {
       if (!edge_written_here(mesh, e)) continue;
       out.integer(index++);
       out.next_integer(number(mesh.org(e)));

@@ -44,9 +44,9 @@ void write_triangle_line(Out& out, const Mesh& mesh, const VertexNumbering& numb
                          TriangleId t, long long index) {
   const int na = mesh.num_triangle_attributes;
   out.integer(index);
-  for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) out.next_integer(number(mesh.corner[e]));
+  for (EdgeRef e : edges_of(t)) out.next_integer(number(mesh.corner[e]));
   if (mid)
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) out.next_integer(number((*mid)[e]));
+    for (EdgeRef e : edges_of(t)) out.next_integer(number((*mid)[e]));
   for (int a = 0; a < na; ++a) out.next_real(mesh.triangle_attributes[static_cast<std::size_t>(t) * na + a]);
   out.end_line();
 }

@@ -12,7 +12,7 @@ std::vector<VertexId> add_edge_midpoints(Mesh& mesh) {
   const bool markers = !mesh.marker.empty();
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
+    for (EdgeRef e : edges_of(t)) {
       // Edge e runs from corner e to corner lnext(e): it lies opposite corner lprev(e).
       const EdgeRef opposite = lprev(e);
       if (!edge_written_here(mesh, e)) {

@@ -286,7 +286,7 @@ void write_msh_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& optio
   }
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    c.triangles.items.push_back(3 * t);
+    c.triangles.items.push_back(edge_of(t, 0));
     surface_values.push_back(na > 0 ? mesh.triangle_attributes[static_cast<std::size_t>(t) * na] : 1.0);
   }
   if (surface_values.empty()) surface_values.push_back(1.0);  // the surface the nodes belong to exists even when empty

@@ -16,7 +16,7 @@ void write_neigh_file(ByteSink& sink, const Mesh& mesh, int first_index) {
     if (!mesh.is_live(t)) continue;
     out.integer(index++);
     for (unsigned k = 0; k < 3; ++k) {
-      const EdgeRef across = mesh.link[3 * t + (k + 1) % 3];
+      const EdgeRef across = mesh.link[edge_of(t, (k + 1) % 3)];
       out.next_integer(across == kNone ? -1 : static_cast<long long>(triangle_number(numbers, triangle_of(across))) + first_index);
     }
     out.end_line();

@@ -28,7 +28,7 @@ void write_off_file(ByteSink& sink, const Mesh& mesh, const std::vector<std::uin
     if (!mesh.is_live(t)) continue;
     TextWriter::Line line = out.line(4);
     line.integer(3);
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) line.next_integer(number(mesh.corner[e]));
+    for (EdgeRef e : edges_of(t)) line.next_integer(number(mesh.corner[e]));
     line.end_line();
   }
   out.finish();

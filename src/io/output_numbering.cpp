@@ -16,7 +16,7 @@ std::vector<EdgeRef> boundary_and_segment_edges(const Mesh& mesh) {
   std::vector<EdgeRef> edges;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e)
+    for (EdgeRef e : edges_of(t))
       if (edge_written_here(mesh, e) && (mesh.link[e] == kNone || (mesh.has_subsegments() && mesh.subseg[e] != kNone)))
         edges.push_back(e);
   }

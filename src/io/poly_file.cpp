@@ -142,7 +142,7 @@ LiveSubsegments find_live_subsegments(const Mesh& mesh) {
   live.boundary.assign(mesh.subsegments.size(), false);
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
+    for (EdgeRef e : edges_of(t)) {
       const SubsegmentId s = mesh.subseg[e];
       if (s == kNone || s >= live.edge.size()) continue;
       if (live.edge[s] == kNone) {

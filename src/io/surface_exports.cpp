@@ -27,7 +27,7 @@ void write_surface_off(ByteSink& sink, const SurfaceMesh& mesh) {
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     TextWriter::Line line = out.line(4);
     line.integer(3);
-    for (int i = 0; i < 3; ++i) line.next_integer(mesh.triangles[3 * t + i]);
+    for (const std::uint32_t v : mesh.triangles[t]) line.next_integer(v);
     line.end_line();
   }
   out.finish();
@@ -44,8 +44,8 @@ void write_surface_stl(ByteSink& sink, const SurfaceMesh& mesh) {
     out.next_real(n.y);
     out.next_real(n.z);
     out.text("\nouter loop\n");
-    for (int i = 0; i < 3; ++i) {
-      const Point3& p = mesh.points[mesh.triangles[3 * t + i]];
+    for (const std::uint32_t v : mesh.triangles[t]) {
+      const Point3& p = mesh.points[v];
       out.text("vertex");
       out.next_real(p.x);
       out.next_real(p.y);
@@ -96,7 +96,7 @@ void write_surface_msh(ByteSink& sink, const SurfaceMesh& mesh) {
     line.next_integer(2);  // two tags
     line.next_integer(groups.tags[groups.group[t]]);
     line.next_integer(static_cast<long long>(mesh.triangle_facet[t]) + 1);
-    for (int i = 0; i < 3; ++i) line.next_integer(static_cast<long long>(mesh.triangles[3 * t + i]) + 1);
+    for (const std::uint32_t v : mesh.triangles[t]) line.next_integer(static_cast<long long>(v) + 1);
     line.end_line();
   }
   out.text("$EndElements\n");
@@ -116,9 +116,10 @@ void write_surface_vtu(ByteSink& sink, const SurfaceMesh& mesh) {
   out.text("</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
   for (long long t = 0; t < n; ++t) {
     TextWriter::Line line = out.line(3);
-    line.integer(mesh.triangles[3 * t]);
-    line.next_integer(mesh.triangles[3 * t + 1]);
-    line.next_integer(mesh.triangles[3 * t + 2]);
+    const auto [a, b, c] = mesh.triangles[static_cast<std::size_t>(t)];
+    line.integer(a);
+    line.next_integer(b);
+    line.next_integer(c);
     line.end_line();
   }
   out.text("</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");

@@ -29,7 +29,7 @@ void write_surface_ele(ByteSink& sink, const SurfaceMesh& mesh, const SurfaceWri
   for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
     TextWriter::Line line = out.line(5);
     line.integer(static_cast<long long>(t) + options.first_index);
-    for (int i = 0; i < 3; ++i) line.next_integer(static_cast<long long>(mesh.triangles[3 * t + i]) + options.first_index);
+    for (const std::uint32_t v : mesh.triangles[t]) line.next_integer(static_cast<long long>(v) + options.first_index);
     line.next_integer(mesh.facet_marker[mesh.triangle_facet[t]]);
     line.end_line();
   }

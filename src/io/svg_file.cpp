@@ -57,8 +57,8 @@ void write_svg_file(ByteSink& sink, const Mesh& mesh, const SvgOptions& options)
   std::array<std::vector<TriangleId>, kShades> shade;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    const double angle = smallest_angle_degrees(mesh.points[mesh.corner[3 * t]], mesh.points[mesh.corner[3 * t + 1]],
-                                                mesh.points[mesh.corner[3 * t + 2]]);
+    const auto [a, b, c] = mesh.corner_points(t);
+    const double angle = smallest_angle_degrees(a, b, c);
     shade[std::clamp(static_cast<int>(angle / 10.0), 0, kShades - 1)].push_back(t);
   }
   sink.expect(static_cast<std::size_t>(mesh.live_triangles()) * 32 + 4096);
@@ -82,8 +82,7 @@ void write_svg_file(ByteSink& sink, const Mesh& mesh, const SvgOptions& options)
     if (shade[s].empty()) continue;
     out.text(std::string("<path fill=\"") + kFill[s] + "\" d=\"");
     for (TriangleId t : shade[s]) {
-      const Point &a = mesh.points[mesh.corner[3 * t]], &b = mesh.points[mesh.corner[3 * t + 1]],
-                  &c = mesh.points[mesh.corner[3 * t + 2]];
+      const auto [a, b, c] = mesh.corner_points(t);
       out.text("M");
       out.integer(canvas.x(a));
       out.next_integer(canvas.y(a));
@@ -100,7 +99,7 @@ void write_svg_file(ByteSink& sink, const Mesh& mesh, const SvgOptions& options)
     out.text("<path fill=\"none\" stroke=\"black\" stroke-width=\"15\" stroke-linecap=\"round\" d=\"");
     for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
       if (!mesh.is_live(t)) continue;
-      for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
+      for (EdgeRef e : edges_of(t)) {
         if (mesh.subseg[e] == kNone || !(mesh.link[e] == kNone || mesh.link[e] > e)) continue;
         out.text("M");
         out.integer(canvas.x(mesh.points[mesh.org(e)]));

@@ -8,7 +8,7 @@ namespace deltri {
 
 Point voronoi_vertex(const Mesh& mesh, TriangleId t, std::vector<double>& attributes) {
   const std::size_t na = static_cast<std::size_t>(mesh.num_attributes);
-  const VertexId a = mesh.corner[3 * t], b = mesh.corner[3 * t + 1], c = mesh.corner[3 * t + 2];
+  const auto [a, b, c] = mesh.corners(t);
   const Point &pa = mesh.points[a], &pb = mesh.points[b], &pc = mesh.points[c];
   const Point cc = circumcenter(pa, pb, pc);
   attributes.resize(na);
@@ -59,7 +59,7 @@ void write_voronoi_edge_file(ByteSink& sink, const Mesh& mesh, int first_index) 
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     const long long here = static_cast<long long>(triangle_number(numbers, t)) + first_index;
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
+    for (EdgeRef e : edges_of(t)) {
       if (!edge_written_here(mesh, e)) continue;
       out.integer(index++);
       out.next_integer(here);

@@ -62,7 +62,8 @@ void write_binary_vtu(ByteSink& sink, const Mesh& mesh, const ExportOptions& opt
                            for (std::size_t j = 0; j < lines.size(); ++j) w.put(0.0);
                            for (TriangleId t : triangles) w.put(mesh.triangle_attributes[static_cast<std::size_t>(t) * nta + k]);
                          }});
-  geometry.push_back({"Float64", "", 3, 3 * static_cast<std::size_t>(point_count), 8, [&](BinaryWriter& w) {
+  constexpr std::size_t kXyz = 3;  // VTK points have three coordinates
+  geometry.push_back({"Float64", "", 3, kXyz * point_count, 8, [&](BinaryWriter& w) {
                         each_point(w, [&](BinaryWriter& o, VertexId v) {
                           o.put(mesh.points[v].x), o.put(mesh.points[v].y), o.put(0.0);
                         });
@@ -75,9 +76,9 @@ void write_binary_vtu(ByteSink& sink, const Mesh& mesh, const ExportOptions& opt
                           if (mid) put((*mid)[lprev(e)]);
                         }
                         for (TriangleId t : triangles) {
-                          for (EdgeRef c = 0; c < 3; ++c) put(mesh.corner[3 * t + c]);
+                          for (EdgeRef c = 0; c < 3; ++c) put(mesh.corner[edge_of(t, c)]);
                           if (mid)
-                            for (EdgeRef c : {2u, 0u, 1u}) put((*mid)[3 * t + c]);
+                            for (EdgeRef c : {2u, 0u, 1u}) put((*mid)[edge_of(t, c)]);
                         }
                       }});
   geometry.push_back({"Int64", "offsets", 1, cells, 8, [&](BinaryWriter& w) {
@@ -192,12 +193,13 @@ void write_vtu_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& optio
   }
   for (TriangleId t : triangles) {
     TextWriter::Line line = out.line(6);
-    line.integer(number(mesh.corner[3 * t]));
-    line.next_integer(number(mesh.corner[3 * t + 1]));
-    line.next_integer(number(mesh.corner[3 * t + 2]));
+    const auto [a, b, c] = mesh.corners(t);
+    line.integer(number(a));
+    line.next_integer(number(b));
+    line.next_integer(number(c));
     // VTK orders the midpoints by edge: (0,1), (1,2), (2,0), i.e. opposite corners 2, 0, 1.
     if (mid)
-      for (EdgeRef c : {2u, 0u, 1u}) line.next_integer(number((*mid)[3 * t + c]));
+      for (EdgeRef c : {2u, 0u, 1u}) line.next_integer(number((*mid)[edge_of(t, c)]));
     line.end_line();
   }
   out.text("</DataArray>\n");

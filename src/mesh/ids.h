@@ -20,6 +20,22 @@ inline constexpr VertexId kGhostVertex = 0xFFFFFFFEu;
 constexpr EdgeRef edge_of(TriangleId t, unsigned side) { return 3 * t + side; }
 constexpr TriangleId triangle_of(EdgeRef e) { return e / 3; }
 constexpr unsigned side_of(EdgeRef e) { return e % 3; }
+// The three edges of triangle t, for `for (EdgeRef e : edges_of(t))`.
+struct TriangleEdges {
+  EdgeRef first;
+  struct Iterator {
+    EdgeRef e;
+    constexpr EdgeRef operator*() const { return e; }
+    constexpr Iterator& operator++() {
+      ++e;
+      return *this;
+    }
+    constexpr bool operator!=(Iterator other) const { return e != other.e; }
+  };
+  constexpr Iterator begin() const { return {first}; }
+  constexpr Iterator end() const { return {first + 3}; }
+};
+constexpr TriangleEdges edges_of(TriangleId t) { return {3 * t}; }
 // The next and previous edge of the same triangle, counter-clockwise.
 constexpr EdgeRef lnext(EdgeRef e) { return e % 3 == 2 ? e - 2 : e + 1; }
 constexpr EdgeRef lprev(EdgeRef e) { return e % 3 == 0 ? e + 2 : e - 1; }

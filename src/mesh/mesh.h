@@ -34,6 +34,7 @@
 //   * a dead triangle has corner[3t] == kNone and sits on the free list.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -86,8 +87,22 @@ struct Mesh {
   EdgeRef oprev(EdgeRef e) const { return link[e] == kNone ? kNone : lnext(link[e]); }
   const Point& point(VertexId v) const { return points[v]; }
 
+  // Triangle t's corners, counter-clockwise: the ids, a pointer to the three, and their points.
+  std::array<VertexId, 3> corners(TriangleId t) const {
+    return {corner[edge_of(t, 0)], corner[edge_of(t, 1)], corner[edge_of(t, 2)]};
+  }
+  const VertexId* corners_at(TriangleId t) const { return &corner[edge_of(t, 0)]; }
+  struct CornerPoints {
+    const Point& a;
+    const Point& b;
+    const Point& c;
+  };
+  CornerPoints corner_points(TriangleId t) const {
+    return {points[corner[edge_of(t, 0)]], points[corner[edge_of(t, 1)]], points[corner[edge_of(t, 2)]]};
+  }
+
   std::uint32_t triangle_slots() const { return static_cast<std::uint32_t>(corner.size() / 3); }
-  bool is_live(TriangleId t) const { return corner[3 * t] != kNone; }
+  bool is_live(TriangleId t) const { return corner[edge_of(t, 0)] != kNone; }
   std::uint32_t live_triangles() const {
     return triangle_slots() - static_cast<std::uint32_t>(free_triangles.size());
   }
@@ -117,6 +132,12 @@ struct Mesh {
   void set_subsegment(EdgeRef e, SubsegmentId s) {
     subseg[e] = s;
     if (link[e] != kNone) subseg[link[e]] = s;
+  }
+  // Room for `triangles` triangles in the triangle arrays without a reallocation.
+  void reserve_triangles(std::size_t triangles) {
+    corner.reserve(3 * triangles);
+    link.reserve(3 * triangles);
+    if (has_subsegments()) subseg.reserve(3 * triangles);
   }
   // Moves live triangles over dead slots so that every slot is live (ids change).
   void compact_triangles();

@@ -26,12 +26,12 @@ double angle_at(const Point& a, const Point& b, const Point& c) {
 
 bool misses_angle(const Mesh& m, TriangleId t, double bound) {
   if (bound <= 0.0) return false;
-  const Point &a = m.points[m.corner[3 * t]], &b = m.points[m.corner[3 * t + 1]], &c = m.points[m.corner[3 * t + 2]];
+  const auto [a, b, c] = m.corner_points(t);
   return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)}) < bound * (1.0 - kMargin);
 }
 
 bool misses_size(const Mesh& m, TriangleId t, const BoundRequest& r) {
-  const Point &a = m.points[m.corner[3 * t]], &b = m.points[m.corner[3 * t + 1]], &c = m.points[m.corner[3 * t + 2]];
+  const auto [a, b, c] = m.corner_points(t);
   const double area = 0.5 * std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
   if (r.size.max_area > 0.0 && area > r.size.max_area * (1.0 + kMargin)) return true;
   if (r.size.triangle_bounds && m.area_bound.size() == m.triangle_slots() && m.area_bound[t] > 0.0 &&
@@ -44,8 +44,8 @@ bool misses_size(const Mesh& m, TriangleId t, const BoundRequest& r) {
 bool at_precision_limit(const Mesh& m, TriangleId t) {
   double shortest = INFINITY, largest = 0.0;
   for (int i = 0; i < 3; ++i) {
-    const Point& p = m.points[m.corner[3 * t + i]];
-    const Point& q = m.points[m.corner[3 * t + (i + 1) % 3]];
+    const Point& p = m.points[m.corner[edge_of(t, i)]];
+    const Point& q = m.points[m.corner[edge_of(t, (i + 1) % 3)]];
     shortest = std::min(shortest, length(p, q));
     largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)});
   }
@@ -73,7 +73,7 @@ SegmentVertices collect_spokes(const Mesh& m) {
   if (!m.has_subsegments()) return s;
   for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e) {
+    for (EdgeRef e : edges_of(t)) {
       if (m.subseg[e] == kNone || (m.link[e] != kNone && m.link[e] < e)) continue;
       const VertexId a = m.org(e), b = m.dest(e);
       const std::uint32_t seg = m.subsegments[m.subseg[e]].segment;
@@ -158,7 +158,7 @@ VertexId junction_of_edge(const Mesh& m, const SegmentVertices& s, VertexId p, V
 
 // The vertex whose input angle explains t's miss, or kNone.
 VertexId explaining_junction(const Mesh& m, const SegmentVertices& s, TriangleId t) {
-  const VertexId* c = &m.corner[3 * t];
+  const VertexId* c = m.corners_at(t);
   for (int i = 0; i < 3; ++i)
     if (in_small_sector(m, s, c[i], c[(i + 1) % 3], c[(i + 2) % 3])) return c[i];
   double shortest = INFINITY;
@@ -166,7 +166,7 @@ VertexId explaining_junction(const Mesh& m, const SegmentVertices& s, TriangleId
   for (int i = 0; i < 3; ++i) {
     const VertexId p = c[i], q = c[(i + 1) % 3];
     if (length(m.points[p], m.points[q]) > shortest) continue;
-    const bool on_segment = m.has_subsegments() && m.subseg[3 * t + i] != kNone;
+    const bool on_segment = m.has_subsegments() && m.subseg[edge_of(t, i)] != kNone;
     const VertexId j = junction_of_edge(m, s, p, q, on_segment);
     if (j != kNone) return j;
   }
@@ -193,7 +193,7 @@ BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
     const VertexId j = misses_angle(m, t, r.angle.degrees()) ? explaining_junction(m, s, t) : kNone;
     bool touches_repair = false, touches_segment = false;
     for (int i = 0; i < 3; ++i) {
-      const VertexId v = m.corner[3 * t + i];
+      const VertexId v = m.corner[edge_of(t, i)];
       touches_repair = touches_repair || repaired_vertex(m, s, v);
       touches_segment = touches_segment || !s.spokes[v].empty();
     }

@@ -125,7 +125,7 @@ class Checker {
   void check_triangle_slots() {
     for (TriangleId t = 0; t < slots(); ++t) {
       if (!live(t)) continue;
-      const VertexId a = mesh_.corner[3 * t], b = mesh_.corner[3 * t + 1], c = mesh_.corner[3 * t + 2];
+      const auto [a, b, c] = mesh_.corners(t);
       if (a >= vertices() || b >= vertices() || c >= vertices())
         fault(FaultKind::CornerOutOfRange, t);
       else if (a == b || b == c || c == a)
@@ -196,7 +196,7 @@ class Checker {
     out_dest_.resize(first_out_[vertices()]);
     for (TriangleId t = 0; t < slots(); ++t) {
       if (!live(t)) continue;
-      const VertexId* c = &mesh_.corner[3 * t];
+      const VertexId* c = mesh_.corners_at(t);
       out_dest_[first_out_[c[0]]++] = c[1];
       out_dest_[first_out_[c[1]]++] = c[2];
       out_dest_[first_out_[c[2]]++] = c[0];
@@ -251,8 +251,8 @@ class Checker {
   void check_orientation() {
     for (TriangleId t = 0; t < slots(); ++t) {
       if (!live(t)) continue;
-      const double o = pred_.orient2d(at(mesh_.corner[3 * t]), at(mesh_.corner[3 * t + 1]),
-                                      at(mesh_.corner[3 * t + 2]));
+      const auto [a, b, c] = mesh_.corners(t);
+      const double o = pred_.orient2d(at(a), at(b), at(c));
       if (o < 0.0) fault(FaultKind::ClockwiseTriangle, t);
       if (o == 0.0) fault(FaultKind::FlatTriangle, t);
     }

@@ -30,9 +30,7 @@ double angle_at(const Point& a, const Point& b, const Point& c) {
 }
 
 TriangleShape shape_of(const Mesh& mesh, TriangleId t) {
-  const Point& p0 = mesh.point(mesh.corner[3 * t]);
-  const Point& p1 = mesh.point(mesh.corner[3 * t + 1]);
-  const Point& p2 = mesh.point(mesh.corner[3 * t + 2]);
+  const auto [p0, p1, p2] = mesh.corner_points(t);
   TriangleShape s;
   s.cross = std::fabs((p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x));
   s.squared_edge = {squared_distance(p0, p1), squared_distance(p1, p2), squared_distance(p2, p0)};
@@ -94,7 +92,7 @@ void count_vertices(const Mesh& mesh, MeshStatistics& stats) {
   std::vector<std::uint8_t> in_triangle(mesh.vertex_count(), 0);
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
     if (mesh.is_live(t))
-      for (unsigned i = 0; i < 3; ++i) in_triangle[mesh.corner[3 * t + i]] = 1;
+      for (unsigned i = 0; i < 3; ++i) in_triangle[mesh.corner[edge_of(t, i)]] = 1;
   for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
     const VertexKind k = mesh.kind[v];
     if (k != VertexKind::Duplicate && k != VertexKind::Dead) ++stats.vertices;

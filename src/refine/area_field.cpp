@@ -39,8 +39,8 @@ AreaField AreaField::of(const Mesh& mesh) {
   Box all;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    const Triangle tri{mesh.point(mesh.corner[3 * t]), mesh.point(mesh.corner[3 * t + 1]),
-                       mesh.point(mesh.corner[3 * t + 2]), mesh.area_bound[t]};
+    const auto [a, b, c] = mesh.corner_points(t);
+    const Triangle tri{a, b, c, mesh.area_bound[t]};
     Box box;
     for (const Point& p : {tri.a, tri.b, tri.c}) box.add(p), all.add(p);
     boxes.push_back(box);

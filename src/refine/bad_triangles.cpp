@@ -17,16 +17,14 @@ bool has_subsegment(const Mesh& mesh, EdgeRef e) {
 double area_bound_of(const Mesh& mesh, TriangleId t, const QualityRules& rules) {
   if (!rules.size.triangle_bounds || mesh.area_bound.empty()) return 0.0;
   if (rules.area_field == nullptr || rules.area_field->empty()) return mesh.area_bound[t];
-  const Point& a = mesh.point(mesh.corner[3 * t]);
-  const Point& b = mesh.point(mesh.corner[3 * t + 1]);
-  const Point& c = mesh.point(mesh.corner[3 * t + 2]);
+  const auto [a, b, c] = mesh.corner_points(t);
   return rules.area_field->bound_at({(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0});
 }
 
 bool is_current(const Mesh& mesh, const QueuedTriangle& entry) {
   const TriangleId t = entry.triangle;
   if (t >= mesh.triangle_slots() || !mesh.is_live(t)) return false;
-  const VertexId* c = &mesh.corner[3 * t];
+  const VertexId* c = mesh.corners_at(t);
   for (VertexId v : {entry.a, entry.b, entry.c})
     if (c[0] != v && c[1] != v && c[2] != v) return false;
   return true;
@@ -39,7 +37,7 @@ bool angle_between_subsegments(const Mesh& mesh, EdgeRef e) {
 // Each corner and point is read once: this runs for every triangle around every new vertex.
 TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta) {
   TriangleShape shape;
-  const VertexId* corners = &mesh.corner[3 * t];
+  const VertexId* corners = mesh.corners_at(t);
   const Point& a = mesh.point(corners[0]);
   const Point& b = mesh.point(corners[1]);
   const Point& c = mesh.point(corners[2]);
@@ -80,7 +78,7 @@ Assessment assess_triangle(const Mesh& mesh, TriangleId t, const QualityRules& r
       if (len2[i] > limit2) out.too_large = true;
   }
   if (rules.size_test && !out.too_large) {
-    const VertexId* c = &mesh.corner[3 * t];
+    const VertexId* c = mesh.corners_at(t);
     out.too_large = (*rules.size_test)(mesh.point(c[0]), mesh.point(c[1]), mesh.point(c[2]), area);
   }
   return out;

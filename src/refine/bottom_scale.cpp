@@ -15,11 +15,33 @@ namespace deltri {
 namespace {
 
 double triangle_sine2(const Mesh& mesh, TriangleId t) {
-  return smallest_angle_sine2(mesh.point(mesh.corner[3 * t]), mesh.point(mesh.corner[3 * t + 1]),
-                              mesh.point(mesh.corner[3 * t + 2]));
+  const auto [a, b, c] = mesh.corner_points(t);
+  return smallest_angle_sine2(a, b, c);
 }
 
 }  // namespace
+
+// How candidate c for bad triangle t scores at the bottom scale (its cavity just probed): the
+// smallest angle sines of the new triangles joining c to the cavity's boundary, those up to twice
+// t's scale (`near`) and all of them; nullopt if c is unusable. The new triangles no longer-edged
+// than t must be good, better than t, or no worse than the triangle they replace on their edge.
+std::optional<Terminator::BottomScore> Terminator::bottom_score(const Point& c, const KnownCavity& cavity,
+                                                                double l2, double t_sine2) {
+  const double good2 = opt_.angle.sin2();
+  BottomScore score{HUGE_VAL, HUGE_VAL};
+  for (EdgeRef e : cavity.boundary) {
+    const Point& p = mesh_.point(mesh_.org(e));
+    const Point& q = mesh_.point(mesh_.dest(e));
+    if (pred_.orient2d(p, q, c) <= 0) return std::nullopt;
+    const double s2 = smallest_angle_sine2(p, q, c);
+    const double shortest2 = std::min({squared_distance(p, q), squared_distance(p, c), squared_distance(q, c)});
+    if (shortest2 <= l2 && s2 < good2 && !(s2 > t_sine2) && s2 < triangle_sine2(mesh_, triangle_of(e)))
+      return std::nullopt;
+    if (shortest2 <= 4.0 * l2) score.near = std::min(score.near, s2);
+    score.all = std::min(score.all, s2);
+  }
+  return score;
+}
 
 std::optional<Point> Terminator::bottom_scale_point(TriangleId t, const Point& ideal, const Assessment& a) {
   ++report_.bottom_scale_searches;
@@ -29,9 +51,8 @@ std::optional<Point> Terminator::bottom_scale_point(TriangleId t, const Point& i
   const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
   const double l2 = a.shape.shortest_length2;
   const double t_sine2 = triangle_sine2(mesh_, t);
-  const double good2 = opt_.angle.sin2();
   std::optional<Point> best;
-  double best_near = 0.0, best_all = 0.0;
+  BottomScore best_score{0.0, 0.0};
   for (const Point& c : candidates) {
     const Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, splittable);
     if (probe.status != ProbeStatus::Clear) continue;
@@ -39,32 +60,11 @@ std::optional<Point> Terminator::bottom_scale_point(TriangleId t, const Point& i
     if (r < floor_for(a, c) || r * r < kBottomRadius2 * l2) continue;
     const KnownCavity cavity = marks_.marked();
     if (!cavity.contains(t)) continue;  // c would leave t as it is
-    // The new triangles join c to the cavity's boundary. Those no longer-edged than t must be good,
-    // better than t, or no worse than the triangle they replace on their edge; the others are
-    // scored too, those up to twice t's scale first.
-    double near = HUGE_VAL, all = HUGE_VAL;
-    bool usable = true;
-    for (EdgeRef e : cavity.boundary) {
-      const Point& p = mesh_.point(mesh_.org(e));
-      const Point& q = mesh_.point(mesh_.dest(e));
-      if (pred_.orient2d(p, q, c) <= 0) {
-        usable = false;
-        break;
-      }
-      const double s2 = smallest_angle_sine2(p, q, c);
-      const double shortest2 = std::min({squared_distance(p, q), squared_distance(p, c), squared_distance(q, c)});
-      if (shortest2 <= l2 && s2 < good2 && !(s2 > t_sine2) && s2 < triangle_sine2(mesh_, triangle_of(e))) {
-        usable = false;
-        break;
-      }
-      if (shortest2 <= 4.0 * l2) near = std::min(near, s2);
-      all = std::min(all, s2);
-    }
-    if (!usable) continue;
-    if (!best || near > best_near || (near == best_near && all > best_all)) {
+    const std::optional<BottomScore> score = bottom_score(c, cavity, l2, t_sine2);
+    if (!score) continue;
+    if (!best || score->near > best_score.near || (score->near == best_score.near && score->all > best_score.all)) {
       best = c;
-      best_near = near;
-      best_all = all;
+      best_score = *score;
     }
   }
   return best;

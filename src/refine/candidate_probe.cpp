@@ -111,9 +111,7 @@ EdgeRef exit_side(const Mesh& mesh, Predicates& pred, TriangleId t, const Point&
 
 WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const Point& c) {
   WalkResult result;
-  const Point& a = mesh.point(mesh.corner[3 * t]);
-  const Point& b = mesh.point(mesh.corner[3 * t + 1]);
-  const Point& d = mesh.point(mesh.corner[3 * t + 2]);
+  const auto [a, b, d] = mesh.corner_points(t);
   const Point q{(a.x + b.x + d.x) / 3.0, (a.y + b.y + d.y) / 3.0};
   const std::uint64_t limit = 2 * static_cast<std::uint64_t>(mesh.triangle_slots()) + 16;
   for (std::uint64_t step = 0; step < limit; ++step) {
@@ -141,51 +139,52 @@ WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const 
   return result;
 }
 
+// One edge e of a cavity triangle: the triangle across it joins the cavity if its circumcircle
+// contains c; otherwise, or across a subsegment or the mesh's boundary, e is on the cavity's
+// boundary. Returns whether it is.
+inline bool cross_or_bound(const Mesh& mesh, Predicates& pred, EdgeRef e, const Point& c, CavityMarks& marks) {
+  if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
+    marks.boundary_subsegments().push_back(e);
+    marks.boundary().push_back(e);
+    return true;
+  }
+  const EdgeRef twin = mesh.link[e];
+  if (twin == kNone) {
+    marks.boundary().push_back(e);
+    return true;
+  }
+  const TriangleId n = triangle_of(twin);
+  if (marks.contains(n)) return false;  // an edge inside the cavity, seen from its other side
+  prefetch(&mesh.link[edge_of(n, 0)]);  // needed when n joins the cavity
+  if (mesh.has_subsegments()) prefetch(&mesh.subseg[edge_of(n, 0)]);
+  const auto [x, y, z] = mesh.corner_points(n);
+  if (pred.incircle(x, y, z, c) > 0) {
+    marks.add(n);
+    marks.todo().push_back(n);
+    return false;
+  }
+  marks.boundary().push_back(e);
+  return true;
+}
+
 double cavity_of(const Mesh& mesh, Predicates& pred, std::span<const TriangleId> seeds,
                  const Point& c, CavityMarks& marks) {
   marks.begin();
   std::vector<TriangleId>& todo = marks.todo();
-  std::vector<EdgeRef>& boundary = marks.boundary();
-  std::vector<EdgeRef>& subsegments = marks.boundary_subsegments();
   todo.clear();
   for (TriangleId s : seeds)
     if (marks.mark(s)) todo.push_back(s);
   while (!todo.empty()) {
     const TriangleId t = todo.back();
     todo.pop_back();
-    const std::size_t boundary_before = boundary.size();
-    for (unsigned i = 0; i < 3; ++i) {
-      const EdgeRef e = edge_of(t, i);
-      if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
-        subsegments.push_back(e);
-        boundary.push_back(e);
-        continue;
-      }
-      const EdgeRef twin = mesh.link[e];
-      if (twin == kNone) {
-        boundary.push_back(e);
-        continue;
-      }
-      const TriangleId n = triangle_of(twin);
-      if (marks.contains(n)) continue;  // an edge inside the cavity, seen from its other side
-      prefetch(&mesh.link[3 * n]);  // needed when n joins the cavity
-      if (mesh.has_subsegments()) prefetch(&mesh.subseg[3 * n]);
-      const Point& x = mesh.point(mesh.corner[3 * n]);
-      const Point& y = mesh.point(mesh.corner[3 * n + 1]);
-      const Point& z = mesh.point(mesh.corner[3 * n + 2]);
-      if (pred.incircle(x, y, z, c) > 0) {
-        marks.add(n);
-        todo.push_back(n);
-      } else {
-        boundary.push_back(e);
-      }
-    }
-    if (boundary.size() == boundary_before) marks.inner().push_back(t);
+    bool on_boundary = false;
+    for (unsigned i = 0; i < 3; ++i) on_boundary |= cross_or_bound(mesh, pred, edge_of(t, i), c, marks);
+    if (!on_boundary) marks.inner().push_back(t);
   }
   // The cavity's vertices are its boundary's: no vertex lies inside the union of the triangles
   // whose circumcircles contain c (the region is star-shaped from c).
   double nearest2 = HUGE_VAL;
-  for (EdgeRef e : boundary) nearest2 = std::min(nearest2, squared_distance(c, mesh.point(mesh.org(e))));
+  for (EdgeRef e : marks.boundary()) nearest2 = std::min(nearest2, squared_distance(c, mesh.point(mesh.org(e))));
   return nearest2;
 }
 

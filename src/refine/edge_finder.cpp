@@ -13,7 +13,7 @@ bool leaves(const Mesh& mesh, EdgeRef e, VertexId v) {
 
 EdgeRef corner_edge(const Mesh& mesh, TriangleId t, VertexId v) {
   for (unsigned i = 0; i < 3; ++i)
-    if (mesh.corner[3 * t + i] == v) return 3 * t + i;
+    if (mesh.corner[edge_of(t, i)] == v) return edge_of(t, i);
   return kNone;
 }
 
@@ -27,7 +27,7 @@ EdgeRef search_near(const Mesh& mesh, TriangleId start, VertexId v) {
     todo.pop_front();
     if (const EdgeRef e = corner_edge(mesh, t, v); e != kNone) return e;
     for (unsigned i = 0; i < 3; ++i) {
-      const EdgeRef twin = mesh.link[3 * t + i];
+      const EdgeRef twin = mesh.link[edge_of(t, i)];
       if (twin == kNone) continue;
       const TriangleId n = triangle_of(twin);
       bool known = false;

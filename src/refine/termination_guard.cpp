@@ -86,9 +86,7 @@ double triangles_wanted(const Mesh& mesh, const SizeBounds& bounds) {
                                : HUGE_VAL;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    const Point& a = mesh.point(mesh.corner[3 * t]);
-    const Point& b = mesh.point(mesh.corner[3 * t + 1]);
-    const Point& c = mesh.point(mesh.corner[3 * t + 2]);
+    const auto [a, b, c] = mesh.corner_points(t);
     const double area = 0.5 * twice_area_of(a, b, c);
     double bound = std::min(bounds.max_area > 0.0 ? bounds.max_area : HUGE_VAL, edge_area);
     if (bounds.triangle_bounds && t < mesh.area_bound.size() && mesh.area_bound[t] > 0.0)
@@ -110,7 +108,7 @@ double feature_work(const Mesh& mesh) {
   double work = 0.0;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
-    const VertexId v[3] = {mesh.corner[3 * t], mesh.corner[3 * t + 1], mesh.corner[3 * t + 2]};
+    const std::array<VertexId, 3> v = mesh.corners(t);
     const Point* p[3] = {&mesh.point(v[0]), &mesh.point(v[1]), &mesh.point(v[2])};
     const double twice_area = twice_area_of(*p[0], *p[1], *p[2]);
     const double smallest_f = std::min({f[v[0]], f[v[1]], f[v[2]]});

@@ -83,9 +83,7 @@ void reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
   const std::size_t triangles = static_cast<std::size_t>(slots + added);
   const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(added / 2.0);
   try {
-    mesh.corner.reserve(3 * triangles);
-    mesh.link.reserve(3 * triangles);
-    if (mesh.has_subsegments()) mesh.subseg.reserve(3 * triangles);
+    mesh.reserve_triangles(triangles);
     mesh.points.reserve(vertices);
     mesh.kind.reserve(vertices);
   } catch (const std::bad_alloc&) {
@@ -169,38 +167,10 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
   report_.cap_kind = cap_kind_;
 }
 
-// The coarse floor (2^-kCoarsePrecisionOctaves of the coordinates) is precision_floor_at times
-// 2^(kPrecisionOctaves - kCoarsePrecisionOctaves), exactly: one multiplication instead of a branch
-// on the hot path.
-double Terminator::precision_floor(const Point& p) const { return precision_floor_at(p) * precision_scale_; }
-
-double Terminator::floor_at(const Point& p) const { return std::max(guard_floor_, precision_floor(p)); }
-
-// The feature floor is there to stop cascades of quality splits. A triangle over its size bound
-// is split whatever the shapes around it: its circumcentre is at least 0.87 sqrt(area) from
-// every vertex of its own, the Steiner cap (which counts the triangles the bounds ask for) ends
-// size refinement, and only the precision floor applies. (An area-only run of plate.poly at
-// -a0.01 had left one triangle of area 0.015 whose shortest edge was below the floor.)
-double Terminator::floor_for(const Assessment& a, const Point& p) const {
-  return a.too_large ? precision_floor(p) : floor_at(p);
-}
-
-void Terminator::refuse_by_guard() {
-  ++report_.guard_refusals;
-  report_.stopped_by_guard = true;
-}
-
 // Fig. 38, DELAUNAYTERMINATOR; l.1-2 (the CDT, exterior removed) are the caller's.
 RefineReport Terminator::run() {
   refine_all();
   return finish();
-}
-
-void Terminator::refine_all() {
-  split_initial_encroachments();
-  for (TriangleId t = 0; t < mesh_.triangle_slots(); ++t)  // Fig. 38 l.7-9
-    if (mesh_.is_live(t)) enqueue_if_bad(t);
-  drain_queue();
 }
 
 void Terminator::split_initial_encroachments() {
@@ -245,7 +215,7 @@ std::vector<EdgeRef> Terminator::initially_encroached() {
 void Terminator::refine_around(std::span<const TriangleId> triangles) {
   for (TriangleId t : triangles) {
     if (t >= mesh_.triangle_slots() || !mesh_.is_live(t)) continue;
-    for (EdgeRef e = 3 * t; e < 3 * t + 3; ++e)
+    for (EdgeRef e : edges_of(t))
       if (mesh_.subseg[e] != kNone && is_splittable(e) && is_encroached(mesh_, pred_, e, rule_))
         enqueue_subsegment(e);
   }
@@ -260,8 +230,7 @@ void Terminator::drain_queue() {
     if (pops % kWarmInterval == 0) warm_pages();
     prefetch_queued();
     const QueuedTriangle entry = *bad_triangles_.pop();  // Fig. 38 l.11
-    if (!is_current(mesh_, entry)) continue;
-    split_bad_triangle(entry);  // Fig. 38 l.12
+    count(split_bad_triangle(entry), report_);            // Fig. 38 l.12-25
     if (track_unsplit_ && is_current(mesh_, entry)) unsplit_.push_back(entry.triangle);
   }
   report_.peak_queue = std::max(report_.peak_queue, bad_triangles_.peak_size());
@@ -294,7 +263,7 @@ void Terminator::warm_pages() {
 void Terminator::prefetch_queued() const {
   const QueuedTriangle* next = bad_triangles_.peek(kPrefetchDistance);
   if (next == nullptr) return;
-  const std::size_t e = 3 * static_cast<std::size_t>(next->triangle);
+  const std::size_t e = edge_of(next->triangle, 0);
   if (e >= mesh_.corner.size()) return;
   prefetch(&mesh_.corner[e]);
   prefetch(&mesh_.link[e]);
@@ -305,146 +274,19 @@ void Terminator::prefetch_queued() const {
   // search reads first.
   const QueuedTriangle* nearer = bad_triangles_.peek(kPrefetchDistance / 2);
   if (nearer == nullptr) return;
-  const std::size_t f = 3 * static_cast<std::size_t>(nearer->triangle);
+  const std::size_t f = edge_of(nearer->triangle, 0);
   if (f >= mesh_.corner.size()) return;
   for (std::size_t i = 0; i < 3; ++i)
     if (const EdgeRef twin = mesh_.link[f + i]; twin != kNone) prefetch(&mesh_.corner[twin - twin % 3]);
-}
-
-void Terminator::split_bad_triangle(const QueuedTriangle& entry) {
-  const TriangleId t = entry.triangle;
-  const Assessment assessment = assess(t);
-  if (!assessment.bad() || !budget_left()) return;
-  const double d = std::sqrt(assessment.shape.shortest_length2);
-  if (d < floor_for(assessment, mesh_.point(mesh_.org(assessment.shape.shortest)))) {  // could only make shorter edges
-    refuse_by_guard();
-    return;
-  }
-  Point c = steiner_point(mesh_, assessment.shape.shortest, off_center_factor_);  // Fig. 38 l.13
-  // A triangle flat to rounding (its measured area 0) has no usable circumcentre: the walk
-  // towards a NaN point has no exit side.
-  if (!std::isfinite(c.x) || !std::isfinite(c.y)) return;
-  // At the bottom of double precision the point is chosen among the doubles near c; if none
-  // improves t's neighbourhood, c may still ask for subsegment splits, but is not inserted.
-  bool no_better_double = false;
-  const EdgeRef shortest = assessment.shape.shortest;
-  if (bottom_possible_ && at_bottom_scale(assessment.shape.shortest_length2, mesh_.point(mesh_.org(shortest)))) {
-    // A shortest edge that no double can make a good triangle with stays bad: refuse at once
-    // rather than grade the mesh down around it.
-    if (assessment.skinny && !assessment.too_large &&
-        hopeless_edge(mesh_.point(mesh_.org(shortest)), mesh_.point(mesh_.dest(shortest)), opt_.angle.sin2())) {
-      ++report_.bottom_scale_refusals;
-      refuse_by_guard();
-      return;
-    }
-    if (const std::optional<Point> better = bottom_scale_point(t, c, assessment)) c = *better;
-    else no_better_double = true;
-  }
-  const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
-  const Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, splittable);  // Fig. 38 l.14
-  if (probe.status == ProbeStatus::Unusable) return;
-  if (probe.status == ProbeStatus::Clear && encroaches_kept_boundary(c, t)) {
-    // Fig. 38 l.18 with a subsegment that -Y/-YY keeps whole: c is rejected and, as nothing may be
-    // split, t stays as it is (counted by the closing survey). Inserting c anyway would make a
-    // triangle against the subsegment no better than t.
-    ++report_.kept_boundary_refusals;
-    return;
-  }
-  if (probe.status == ProbeStatus::Clear) {  // Fig. 38 l.15-17
-    if (no_better_double || probe.insertion_radius < floor_for(assessment, c)) {
-      report_.bottom_scale_refusals += no_better_double;
-      refuse_by_guard();
-      return;
-    }
-    const VertexId v = add_free_vertex(c, probe.container);
-    // The probe's cavity search left exactly the triangles c destroys marked.
-    const InsertResult inserted =
-        insert_vertex_into_cavity(mesh_, pred_, v, probe.container, probe.strictly_inside, marks_.marked());  // l.16
-    if (inserted.status != InsertStatus::Inserted) {  // c sits on an unsplittable subsegment
-      drop_last_vertex();
-      return;
-    }
-    DELTRI_ASSERT(mesh_.org(inserted.edge) == v);
-    ++report_.interior_steiner;
-    new_vertex(inserted.edge, true);  // Fig. 38 l.17
-    return;
-  }
-  ++report_.rejected_candidates;  // Fig. 38 l.18-25
-  for (EdgeRef s : probe.encroached)  // Fig. 38 l.20-22, d = shortest edge of t (Sec. 6.5)
-    if (assessment.too_large || !opt_.decline_cluster_splits || split_permitted(mesh_, apices_, s, d))
-      enqueue_subsegment(s);
-  if (encroached_.empty()) {  // SPLITPERMITTED declined: never try t again
-    ++report_.declined_splits;
-    return;
-  }
-  // Fig. 38 l.23-25. t goes back only if something was split, so a guard refusal cannot make
-  // the same attempt repeat forever. Splits owed to a size bound meet only the precision floor,
-  // as t itself does (floor_for).
-  if (split_encroached_subsegments(true, assessment.too_large) > 0 && is_current(mesh_, entry)) enqueue_if_bad(t);
-}
-
-// Fig. 39, NEWVERTEX.
-void Terminator::new_vertex(EdgeRef out, bool queue_triangles) {
-  const VertexId v = mesh_.org(out);
-  finder_.note_star(mesh_, out);
-  for_each_around(mesh_, out, [&](EdgeRef e) {  // Fig. 39 l.50
-    const EdgeRef opposite = lnext(e);           // Fig. 39 l.51
-    const bool segment = mesh_.has_subsegments() && mesh_.subseg[opposite] != kNone;
-    if (segment && is_splittable(opposite) &&
-        encroaches(pred_, mesh_.point(mesh_.org(opposite)), mesh_.point(mesh_.dest(opposite)),
-                   mesh_.point(v), rule_))
-      enqueue_subsegment(opposite);  // Fig. 39 l.52-53
-    else if (queue_triangles)
-      enqueue_if_bad(triangle_of(e));  // Fig. 39 l.54-55
-  });
-}
-
-Assessment Terminator::assess(TriangleId t) const {
-  Assessment a = assess_triangle(mesh_, t, rules_);
-  if (a.skinny && shell_exempt(a.shape.shortest)) a.skinny = false;
-  return a;
-}
-
-// Miller, Pav and Walkington's rule, which Triangle also follows: a skinny triangle whose shortest
-// edge joins split points on two segment pieces that meet at a common endpoint, at equal distances
-// from it, is left alone. Such an edge is the base of an isosceles triangle at the junction; the
-// angle there is an input angle, and splitting it only cuts both pieces down again one shell
-// further in, forever when the junction angle is small. Equal within 0.1%: split points are
-// rounded.
-bool Terminator::shell_exempt(EdgeRef shortest) const {
-  const VertexId a = mesh_.org(shortest), b = mesh_.dest(shortest);
-  // Only segment splits have pieces; the kinds, a byte per vertex, stay in cache where the
-  // pieces would be a miss.
-  if (mesh_.kind[a] != VertexKind::Segment || mesh_.kind[b] != VertexKind::Segment) return false;
-  const PieceEnds* pa = pieces_.piece_of(a);
-  const PieceEnds* pb = pieces_.piece_of(b);
-  if (pa == nullptr || pb == nullptr) return false;
-  const VertexId j = shared_end(*pa, *pb);
-  if (j == kNone) return false;
-  const double da2 = squared_distance(mesh_.point(a), mesh_.point(j));
-  const double db2 = squared_distance(mesh_.point(b), mesh_.point(j));
-  constexpr double k = 0.999 * 0.999;  // the distances within 0.1%, compared squared
-  return da2 > k * db2 && db2 > k * da2;
 }
 
 void Terminator::enqueue_if_bad(TriangleId t) {
   const Assessment a = assess(t);
   if (!a.bad()) return;
   DELTRI_ASSERT(mesh_.is_live(t));
-  const QueuedTriangle entry{t, mesh_.corner[3 * t], mesh_.corner[3 * t + 1], mesh_.corner[3 * t + 2]};
+  const auto [u, v, w] = mesh_.corners(t);
+  const QueuedTriangle entry{t, u, v, w};
   bad_triangles_.push(entry, {a.skinny, a.shape.ratio2_over_bound2, a.shape.shortest_length2});
-}
-
-bool Terminator::budget_left() {
-  const std::uint64_t used = report_.interior_steiner + report_.segment_steiner;
-  if (used >= steiner_cap_) {
-    report_.stopped_by_cap = true;
-    return false;
-  }
-  if (opt_.max_steiner < 0) return true;
-  if (used < static_cast<std::uint64_t>(opt_.max_steiner)) return true;
-  report_.stopped_by_max_steiner = true;
-  return false;
 }
 
 // Vertex attributes are interpolated linearly over the triangle the point falls in.
@@ -453,7 +295,7 @@ VertexId Terminator::add_free_vertex(const Point& p, EdgeRef container) {
   const int na = mesh_.num_attributes;
   if (na == 0) return v;
   const TriangleId t = triangle_of(container);
-  const VertexId a = mesh_.corner[3 * t], b = mesh_.corner[3 * t + 1], c = mesh_.corner[3 * t + 2];
+  const auto [a, b, c] = mesh_.corners(t);
   const Point &pa = mesh_.point(a), &pb = mesh_.point(b), &pc = mesh_.point(c);
   const double area = (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
   const double wb = ((p.x - pa.x) * (pc.y - pa.y) - (p.y - pa.y) * (pc.x - pa.x)) / area;
@@ -467,9 +309,7 @@ VertexId Terminator::add_free_vertex(const Point& p, EdgeRef container) {
 }
 
 Point Terminator::centroid_of(TriangleId t) const {
-  const Point& p = mesh_.point(mesh_.corner[3 * t]);
-  const Point& q = mesh_.point(mesh_.corner[3 * t + 1]);
-  const Point& r = mesh_.point(mesh_.corner[3 * t + 2]);
+  const auto [p, q, r] = mesh_.corner_points(t);
   return Point{(p.x + q.x + r.x) / 3.0, (p.y + q.y + r.y) / 3.0};
 }
 
@@ -481,60 +321,52 @@ void Terminator::drop_last_vertex() {
   if (mesh_.num_attributes > 0) mesh_.attributes.resize(mesh_.attributes.size() - mesh_.num_attributes);
 }
 
-// The closing survey of slots [from, to) into `into`, whose survey fields start at zero.
-void Terminator::survey(TriangleId from, TriangleId to, RefineReport& into) const {
-  const double sin_theta = std::sqrt(opt_.angle.sin2());
-  for (TriangleId t = from; t < to; ++t) {
-    // The corners come in slot order, their points from anywhere: fetch those a few slots ahead.
-    if (const TriangleId ahead = t + kSurveyPrefetch; ahead < to && mesh_.is_live(ahead))
-      for (EdgeRef e = 3 * ahead; e < 3 * ahead + 3; ++e) prefetch(&mesh_.points[mesh_.corner[e]]);
-    if (!mesh_.is_live(t)) continue;
-    const Assessment a = assess(t);
-    if (!a.bad()) continue;
-    ++into.bad_triangles_left;
-    if (a.too_large) {
-      ++into.oversized_left;
-      const double excess = size_excess(mesh_, t, a.shape, rules_);
-      if (excess > into.worst_size_excess) {
-        into.worst_size_excess = excess;
-        into.worst_size_location = centroid_of(t);
-      }
-    }
-    if (!a.skinny) continue;
-    ++into.skinny_left;
-    // r / l = sqrt(q) B with B = 1 / (2 sin theta).
-    const double ratio = std::sqrt(a.shape.ratio2_over_bound2) / (2.0 * sin_theta);
-    if (ratio < into.worst_ratio) continue;
-    into.worst_ratio = ratio;
-    into.worst_min_angle_deg = std::asin(std::min(1.0, 1.0 / (2.0 * ratio))) * 180.0 / std::numbers::pi;
-    into.worst_location = centroid_of(t);
-  }
+void Terminator::enqueue_subsegment(EdgeRef e) {
+  DELTRI_ASSERT(mesh_.subseg[e] != kNone);
+  encroached_.push({e, mesh_.org(e), mesh_.dest(e)});
 }
 
-// Assessing every triangle is about 4% of a large run: with a second thread, each takes half of
-// the slots, and the upper half's findings are merged as a scan of all would have found them (the
-// last of equally skinny triangles, the first of equally oversized ones).
-void Terminator::survey_remaining() {
-  const TriangleId slots = mesh_.triangle_slots();
-  if (opt_.threads < 2 || slots < kParallelSurveySlots) {
-    survey(0, slots, report_);
-    return;
-  }
-  const TriangleId middle = slots / 2;
-  RefineReport upper;
-  run_both([&] { survey(middle, slots, upper); }, [&] { survey(0, middle, report_); });
-  report_.bad_triangles_left += upper.bad_triangles_left;
-  report_.oversized_left += upper.oversized_left;
-  report_.skinny_left += upper.skinny_left;
-  if (upper.worst_size_excess > report_.worst_size_excess) {
-    report_.worst_size_excess = upper.worst_size_excess;
-    report_.worst_size_location = upper.worst_size_location;
-  }
-  if (upper.skinny_left > 0 && upper.worst_ratio >= report_.worst_ratio) {
-    report_.worst_ratio = upper.worst_ratio;
-    report_.worst_min_angle_deg = upper.worst_min_angle_deg;
-    report_.worst_location = upper.worst_location;
-  }
+EdgeRef Terminator::current_edge(const EncroachedSubsegment& entry) {
+  const auto is_it = [&](EdgeRef e) {
+    if (e == kNone || e >= mesh_.corner.size() || !mesh_.is_live(triangle_of(e))) return false;
+    if (mesh_.subseg[e] == kNone) return false;
+    const VertexId o = mesh_.org(e), d = mesh_.dest(e);
+    return (o == entry.a && d == entry.b) || (o == entry.b && d == entry.a);
+  };
+  if (is_it(entry.edge)) return entry.edge;
+  const EdgeRef found = finder_.find(mesh_, entry.a, entry.b);
+  return is_it(found) ? found : kNone;
+}
+
+bool Terminator::is_splittable(EdgeRef e) const {
+  if (kept_by_switch(e)) return false;
+  const SubsegmentId id = mesh_.subseg[e];
+  if (id == kSeamEdge) return false;
+  return id >= locked_.size() || !locked_[id];
+}
+
+bool Terminator::kept_by_switch(EdgeRef e) const {
+  return opt_.no_steiner_on_segments >= 2 || (opt_.no_steiner_on_segments == 1 && mesh_.link[e] == kNone);
+}
+
+// A subsegment that doubles cannot split (the split point rounds onto an end, or a neighbour lies
+// flush with it there) is treated as -Y treats the boundary from then on. Trying again only
+// repeated the failure, and where Chew's step had deleted free vertices first, their triangles came
+// back with new ones: robustness1.node at -a0.93 went round that loop 177,000 times, to the Steiner
+// cap (361,425 points, 354,083 deletions).
+void Terminator::lock(EdgeRef s) {
+  const SubsegmentId id = mesh_.subseg[s];
+  if (id >= locked_.size()) locked_.resize(mesh_.subsegments.size(), 0);
+  locked_[id] = 1;
+}
+
+// A segment vertex takes the segment's marker and attributes interpolated along the subsegment.
+VertexId Terminator::add_segment_vertex(const Point& p, EdgeRef s) {
+  const VertexId a = mesh_.org(s), b = mesh_.dest(s);
+  const VertexId v = mesh_.add_vertex(p, VertexKind::Segment);
+  if (!mesh_.marker.empty()) mesh_.marker[v] = mesh_.subsegments[mesh_.subseg[s]].marker;
+  mesh_.interpolate_attributes(v, a, b);
+  return v;
 }
 
 }  // namespace deltri

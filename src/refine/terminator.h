@@ -1,7 +1,10 @@
-// The Terminator's state and its three routines, named after Shewchuk 2001, Figs. 38-39:
-// run() is DELAUNAYTERMINATOR, split_encroached_subsegments() is SPLITENCROACHEDSUBSEGMENTS and
-// new_vertex() is NEWVERTEX. terminator.cpp holds the triangle side, subsegment_splits.cpp the
-// subsegment side.
+// The Terminator of Shewchuk 2001, Appendix A. Its core, terminator_core.cpp, reads like Figures 38
+// and 39: refine_all() and split_bad_triangle() are DELAUNAYTERMINATOR, split_encroached_subsegments()
+// and split_subsegment() SPLITENCROACHEDSUBSEGMENTS, new_vertex() NEWVERTEX, and each bad triangle
+// or encroached subsegment served gets an Outcome (outcome.h). The policies the core asks (where a
+// point goes, when the guard refuses) are in terminator_policies.cpp, Chew's step in chew_step.cpp;
+// terminator.cpp is the driver around the core (set-up, the queue's mechanics, prefetching and page
+// warming, bookkeeping), terminator_survey.cpp the closing survey.
 #pragma once
 
 #include <array>
@@ -20,6 +23,7 @@
 #include "refine/encroached.h"
 #include "refine/encroached_queue.h"
 #include "refine/mirrored_split.h"
+#include "refine/outcome.h"
 #include "refine/quality_queue.h"
 #include "refine/refine.h"
 #include "util/page_warmer.h"
@@ -76,56 +80,76 @@ class Terminator {
   TerminatorStart hand_over() &&;
 
  private:
-  // Fig. 38 l.11-25: one bad triangle from Q_t.
-  void split_bad_triangle(const QueuedTriangle& entry);
-  // Fig. 39 l.36-49; returns the number of subsegments split. owed_to_size: the splits are asked
+  // --- the core (terminator_core.cpp) ---
+  // Fig. 38 l.12-25: one triangle from Q_t.
+  Outcome split_bad_triangle(const QueuedTriangle& entry);
+  struct Candidate {
+    Point point;
+    bool no_better_double = false;  // at the bottom scale, no double near it improves the mesh
+  };
+  Outcome insert_point(TriangleId t, const Assessment& a, const Candidate& c, const Probe& probe);  // l.15-17
+  Outcome split_encroached_instead(const QueuedTriangle& entry, const Assessment& a, const Probe& probe);  // l.18-25
+  // Fig. 39 l.36-38; returns the number of subsegments split. owed_to_size: the splits are asked
   // for by a triangle over its size bound, and meet only the precision floor (floor_for).
   std::uint64_t split_encroached_subsegments(bool queue_triangles, bool owed_to_size = false);
-  // Fig. 39 l.39-45 for one subsegment; false if it was not split.
-  bool split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_size);
-  // Leaves s whole from now on, as -Y leaves the boundary: doubles cannot split it.
-  void lock(EdgeRef s);
-  bool uses_lenses() const;
+  Outcome split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_size);  // Fig. 39 l.39-49
+  void new_vertex(EdgeRef out, bool queue_triangles);  // Fig. 39 l.50-55; `out` leaves the new vertex
+
+  // --- the policies (terminator_policies.cpp): a point, or a refusal ---
+  std::optional<Outcome> choose_point(TriangleId t, const Assessment& a, Candidate& c);  // l.13
+  std::optional<Outcome> guard_insertion(const Assessment& a, const Candidate& c, double radius) const;
   struct SplitRadius {
     double now, after_chew;  // the shortest edge a split at p would make, before and after Chew's step
   };
+  struct SplitPlan {
+    Point point;
+    double floor = 0.0;  // the guard's floor for the split
+    SplitRadius radius{};
+  };
+  std::optional<Outcome> plan_split(EdgeRef s, bool owed_to_size, SplitPlan& plan);  // Fig. 39 l.39
+  std::optional<Outcome> replan_after_deletions(EdgeRef s, SplitPlan& plan);
   SplitRadius split_radius(EdgeRef s, const Point& p);
-  // Fig. 39 l.40-43; returns the edge of the subsegment afterwards, or kNone.
-  EdgeRef delete_free_vertices_near(EdgeRef s, bool queue_triangles);
-  static constexpr std::size_t kDeletionSearchLimit = 512;  // triangles looked at per split
   // Would splitting s at p leave every new triangle counter-clockwise?
   // chew_pending: free vertices in s's diametral circle do not count (Chew's step deletes them).
   bool split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pending);
-  // Fig. 39 l.50-55; `out` leaves the new vertex.
-  void new_vertex(EdgeRef out, bool queue_triangles);
+  bool uses_lenses() const;
+  // Whether c encroaches upon a subsegment on the boundary of the cavity just probed that -Y / -YY
+  // keep whole, making a triangle with it no better than t.
+  bool encroaches_kept_boundary(const Point& c, TriangleId t);
+  bool budget_left();                   // the Steiner cap and -S
+  double floor_at(const Point& p) const;  // the guard's edge floor where p lies
+  double floor_for(const Assessment& a, const Point& p) const;  // the floor for splitting that triangle
+  double precision_floor(const Point& p) const;  // precision_floor_at, or the coarse floor
+  // assess_triangle plus the equal-shell exemption (shell_exempt).
+  Assessment assess(TriangleId t) const;
+  bool shell_exempt(EdgeRef shortest) const;
 
+  // --- Chew's step (chew_step.cpp), Fig. 39 l.40-43 ---
+  // Returns the edge of the subsegment afterwards, or kNone.
+  EdgeRef delete_free_vertices_near(EdgeRef s, bool queue_triangles);
+  std::vector<VertexId> free_vertices_seen_from(EdgeRef s);
+  static constexpr std::size_t kDeletionSearchLimit = 512;  // triangles looked at per split
+
+  // --- the driver and bookkeeping (terminator.cpp) ---
+  // Leaves s whole from now on, as -Y leaves the boundary: doubles cannot split it.
+  void lock(EdgeRef s);
   std::vector<EdgeRef> initially_encroached();  // Fig. 38 l.3-4
-  // Fig. 38 l.10-12: serve Q_t until it is empty.
+  // Fig. 38 l.10-11: serve Q_t until it is empty.
   void drain_queue();
   void prefetch_queued() const;
   static constexpr std::size_t kPrefetchDistance = 8;  // queue entries ahead
   // Tells the page warmer how far the mesh arrays are used (every kWarmInterval pops).
   void warm_pages();
   static constexpr unsigned kWarmInterval = 256;
-  // assess_triangle plus the equal-shell exemption (shell_exempt).
-  Assessment assess(TriangleId t) const;
-  bool shell_exempt(EdgeRef shortest) const;
   void enqueue_if_bad(TriangleId t);
   void enqueue_subsegment(EdgeRef e);
   EdgeRef current_edge(const EncroachedSubsegment& entry);
   bool is_splittable(EdgeRef e) const;  // not kept by -Y / -YY, not a seam edge, not locked
   bool kept_by_switch(EdgeRef e) const;  // -Y / -YY keep the subsegment on e whole
-  // Whether c encroaches upon a subsegment on the boundary of the cavity just probed that -Y / -YY
-  // keep whole, making a triangle with it no better than t.
-  bool encroaches_kept_boundary(const Point& c, TriangleId t);
-  bool budget_left();                   // -S
   VertexId add_free_vertex(const Point& p, EdgeRef container);
   VertexId add_segment_vertex(const Point& p, EdgeRef s);
   Point centroid_of(TriangleId t) const;
   void drop_last_vertex();
-  void refuse_by_guard();
-  double floor_at(const Point& p) const;  // the guard's edge floor where p lies
-  double floor_for(const Assessment& a, const Point& p) const;  // the floor for splitting that triangle
   void survey_remaining();
   void survey(TriangleId from, TriangleId to, RefineReport& into) const;
   static constexpr TriangleId kParallelSurveySlots = 100000;
@@ -133,9 +157,12 @@ class Terminator {
   // At the bottom scale (bottom_scale.h): the double near `ideal` whose insertion makes the best
   // triangles, if they beat the worst one it destroys; t must be among those.
   std::optional<Point> bottom_scale_point(TriangleId t, const Point& ideal, const Assessment& a);
+  struct BottomScore {
+    double near, all;  // the smallest angle sines of the new triangles near t's scale, and of all
+  };
+  std::optional<BottomScore> bottom_score(const Point& c, const KnownCavity& cavity, double l2, double t_sine2);
   Point bottom_scale_split(EdgeRef s, const Point& ideal, bool chew_pending);
   void find_hopeless_edges();  // counts them into report_.hopeless_edges
-  double precision_floor(const Point& p) const;  // precision_floor_at, or the coarse floor
 
   Mesh& mesh_;
   Predicates& pred_;

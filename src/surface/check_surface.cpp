@@ -55,9 +55,9 @@ void check_conforming(const SurfaceMesh& m, SurfaceCheck& c) {
 void check_planar(const SurfaceMesh& m, SurfaceCheck& c) {
   for (std::size_t t = 0; t < m.triangle_count(); ++t) {
     const FacetPlane& plane = m.planes[m.triangle_facet[t]];
-    const Point3& a = m.points[m.triangles[3 * t]];
-    const Point3& b = m.points[m.triangles[3 * t + 1]];
-    const Point3& d = m.points[m.triangles[3 * t + 2]];
+    const Point3& a = m.points[m.triangles[t][0]];
+    const Point3& b = m.points[m.triangles[t][1]];
+    const Point3& d = m.points[m.triangles[t][2]];
     const double off = std::max({std::abs(plane.distance(a)), std::abs(plane.distance(b)), std::abs(plane.distance(d))});
     if (off > kPlanarTolerance * plane.diameter)
       fault(c, "triangle " + std::to_string(t + 1) + " lies off the plane of facet " +

@@ -2,6 +2,7 @@
 // Plain data for the writers and the -C check.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -22,7 +23,7 @@ struct SurfaceMesh {
   std::vector<Point3> points;
   bool has_markers = false;
   std::vector<int> markers;                  // one per point when has_markers (0 for new ones)
-  std::vector<std::uint32_t> triangles;      // three vertex ids per triangle
+  std::vector<std::array<std::uint32_t, 3>> triangles;  // the vertex ids of each triangle
   std::vector<std::uint32_t> triangle_facet; // the facet (0-based) each triangle belongs to
   std::vector<Edge> subsegments;             // every piece of every input segment, once
   std::vector<int> facet_marker;             // per facet

@@ -19,9 +19,6 @@ write cdt/recover_edge.cpp 1
 write cdt/segment_inserter.cpp 3
 write delaunay/incremental.cpp 5
 write delaunay/sweepline.cpp 2
-index api/c_surface.cpp 1
-index api/output_arrays.cpp 5
-index api/surface_library.cpp 1
 index cdt/convex_hull.cpp 1
 index cdt/edit.cpp 16
 index cdt/flood.cpp 1
@@ -29,34 +26,9 @@ index cdt/holes_and_regions.cpp 1
 index cdt/rebuild_mesh.cpp 3
 index cdt/recover_edge.cpp 1
 index cdt/walk.cpp 6
-index cli/surface_run.cpp 1
 index delaunay/divide_and_conquer.cpp 43
 index delaunay/incremental.cpp 5
 index delaunay/sweepline.cpp 4
-index io/edge_file.cpp 2
-index io/ele_file.cpp 2
-index io/midpoints.cpp 1
-index io/msh_file.cpp 1
-index io/neigh_file.cpp 1
-index io/off_file.cpp 1
-index io/output_numbering.cpp 1
-index io/poly_file.cpp 1
-index io/surface_exports.cpp 6
-index io/surface_files.cpp 1
-index io/svg_file.cpp 5
-index io/voronoi_file.cpp 2
-index io/vtu_file.cpp 7
-index quality/bound_misses.cpp 8
-index quality/check_mesh.cpp 4
-index quality/statistics.cpp 4
-index refine/area_field.cpp 2
-index refine/bad_triangles.cpp 6
-index refine/bottom_scale.cpp 2
-index refine/candidate_probe.cpp 8
-index refine/edge_finder.cpp 2
-index refine/termination_guard.cpp 4
-index refine/terminator.cpp 12
-index surface/check_surface.cpp 3
 LIST
 }
 check() {  # kind pattern exempt-regex

@@ -36,8 +36,8 @@ FacetMeshOptions quality30() {
 }
 
 double area(const SurfaceMesh& m, std::size_t t) {
-  const Point3& a = m.points[m.triangles[3 * t]];
-  return 0.5 * norm(cross(m.points[m.triangles[3 * t + 1]] - a, m.points[m.triangles[3 * t + 2]] - a));
+  const Point3& a = m.points[m.triangles[t][0]];
+  return 0.5 * norm(cross(m.points[m.triangles[t][1]] - a, m.points[m.triangles[t][2]] - a));
 }
 
 }  // namespace
@@ -85,7 +85,7 @@ TEST(tee_facets_conform_along_the_shared_segment) {
   std::map<std::uint32_t, std::set<std::uint32_t>> on_segment;
   for (std::size_t t = 0; t < m.triangle_count(); ++t)
     for (int i = 0; i < 3; ++i) {
-      const std::uint32_t v = m.triangles[3 * t + i];
+      const std::uint32_t v = m.triangles[t][i];
       if (m.points[v].x == 0.0 && m.points[v].y == 0.0) on_segment[m.triangle_facet[t]].insert(v);
     }
   CHECK(on_segment[0].size() > 2);
@@ -95,7 +95,7 @@ TEST(tee_facets_conform_along_the_shared_segment) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
   for (std::size_t t = 0; t < m.triangle_count(); ++t)
     for (int i = 0; i < 3; ++i) {
-      const std::uint32_t a = m.triangles[3 * t + i], b = m.triangles[3 * t + (i + 1) % 3];
+      const std::uint32_t a = m.triangles[t][i], b = m.triangles[t][(i + 1) % 3];
       if (on_segment[0].count(a) && on_segment[0].count(b)) ++uses[{std::min(a, b), std::max(a, b)}];
     }
   CHECK_EQ(uses.size(), on_segment[0].size() - 1);

@@ -1,0 +1,206 @@
+// The Terminator's policies: where a new point goes (the circumcentre or off-centre of a bad
+// triangle, a subsegment's split point on concentric shells or mirrored across a thin wedge, a
+// double near either at the bottom of double precision) and when the termination guard refuses a
+// point (termination_guard.h). The core (terminator_core.cpp) asks; these answer with a point or
+// a refusal.
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/constructions.h"
+#include "geometry/encroachment.h"
+#include "geometry/lattice.h"
+#include "refine/bottom_scale.h"
+#include "refine/concentric_shells.h"
+#include "refine/mirrored_split.h"
+#include "refine/steiner_point.h"
+#include "refine/termination_guard.h"
+#include "refine/terminator.h"
+
+namespace deltri {
+
+// Fig. 38 l.13 and the guard's first look. A triangle whose shortest edge is already below the
+// floor could only make shorter edges. At the bottom of double precision the point is chosen
+// among the doubles near c; if none improves t's neighbourhood, c may still ask for subsegment
+// splits (l.18-25) but is not inserted (guard_insertion).
+std::optional<Outcome> Terminator::choose_point(TriangleId t, const Assessment& a, Candidate& c) {
+  const EdgeRef shortest = a.shape.shortest;
+  const Point& g = mesh_.point(mesh_.org(shortest));
+  if (std::sqrt(a.shape.shortest_length2) < floor_for(a, g)) return Outcome::BelowFloor;
+  c.point = steiner_point(mesh_, shortest, off_center_factor_);
+  // A triangle flat to rounding (its measured area 0) has no usable circumcentre: the walk
+  // towards a NaN point has no exit side.
+  if (!std::isfinite(c.point.x) || !std::isfinite(c.point.y)) return Outcome::NoPoint;
+  if (!bottom_possible_ || !at_bottom_scale(a.shape.shortest_length2, g)) return std::nullopt;
+  // A shortest edge that no double can make a good triangle with stays bad: refuse at once rather
+  // than grade the mesh down around it.
+  if (a.skinny && !a.too_large && hopeless_edge(g, mesh_.point(mesh_.dest(shortest)), opt_.angle.sin2()))
+    return Outcome::Hopeless;
+  if (const std::optional<Point> better = bottom_scale_point(t, c.point, a)) c.point = *better;
+  else c.no_better_double = true;
+  return std::nullopt;
+}
+
+// The guard on a point about to be inserted, whose nearest vertex is `radius` away.
+std::optional<Outcome> Terminator::guard_insertion(const Assessment& a, const Candidate& c, double radius) const {
+  if (c.no_better_double) return Outcome::NoBetterDouble;
+  if (radius < floor_for(a, c.point)) return Outcome::BelowFloor;
+  return std::nullopt;
+}
+
+// Fig. 39 l.39: the split point of s, across a thin wedge aligned with the vertex opposite
+// (mirrored_split.h), else on concentric shells. Out of precision (it rounds onto an end, or a
+// neighbour is flush with s there, unless it is one that Chew's step deletes; checked again after
+// the step) and at the bottom of double precision the doubles near it are tried
+// (bottom_scale_split); if none will do, s is locked.
+std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, SplitPlan& plan) {
+  const VertexId a = mesh_.org(s), b = mesh_.dest(s);
+  const Point& pa = mesh_.point(a);
+  const Point& pb = mesh_.point(b);
+  Point p;
+  if (!mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
+    p = shell_split_point(pa, pb, apices_.uses_shells(a), apices_.uses_shells(b));
+  const auto out_of_precision = [&](const Point& q) {
+    // A split point that overflowed (segments spanning most of the double range) is no point.
+    return !std::isfinite(q.x) || !std::isfinite(q.y) || q == pa || q == pb ||
+           !split_keeps_orientation(s, q, uses_lenses());
+  };
+  if ((bottom_possible_ && at_bottom_scale(squared_distance(pa, pb), pa)) || out_of_precision(p)) {
+    p = bottom_scale_split(s, p, uses_lenses());
+    if (out_of_precision(p)) {
+      lock(s);
+      return Outcome::Locked;
+    }
+  }
+  plan.point = p;
+  plan.floor = owed_to_size ? precision_floor(p) : floor_at(p);
+  plan.radius = split_radius(s, p);
+  if (plan.radius.after_chew < plan.floor) return Outcome::BelowFloor;
+  return std::nullopt;
+}
+
+// After Chew's step (Fig. 39 l.40-43) the split point is checked again: a free vertex flush with
+// s that the step did not delete, or one its search could not reach, still counts.
+std::optional<Outcome> Terminator::replan_after_deletions(EdgeRef s, SplitPlan& plan) {
+  if (!split_keeps_orientation(s, plan.point, false)) plan.point = bottom_scale_split(s, plan.point, false);
+  if (!split_keeps_orientation(s, plan.point, false)) {
+    lock(s);
+    return Outcome::Locked;
+  }
+  if (plan.radius.now < plan.floor && split_insertion_radius(mesh_, pred_, s, plan.point, marks_) < plan.floor)
+    return Outcome::BelowFloor;
+  return std::nullopt;
+}
+
+bool Terminator::uses_lenses() const { return opt_.lenses && !opt_.conforming_delaunay; }
+
+// The length of the shortest edge that splitting s at p would make, now and once Chew's step (with
+// lenses) has deleted the free vertices inside s's diametral circle: a free vertex a rounding
+// error from s's midpoint once made a split owed to a size bound look like a new edge of 1e-15.
+Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
+  const double now = split_insertion_radius(mesh_, pred_, s, p, marks_);
+  if (!uses_lenses() || marks_.boundary().empty()) return {now, now};
+  const Point& pa = mesh_.point(mesh_.org(s));
+  const Point& pb = mesh_.point(mesh_.dest(s));
+  double nearest2 = HUGE_VAL;
+  for (EdgeRef e : marks_.boundary()) {  // the cavity's vertices are its boundary's
+    const VertexId w = mesh_.org(e);
+    const Point& q = mesh_.point(w);
+    if (mesh_.kind[w] == VertexKind::Free && strictly_inside_diametral_circle(pa, pb, q)) continue;
+    nearest2 = std::min(nearest2, squared_distance(q, p));
+  }
+  return {now, std::sqrt(nearest2)};
+}
+
+// split_edge joins p to the apices on both sides of s. p is rounded, so it is rarely exactly on s;
+// when an apex lies within rounding distance of s (a vertex flush with a segment, beyond what
+// doubles resolve), p can land on the far side of the line through that apex and a clockwise
+// triangle would appear. Such a split is refused, like one whose point rounds onto an endpoint.
+bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pending) {
+  for (EdgeRef e : {s, mesh_.link[s]}) {
+    if (e == kNone) continue;
+    const Point& o = mesh_.point(mesh_.org(e));
+    const Point& d = mesh_.point(mesh_.dest(e));
+    const VertexId apex = mesh_.apex(e);
+    const Point& c = mesh_.point(apex);
+    if (chew_pending && mesh_.kind[apex] == VertexKind::Free && strictly_inside_diametral_circle(o, d, c)) continue;
+    if (pred_.orient2d(o, p, c) <= 0 || pred_.orient2d(p, d, c) <= 0) return false;
+  }
+  return true;
+}
+
+// The probe just made recorded the subsegments on the cavity's boundary (CavityMarks). c would
+// make a triangle with each of them; one that c encroaches and -Y/-YY keeps whole refuses c only
+// if that triangle would be no better than t. Refusing every such c leaves the triangles along a
+// long kept segment as they are, and points inserted beyond its diametral circle then cut them
+// into slivers against the short edges near its ends (river.poly: 0.72 degrees where 3 were
+// possible); a c that makes a better triangle than the one it removes only improves the mesh.
+bool Terminator::encroaches_kept_boundary(const Point& c, TriangleId t) {
+  if (opt_.no_steiner_on_segments == 0) return false;
+  const EdgeRef e0 = edge_of(t, 0);
+  const double worst = smallest_angle_sine2(mesh_.point(mesh_.org(e0)), mesh_.point(mesh_.dest(e0)),
+                                            mesh_.point(mesh_.apex(e0)));
+  for (EdgeRef e : marks_.boundary_subsegments()) {
+    const Point& a = mesh_.point(mesh_.org(e));
+    const Point& b = mesh_.point(mesh_.dest(e));
+    if (kept_by_switch(e) && encroaches(pred_, a, b, c, rule_) && smallest_angle_sine2(a, b, c) <= worst)
+      return true;
+  }
+  return false;
+}
+
+// The coarse floor (2^-kCoarsePrecisionOctaves of the coordinates) is precision_floor_at times
+// 2^(kPrecisionOctaves - kCoarsePrecisionOctaves), exactly: one multiplication instead of a branch
+// on the hot path.
+double Terminator::precision_floor(const Point& p) const { return precision_floor_at(p) * precision_scale_; }
+
+double Terminator::floor_at(const Point& p) const { return std::max(guard_floor_, precision_floor(p)); }
+
+// The feature floor is there to stop cascades of quality splits. A triangle over its size bound
+// is split whatever the shapes around it: its circumcentre is at least 0.87 sqrt(area) from
+// every vertex of its own, the Steiner cap (which counts the triangles the bounds ask for) ends
+// size refinement, and only the precision floor applies. (An area-only run of plate.poly at
+// -a0.01 had left one triangle of area 0.015 whose shortest edge was below the floor.)
+double Terminator::floor_for(const Assessment& a, const Point& p) const {
+  return a.too_large ? precision_floor(p) : floor_at(p);
+}
+
+bool Terminator::budget_left() {
+  const std::uint64_t used = report_.interior_steiner + report_.segment_steiner;
+  if (used >= steiner_cap_) {
+    report_.stopped_by_cap = true;
+    return false;
+  }
+  if (opt_.max_steiner < 0) return true;
+  if (used < static_cast<std::uint64_t>(opt_.max_steiner)) return true;
+  report_.stopped_by_max_steiner = true;
+  return false;
+}
+
+Assessment Terminator::assess(TriangleId t) const {
+  Assessment a = assess_triangle(mesh_, t, rules_);
+  if (a.skinny && shell_exempt(a.shape.shortest)) a.skinny = false;
+  return a;
+}
+
+// Miller, Pav and Walkington's rule, which Triangle also follows: a skinny triangle whose shortest
+// edge joins split points on two segment pieces that meet at a common endpoint, at equal distances
+// from it, is left alone. Such an edge is the base of an isosceles triangle at the junction; the
+// angle there is an input angle, and splitting it only cuts both pieces down again one shell
+// further in, forever when the junction angle is small. Equal within 0.1%: split points are
+// rounded.
+bool Terminator::shell_exempt(EdgeRef shortest) const {
+  const VertexId a = mesh_.org(shortest), b = mesh_.dest(shortest);
+  // Only segment splits have pieces; the kinds, a byte per vertex, stay in cache where the
+  // pieces would be a miss.
+  if (mesh_.kind[a] != VertexKind::Segment || mesh_.kind[b] != VertexKind::Segment) return false;
+  const PieceEnds* pa = pieces_.piece_of(a);
+  const PieceEnds* pb = pieces_.piece_of(b);
+  if (pa == nullptr || pb == nullptr) return false;
+  const VertexId j = shared_end(*pa, *pb);
+  if (j == kNone) return false;
+  const double da2 = squared_distance(mesh_.point(a), mesh_.point(j));
+  const double db2 = squared_distance(mesh_.point(b), mesh_.point(j));
+  constexpr double k = 0.999 * 0.999;  // the distances within 0.1%, compared squared
+  return da2 > k * db2 && db2 > k * da2;
+}
+}  // namespace deltri
