@@ -44,11 +44,14 @@ check-debug:
 	@cd build-debug && ctest --output-on-failure -j $(JOBS) -R '^(e2e|regression)\.'
 
 # The library's thread test (8 threads calling the C++ API at once, tests/api/test_threads.cpp)
-# under ThreadSanitizer, which must report nothing: its own build, of that test only.
+# and refinement in 8 parts on 2 to 8 threads (tests/refine/test_halves.cpp, the test named
+# halves_give_the_same_mesh_on_one_to_eight_threads) under ThreadSanitizer, which must report
+# nothing: its own build, of those tests only.
 check-tsan:
 	@cmake -S . -B build-tsan -DDELTRI_TSAN=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-	@cmake --build build-tsan -j $(JOBS) --target test_api_threads
+	@cmake --build build-tsan -j $(JOBS) --target test_api_threads test_refine
 	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/test_api_threads data
+	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/test_refine halves_give_the_same_mesh
 
 # The README's two commands in a fresh clone of this checkout's HEAD, from a clean environment,
 # with MAKEFLAGS unset and then set to -s (tests/setup/check_fresh.sh). Not part of `make test`.

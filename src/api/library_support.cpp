@@ -1,5 +1,6 @@
 #include "api/library_support.h"
 
+#include <algorithm>
 #include <new>
 #include <system_error>
 #include <vector>
@@ -30,16 +31,42 @@ std::string without_suffix(std::string text, const std::string& suffix) {
   return text;
 }
 
+// The switches may end with words of the options the library takes beyond Triangle's letters
+// ("pq30 --threads=4"); the letters come first. Other long options (files, pictures) are the
+// command line's and refused.
+std::vector<std::string> long_options_of(const std::string& switches, std::string& letters) {
+  std::vector<std::string> options;
+  std::size_t i = 0;
+  while (i < switches.size()) {
+    const std::size_t from = switches.find_first_not_of(" \t", i);
+    if (from == std::string::npos) break;
+    const std::size_t to = std::min(switches.find_first_of(" \t", from), switches.size());
+    const std::string word = switches.substr(from, to - from);
+    if (word.rfind("--threads=", 0) == 0) {
+      options.push_back(word);
+    } else if (word.rfind("--", 0) == 0 || !letters.empty()) {
+      throw api::Error(DELTRI_USAGE_ERROR, word + ": the switches are one word of letters, then optionally --threads=N");
+    } else {
+      letters = word;
+    }
+    i = to;
+  }
+  return options;
+}
+
 }  // namespace
 
 Switches parse_library_switches(const std::string& given, bool size_function) {
+  std::string letters;
+  const std::vector<std::string> options = long_options_of(given, letters);
   bool bare_u = false;
-  std::string word = without_bare_u(given, bare_u);
+  std::string word = without_bare_u(letters, bare_u);
   if (!word.empty() && word[0] == '-') word.erase(0, 1);
   if (bare_u && !size_function)
     throw api::Error(DELTRI_USAGE_ERROR, "u: a bare u asks for a size test, and none was given (or give a length, u0.05)");
   std::vector<std::string> args = {"deltri"};
   if (!word.empty()) args.push_back("-" + word);
+  args.insert(args.end(), options.begin(), options.end());
   args.push_back("input");
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());

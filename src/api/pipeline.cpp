@@ -168,7 +168,7 @@ RefineOptions refine_options(const Switches& sw, bool area_file) {
   opt.off_centers = !sw.circumcenters_only;
   opt.queue_order = sw.queue_order;
   opt.decline_cluster_splits = sw.decline_cluster_splits;
-  opt.threads = sw.threads;
+  opt.threads = threads_to_use(sw);
   opt.memory_budget = memory_budget();
   return opt;
 }
@@ -202,7 +202,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     stage("mesh reconstruction");
     check_stage(mesh, "mesh reconstruction");
   } else {
-    const DelaunayReport dt = delaunay_triangulate(mesh, sw.algorithm, sw.threads);
+    const DelaunayReport dt = delaunay_triangulate(mesh, sw.algorithm, threads_to_use(sw));
     report.duplicates = dt.duplicates.size();
     // As for a header of one or two vertices: duplicates merged, nothing could be triangulated.
     if (const std::size_t distinct = report.input_vertices - report.duplicates; distinct < 3)

@@ -9,7 +9,7 @@ namespace {
 FacetMeshOptions facet_options(const Switches& sw) {
   FacetMeshOptions o;
   o.algorithm = sw.algorithm;
-  o.threads = sw.threads;
+  o.threads = threads_to_use(sw);
   o.refine = sw.quality || sw.fixed_area || sw.user_test || sw.conforming_delaunay;
   o.refinement = refine_options(sw, false);
   o.refinement.size.triangle_bounds = false;

@@ -1,6 +1,7 @@
 #include <cctype>
 #include <charconv>
 #include <string>
+#include <thread>
 
 #include "cli/switch_table.h"
 #include "cli/version.h"
@@ -145,6 +146,12 @@ bool uses_standard_output(const Switches& s) {
   for (const Switches::FileRequest* r : {&s.msh, &s.vtu, &s.svg, &s.json, &s.stl})
     if (r->wanted && r->path == "-") return true;
   return false;
+}
+
+int threads_to_use(const Switches& sw) {
+  if (sw.threads > 0) return sw.threads;
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores > 0 ? static_cast<int>(cores) : 1;
 }
 
 Switches parse_switches(int argc, const char* const* argv) {

@@ -176,8 +176,8 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
     std::fprintf(out_, "  peak bad-triangle queue: %zu; triangles still bad: %llu\n", q->peak_queue,
                 static_cast<unsigned long long>(q->bad_triangles_left));
     if (q->in_halves)
-      std::fprintf(out_, "  refined in two halves at once, then a seam of %llu edges: %llu Steiner points from %llu triangles\n",
-                  static_cast<unsigned long long>(q->seam_edges), static_cast<unsigned long long>(q->seam_steiner),
+      std::fprintf(out_, "  refined in %u parts apart, then seams of %llu edges: %llu Steiner points from %llu triangles\n",
+                  q->parts, static_cast<unsigned long long>(q->seam_edges), static_cast<unsigned long long>(q->seam_steiner),
                   static_cast<unsigned long long>(q->seam_seeds));
     if (q->hopeless_edges > 0)
       std::fprintf(out_, "  initial edges no double can give a good triangle: %llu\n",

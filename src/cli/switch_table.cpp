@@ -135,6 +135,15 @@ void set_vtu_format(S& s, const std::string* v) {
   s.vtu_binary = *v == "binary";
 }
 
+void set_threads(S& s, const std::string* v) {
+  const std::string& n = *v;
+  int threads = 0;
+  const bool digits = !n.empty() && n.size() <= 4 && n.find_first_not_of("0123456789") == std::string::npos;
+  if (digits) threads = std::stoi(n);
+  if (threads < 1) throw UsageError("--threads=" + n + ": give a whole number of threads from 1 to 9999");
+  s.threads = threads;
+}
+
 constexpr std::array kLongOptions = {
     LongOption{"msh", "FILE", true, "also write the mesh as Gmsh MSH (version and encoding: --msh-format); FILE - is standard output",
                [](S& s, const std::string* v) { request(s.msh, v, "msh"); }},
@@ -178,6 +187,10 @@ constexpr std::array kLongOptions = {
     LongOption{"decline-cluster-splits", "", false,
                "let SPLITPERMITTED (Shewchuk 2001, Fig. 38) decline to split subsegment clusters",
                [](S& s, const std::string*) { s.decline_cluster_splits = true; }},
+    LongOption{"threads", "N", false,
+               "refine large meshes (and build the triangulation) on up to N threads (default: all cores); "
+               "the output is the same for every N",
+               set_threads},
     LongOption{"man", "", false, "print the manual page (roff) and exit",
                [](S& s, const std::string*) { s.man = true; }},
     LongOption{"version", "", false, "print the version and exit",

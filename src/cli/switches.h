@@ -70,11 +70,14 @@ struct Switches {
   bool quiet = false;            // -Q
   int verbose = 0;               // -V, -VV, ...
   bool help = false;             // -h
-  int threads = 2;
+  int threads = 0;               // --threads=N; 0: all cores (threads_to_use)
 
   std::string input;             // the input file as given
   std::string command_line;      // every argument, space-separated (for the JSON report)
 };
+
+// The threads a run may use: --threads=N, or every core the machine reports (at least one).
+int threads_to_use(const Switches& sw);
 
 // Parses Triangle-style arguments: switch words start with '-' and hold any number of letters,
 // a letter's number follows it directly; the last other argument names the input.

@@ -151,4 +151,9 @@ struct Mesh {
   void take_vertices(Mesh& from, VertexId first);
 };
 
+// The per-triangle arrays besides the topology (corner, link, subseg), each holding the same
+// number of values for every slot (or none at all): a new one is listed here, and the operations
+// that move triangles between meshes (mesh/parts.h) carry it.
+inline constexpr std::vector<double> Mesh::*kTriangleData[] = {&Mesh::triangle_attributes, &Mesh::area_bound};
+
 }  // namespace deltri

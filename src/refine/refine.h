@@ -50,6 +50,10 @@ struct RefineOptions {
   // Refine a large mesh as two halves and the seam between them (refine/halves.h), on one thread
   // or two: a rule of the input and this switch, so the mesh is the same for every thread count.
   bool in_halves = true;
+  // The rule for the number of parts (refine/halves.h, part_depth): a mesh with this many live
+  // triangles is cut once, one with 8 times as many twice (4 parts), 64 times three times, ...
+  // Tests lower it to cut small meshes deeply; the program keeps the default.
+  std::uint32_t part_min_triangles = 20000;
   // The memory refinement may use, in bytes (0: no limit): size bounds that need more are refused
   // before refinement starts (MemoryError), and the Steiner cap never allows more
   // (termination_guard.h). The command line sets it from the machine (util/memory_budget.h).
@@ -122,6 +126,7 @@ struct RefineReport : RefineWork {
   // Refined in two halves at once (refine/halves.h): the seam's edges (none when the halves do not
   // touch), its Terminator's Steiner points and the triangles it started from.
   bool in_halves = false;
+  std::uint32_t parts = 0;                // the parts refined apart (2^d, fewer where a part could not be cut)
   std::uint64_t seam_edges = 0;
   std::uint64_t seam_steiner = 0;
   std::uint64_t seam_seeds = 0;

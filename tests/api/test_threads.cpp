@@ -95,6 +95,14 @@ int main(int argc, char** argv) {
         ++failures;
       }
   }
+  // The switches' --threads=N: the same mesh with one thread and with three as with the default.
+  for (const char* threads : {" --threads=1", " --threads=3"}) {
+    const Job job{"water.poly", "pq25" + std::string(threads)};
+    if (!same(serial[1], run(inputs[1], job))) {
+      std::printf("FAIL: water.poly -pq25%s differs from -pq25\n", threads);
+      ++failures;
+    }
+  }
   if (failures) return 1;
   long triangles = 0;
   for (const deltri::api::Mesh& m : serial) triangles += m.triangle_count;

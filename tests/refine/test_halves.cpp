@@ -43,11 +43,14 @@ Mesh scattered_square_with_chain() {
   return m;
 }
 
-RefineOptions bounds_with(int threads, bool in_halves = true) {
+// part_min: RefineOptions::part_min_triangles; 20,000 (the program's) cuts the test meshes once,
+// 300 three times (8 parts).
+RefineOptions bounds_with(int threads, bool in_halves = true, std::uint32_t part_min = 20000) {
   RefineOptions opt = quality(30);
   opt.size.triangle_bounds = true;
   opt.threads = threads;
   opt.in_halves = in_halves;
+  opt.part_min_triangles = part_min;
   return opt;
 }
 
@@ -84,7 +87,8 @@ std::uint32_t vertices_in_triangles(const Mesh& m) {
 
 TEST(halves_apply_only_where_they_cannot_disagree) {
   const Mesh m = scattered_square_with_chain();
-  CHECK(m.live_triangles() >= kHalvesMinTriangles);
+  CHECK_EQ(part_depth(m, bounds_with(2)), 1);  // 28,000 triangles: 20,000 or more, under 160,000
+  CHECK_EQ(part_depth(m, bounds_with(2, true, 300)), 3);  // 19,200 or more, under 153,600
   CHECK(halves_apply(m, bounds_with(2)));
   CHECK(halves_apply(m, bounds_with(1)));  // the thread count does not decide
   CHECK(!halves_apply(m, bounds_with(2, false)));
@@ -103,13 +107,16 @@ TEST(halves_apply_only_where_they_cannot_disagree) {
   CHECK(!halves_apply(unit_square(), bounds_with(2)));  // too small to pay
 }
 
+// Two parts and eight: every seam's triangles and subsegments meet the bounds too.
 TEST(halves_meet_the_bounds_and_keep_what_triangles_carry) {
+  for (std::uint32_t part_min : {20000u, 300u}) {
   Mesh m = scattered_square_with_chain();
   const std::uint32_t input_vertices = m.vertex_count();
   Predicates pred;
-  const RefineReport r = refine_mesh(m, pred, bounds_with(2));
+  const RefineReport r = refine_mesh(m, pred, bounds_with(2, true, part_min));
   const Facts f = facts_of(m);
-  std::printf("  halves: %u triangles, min angle %.4f, %llu + %llu Steiner, %llu deleted\n", m.live_triangles(),
+  CHECK_EQ(r.parts, part_min == 300 ? 8u : 2u);
+  std::printf("  %u parts: %u triangles, min angle %.4f, %llu + %llu Steiner, %llu deleted\n", r.parts, m.live_triangles(),
               f.min_angle, static_cast<unsigned long long>(r.interior_steiner),
               static_cast<unsigned long long>(r.segment_steiner), static_cast<unsigned long long>(r.vertices_deleted));
   CHECK(f.all_ccw);
@@ -138,6 +145,7 @@ TEST(halves_meet_the_bounds_and_keep_what_triangles_carry) {
     const int expected = m.kind[v] == VertexKind::Segment ? (on_chain ? 3 : 1) : 0;
     CHECK_EQ(m.marker[v], expected);
   }
+  }
 }
 
 // Each half is refined as it would be alone, whatever the threads' timing; and the seam costs
@@ -155,24 +163,33 @@ TEST(halves_are_deterministic_and_close_to_the_whole) {
   CHECK(std::fabs(n - w) <= 0.01 * w);
 }
 
-// The mesh does not depend on the number of threads: one thread refines the same halves one after
-// the other, and four use two of them.
-TEST(halves_give_the_same_mesh_on_one_two_and_four_threads) {
-  Mesh one = scattered_square_with_chain(), two = one, four = one;
-  Predicates p1, p2, p4;
-  const RefineReport r1 = refine_mesh(one, p1, bounds_with(1));
-  refine_mesh(two, p2, bounds_with(2));
-  refine_mesh(four, p4, bounds_with(4));
-  CHECK(r1.in_halves);
-  CHECK(Snapshot(one) == Snapshot(two));
-  CHECK(Snapshot(one) == Snapshot(four));
+// The mesh does not depend on the number of threads: one thread refines the same parts one after
+// the other, more run them at once (3: one side of the first cut gets two, the other one; 8 with
+// 8 parts: each its own). Two parts and eight.
+TEST(halves_give_the_same_mesh_on_one_to_eight_threads) {
+  for (std::uint32_t part_min : {20000u, 300u}) {
+    Mesh one = scattered_square_with_chain();
+    const Mesh input = one;
+    Predicates p1;
+    const RefineReport r1 = refine_mesh(one, p1, bounds_with(1, true, part_min));
+    CHECK(r1.in_halves);
+    for (int threads : {2, 3, 4, 8}) {
+      Mesh other = input;
+      Predicates p;
+      const RefineReport r = refine_mesh(other, p, bounds_with(threads, true, part_min));
+      CHECK(Snapshot(one) == Snapshot(other));
+      CHECK_EQ(r.parts, r1.parts);
+      CHECK_EQ(r.interior_steiner, r1.interior_steiner);
+      CHECK_EQ(r.seam_steiner, r1.seam_steiner);
+    }
+  }
 }
 
 // Random interior edges as segments: subsegments meeting at every angle, many of them across the
 // cut, so clusters, shells and the small-angle exemption all meet the seam. Whatever the seed, the
 // result is a valid constrained Delaunay mesh of the same domain with the same segments.
 TEST(halves_keep_random_segments_and_the_constrained_delaunay_property) {
-  for (std::uint64_t seed : {1u, 2u, 3u}) {
+  for (std::uint64_t seed : {1u, 2u, 3u, 4u}) {
     std::uint64_t state = seed * 0x9E3779B97F4A7C15ULL;
     const auto next = [&] {
       state = state * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -193,6 +210,7 @@ TEST(halves_keep_random_segments_and_the_constrained_delaunay_property) {
     }
     RefineOptions opt = quality(28);
     opt.threads = 2;
+    if (seed >= 3) opt.part_min_triangles = 300;  // 8 parts: seams across seams
     REQUIRE(halves_apply(m, opt));
     Predicates pred;
     const RefineReport r = refine_mesh(m, pred, opt);

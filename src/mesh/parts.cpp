@@ -1,0 +1,154 @@
+#include "mesh/parts.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "mesh/operations.h"
+#include "util/run_both.h"
+
+namespace deltri {
+namespace {
+
+// Values per slot of each per-triangle data array (mesh.h, kTriangleData): 0 when it is empty.
+std::size_t data_width(const Mesh& mesh, std::vector<double> Mesh::*array) {
+  const std::size_t slots = mesh.triangle_slots();
+  return slots == 0 ? 0 : (mesh.*array).size() / slots;
+}
+
+std::uint64_t edge_key(VertexId a, VertexId b) { return static_cast<std::uint64_t>(a) << 32 | b; }
+
+// Copies the part's slots: corners, links inside the part, subsegments (cut edges marked on both
+// sides), and the triangle data; records which records the part owns and which lie on the cut.
+void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, const std::vector<TriangleId>& slot,
+               SubsegmentId mark) {
+  Mesh& r = cut.part;
+  const TriangleId n = r.triangle_slots();
+  std::size_t width[std::size(kTriangleData)];
+  for (std::size_t k = 0; k < std::size(kTriangleData); ++k) {
+    width[k] = data_width(mesh, kTriangleData[k]);
+    (r.*kTriangleData[k]).resize(static_cast<std::size_t>(n) * width[k]);
+  }
+  const auto record = [&](SubsegmentId s) { return s < mesh.subsegments.size(); };
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (!moves[t] || !mesh.is_live(t)) continue;
+    for (unsigned i = 0; i < 3; ++i) {
+      const EdgeRef e = edge_of(t, i), f = edge_of(slot[t], i);
+      const EdgeRef twin = mesh.link[e];
+      const bool on_cut = twin != kNone && !moves[triangle_of(twin)];
+      r.corner[f] = mesh.corner[e];
+      r.link[f] = twin == kNone || on_cut ? kNone : edge_of(slot[triangle_of(twin)], side_of(twin));
+      SubsegmentId s = mesh.subseg[e];
+      if (on_cut) cut.cut_keys.push_back(edge_key(mesh.corner[twin], mesh.corner[lnext(twin)]));
+      if (record(s)) (on_cut ? cut.cut_records : cut.part_records)[s] = 1;
+      if (on_cut && s == kNone) mesh.subseg[twin] = s = mark;
+      r.subseg[f] = s;
+    }
+    for (std::size_t k = 0; k < std::size(kTriangleData); ++k) {
+      const auto& from = mesh.*kTriangleData[k];
+      std::copy_n(from.begin() + static_cast<std::ptrdiff_t>(t * width[k]), width[k],
+                  (r.*kTriangleData[k]).begin() + static_cast<std::ptrdiff_t>(slot[t] * width[k]));
+    }
+  }
+}
+
+}  // namespace
+
+CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId mark) {
+  CutOff cut;
+  cut.v0 = mesh.vertex_count();
+  cut.s0 = static_cast<SubsegmentId>(mesh.subsegments.size());
+  cut.part = mesh.without_triangles();
+  cut.part_records.assign(mesh.subsegments.size(), 0);
+  cut.cut_records.assign(mesh.subsegments.size(), 0);
+  std::vector<TriangleId> slot(mesh.triangle_slots(), kNone);
+  TriangleId n = 0;
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+    if (moves[t] && mesh.is_live(t)) slot[t] = n++;
+  Mesh& r = cut.part;
+  r.corner.resize(3 * static_cast<std::size_t>(n));
+  r.link.resize(r.corner.size());
+  r.subseg.resize(r.corner.size());
+  copy_part(mesh, cut, moves, slot, mark);
+  std::sort(cut.cut_keys.begin(), cut.cut_keys.end());
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+    if (moves[t] && mesh.is_live(t)) mesh.kill_triangle(t);  // unlinks the other side's cut edges
+  return cut;
+}
+
+// The part's triangles and vertices after the mesh's. The appends fault in fresh pages, most of
+// their cost: the links and vertices on a second thread, the rest on this one.
+PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark) {
+  Mesh& r = cut.part;
+  const PartIds ids{cut.v0, mesh.vertex_count(), cut.s0, static_cast<SubsegmentId>(mesh.subsegments.size()),
+                    mesh.triangle_slots()};
+  const auto moved = [&](Subsegment s) {
+    s.a = ids.vertex(s.a);
+    s.b = ids.vertex(s.b);
+    return s;
+  };
+  for (SubsegmentId s = 0; s < ids.s0; ++s)
+    if (cut.part_records[s]) mesh.subsegments[s] = moved(r.subsegments[s]);
+  for (SubsegmentId s = ids.s0; s < r.subsegments.size(); ++s) mesh.subsegments.push_back(moved(r.subsegments[s]));
+  const auto links_and_vertices = [&] {
+    move_appending(r.link, mesh.link, [&](EdgeRef e) { return e == kNone ? kNone : edge_of(ids.triangle_base, 0) + e; });
+    mesh.take_vertices(r, ids.v0);
+  };
+  const auto corners_and_subsegments = [&] {
+    move_appending(r.corner, mesh.corner, [&](VertexId v) { return ids.vertex(v); });
+    move_appending(r.subseg, mesh.subseg, [&](SubsegmentId s) { return ids.record(s, mark); });
+  };
+  run_both(links_and_vertices, corners_and_subsegments);
+  for (std::vector<double> Mesh::*array : kTriangleData) {
+    std::vector<double>& to = mesh.*array;
+    const std::vector<double>& from = r.*array;
+    to.insert(to.end(), from.begin(), from.end());
+  }
+  for (TriangleId t : r.free_triangles) mesh.free_triangles.push_back(ids.triangle(t));
+  r = Mesh{};
+  return ids;
+}
+
+std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, SubsegmentId mark) {
+  const std::vector<std::uint64_t>& keys = cut.cut_keys;
+  std::vector<EdgeRef> stayed(keys.size(), kNone), moved(keys.size(), kNone);
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+    if (mesh.link[e] != kNone || mesh.corner[e] == kNone) continue;
+    const SubsegmentId s = mesh.subseg[e];
+    if (s != mark && (s >= cut.cut_records.size() || !cut.cut_records[s])) continue;
+    const bool on_stayed = e < edge_of(ids.triangle_base, 0);
+    // Keyed by the orientation on the side that stayed.
+    const std::uint64_t key = on_stayed ? edge_key(mesh.org(e), mesh.dest(e)) : edge_key(mesh.dest(e), mesh.org(e));
+    const auto at = std::lower_bound(keys.begin(), keys.end(), key);
+    if (at == keys.end() || *at != key) continue;  // an earlier cut's edge
+    (on_stayed ? stayed : moved)[static_cast<std::size_t>(at - keys.begin())] = e;
+  }
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    const EdgeRef e = stayed[k], f = moved[k];
+    if (e == kNone || f == kNone) throw std::logic_error("the parts' cut edges do not match");
+    mesh.bond(e, f);
+    if (mesh.subseg[e] == mark) mesh.subseg[e] = mesh.subseg[f] = kNone;
+  }
+  return stayed;
+}
+
+// Each side is constrained Delaunay, so only the sewn edges, and the sides of the quadrilaterals
+// flipped, can fail the test.
+void flip_delaunay_from(Mesh& mesh, Predicates& pred, std::vector<EdgeRef> stack, std::vector<TriangleId>& touched) {
+  while (!stack.empty()) {
+    const EdgeRef e = stack.back();
+    stack.pop_back();
+    const EdgeRef twin = mesh.link[e];
+    if (twin == kNone || mesh.subseg[e] != kNone) continue;
+    if (pred.incircle(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e)), mesh.point(mesh.apex(e)),
+                      mesh.point(mesh.apex(twin))) <= 0)
+      continue;
+    const EdgeRef g = flip(mesh, e);  // a quadrilateral with a non-Delaunay diagonal is convex
+    const EdgeRef h = mesh.link[g];
+    touched.push_back(triangle_of(g));
+    touched.push_back(triangle_of(h));
+    for (EdgeRef x : {lnext(g), lprev(g), lnext(h), lprev(h)}) stack.push_back(x);
+  }
+}
+
+}  // namespace deltri
