@@ -35,8 +35,8 @@ std::uint64_t Terminator::split_encroached_subsegments(bool queue_triangles, boo
 bool Terminator::uses_lenses() const { return opt_.lenses && !opt_.conforming_delaunay; }
 
 // The length of the shortest edge that splitting s at p would make, now and once Chew's step (with
-// lenses) has deleted the free vertices inside s's diametral circle: a free vertex a rounding
-// error from s's midpoint once made a split owed to a size bound look like a new edge of 1e-15.
+// lenses) has deleted the free vertices it deletes: a free vertex a rounding error from s's
+// midpoint once made a split owed to a size bound look like a new edge of 1e-15.
 Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
   const double now = split_insertion_radius(mesh_, pred_, s, p, marks_);
   if (!uses_lenses() || marks_.boundary().empty()) return {now, now};
@@ -46,17 +46,40 @@ Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
   for (EdgeRef e : marks_.boundary()) {  // the cavity's vertices are its boundary's
     const VertexId w = mesh_.org(e);
     const Point& q = mesh_.point(w);
-    if (mesh_.kind[w] == VertexKind::Free && strictly_inside_diametral_circle(pa, pb, q)) continue;
+    if (mesh_.kind[w] == VertexKind::Free && strictly_inside_diametral_circle(pa, pb, q) && too_close_to_split(w, p))
+      continue;
     nearest2 = std::min(nearest2, squared_distance(q, p));
   }
   return {now, std::sqrt(nearest2)};
 }
 
+// Whether Chew's step deletes the free vertex w, inside the diametral circle of a subsegment about
+// to be split at p: when p is nearer to w than w's nearest neighbour is. Chew deletes every free
+// vertex in the circle, so that p's nearest visible neighbours are the subsegment's ends and no
+// short edge appears (Sec. 4.2, proof of Lemma 5). A vertex at least as far from p as from its
+// nearest neighbour x makes no edge at p shorter than the edge wx it already has; deleting it only
+// undid refinement that was then done again: the side of a unit plate split late, its circle
+// reaching a 1e-4 wide slit in the middle, deleted 41 vertices of the slit's grading, most of them
+// far from p, and they were put back as before or finer. With the rule, p's insertion radius is at
+// least wx (or the paper's radius if no vertex is kept), and of w and x the younger has an
+// insertion radius at most wx: Lemma 5's relation r_v >= r_p cos(theta) holds with that vertex as
+// parent (with the factor 1), and no edge shorter than those already there appears, which is what
+// Theorem 4's argument for termination uses. Measured in docs/refinement.md ("Chew's deletion").
+bool Terminator::too_close_to_split(VertexId w, const Point& p) {
+  const Point& q = mesh_.point(w);
+  const EdgeRef out = finder_.leaving(mesh_, w);
+  if (out == kNone) return true;
+  double nearest2 = HUGE_VAL;
+  for_each_around(mesh_, out, [&](EdgeRef e) { nearest2 = std::min(nearest2, squared_distance(q, mesh_.point(mesh_.dest(e)))); });
+  return squared_distance(q, p) < nearest2;
+}
+
 // Fig. 39 l.40-43, Chew's step: the free vertices inside the diametral circle of s that the two
-// triangles beside s can see (a search that never crosses a subsegment) are deleted before s is
-// split, so that with lenses no vertex is left closer to the new subsegments than their diametral
-// circles allow. Returns the edge that now carries s (deletions rewrite slots), or kNone.
-EdgeRef Terminator::delete_free_vertices_near(EdgeRef s, bool queue_triangles) {
+// triangles beside s can see (a search that never crosses a subsegment) and that the split point p
+// would come too close to (too_close_to_split) are deleted before s is split at p, so that with
+// lenses no short edge appears at p. Returns the edge that now carries s (deletions rewrite slots),
+// or kNone.
+EdgeRef Terminator::delete_free_vertices_near(EdgeRef s, const Point& p, bool queue_triangles) {
   const VertexId a = mesh_.org(s), b = mesh_.dest(s);
   const Point& pa = mesh_.point(a);
   const Point& pb = mesh_.point(b);
@@ -73,7 +96,7 @@ EdgeRef Terminator::delete_free_vertices_near(EdgeRef s, bool queue_triangles) {
       const VertexId w = mesh_.org(e);
       const bool w_inside = w != a && w != b && inside(w);
       if (w_inside && mesh_.kind[w] == VertexKind::Free &&
-          std::find(doomed.begin(), doomed.end(), w) == doomed.end())
+          std::find(doomed.begin(), doomed.end(), w) == doomed.end() && too_close_to_split(w, p))
         doomed.push_back(w);
       const EdgeRef twin = mesh_.link[e];
       if (twin == kNone || mesh_.subseg[e] != kNone) continue;
@@ -136,7 +159,7 @@ bool Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_
     return false;
   }
   if (uses_lenses()) {  // Fig. 39 l.40-43
-    s = delete_free_vertices_near(s, queue_triangles);
+    s = delete_free_vertices_near(s, p, queue_triangles);
     if (s == kNone) return false;
     if (!split_keeps_orientation(s, p, false)) p = bottom_scale_split(s, p, false);
     if (!split_keeps_orientation(s, p, false)) {

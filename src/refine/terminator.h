@@ -91,7 +91,8 @@ class Terminator {
   };
   SplitRadius split_radius(EdgeRef s, const Point& p);
   // Fig. 39 l.40-43; returns the edge of the subsegment afterwards, or kNone.
-  EdgeRef delete_free_vertices_near(EdgeRef s, bool queue_triangles);
+  EdgeRef delete_free_vertices_near(EdgeRef s, const Point& p, bool queue_triangles);
+  bool too_close_to_split(VertexId w, const Point& p);
   static constexpr std::size_t kDeletionSearchLimit = 512;  // triangles looked at per split
   // Would splitting s at p leave every new triangle counter-clockwise?
   // chew_pending: free vertices in s's diametral circle do not count (Chew's step deletes them).
