@@ -179,10 +179,10 @@ constexpr std::array kLongOptions = {
                "and FILE.ele: a triangle is split while its area exceeds sqrt(3)/4 h^2, h interpolated at its centroid",
                [](S& s, const std::string* v) { s.size_field = *v; }},
     LongOption{"queue", "ORDER", false,
-               "which bad triangle refinement splits first: ratio (default: worst radius-edge ratio "
-               "first for slivers, 16 times the bound and more, then shortest edge first), paper (worst "
-               "ratio throughout, as Shewchuk 2001), edge (shortest edge first, as Triangle 1.6), fifo, "
-               "heap or paper-heap (exact heaps of the ratio and paper keys)",
+               "which bad triangle refinement splits first: ratio (default: shortest edge first, eight "
+               "levels per octave of its length), paper (worst radius-edge ratio first, as Shewchuk 2001), "
+               "edge (shortest edge first at a coarser resolution, as Triangle 1.6), fifo, "
+               "heap or paper-heap (exact heaps of the default and paper keys)",
                set_queue},
     LongOption{"decline-cluster-splits", "", false,
                "let SPLITPERMITTED (Shewchuk 2001, Fig. 38) decline to split subsegment clusters",

@@ -1,12 +1,15 @@
 // Fig. 39 l.40-43, Chew's step: the free vertices inside the diametral circle of a subsegment s
-// that the two triangles beside s can see (a search that never crosses a subsegment) are deleted
-// before s is split, so that with lenses no vertex is left closer to the new subsegments than
-// their diametral circles allow.
+// that the two triangles beside s can see (a search that never crosses a subsegment) and that the
+// split point p would come too close to (too_close_to_split) are deleted before s is split at p, so
+// that with lenses no short edge appears at p.
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
+#include "geometry/constructions.h"
 #include "geometry/encroachment.h"
 #include "mesh/delete_vertex.h"
+#include "mesh/vertex_edges.h"
 #include "refine/terminator.h"
 
 namespace deltri {
@@ -23,11 +26,33 @@ EdgeRef edge_among(const Mesh& mesh, const std::vector<TriangleId>& created, Ver
 
 }  // namespace
 
+// Whether Chew's step deletes the free vertex w, inside the diametral circle of a subsegment about
+// to be split at p: when p is nearer to w than w's nearest neighbour is. Chew deletes every free
+// vertex in the circle, so that p's nearest visible neighbours are the subsegment's ends and no
+// short edge appears (Sec. 4.2, proof of Lemma 5). A vertex at least as far from p as from its
+// nearest neighbour x makes no edge at p shorter than the edge wx it already has; deleting it only
+// undid refinement that was then done again: the side of a unit plate split late, its circle
+// reaching a 1e-4 wide slit in the middle, deleted 41 vertices of the slit's grading, most of them
+// far from p, and they were put back as before or finer. With the rule, p's insertion radius is at
+// least wx (or the paper's radius if no vertex is kept), and of w and x the younger has an
+// insertion radius at most wx: Lemma 5's relation r_v >= r_p cos(theta) holds with that vertex as
+// parent (with the factor 1), and no edge shorter than those already there appears, which is what
+// Theorem 4's argument for termination uses. Measured in docs/refinement.md ("Chew's deletion").
+bool Terminator::too_close_to_split(VertexId w, const Point& p) {
+  const Point& q = mesh_.point(w);
+  const EdgeRef out = finder_.leaving(mesh_, w);
+  if (out == kNone) return true;
+  double nearest2 = HUGE_VAL;
+  for_each_around(mesh_, out,
+                  [&](EdgeRef e) { nearest2 = std::min(nearest2, squared_distance(q, mesh_.point(mesh_.dest(e)))); });
+  return squared_distance(q, p) < nearest2;
+}
+
 // The free vertices strictly inside s's diametral circle that the triangles beside s can see: a
 // search from them that goes on only through edges with an end inside the circle (the circle is
 // convex, so the triangles reached cover everything in it that the start can see), at most
 // kDeletionSearchLimit triangles.
-std::vector<VertexId> Terminator::free_vertices_seen_from(EdgeRef s) {
+std::vector<VertexId> Terminator::free_vertices_seen_from(EdgeRef s, const Point& p) {
   const VertexId a = mesh_.org(s), b = mesh_.dest(s);
   const Point& pa = mesh_.point(a);
   const Point& pb = mesh_.point(b);
@@ -44,7 +69,8 @@ std::vector<VertexId> Terminator::free_vertices_seen_from(EdgeRef s) {
       const EdgeRef e = edge_of(todo[k], i);
       const VertexId w = mesh_.org(e);
       const bool w_inside = inside(w);
-      if (w_inside && mesh_.kind[w] == VertexKind::Free && std::find(doomed.begin(), doomed.end(), w) == doomed.end())
+      if (w_inside && mesh_.kind[w] == VertexKind::Free && std::find(doomed.begin(), doomed.end(), w) == doomed.end() &&
+          too_close_to_split(w, p))
         doomed.push_back(w);
       const EdgeRef twin = mesh_.link[e];
       if (twin == kNone || mesh_.subseg[e] != kNone) continue;
@@ -55,10 +81,10 @@ std::vector<VertexId> Terminator::free_vertices_seen_from(EdgeRef s) {
 }
 
 // Returns the edge that now carries s (deletions rewrite slots), or kNone.
-EdgeRef Terminator::delete_free_vertices_near(EdgeRef s, bool queue_triangles) {
+EdgeRef Terminator::delete_free_vertices_near(EdgeRef s, const Point& p, bool queue_triangles) {
   const VertexId a = mesh_.org(s), b = mesh_.dest(s);
   std::vector<TriangleId> created;
-  for (VertexId w : free_vertices_seen_from(s)) {  // l.40
+  for (VertexId w : free_vertices_seen_from(s, p)) {  // l.40
     const EdgeRef out = finder_.leaving(mesh_, w);
     created.clear();
     if (out == kNone || !delete_vertex(mesh_, pred_, out, created)) continue;

@@ -30,11 +30,6 @@ unsigned edge_bucket(double shortest2, double reference2) {
   return std::min(1 + floor_log2(ratio), QualityQueue::kBuckets - 1);
 }
 
-unsigned skinny_bucket(double q) {
-  if (!std::isfinite(q)) return QualityQueue::kBuckets - 1;
-  return std::min(kFirstSkinnyBucket + floor_log2(q / kSkinnyRatio2), QualityQueue::kBuckets - 1);
-}
-
 unsigned edge_level(double shortest2, double reference2) {
   const double x = reference2 / shortest2;
   if (!std::isfinite(x)) return kTopLevel;
@@ -46,17 +41,16 @@ unsigned edge_level(double shortest2, double reference2) {
 unsigned QualityQueue::window_bucket(unsigned level) const {
   const int above = static_cast<int>(level) - window_base_;
   if (above <= 0) return 1;
-  return std::min(1 + static_cast<unsigned>(above), kMildBuckets);
+  return std::min(1 + static_cast<unsigned>(above), kWindowBuckets);
 }
 
 void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
   switch (order_) {
     case QueueOrder::Ratio: {
       if (!why.skinny) return push_to_bucket(entry, 0);
-      if (why.ratio2_over_bound2 >= kSkinnyRatio2) return push_to_bucket(entry, skinny_bucket(why.ratio2_over_bound2));
       QueuedTriangle leveled = entry;
       leveled.level = static_cast<std::uint16_t>(edge_level(why.shortest2, reference2_));
-      if (static_cast<int>(leveled.level) > window_base_ + static_cast<int>(kMildBuckets - 1))
+      if (static_cast<int>(leveled.level) > window_base_ + static_cast<int>(kWindowBuckets - 1))
         raise_window(leveled.level);
       return push_to_bucket(leveled, window_bucket(leveled.level));
     }
@@ -67,9 +61,8 @@ void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
     case QueueOrder::Fifo:
       return push_to_bucket(entry, 0u);
     case QueueOrder::RatioHeap: {
-      // The tiers of the Ratio order, each ordered exactly.
+      // The Ratio order's key, exactly.
       if (!why.skinny) return push_keyed(entry, 0, 0.0);
-      if (why.ratio2_over_bound2 >= kSkinnyRatio2) return push_keyed(entry, 2, why.ratio2_over_bound2);
       return push_keyed(entry, 1, reference2_ / why.shortest2);
     }
     case QueueOrder::PaperHeap:
@@ -96,9 +89,9 @@ void QualityQueue::for_each_entry(const Fifo& fifo, Visit&& visit, Done&& done) 
 // Called only for a level above the window's top, so the window moves up by more than
 // kWindowHeadroom levels.
 void QualityQueue::raise_window(unsigned level) {
-  const int base = static_cast<int>(level + kWindowHeadroom) - static_cast<int>(kMildBuckets - 1);
+  const int base = static_cast<int>(level + kWindowHeadroom) - static_cast<int>(kWindowBuckets - 1);
   const int shift = base - window_base_;
-  const unsigned last = kMildBuckets;
+  const unsigned last = kWindowBuckets;
   const unsigned merged = static_cast<unsigned>(std::min<int>(shift + 1, static_cast<int>(last)));
   for (unsigned b = 2; b <= merged; ++b) {
     const Fifo old = buckets_[b];
@@ -124,7 +117,7 @@ void QualityQueue::move_window() {
   unsigned highest = 0;
   for_each_entry(old, [&](const QueuedTriangle& e) { highest = std::max<unsigned>(highest, e.level); },
                  [](std::uint32_t) {});
-  window_base_ = static_cast<int>(highest + kWindowHeadroom) - static_cast<int>(kMildBuckets - 1);
+  window_base_ = static_cast<int>(highest + kWindowHeadroom) - static_cast<int>(kWindowBuckets - 1);
   buckets_[1] = Fifo{};
   nonempty_ &= ~(std::uint64_t{1} << 1);
   for_each_entry(old, [&](const QueuedTriangle& e) { append(e, window_bucket(e.level)); },

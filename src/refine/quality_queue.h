@@ -6,17 +6,18 @@
 // or size test): ordering those does not pay (Sec. 7).
 //
 // The key (QueueOrder; measured on the corpus in docs/refinement.md):
-// - Ratio, the default: the circumradius-to-shortest-edge ratio r against the bound
-//   B = 1 / (2 sin theta), in two tiers. Skinny triangles, r >= 16B, take buckets 48..63, one per
-//   factor sqrt(2) in r, worst first, as the paper has it. Mildly skinny ones, B < r < 16B, take
-//   buckets 1..47 by the length l of their shortest edge, shortest first: their edge level
-//   (edge_level, eight levels per octave of l) picks a bucket in a window of 46 levels that slides
-//   towards longer edges as refinement works its way up (below). With off-centres the paper's order
-//   over the whole range refines 1.4 times as much as Triangle 1.6 at -q33: mildly skinny
-//   triangles are split large ones first, each split a little finer than the last when B < 1
-//   (theta > 30), and the cascades spread through the domain; served smallest first they settle
-//   where they start, and the finer the levels the better (one bucket per factor sqrt(2) in l,
-//   over the whole range at once, made 2.1 % more triangles at -q33 on the corpus).
+// - Ratio, the default (the name is kept from when slivers were served worst ratio first): every
+//   skinny triangle by the length l of its shortest edge, shortest first. Its edge level
+//   (edge_level, eight levels per octave of l) picks a bucket among 1..63 in a window of 62 levels
+//   that slides towards longer edges as refinement works its way up (below). With off-centres the
+//   paper's order refines 1.4 times as much as Triangle 1.6 at -q33: mildly skinny triangles are
+//   split large ones first, each split a little finer than the last when B < 1 (theta > 30), and
+//   the cascades spread through the domain; served smallest first they settle where they start,
+//   and the finer the levels the better (one bucket per factor sqrt(2) in l, over the whole range
+//   at once, made 2.1 % more triangles at -q33 on the corpus). Slivers (r >= 16B) were once served
+//   first, worst ratio first: their off-centres, 1.6 shortest edges from that edge, went in before
+//   the grading around them and fixed points that the finer triangles served first would have
+//   placed better (a plate with a 1e-4 wide slit at -q30: 564 triangles against 444).
 // - Paper: the ratio over the whole range, as Sec. 7 describes it (buckets 1..63, two per octave
 //   of (r/B)^2, worst first).
 // - Edge: the shortest edge over the whole range, one bucket per factor sqrt(2) (Triangle 1.6's
@@ -24,8 +25,8 @@
 // - Fifo: one bucket for everything. RatioHeap and PaperHeap: exact max-heaps of the Ratio and
 //   Paper keys (oldest first among equal keys), what their buckets approximate.
 //
-// The window of the mildly skinny: bucket 1 holds every level at or below the window's base, and
-// buckets 2..47 one level each above it. When bucket 1 is the worst non-empty bucket left, the
+// The window: bucket 1 holds every level at or below the window's base, and
+// buckets 2..63 one level each above it. When bucket 1 is the worst non-empty bucket left, the
 // window is moved down so that the highest level in bucket 1 lands kWindowHeadroom levels below
 // the top (room for the slightly shorter edges that splitting makes), and bucket 1's entries are
 // dealt out again, in their FIFO order; entries keep their level for that. The first pop places
@@ -53,7 +54,7 @@ namespace deltri {
 struct QueuedTriangle {
   TriangleId triangle;
   VertexId a, b, c;          // the corners when queued
-  std::uint16_t level = 0;   // Ratio order, mildly skinny: its edge level, kept for window moves
+  std::uint16_t level = 0;   // Ratio order: its edge level, kept for window moves
 };
 
 enum class QueueOrder { Ratio, Paper, Edge, Fifo, RatioHeap, PaperHeap };
@@ -65,17 +66,8 @@ struct Badness {
   double shortest2 = 0.0;           // squared length of its shortest edge
 };
 
-// Ratio: (r/B)^2 >= kSkinnyRatio2 (r >= 16B, an angle under 1.8 degrees at -q30, 1.2 at -q20) is
-// skinny: the slivers, mostly of the initial triangulation.
-inline constexpr double kSkinnyRatio2 = 256.0;
-inline constexpr unsigned kFirstSkinnyBucket = 48;
-
-inline constexpr unsigned kMildBuckets = kFirstSkinnyBucket - 1;  // buckets 1..47
-inline constexpr unsigned kWindowHeadroom = 8;                     // levels: one octave of l
-
-// The Ratio bucket of a skinny triangle (q = (r/B)^2 >= 256): 48 + floor(log2(q / 256)), clamped
-// to 63 (ratios beyond 16B 2^7.5, about 2,900 B, share bucket 63).
-unsigned skinny_bucket(double ratio_squared_over_bound_squared);
+inline constexpr unsigned kWindowBuckets = 63;  // buckets 1..63
+inline constexpr unsigned kWindowHeadroom = 8;   // levels: one octave of l
 
 // The edge level of a shortest edge with squared length `shortest2` in a domain of squared
 // diameter `reference2`: with x = reference2 / shortest2 = m 2^k (1 <= m < 2), 4k plus the first two
@@ -150,8 +142,7 @@ class QualityQueue {
   unsigned top_bucket() const { return 63u - static_cast<unsigned>(std::countl_zero(nonempty_)); }
   void append(const QueuedTriangle& entry, unsigned bucket);  // push_to_bucket, not counted
   QueuedTriangle take_front(unsigned bucket);                 // the oldest entry of a non-empty bucket
-  // The Ratio order's bucket for a mildly skinny triangle of edge level `level` in the current
-  // window.
+  // The Ratio order's bucket for a skinny triangle of edge level `level` in the current window.
   unsigned window_bucket(unsigned level) const;
   void move_window();
   void raise_window(unsigned level);

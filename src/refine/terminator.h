@@ -128,8 +128,9 @@ class Terminator {
 
   // --- Chew's step (chew_step.cpp), Fig. 39 l.40-43 ---
   // Returns the edge of the subsegment afterwards, or kNone.
-  EdgeRef delete_free_vertices_near(EdgeRef s, bool queue_triangles);
-  std::vector<VertexId> free_vertices_seen_from(EdgeRef s);
+  EdgeRef delete_free_vertices_near(EdgeRef s, const Point& p, bool queue_triangles);
+  std::vector<VertexId> free_vertices_seen_from(EdgeRef s, const Point& p);
+  bool too_close_to_split(VertexId w, const Point& p);
   static constexpr std::size_t kDeletionSearchLimit = 512;  // triangles looked at per split
 
   // --- the driver and bookkeeping (terminator.cpp) ---

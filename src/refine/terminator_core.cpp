@@ -91,7 +91,7 @@ Outcome Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_
   SplitPlan plan;
   if (const auto refusal = plan_split(s, owed_to_size, plan)) return *refusal;  // l.39
   if (uses_lenses()) {                                                           // l.40-43
-    s = delete_free_vertices_near(s, queue_triangles);
+    s = delete_free_vertices_near(s, plan.point, queue_triangles);
     if (s == kNone) return Outcome::Gone;
     if (const auto refusal = replan_after_deletions(s, plan)) return *refusal;
   }

@@ -94,8 +94,8 @@ std::optional<Outcome> Terminator::replan_after_deletions(EdgeRef s, SplitPlan& 
 bool Terminator::uses_lenses() const { return opt_.lenses && !opt_.conforming_delaunay; }
 
 // The length of the shortest edge that splitting s at p would make, now and once Chew's step (with
-// lenses) has deleted the free vertices inside s's diametral circle: a free vertex a rounding
-// error from s's midpoint once made a split owed to a size bound look like a new edge of 1e-15.
+// lenses) has deleted the free vertices it deletes: a free vertex a rounding error from s's
+// midpoint once made a split owed to a size bound look like a new edge of 1e-15.
 Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
   const double now = split_insertion_radius(mesh_, pred_, s, p, marks_);
   if (!uses_lenses() || marks_.boundary().empty()) return {now, now};
@@ -105,7 +105,8 @@ Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
   for (EdgeRef e : marks_.boundary()) {  // the cavity's vertices are its boundary's
     const VertexId w = mesh_.org(e);
     const Point& q = mesh_.point(w);
-    if (mesh_.kind[w] == VertexKind::Free && strictly_inside_diametral_circle(pa, pb, q)) continue;
+    if (mesh_.kind[w] == VertexKind::Free && strictly_inside_diametral_circle(pa, pb, q) && too_close_to_split(w, p))
+      continue;
     nearest2 = std::min(nearest2, squared_distance(q, p));
   }
   return {now, std::sqrt(nearest2)};
