@@ -4,7 +4,7 @@
 // the kernel's flip (mesh/operations.h) in the caller's layout, so a fix to either is made once.
 // Callers: flip_link below (vertex insertion, refinement), the constrained editor and segment
 // recovery (mesh/constrained_editor.h, mesh/recover_edge.h), the Delaunay builders' tie pass
-// (delaunay/lawson_pass.h).
+// (delaunay/lawson_pass.h), the parts' seams (mesh/parts.h).
 #pragma once
 
 #include <array>

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "mesh/lawson.h"
 #include "mesh/operations.h"
 #include "util/run_both.h"
 
@@ -134,21 +135,19 @@ std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, 
 
 // Each side is constrained Delaunay, so only the sewn edges, and the sides of the quadrilaterals
 // flipped, can fail the test.
+// A quadrilateral with a non-Delaunay diagonal is convex, so the incircle test is may_flip.
 void flip_delaunay_from(Mesh& mesh, Predicates& pred, std::vector<EdgeRef> stack, std::vector<TriangleId>& touched) {
-  while (!stack.empty()) {
-    const EdgeRef e = stack.back();
-    stack.pop_back();
+  const auto may_flip = [&](EdgeRef e) {
     const EdgeRef twin = mesh.link[e];
-    if (twin == kNone || mesh.subseg[e] != kNone) continue;
-    if (pred.incircle(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e)), mesh.point(mesh.apex(e)),
-                      mesh.point(mesh.apex(twin))) <= 0)
-      continue;
-    const EdgeRef g = flip(mesh, e);  // a quadrilateral with a non-Delaunay diagonal is convex
-    const EdgeRef h = mesh.link[g];
-    touched.push_back(triangle_of(g));
-    touched.push_back(triangle_of(h));
-    for (EdgeRef x : {lnext(g), lprev(g), lnext(h), lprev(h)}) stack.push_back(x);
-  }
+    return twin != kNone && mesh.subseg[e] == kNone &&
+           pred.incircle(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e)), mesh.point(mesh.apex(e)),
+                         mesh.point(mesh.apex(twin))) > 0;
+  };
+  const auto flipped = [&](EdgeRef e, EdgeRef f) {
+    touched.push_back(triangle_of(e));
+    touched.push_back(triangle_of(f));
+  };
+  lawson<FlipLayout::Turn, LawsonScope::Everywhere>(mesh, stack, kNone, may_flip, flipped);
 }
 
 }  // namespace deltri

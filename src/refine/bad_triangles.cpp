@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/constructions.h"
+#include "geometry/lattice.h"
 
 namespace deltri {
 namespace {
@@ -93,6 +94,11 @@ double size_excess(const Mesh& mesh, TriangleId t, const TriangleShape& shape, c
     excess = std::max(excess, longest2 / (rules.size.max_edge_length * rules.size.max_edge_length));
   }
   return excess;
+}
+
+double triangle_sine2(const Mesh& mesh, TriangleId t) {
+  const auto [a, b, c] = mesh.corner_points(t);
+  return smallest_angle_sine2(a, b, c);
 }
 
 }  // namespace deltri

@@ -55,6 +55,9 @@ double size_excess(const Mesh& mesh, TriangleId t, const TriangleShape& shape, c
 // other vertices, and the entry is stale (Fig. 38 l.12: "if t still exists").
 bool is_current(const Mesh& mesh, const QueuedTriangle& entry);
 
+// sin^2 of the smallest angle of triangle t.
+double triangle_sine2(const Mesh& mesh, TriangleId t);
+
 // True when the angle opposite edge e (at apex(e)) lies between two subsegments.
 bool angle_between_subsegments(const Mesh& mesh, EdgeRef e);
 

@@ -12,15 +12,6 @@
 
 namespace deltri {
 
-namespace {
-
-double triangle_sine2(const Mesh& mesh, TriangleId t) {
-  const auto [a, b, c] = mesh.corner_points(t);
-  return smallest_angle_sine2(a, b, c);
-}
-
-}  // namespace
-
 // How candidate c for bad triangle t scores at the bottom scale (its cavity just probed): the
 // smallest angle sines of the new triangles joining c to the cavity's boundary, those up to twice
 // t's scale (`near`) and all of them; nullopt if c is unusable. The new triangles no longer-edged

@@ -49,9 +49,7 @@ double guard_floor_of(const Mesh& mesh, const RefineOptions& opt) {
 double smallest_sine2(const Mesh& mesh) {
   double smallest = 1.0;
   for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
-    if (!mesh.is_live(t)) continue;
-    const auto [a, b, c] = mesh.corner_points(t);
-    smallest = std::min(smallest, smallest_angle_sine2(a, b, c));
+    if (mesh.is_live(t)) smallest = std::min(smallest, triangle_sine2(mesh, t));
   }
   return smallest;
 }

@@ -165,8 +165,8 @@ bool Terminator::refused_by_kept_boundary(const Point& c, TriangleId t) {
     const Point& a = mesh_.point(mesh_.org(e));
     const Point& b = mesh_.point(mesh_.dest(e));
     if (encroaches(pred_, a, b, c, rule_)) return true;  // (1)
-    const double made = smallest_angle_sine2(a, b, c);
-    if (made < kept_bound_sin2_ && made < smallest_angle_sine2(a, b, mesh_.point(mesh_.apex(e)))) return true;  // (2)
+    const double on_s = smallest_angle_sine2(a, b, c);
+    if (on_s < kept_bound_sin2_ && on_s < smallest_angle_sine2(a, b, mesh_.point(mesh_.apex(e)))) return true;  // (2)
   }
   if (!touches || assess(t).skinny) return false;
   return made < std::min(kept_bound_sin2_, replaced);  // (3)
@@ -182,13 +182,9 @@ double Terminator::smallest_made_sine2(const Point& c) {
 
 // The same for the triangles of the cavity: those with a boundary edge and the inner ones.
 double Terminator::smallest_replaced_sine2() {
-  const auto of = [&](TriangleId u) {
-    const auto [a, b, c] = mesh_.corner_points(u);
-    return smallest_angle_sine2(a, b, c);
-  };
   double smallest = 1.0;
-  for (EdgeRef e : marks_.boundary()) smallest = std::min(smallest, of(triangle_of(e)));
-  for (TriangleId u : marks_.inner()) smallest = std::min(smallest, of(u));
+  for (EdgeRef e : marks_.boundary()) smallest = std::min(smallest, triangle_sine2(mesh_, triangle_of(e)));
+  for (TriangleId u : marks_.inner()) smallest = std::min(smallest, triangle_sine2(mesh_, u));
   return smallest;
 }
 
