@@ -180,7 +180,7 @@ constexpr std::array kLongOptions = {
                [](S& s, const std::string* v) { s.size_field = *v; }},
     LongOption{"queue", "ORDER", false,
                "which bad triangle refinement splits first: ratio (default: shortest edge first, eight "
-               "levels per octave of its length), paper (worst radius-edge ratio first, as Shewchuk 2001), "
+               "levels per octave of its length, 32 above -q30), paper (worst radius-edge ratio first, as Shewchuk 2001), "
                "edge (shortest edge first at a coarser resolution, as Triangle 1.6), fifo, "
                "heap or paper-heap (exact heaps of the default and paper keys)",
                set_queue},

@@ -30,13 +30,15 @@ unsigned edge_bucket(double shortest2, double reference2) {
   return std::min(1 + floor_log2(ratio), QualityQueue::kBuckets - 1);
 }
 
-unsigned edge_level(double shortest2, double reference2) {
+unsigned edge_level(double shortest2, double reference2, unsigned bits) {
   const double x = reference2 / shortest2;
   if (!std::isfinite(x)) return kTopLevel;
   if (!(x >= 1.0)) return 0;
-  const unsigned quarter = static_cast<unsigned>((std::bit_cast<std::uint64_t>(x) >> 50) & 3u);
-  return std::min(4 * floor_log2(x) + quarter, kTopLevel);
+  const unsigned fraction = static_cast<unsigned>((std::bit_cast<std::uint64_t>(x) >> (52 - bits)) & ((1u << bits) - 1));
+  return std::min((floor_log2(x) << bits) + fraction, kTopLevel);
 }
+
+unsigned edge_level_bits(double theta_deg) { return theta_deg > 30.0 ? kFineLevelBits : kCoarseLevelBits; }
 
 unsigned QualityQueue::window_bucket(unsigned level) const {
   const int above = static_cast<int>(level) - window_base_;
@@ -49,7 +51,7 @@ void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
     case QueueOrder::Ratio: {
       if (!why.skinny) return push_to_bucket(entry, 0);
       QueuedTriangle leveled = entry;
-      leveled.level = static_cast<std::uint16_t>(edge_level(why.shortest2, reference2_));
+      leveled.level = static_cast<std::uint16_t>(edge_level(why.shortest2, reference2_, level_bits_));
       if (static_cast<int>(leveled.level) > window_base_ + static_cast<int>(kWindowBuckets - 1))
         raise_window(leveled.level);
       return push_to_bucket(leveled, window_bucket(leveled.level));

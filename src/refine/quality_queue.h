@@ -8,7 +8,7 @@
 // The key (QueueOrder; measured on the corpus in docs/refinement.md):
 // - Ratio, the default (the name is kept from when slivers were served worst ratio first): every
 //   skinny triangle by the length l of its shortest edge, shortest first. Its edge level
-//   (edge_level, eight levels per octave of l) picks a bucket among 1..63 in a window of 62 levels
+//   (edge_level, eight levels per octave of l, 32 above 30 degrees) picks a bucket among 1..63 in a window of 62 levels
 //   that slides towards longer edges as refinement works its way up (below). With off-centres the
 //   paper's order refines 1.4 times as much as Triangle 1.6 at -q33: mildly skinny triangles are
 //   split large ones first, each split a little finer than the last when B < 1 (theta > 30), and
@@ -70,11 +70,24 @@ inline constexpr unsigned kWindowBuckets = 63;  // buckets 1..63
 inline constexpr unsigned kWindowHeadroom = 8;   // levels: one octave of l
 
 // The edge level of a shortest edge with squared length `shortest2` in a domain of squared
-// diameter `reference2`: with x = reference2 / shortest2 = m 2^k (1 <= m < 2), 4k plus the first two
-// mantissa bits of x (m at 1.25, 1.5, 1.75): four levels per octave of l^2, eight per octave of l,
-// higher for shorter edges; 0 for x < 1, kTopLevel for a zero-length edge.
-inline constexpr unsigned kTopLevel = 4 * 1024;
-unsigned edge_level(double shortest2, double reference2);
+// diameter `reference2`: with x = reference2 / shortest2 = m 2^k (1 <= m < 2), 2^bits k plus the
+// first `bits` mantissa bits of x. With bits = 2 (m at 1.25, 1.5, 1.75) that is four levels per
+// octave of l^2, eight per octave of l; with bits = 4, 32 per octave of l. Higher for shorter
+// edges; 0 for x < 1, kTopLevel for a zero-length edge.
+inline constexpr unsigned kCoarseLevelBits = 2;
+inline constexpr unsigned kFineLevelBits = 4;
+inline constexpr unsigned kTopLevel = (1u << kFineLevelBits) * 1024;  // above every level; fits 16 bits
+unsigned edge_level(double shortest2, double reference2, unsigned bits = kCoarseLevelBits);
+
+// The mantissa bits of the edge level for an angle bound of theta degrees. Up to 30 degrees
+// (B >= 1) eight levels per octave of l; above (B < 1) 32. Above 30 degrees a mildly skinny
+// triangle's circumcentre makes edges shorter than its own shortest, so the order among triangles
+// whose shortest edges differ by less than 9% still decides how far a cascade spreads: a plate
+// with a 1e-4 wide slit at -q33 has 800 triangles with eight levels and 632 with 32 (Triangle
+// 1.6: 696), the corpus sum at -q33 falls from 820,883 to 819,323. Up to 30 degrees the finer
+// order gains nothing on the corpus (618,141 against 618,929 triangles at -q30) and the 45x45
+// holes at -q30 make 2.1% more triangles with it (docs/refinement.md, "The queue").
+unsigned edge_level_bits(double theta_deg);
 
 // The Paper bucket of q = (r/B)^2, or 0 for a triangle that is bad only for its size: writing
 // q = m 2^k with 1 <= m < 2, bucket 1 + 2k + (m >= 1.5), clamped to 63. Two buckets per octave of
@@ -93,9 +106,11 @@ class QualityQueue {
  public:
   static constexpr unsigned kBuckets = 64;
 
-  // reference2: the squared diameter of the domain, the scale of the edge keys.
-  explicit QualityQueue(QueueOrder order = QueueOrder::Ratio, double reference2 = 1.0)
-      : order_(order), reference2_(reference2) {}
+  // reference2: the squared diameter of the domain, the scale of the edge keys; level_bits: the
+  // edge levels' resolution (edge_level_bits) in the Ratio order.
+  explicit QualityQueue(QueueOrder order = QueueOrder::Ratio, double reference2 = 1.0,
+                        unsigned level_bits = kCoarseLevelBits)
+      : order_(order), reference2_(reference2), level_bits_(level_bits) {}
 
   // Queues a bad triangle where the order puts it.
   void push(const QueuedTriangle& entry, const Badness& why);
@@ -152,6 +167,7 @@ class QualityQueue {
   void for_each_entry(const Fifo& fifo, Visit&& visit, Done&& done);
   QueueOrder order_;
   double reference2_;
+  unsigned level_bits_;
   // Levels at or below window_base_ go to bucket 1. Before the first pop the window lies above
   // every level, so everything waits in bucket 1 until move_window() places it.
   int window_base_ = static_cast<int>(kTopLevel) + 1;

@@ -161,7 +161,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       apices_(std::move(start.apices)),
       finder_(mesh),
       extent_(extent_of(mesh)),
-      bad_triangles_(opt.queue_order, squared_diameter(extent_)),
+      bad_triangles_(opt.queue_order, squared_diameter(extent_), edge_level_bits(opt.angle.degrees())),
       locked_(std::move(start.locked)),
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {

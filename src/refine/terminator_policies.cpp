@@ -137,22 +137,18 @@ bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pe
 //      the mesh, the result has no angle below it (docs/refinement.md, "-Y, -YY": the initial
 //      constrained Delaunay triangulation shows the fixed boundary allows that much).
 // The triangle on a kept subsegment s changes only when a new point lands in its circumcircle,
-// that is when s is on the boundary of the point's cavity, and the point then becomes its apex;
-// nothing can mend it later but another such apex. So c is also refused when, for a kept s on the
-// cavity's boundary,
-//  (1) c encroaches upon s (lies in its lens): the rule of Fig. 38 l.18 with no split allowed,
-//      as in Triangle; or
-//  (2) c would make the triangle on s worse than it is and below the angle bound: refusing only
-//      points in the lens let points beyond it cut the triangles along a long kept segment into
-//      slivers against the short edges near its ends (river.poly: 0.72 degrees where 3 are
-//      possible); or
-//  (3) t is bad only for its size and c would lower the smallest angle of the triangles it
+// that is when s is on the boundary of the point's cavity, and the point then becomes its apex.
+// So c is also refused when, for a kept s on the cavity's boundary,
+//  (1) c encroaches upon s (lies in its lens): the rule of Fig. 38 l.18 with no split allowed; or
+//  (2) t is bad only for its size and c would lower the smallest angle of the triangles it
 //      replaces below theirs (and below the bound): near a kept boundary a worse triangle may be
 //      one whose own Steiner point is refused or blocked, and the size bound is not worth a
 //      sliver. The area bound is given up there instead (the closing survey counts it).
-// A skinny t may make worse triangles that are not on s, as Delaunay refinement does everywhere:
-// refusing those too left the bound unmet on inputs where it is within reach (p01.poly at -pYq:
-// 16.8 degrees instead of 20). docs/refinement.md, "-Y", has the measurements.
+// A skinny t may make worse triangles, also on s, as Delaunay refinement does everywhere: their own
+// points mend them later. Refusing those not on s left the bound unmet where it is within reach
+// (p01.poly at -pYq: 16.8 degrees instead of 20); refusing those on s (a rule until 2026-12-03)
+// stopped refinement where Triangle 1.6 goes on (Constrained_Sweden -pYYq: 0.97 degrees against
+// 1.85). docs/refinement.md, "-Y", has the measurements.
 bool Terminator::refused_by_kept_boundary(const Point& c, TriangleId t) {
   if (opt_.no_steiner_on_segments == 0) return false;
   const double made = smallest_made_sine2(c);
@@ -165,11 +161,9 @@ bool Terminator::refused_by_kept_boundary(const Point& c, TriangleId t) {
     const Point& a = mesh_.point(mesh_.org(e));
     const Point& b = mesh_.point(mesh_.dest(e));
     if (encroaches(pred_, a, b, c, rule_)) return true;  // (1)
-    const double on_s = smallest_angle_sine2(a, b, c);
-    if (on_s < kept_bound_sin2_ && on_s < smallest_angle_sine2(a, b, mesh_.point(mesh_.apex(e)))) return true;  // (2)
   }
   if (!touches || assess(t).skinny) return false;
-  return made < std::min(kept_bound_sin2_, replaced);  // (3)
+  return made < std::min(kept_bound_sin2_, replaced);  // (2)
 }
 
 // The sin^2 of the smallest angle among the triangles that c makes with the cavity's boundary.

@@ -184,25 +184,48 @@ TEST(edge_level_is_four_per_octave_of_the_squared_length_ratio) {
   CHECK_EQ(edge_level(0.0, 1.0), kTopLevel);       // degenerate: the most urgent
 }
 
-TEST(edge_level_ranks_shorter_edges_higher) { check_rises_as_edges_shorten(edge_level, 1e-200, 0.93); }
+// The fine levels (above 30 degrees): 16 per octave of D^2 / l^2, the sixteenth marks of the
+// mantissa again by division.
+TEST(fine_edge_level_is_sixteen_per_octave_of_the_squared_length_ratio) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 80.0);
+  for (int i = 0; i < 100000; ++i) {
+    const double x = std::exp2(u(rng));
+    double m = 0.0;
+    const unsigned octaves = halvings(x, &m);
+    unsigned sixteenth = 0;
+    while (sixteenth < 15 && m >= 1.0 + (sixteenth + 1) / 16.0) ++sixteenth;
+    CHECK_EQ(edge_level(1.0 / x, 1.0, kFineLevelBits), 16 * octaves + sixteenth);
+  }
+  CHECK_EQ(edge_level(0.5, 1.0, kFineLevelBits), 16u);
+  CHECK_EQ(edge_level(0.0, 1.0, kFineLevelBits), kTopLevel);
+  CHECK(edge_level(1e-300, 1.0, kFineLevelBits) < kTopLevel);  // the finest real level stays below the top
+  CHECK_EQ(edge_level_bits(30.0), kCoarseLevelBits);
+  CHECK_EQ(edge_level_bits(30.5), kFineLevelBits);
+}
+
+TEST(edge_level_ranks_shorter_edges_higher) {
+  for (unsigned bits : {kCoarseLevelBits, kFineLevelBits})
+    check_rises_as_edges_shorten([bits](double l2, double r2) { return edge_level(l2, r2, bits); }, 1e-200, 0.93);
+}
 
 // The Ratio order through the queue: size-only last, and every pop takes the shortest edge present (an exact order by level, FIFO within a level),
 // across levels spread over 60 octaves, which takes several moves of the window. Checked against
 // a plain sorted model, not against the buckets.
-TEST(ratio_order_serves_mild_triangles_shortest_first_across_window_moves) {
+void check_ratio_order_across_window_moves(unsigned bits) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0.0, 120.0);
-  QualityQueue q(QueueOrder::Ratio, 1.0);
+  QualityQueue q(QueueOrder::Ratio, 1.0, bits);
   struct Model { unsigned level; TriangleId id; };
   std::vector<Model> model;
   for (TriangleId t = 0; t < 20000; ++t) {
     const double l2 = std::exp2(-u(rng));
     q.push({t, 0, 0, 0}, {true, 2.0, l2});
-    model.push_back({edge_level(l2, 1.0), t});
+    model.push_back({edge_level(l2, 1.0, bits), t});
   }
   q.push({100000, 0, 0, 0}, {false, 0.5, 1e-300});  // too large only
   q.push({100001, 0, 0, 0}, {true, 300.0, 1.0});    // a sliver with a long edge: by its edge too
-  model.push_back({edge_level(1.0, 1.0), 100001});
+  model.push_back({edge_level(1.0, 1.0, bits), 100001});
   std::stable_sort(model.begin(), model.end(), [](const Model& a, const Model& b) { return a.level > b.level; });
   for (const Model& m : model) {
     auto e = q.pop();
@@ -217,18 +240,23 @@ TEST(ratio_order_serves_mild_triangles_shortest_first_across_window_moves) {
   CHECK(q.nonempty_mask() == 0);
 }
 
+TEST(ratio_order_serves_mild_triangles_shortest_first_across_window_moves) {
+  for (unsigned bits : {kCoarseLevelBits, kFineLevelBits}) check_ratio_order_across_window_moves(bits);
+}
+
 // Pushes while popping, as refinement does: a split makes triangles at most kWindowHeadroom levels
 // shorter than the one it split. Every pop must still take a shortest edge present.
-TEST(ratio_order_stays_exact_while_refinement_pushes_shorter_edges) {
+void check_ratio_order_while_pushing_shorter_edges(unsigned bits) {
   std::mt19937_64 rng(6);
   std::uniform_real_distribution<double> start(0.0, 60.0);
   std::uniform_int_distribution<int> offset(-40, static_cast<int>(kWindowHeadroom) - 1);
-  QualityQueue q(QueueOrder::Ratio, 1.0);
+  QualityQueue q(QueueOrder::Ratio, 1.0, bits);
+  const unsigned per_octave = 1u << bits;  // levels per octave of the squared length ratio
   std::vector<std::pair<unsigned, TriangleId>> live;  // the model: levels of the queued triangles
   TriangleId next = 0;
   const auto push_level = [&](double l2) {
     q.push({next, 0, 0, 0}, {true, 3.0, l2});
-    live.push_back({edge_level(l2, 1.0), next++});
+    live.push_back({edge_level(l2, 1.0, bits), next++});
   };
   for (int i = 0; i < 2000; ++i) push_level(std::exp2(-start(rng)));
   for (int step = 0; step < 30000 && !live.empty(); ++step) {
@@ -243,11 +271,17 @@ TEST(ratio_order_stays_exact_while_refinement_pushes_shorter_edges) {
     if (step < 20000)
       for (int k = 0; k < 2; ++k) {  // children near the popped scale, a few levels finer at most
         const int level = std::max(static_cast<int>(e->level) + offset(rng), 0);
-        // A squared length whose level is exactly `level`: x = (1 + quarter / 4 + 1/8) 2^(level / 4).
-        const double x = (1.0 + 0.25 * (level % 4) + 0.125) * std::exp2(level / 4);
+        // A squared length whose level is exactly `level`: x = (1 + (k + 1/2) / n) 2^(level / n),
+        // k = level mod n, n levels per octave.
+        const int n = static_cast<int>(per_octave);
+        const double x = (1.0 + (level % n + 0.5) / n) * std::exp2(level / n);
         push_level(1.0 / x);
       }
   }
+}
+
+TEST(ratio_order_stays_exact_while_refinement_pushes_shorter_edges) {
+  for (unsigned bits : {kCoarseLevelBits, kFineLevelBits}) check_ratio_order_while_pushing_shorter_edges(bits);
 }
 
 TEST(paper_order_serves_worst_ratio_first_whatever_the_edge) {
