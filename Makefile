@@ -5,7 +5,7 @@ CMAKE_FLAGS ?=
 PREFIX ?= /usr/local
 DESTDIR ?=
 
-.PHONY: all build configure demo test bench clean check-sanitize check-debug check-tsan check-fresh fuzz install uninstall
+.PHONY: all build configure demo test bench bench-large clean check-sanitize check-debug check-tsan check-fresh fuzz install uninstall
 
 all: build
 
@@ -28,8 +28,14 @@ test: build
 	@cd $(BUILD) && status=0 && ctest --output-on-failure -j $(JOBS) || status=$$?; \
 	  sh "$(CURDIR)/tests/setup/install_test_deps.sh" --hint test-deps-missing; exit $$status
 
+# BENCH_THREADS="1 2 4 8" (default "1 2") sets the thread counts of the threads table, BENCH_REPEAT the rounds.
 bench: build
 	@python3 tests/bench/bench.py $(BUILD) $(BENCH_FLAGS)
+
+# The 100M+ triangle workload (unit square, about 134 million triangles, ~8 GiB of memory and
+# 8 GB of disk): time and peak memory for each N of BENCH_THREADS. Not run by CI or `make test`.
+bench-large: build
+	@python3 tests/bench/bench.py $(BUILD) --large
 
 check-sanitize:
 	@$(MAKE) --no-print-directory test BUILD=build-sanitize CMAKE_FLAGS="-DDELTRI_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo"

@@ -1,5 +1,7 @@
 #include "mesh/mesh.h"
 
+#include <algorithm>
+
 namespace deltri {
 
 TriangleId Mesh::add_triangle(VertexId a, VertexId b, VertexId c) {
@@ -98,15 +100,34 @@ void Mesh::compact_triangles() {
   free_triangles.clear();
 }
 
+namespace {
+
+// A copy of `from` with at least `room` capacity (and never less than from's own), so that the
+// part's first appends do not reallocate: a copy of exactly its size doubled at the first new
+// vertex or subsegment, and the abandoned copy stayed resident in the refining thread's malloc
+// arena (four parts of the 50x50 holes: 12 MB of the peak).
+template <class Vector>
+Vector copy_with_room(const Vector& from, std::size_t room) {
+  Vector to;
+  to.reserve(std::max({room, from.capacity(), from.size()}));
+  to.assign(from.begin(), from.end());
+  return to;
+}
+
+}  // namespace
+
 Mesh Mesh::without_triangles() const {
+  // Room for the vertices this mesh has room for (refinement reserved its expected count, and a
+  // part adds no more than the whole), and a quarter more subsegment records.
+  const std::size_t vertices = points.capacity();
   Mesh m;
-  m.points = points;
-  m.kind = kind;
-  m.marker = marker;
+  m.points = copy_with_room(points, vertices);
+  m.kind = copy_with_room(kind, vertices);
+  m.marker = copy_with_room(marker, marker.empty() ? 0 : vertices);
   m.num_attributes = num_attributes;
   m.attributes = attributes;
   m.num_triangle_attributes = num_triangle_attributes;
-  m.subsegments = subsegments;
+  m.subsegments = copy_with_room(subsegments, subsegments.size() + subsegments.size() / 4);
   return m;
 }
 

@@ -1,5 +1,6 @@
 #include "mesh/vertex_edges.h"
 
+#include <algorithm>
 #include <deque>
 
 namespace deltri {
@@ -48,9 +49,18 @@ VertexEdges::VertexEdges(const Mesh& mesh) : out_(mesh.vertex_count(), kNone) {
     if (mesh.corner[e] != kNone) out_[mesh.corner[e]] = e;
 }
 
+// Room for every vertex the mesh has room for (refinement reserves its expected count up front,
+// parts included): the index doubled as vertices came instead, and each abandoned copy stayed
+// resident in the refining thread's malloc arena. Untouched room costs no memory.
+void VertexEdges::grow_to(const Mesh& mesh, VertexId v) {
+  if (v >= out_.capacity())
+    out_.reserve(std::max<std::size_t>({std::size_t{v} + 1, 2 * out_.capacity(), mesh.points.capacity()}));
+  out_.resize(v + 1, kNone);
+}
+
 void VertexEdges::note(const Mesh& mesh, EdgeRef e) {
   const VertexId v = mesh.org(e);
-  if (v >= out_.size()) out_.resize(v + 1, kNone);
+  if (v >= out_.size()) grow_to(mesh, v);
   out_[v] = e;
 }
 
@@ -63,7 +73,7 @@ void VertexEdges::note_star(const Mesh& mesh, EdgeRef out) {
 }
 
 EdgeRef VertexEdges::leaving(const Mesh& mesh, VertexId v) {
-  if (v >= out_.size()) out_.resize(v + 1, kNone);
+  if (v >= out_.size()) grow_to(mesh, v);
   const EdgeRef hint = out_[v];
   if (leaves(mesh, hint, v)) return hint;
   EdgeRef found = hint != kNone && hint < mesh.corner.size() ? search_near(mesh, triangle_of(hint), v)

@@ -35,6 +35,7 @@ class VertexEdges {
   EdgeRef known(VertexId v) const { return v < out_.size() ? out_[v] : kNone; }
 
  private:
+  void grow_to(const Mesh& mesh, VertexId v);
   std::vector<EdgeRef> out_;
 };
 

@@ -3,7 +3,17 @@
 
 Nothing here asserts anything: benchmarks are measurements, not tests. Each case runs REPEAT
 times and the median wall time is shown; peak memory is the child's maximum resident set size.
-Usage: bench.py BUILD_DIR [--quick] [--only SUBSTRING]
+Usage: bench.py BUILD_DIR [--quick] [--only SUBSTRING] [--large]
+
+The threads table runs the workloads with --threads=N for every N of BENCH_THREADS (a list, default
+"1 2": this machine's two cores), the values of N interleaved round by round, and reports each
+one's wall time, peak and speed-up over N = 1 (the files are the same for every N). A machine with
+more cores runs e.g. BENCH_THREADS="1 2 4 8 16 32 64" make bench.
+
+--large (make bench-large, not part of CI or make test): only the 100M+ triangle workload, the unit
+square refined to about 134 million triangles (BENCH_LARGE_AREA sets the area bound), once per N
+of BENCH_THREADS, with its time, stage timings and peak memory. It needs about 8 GiB of memory and
+8 GB of disk for the text outputs, which are removed afterwards.
 
 When Triangle 1.6 is installed (a `triangle` on PATH, e.g. Debian's non-free triangle-bin, or
 TRIANGLE=/path/to/triangle), every case also runs it with the same switches, interleaved with
@@ -23,6 +33,7 @@ import time
 
 build = sys.argv[1] if len(sys.argv) > 1 else "build"
 quick = "--quick" in sys.argv
+large = "--large" in sys.argv
 only = sys.argv[sys.argv.index("--only") + 1] if "--only" in sys.argv else ""
 deltri = os.path.abspath(os.path.join(build, "deltri"))
 gen = os.path.abspath(os.path.join(build, "tests", "deltri_bench_gen"))
@@ -30,6 +41,7 @@ work = os.path.abspath(os.path.join(build, "bench"))
 os.makedirs(work, exist_ok=True)
 REPEAT = int(os.environ.get("BENCH_REPEAT", "1" if quick else "3"))
 triangle = os.environ.get("TRIANGLE") or shutil.which("triangle")
+THREADS = [int(n) for n in os.environ.get("BENCH_THREADS", "1 2").replace(",", " ").split()]
 
 
 def workload(kind, size, ext):
@@ -47,14 +59,15 @@ def remove_outputs(path):
             os.remove(stem + ".1" + ext)
 
 
-def run(switches, path, verbose):
+def run(switches, path, verbose, threads=None):
     """One run: (wall seconds, peak RSS bytes, stage seconds dict, triangle count). Outputs of an
     earlier run are removed first, so every run writes new files (replacing large files costs the
     file system extra time that has nothing to do with deltri)."""
     remove_outputs(path)
     flags = "-" + switches.lstrip("-") + ("V" if verbose else "")
     start = time.perf_counter()
-    proc = subprocess.Popen([deltri, flags, os.path.basename(path)], cwd=os.path.dirname(path),
+    thread_args = [f"--threads={threads}"] if threads else []
+    proc = subprocess.Popen([deltri, flags, *thread_args, os.path.basename(path)], cwd=os.path.dirname(path),
                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
     out = proc.stdout.read()
     _, status, usage = os.wait4(proc.pid, 0)
@@ -210,11 +223,75 @@ def soak():
     print()
 
 
+def thread_workloads():
+    """(label, switches, path) of every workload of the threads table."""
+    sizes = [1_000_000] if quick else [1_000_000, 4_000_000]
+    cases = [(f"{n // 1_000_000}M uniform points", "", workload("uniform", n, "node")) for n in sizes]
+    for k in (45,) if quick else (45, 50):
+        cases.append((f"{k}x{k} holes `-pq30`", "-pq30", workload("holes", k, "poly")))
+    for area in ["0.0000016"] if quick else ["0.0000016", "0.00000032"]:
+        cases.append((f"unit square `-pq30a{area}`", f"-pq30a{area}", workload("square", 0, "poly")))
+    return [c for c in cases if not only or only in c[0]]
+
+
+def threads():
+    """Every workload with --threads=N for each N of BENCH_THREADS, the Ns interleaved round by
+    round (so a host whose speed drifts meets all of them alike): median wall time, peak, and the
+    speed-up over the first N (1 by default)."""
+    cases = thread_workloads()
+    if not cases:
+        return
+    print(f"## Threads: `--threads=N` for N = {', '.join(map(str, THREADS))} (speed-up over N = {THREADS[0]})\n")
+    print("| workload | triangles | " + " | ".join(f"N = {n} s (peak)" for n in THREADS) + " | "
+          + " | ".join(f"speed-up N = {n}" for n in THREADS[1:]) + " |")
+    print("|---|---|" + "---|" * (2 * len(THREADS) - 1))
+    for label, switches, path in cases:
+        runs = {n: [] for n in THREADS}
+        for _ in range(REPEAT):
+            for n in THREADS:
+                runs[n].append(run(switches.lstrip("-"), path, False, n))
+        wall = {n: statistics.median(r[0] for r in runs[n]) for n in THREADS}
+        peak = {n: max(r[1] for r in runs[n]) for n in THREADS}
+        tris = runs[THREADS[0]][0][3] or count_triangles(path)
+        cells = [f"{wall[n]:.3f} ({mib(peak[n])})" for n in THREADS]
+        cells += [f"{wall[THREADS[0]] / wall[n]:.2f}x" for n in THREADS[1:]]
+        print(f"| {label} | {tris:,} | " + " | ".join(cells) + " |", flush=True)
+        remove_outputs(path)
+    print()
+
+
+def count_triangles(path):
+    """The triangle count from the .ele file that a run left (plain runs print no counts)."""
+    with open(os.path.splitext(path)[0] + ".1.ele") as f:
+        return int(f.readline().split()[0])
+
+
+def bench_large():
+    """make bench-large: the unit square refined to 100M+ triangles, once per N of BENCH_THREADS."""
+    area = os.environ.get("BENCH_LARGE_AREA", "0.0000000125")
+    path = workload("square", 0, "poly")
+    print(f"## Large: unit square `-pq30a{area}`, one run per N\n")
+    print("| N | triangles | wall s (with -V's statistics) | stages total s | refinement s | write s | peak | bytes/triangle |")
+    print("|---|---|---|---|---|---|---|---|")
+    for n in THREADS:
+        wall, rss, stage, tris = run(f"pq30a{area}", path, True, n)
+        tris = tris or count_triangles(path)
+        print(f"| {n} | {tris:,} | {wall:.1f} | {stage.get('total', 0):.1f} | {stage.get('refinement', 0):.1f} | {stage.get('write', 0):.1f} "
+              f"| {rss / 2**30:.2f} GiB | {rss / max(tris, 1):.1f} |", flush=True)
+        remove_outputs(path)
+    print()
+
+
 if __name__ == "__main__":
+    if large:
+        print(f"deltri large benchmark on {os.cpu_count()} cores\n")
+        bench_large()
+        sys.exit(0)
     print(f"deltri benchmarks on {os.cpu_count()} cores; median of {REPEAT} run(s)"
           + (f"; Triangle 1.6 from {triangle} alongside" if triangle else "") + "\n")
     point_sets()
     algorithms()
     pslgs()
     refinement()
+    threads()
     soak()

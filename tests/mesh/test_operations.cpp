@@ -128,3 +128,33 @@ TEST(split_boundary_edge) {
   CHECK_EQ(m.link[find_edge(m, v, 1)], kNone);
   CHECK_EQ(m.area_bound[m.triangle_slots() - 1], 0.5);
 }
+
+// refine/halves.cpp refines parts cut off by without_triangles: the part's vertex and subsegment
+// arrays must keep room for what the part adds (the whole mesh's reserved vertex room, a quarter
+// more records), since a copy of exactly its size reallocated at the first addition and the
+// abandoned copy stayed resident (the 50x50 holes' peak). Same contents, no reallocation.
+TEST(without_triangles_copies_the_vertices_with_room_to_grow) {
+  Mesh m = unit_square();
+  m.marker.assign(m.vertex_count(), 3);
+  m.points.reserve(1000);
+  m.kind.reserve(1000);
+  for (SubsegmentId s = 0; s < 40; ++s) m.subsegments.push_back({0, 1, 5, s});
+  Mesh part = m.without_triangles();
+  CHECK(part.points == m.points);
+  CHECK(part.kind == m.kind);
+  CHECK(part.marker == m.marker);
+  CHECK_EQ(part.subsegments.size(), 40u);
+  CHECK_EQ(part.subsegments[39].segment, 39u);
+  CHECK_EQ(part.triangle_slots(), 0u);
+  const Point* points = part.points.data();
+  const VertexKind* kind = part.kind.data();
+  const int* marker = part.marker.data();
+  const Subsegment* records = part.subsegments.data();
+  for (int i = 0; i < 900; ++i) part.add_vertex({0.5, 0.001 * i}, VertexKind::Free);
+  for (SubsegmentId s = 0; s < 10; ++s) part.subsegments.push_back({1, 2, 0, s});
+  CHECK(part.points.data() == points);
+  CHECK(part.kind.data() == kind);
+  CHECK(part.marker.data() == marker);
+  CHECK(part.subsegments.data() == records);
+  CHECK_EQ(part.marker.size(), part.vertex_count());
+}
