@@ -286,10 +286,10 @@ def main(argv):
         for inp in argv[2:]:
             try:
                 pts, segs = read_poly(inp)
+                if segs and smallest_input_angle(pts, segs) >= 60.0 - TOLERANCE:
+                    print(inp, flush=True)
             except (ValueError, IndexError, KeyError, OSError):
                 continue  # not a file this reader takes (the tool is for choosing inputs)
-            if segs and smallest_input_angle(pts, segs) >= 60.0 - TOLERANCE:
-                print(inp, flush=True)
         return 0
     work = tempfile.mkdtemp()
     try:
