@@ -6,6 +6,8 @@ deltri's output files with nothing deltri reports about quality.
     paper_algorithms.py ruppert DELTRI INPUT              Sec. 3 at -pDq20.7
     paper_algorithms.py interior DELTRI INPUT ALG N Q     Sec. 7.2, strategy N, -q Q, --algorithm=ALG
     paper_algorithms.py fewer DELTRI INPUT Q              Sec. 4.1: Chew makes fewer triangles than Ruppert
+    paper_algorithms.py refusals DELTRI INPUT             the combinations the paper rules out: exit 2,
+                                                          one line on stderr, no output file
 
 Every mode first checks that the input has no two segments meeting at an angle under 60 degrees and
 no segments that cross or touch inside (the paper's condition), from the input file itself; each run
@@ -272,6 +274,29 @@ def check_fewer(deltri, inp, q, work):
            % (inp, q, counts['chew'], counts['ruppert'], counts['chew'] / counts['ruppert']))
 
 
+REFUSED = [
+    (['-pDq', '--algorithm=chew'], 'constrained Delaunay meshes only'),
+    (['-pq', '--interior-bound=1'], "Ruppert's or Chew's algorithm"),
+    (['-p', '--algorithm=ruppert', '--interior-bound=2'], 'give -q'),
+    (['-pq', '--algorithm=chew', '--decline-cluster-splits'], 'belongs to the Terminator'),
+    (['-pq', '--algorithm=lawson'], 'terminator, ruppert or chew'),
+    (['-pq', '--algorithm=ruppert', '--interior-bound=3'], 'give 1 or 2'),
+]
+
+
+def check_refusals(deltri, inp, work):
+    faults = []
+    shutil.copy(inp, work)
+    name = os.path.basename(inp)
+    for switches, expect in REFUSED:
+        r = subprocess.run([deltri] + switches + [name], cwd=work, capture_output=True, text=True, timeout=60)
+        lines = r.stderr.strip().split('\n')
+        written = [f for f in os.listdir(work) if f != name]
+        if r.returncode != 2 or len(lines) != 1 or expect not in lines[0] or written:
+            faults.append('%s: exit %d, stderr %r, files %s' % (' '.join(switches), r.returncode, r.stderr, written))
+    report(faults, '%d combinations refused with exit 2 and one line' % len(REFUSED))
+
+
 def report(faults, summary):
     for f in faults[:10]:
         print('FAIL:', f)
@@ -299,6 +324,8 @@ def main(argv):
             check_interior(argv[2], argv[3], argv[4], argv[5], argv[6], work)
         elif mode == 'fewer':
             check_fewer(argv[2], argv[3], argv[4], work)
+        elif mode == 'refusals':
+            check_refusals(argv[2], argv[3], work)
         else:
             raise SystemExit('unknown mode ' + mode)
     finally:
