@@ -31,6 +31,13 @@ std::string without_suffix(std::string text, const std::string& suffix) {
   return text;
 }
 
+// The long options the library takes: how many threads, and the paper's refinement policies.
+bool is_library_option(const std::string& word) {
+  for (const char* prefix : {"--threads=", "--algorithm=", "--interior-bound="})
+    if (word.rfind(prefix, 0) == 0) return true;
+  return false;
+}
+
 // The switches may end with words of the options the library takes beyond Triangle's letters
 // ("pq30 --threads=4"); the letters come first. Other long options (files, pictures) are the
 // command line's and refused.
@@ -42,10 +49,11 @@ std::vector<std::string> long_options_of(const std::string& switches, std::strin
     if (from == std::string::npos) break;
     const std::size_t to = std::min(switches.find_first_of(" \t", from), switches.size());
     const std::string word = switches.substr(from, to - from);
-    if (word.rfind("--threads=", 0) == 0) {
+    if (is_library_option(word)) {
       options.push_back(word);
     } else if (word.rfind("--", 0) == 0 || !letters.empty()) {
-      throw api::Error(DELTRI_USAGE_ERROR, word + ": the switches are one word of letters, then optionally --threads=N");
+      throw api::Error(DELTRI_USAGE_ERROR, word + ": the switches are one word of letters, then optionally "
+                                                  "--threads=N, --algorithm=NAME, --interior-bound=N");
     } else {
       letters = word;
     }

@@ -169,6 +169,9 @@ Switches parse_switches(int argc, const char* const* argv) {
   }
   if (s.quality && !(s.min_angle >= 0.0 && s.min_angle < 60.0))
     throw UsageError("-q: the minimum angle must be at least 0 and below 60 degrees");
+  if (const char* refused = refused_combination(s.refinement, s.interior_bound, s.quality, s.conforming_delaunay,
+                                                s.decline_cluster_splits))
+    throw UsageError(refused);
   if (s.refine && s.no_iteration) throw RefusedSwitchError("-I: cannot be combined with -r (the output would overwrite the input)");
   int to_stdout = 0;
   for (const Switches::FileRequest* r : {&s.msh, &s.vtu, &s.svg, &s.json, &s.stl}) to_stdout += r->wanted && r->path == "-";

@@ -144,6 +144,23 @@ void set_threads(S& s, const std::string* v) {
   s.threads = threads;
 }
 
+void set_algorithm(S& s, const std::string* v) {
+  static constexpr std::pair<std::string_view, RefinementAlgorithm> kNames[] = {
+      {"terminator", RefinementAlgorithm::Terminator}, {"ruppert", RefinementAlgorithm::Ruppert},
+      {"chew", RefinementAlgorithm::Chew}};
+  for (const auto& [name, algorithm] : kNames)
+    if (*v == name) {
+      s.refinement = algorithm;
+      return;
+    }
+  throw UsageError("--algorithm=" + *v + ": the algorithm is terminator, ruppert or chew");
+}
+
+void set_interior_bound(S& s, const std::string* v) {
+  if (*v != "1" && *v != "2") throw UsageError("--interior-bound=" + *v + ": give 1 or 2 (Sec. 7.2's two strategies)");
+  s.interior_bound = *v == "1" ? 1 : 2;
+}
+
 constexpr std::array kLongOptions = {
     LongOption{"msh", "FILE", true, "also write the mesh as Gmsh MSH (version and encoding: --msh-format); FILE - is standard output",
                [](S& s, const std::string* v) { request(s.msh, v, "msh"); }},
@@ -187,6 +204,14 @@ constexpr std::array kLongOptions = {
     LongOption{"decline-cluster-splits", "", false,
                "let SPLITPERMITTED (Shewchuk 2001, Fig. 38) decline to split subsegment clusters",
                [](S& s, const std::string*) { s.decline_cluster_splits = true; }},
+    LongOption{"algorithm", "NAME", false,
+               "the refinement algorithm of Shewchuk 2001: terminator (default; Sec. 6.3-6.4), ruppert (Sec. 3: "
+               "diametral circles, midpoints; proven to -q20.7) or chew (Sec. 4: constrained Delaunay; proven to -q26.5)",
+               set_algorithm},
+    LongOption{"interior-bound", "N", false,
+               "with ruppert or chew, 30 degrees away from segments (Sec. 7.2): 1 for triangles with no vertex in a "
+               "segment interior, 2 by splitting only subsegments whose midpoint is no closer than the triangle's shortest edge",
+               set_interior_bound},
     LongOption{"threads", "N", false,
                "refine large meshes (and build the triangulation) on up to N threads (default: all cores); "
                "the output is the same for every N",

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "delaunay/triangulate.h"
+#include "refine/algorithm.h"
 #include "refine/quality_queue.h"
 
 namespace deltri {
@@ -22,6 +23,8 @@ struct Switches {
   bool circumcenters_only = false;  // -k: Steiner points at circumcentres, no off-centres
   QueueOrder queue_order = QueueOrder::Ratio;  // --queue=
   bool decline_cluster_splits = false;               // --decline-cluster-splits
+  RefinementAlgorithm refinement = RefinementAlgorithm::Terminator;  // --algorithm=terminator|ruppert|chew
+  int interior_bound = 0;                            // --interior-bound=1|2 (Sec. 7.2)
   bool regional_attributes = false;  // -A
   bool convex_hull = false;      // -c
   bool conforming_delaunay = false;  // -D

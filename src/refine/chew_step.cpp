@@ -38,7 +38,9 @@ EdgeRef edge_among(const Mesh& mesh, const std::vector<TriangleId>& created, Ver
 // insertion radius at most wx: Lemma 5's relation r_v >= r_p cos(theta) holds with that vertex as
 // parent (with the factor 1), and no edge shorter than those already there appears, which is what
 // Theorem 4's argument for termination uses. Measured in docs/refinement.md ("Chew's deletion").
+// Chew's second algorithm (Sec. 4.1) deletes every one, as the paper states it.
 bool Terminator::too_close_to_split(VertexId w, const Point& p) {
+  if (opt_.algorithm == RefinementAlgorithm::Chew) return true;
   const Point& q = mesh_.point(w);
   const EdgeRef out = finder_.leaving(mesh_, w);
   if (out == kNone) return true;

@@ -19,6 +19,7 @@
 #include "geometry/point.h"
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
+#include "refine/algorithm.h"
 #include "refine/quality_queue.h"
 #include "refine/size_test.h"
 
@@ -44,6 +45,14 @@ struct RefineOptions {
   // subsegment is split as in Triangle; the isosceles shell triangles at a junction are exempt
   // instead (Miller-Pav-Walkington), and the guard still bounds every new edge.
   bool decline_cluster_splits = false;
+  // --algorithm (refine/algorithm.h): the Terminator, Ruppert's algorithm (Sec. 3) or Chew's second
+  // algorithm (Sec. 4), each as the policies the one core asks.
+  RefinementAlgorithm algorithm = RefinementAlgorithm::Terminator;
+  // --interior-bound (Sec. 7.2), with Ruppert or Chew: 0 none; 1: B = 1 (30 degrees) for the
+  // triangles with no vertex in a segment interior, the -q bound for the others; 2: every triangle
+  // under 30 degrees is split, but one that meets -q has its encroached subsegments split only where
+  // the midpoint's insertion radius (half the subsegment) is at least its shortest edge.
+  int interior_bound = 0;
   // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h) and the halves
   // run at once. The mesh does not depend on it.
   int threads = 1;

@@ -112,7 +112,13 @@ void note_array(PageWarmer& warmer, unsigned slot, const Array& a) {
 // lens of 0.01 degrees catches such points and lets every other one be.
 constexpr double kLeastLensDeg = 0.01;
 
+// Ruppert encroaches with diametral circles (Sec. 3.1). Chew splits a subsegment only when it
+// lies between a bad triangle and its circumcentre, which the probe's walk finds whatever the rule
+// (candidate_probe.h), or when the circumcentre lies on it (Sec. 4.1): the lens of 0 degrees, the
+// open subsegment itself (with no angle bound the Terminator's least lens, as above).
 EncroachRule rule_for(const RefineOptions& opt) {
+  if (opt.algorithm == RefinementAlgorithm::Ruppert) return EncroachRule::circle();
+  if (opt.algorithm == RefinementAlgorithm::Chew) return EncroachRule::lens(opt.angle.degrees() > 0.0 ? 0.0 : kLeastLensDeg);
   if (!opt.lenses || opt.conforming_delaunay) return EncroachRule::circle();
   return EncroachRule::lens(std::max(opt.angle.degrees(), kLeastLensDeg));
 }
@@ -151,8 +157,11 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       pred_(pred),
       opt_(opt),
       rules_{opt.angle, opt.size, opt.area_field, opt.size_test},
+      interior_rules_{opt.interior_bound != 0 ? AngleBound(std::max(opt.angle.degrees(), kInteriorBoundDeg)) : opt.angle,
+                      opt.size, opt.area_field, opt.size_test},
       rule_(rule_for(opt)),
-      off_center_factor_(opt.off_centers ? opt.angle.off_center_factor() : 0.0),
+      // Ruppert and Chew insert circumcentres (Sec. 3.1, 4.1).
+      off_center_factor_(opt.off_centers && opt.algorithm == RefinementAlgorithm::Terminator ? opt.angle.off_center_factor() : 0.0),
       kept_bound_sin2_(std::pow(std::sin(std::max(opt.angle.degrees(), kLeastLensDeg) * std::numbers::pi / 180.0), 2)),
       guard_floor_(start.guard_floor),
       steiner_cap_(start.steiner_cap),

@@ -107,12 +107,14 @@ class Terminator {
     SplitRadius radius{};
   };
   std::optional<Outcome> plan_split(EdgeRef s, bool owed_to_size, SplitPlan& plan);  // Fig. 39 l.39
+  Point split_point(EdgeRef s);  // l.39: shells or a mirrored split (Terminator), else the midpoint
   std::optional<Outcome> replan_after_deletions(EdgeRef s, SplitPlan& plan);
   SplitRadius split_radius(EdgeRef s, const Point& p);
   // Would splitting s at p leave every new triangle counter-clockwise?
   // chew_pending: free vertices in s's diametral circle do not count (Chew's step deletes them).
   bool split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pending);
-  bool uses_lenses() const;
+  bool deletes_before_split() const;  // Chew's step (l.40-43): the Terminator with lenses, and Chew
+  bool split_allowed(EdgeRef s, const Assessment& a, double d) const;  // Fig. 38 l.21
   // -Y / -YY: whether c, for bad triangle t, is refused: it would lower the smallest angle below
   // floor_sin2_, or spoil a triangle next to a subsegment kept whole.
   bool refused_by_kept_boundary(const Point& c, TriangleId t);
@@ -122,8 +124,12 @@ class Terminator {
   double floor_at(const Point& p) const;  // the guard's edge floor where p lies
   double floor_for(const Assessment& a, const Point& p) const;  // the floor for splitting that triangle
   double precision_floor(const Point& p) const;  // precision_floor_at, or the coarse floor
-  // assess_triangle plus the equal-shell exemption (shell_exempt).
-  Assessment assess(TriangleId t) const;
+  // assess_triangle plus the equal-shell exemption (shell_exempt), under t's bound (rules_for);
+  // assess_with under the given rules (the closing survey: the -q bound).
+  Assessment assess(TriangleId t) const { return assess_with(t, rules_for(t)); }
+  Assessment assess_with(TriangleId t, const QualityRules& rules) const;
+  const QualityRules& rules_for(TriangleId t) const;  // Sec. 7.2: the 30 degrees, or -q
+  bool below_asked_bound(const Assessment& a) const;   // under -q, not only under Sec. 7.2's bound
   bool shell_exempt(EdgeRef shortest) const;
 
   // --- Chew's step (chew_step.cpp), Fig. 39 l.40-43 ---
@@ -171,6 +177,7 @@ class Terminator {
   Predicates& pred_;
   const RefineOptions opt_;
   QualityRules rules_;
+  QualityRules interior_rules_;  // Sec. 7.2 (--interior-bound): rules_ with max(-q, 30 degrees)
   EncroachRule rule_;
   double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
   double kept_bound_sin2_ = 0.0;    // -Y/-YY: sin^2 of the angle bound, of the least lens without -q

@@ -6,7 +6,6 @@
 // the earlier stages'.
 #include "mesh/operations.h"
 #include "refine/lawson.h"
-#include "refine/split_permitted.h"
 #include "refine/terminator.h"
 #include "util/invariant.h"
 
@@ -58,8 +57,7 @@ Outcome Terminator::insert_point(TriangleId t, const Assessment& a, const Candid
 Outcome Terminator::split_encroached_instead(const QueuedTriangle& entry, const Assessment& a, const Probe& probe) {
   const double d = std::sqrt(a.shape.shortest_length2);  // l.19, the alternative of Sec. 6.5
   for (EdgeRef s : probe.encroached)                     // l.20
-    if (a.too_large || !opt_.decline_cluster_splits || split_permitted(mesh_, apices_, s, d))  // l.21
-      enqueue_subsegment(s);                                                                  // l.22
+    if (split_allowed(s, a, d)) enqueue_subsegment(s);    // l.21-22
   if (encroached_.empty()) return Outcome::Declined;  // l.23: never try t again
   // l.24-25, in the other order: t goes back only if something was split, so that a guard refusal
   // cannot repeat the same attempt forever. Splits owed to a size bound meet only the precision
@@ -90,7 +88,7 @@ std::uint64_t Terminator::split_encroached_subsegments(bool queue_triangles, boo
 Outcome Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_size) {
   SplitPlan plan;
   if (const auto refusal = plan_split(s, owed_to_size, plan)) return *refusal;  // l.39
-  if (uses_lenses()) {                                                           // l.40-43
+  if (deletes_before_split()) {                                                  // l.40-43
     s = delete_free_vertices_near(s, plan.point, queue_triangles);
     if (s == kNone) return Outcome::Gone;
     if (const auto refusal = replan_after_deletions(s, plan)) return *refusal;

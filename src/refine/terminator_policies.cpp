@@ -12,6 +12,7 @@
 #include "refine/bottom_scale.h"
 #include "refine/concentric_shells.h"
 #include "refine/mirrored_split.h"
+#include "refine/split_permitted.h"
 #include "refine/steiner_point.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"
@@ -53,19 +54,16 @@ std::optional<Outcome> Terminator::guard_insertion(const Assessment& a, const Ca
 // the step) and at the bottom of double precision the doubles near it are tried
 // (bottom_scale_split); if none will do, s is locked.
 std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, SplitPlan& plan) {
-  const VertexId a = mesh_.org(s), b = mesh_.dest(s);
-  const Point& pa = mesh_.point(a);
-  const Point& pb = mesh_.point(b);
-  Point p;
-  if (!mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
-    p = shell_split_point(pa, pb, apices_.uses_shells(a), apices_.uses_shells(b));
+  const Point& pa = mesh_.point(mesh_.org(s));
+  const Point& pb = mesh_.point(mesh_.dest(s));
+  Point p = split_point(s);
   const auto out_of_precision = [&](const Point& q) {
     // A split point that overflowed (segments spanning most of the double range) is no point.
     return !std::isfinite(q.x) || !std::isfinite(q.y) || q == pa || q == pb ||
-           !split_keeps_orientation(s, q, uses_lenses());
+           !split_keeps_orientation(s, q, deletes_before_split());
   };
   if ((bottom_possible_ && at_bottom_scale(squared_distance(pa, pb), pa)) || out_of_precision(p)) {
-    p = bottom_scale_split(s, p, uses_lenses());
+    p = bottom_scale_split(s, p, deletes_before_split());
     if (out_of_precision(p)) {
       lock(s);
       return Outcome::Locked;
@@ -91,14 +89,57 @@ std::optional<Outcome> Terminator::replan_after_deletions(EdgeRef s, SplitPlan& 
   return std::nullopt;
 }
 
-bool Terminator::uses_lenses() const { return opt_.lenses && !opt_.conforming_delaunay; }
+// Fig. 39 l.39: the Terminator's split point (above); Ruppert's and Chew's algorithms split at the
+// midpoint (Sec. 3.1, 4.1).
+Point Terminator::split_point(EdgeRef s) {
+  const VertexId a = mesh_.org(s), b = mesh_.dest(s);
+  if (opt_.algorithm != RefinementAlgorithm::Terminator) return shell_split_point(mesh_.point(a), mesh_.point(b), false, false);
+  Point p;
+  if (!mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
+    p = shell_split_point(mesh_.point(a), mesh_.point(b), apices_.uses_shells(a), apices_.uses_shells(b));
+  return p;
+}
+
+// Fig. 39 l.40-43 runs for the Terminator with lenses and always in Chew's second algorithm, whose
+// step it is (Sec. 4.1); never in Ruppert's.
+bool Terminator::deletes_before_split() const {
+  if (opt_.algorithm != RefinementAlgorithm::Terminator) return opt_.algorithm == RefinementAlgorithm::Chew;
+  return opt_.lenses && !opt_.conforming_delaunay;
+}
+
+// Fig. 38 l.21: may the rejected point of triangle a (shortest edge d) have s split? The Terminator
+// asks SPLITPERMITTED with --decline-cluster-splits. Ruppert and Chew split every encroached
+// subsegment, except with Sec. 7.2's second strategy: a triangle that meets -q, bad only for the 30
+// degrees, splits s only where the midpoint's insertion radius |s|/2 is at least d, so that no
+// vertex has a descendant with a smaller insertion radius for the sake of the stronger bound.
+bool Terminator::split_allowed(EdgeRef s, const Assessment& a, double d) const {
+  if (a.too_large) return true;
+  if (opt_.interior_bound == 2 && !below_asked_bound(a))
+    return 0.25 * squared_distance(mesh_.point(mesh_.org(s)), mesh_.point(mesh_.dest(s))) >= d * d;
+  return !opt_.decline_cluster_splits || split_permitted(mesh_, apices_, s, d);
+}
+
+// Sec. 7.2: strategy 1 holds the triangles with no vertex in a segment interior (none of kind
+// Segment: input vertices on a segment are its ends) to 30 degrees, strategy 2 every triangle.
+const QualityRules& Terminator::rules_for(TriangleId t) const {
+  if (opt_.interior_bound == 0) return rules_;
+  if (opt_.interior_bound == 2) return interior_rules_;
+  for (const VertexId v : mesh_.corners(t))
+    if (mesh_.kind[v] == VertexKind::Segment) return rules_;
+  return interior_rules_;
+}
+
+// a was assessed under interior_rules_ (ratio2_over_bound2 against its sin^2): is it under -q?
+bool Terminator::below_asked_bound(const Assessment& a) const {
+  return a.skinny && a.shape.ratio2_over_bound2 * opt_.angle.sin2() > interior_rules_.angle.sin2();
+}
 
 // The length of the shortest edge that splitting s at p would make, now and once Chew's step (with
 // lenses) has deleted the free vertices it deletes: a free vertex a rounding error from s's
 // midpoint once made a split owed to a size bound look like a new edge of 1e-15.
 Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
   const double now = split_insertion_radius(mesh_, pred_, s, p, marks_);
-  if (!uses_lenses() || marks_.boundary().empty()) return {now, now};
+  if (!deletes_before_split() || marks_.boundary().empty()) return {now, now};
   const Point& pa = mesh_.point(mesh_.org(s));
   const Point& pb = mesh_.point(mesh_.dest(s));
   double nearest2 = HUGE_VAL;
@@ -210,9 +251,11 @@ bool Terminator::budget_left() {
   return false;
 }
 
-Assessment Terminator::assess(TriangleId t) const {
-  Assessment a = assess_triangle(mesh_, t, rules_);
-  if (a.skinny && shell_exempt(a.shape.shortest)) a.skinny = false;
+// The equal-shell exemption is the Terminator's (Ruppert's and Chew's algorithms split every skinny
+// triangle).
+Assessment Terminator::assess_with(TriangleId t, const QualityRules& rules) const {
+  Assessment a = assess_triangle(mesh_, t, rules);
+  if (a.skinny && opt_.algorithm == RefinementAlgorithm::Terminator && shell_exempt(a.shape.shortest)) a.skinny = false;
   return a;
 }
 

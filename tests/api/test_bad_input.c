@@ -165,6 +165,11 @@ int main(void) {
   expect_error("v without vorout", "pvQ", &in, DELTRI_USAGE_ERROR, "v: the Voronoi output struct is NULL");
   no_vorout = 0;
   expect_error("bare u without a test", "puQ", &in, DELTRI_USAGE_ERROR, "u: a bare u asks for a size test");
+  /* The paper's algorithms (issue 22): combinations Shewchuk 2001 rules out, and unknown names. */
+  expect_error("chew with D", "pDqQ --algorithm=chew", &in, DELTRI_USAGE_ERROR, "makes constrained Delaunay meshes only");
+  expect_error("interior bound with the Terminator", "pqQ --interior-bound=1", &in, DELTRI_USAGE_ERROR,
+               "Sec. 7.2 strengthens Ruppert's or Chew's algorithm");
+  expect_error("unknown algorithm", "pqQ --algorithm=lawson", &in, DELTRI_USAGE_ERROR, "terminator, ruppert or chew");
   expect_error("NULL structs", "pQ", NULL, DELTRI_USAGE_ERROR, "must not be NULL");
 
   /* After all that, a good call still works. */

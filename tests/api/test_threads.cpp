@@ -103,6 +103,12 @@ int main(int argc, char** argv) {
       ++failures;
     }
   }
+  // --algorithm= reaches refinement through the library: terminator is the default's mesh, chew another.
+  if (!same(serial[0], run(inputs[0], Job{"guitar.poly", "pq30a0.05evn --algorithm=terminator"})) ||
+      same(serial[0], run(inputs[0], Job{"guitar.poly", "pq30a0.05evn --algorithm=chew"}))) {
+    std::printf("FAIL: guitar.poly: --algorithm=terminator should give the default's mesh, --algorithm=chew another\n");
+    ++failures;
+  }
   if (failures) return 1;
   long triangles = 0;
   for (const deltri::api::Mesh& m : serial) triangles += m.triangle_count;

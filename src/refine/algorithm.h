@@ -1,0 +1,27 @@
+// Which algorithm of Shewchuk 2001 the one refinement core (terminator_core.cpp) runs, and the
+// stronger bound away from segments of Sec. 7.2. They are policies, not separate programs: the
+// core asks terminator_policies.cpp where a point goes, when a subsegment counts as encroached,
+// which splits are permitted and whether Chew's step deletes vertices, and those answers read
+// these settings (docs/refinement.md, "The paper's algorithms").
+#pragma once
+
+#include <cstdint>
+
+namespace deltri {
+
+enum class RefinementAlgorithm : std::uint8_t {
+  Terminator,  // Sec. 6.3-6.4 and Appendix A: lenses, concentric shells, Chew's step (the default)
+  Ruppert,     // Sec. 3: diametral circles, circumcentres, midpoints, no deletion
+  Chew,        // Sec. 4: a subsegment between a bad triangle and its circumcentre is split at its
+               // midpoint after the free vertices in its diametral circle are deleted
+};
+
+// Sec. 7.2: B = 1, that is 30 degrees, away from segments.
+inline constexpr double kInteriorBoundDeg = 30.0;
+
+// Why the paper rules a combination out, as one line, or nullptr when it is allowed.
+// interior_bound: 0 (none), 1 or 2 (Sec. 7.2's strategies); quality: -q was given.
+const char* refused_combination(RefinementAlgorithm algorithm, int interior_bound, bool quality,
+                                bool conforming_delaunay, bool decline_cluster_splits);
+
+}  // namespace deltri

@@ -1,0 +1,337 @@
+#!/usr/bin/python3
+"""The guarantees of Shewchuk 2001 for --algorithm=ruppert|chew and --interior-bound, checked on
+deltri's output files with nothing deltri reports about quality.
+
+    paper_algorithms.py eligible INPUT...                 the inputs whose input angles are all >= 60
+    paper_algorithms.py ruppert DELTRI INPUT              Sec. 3 at -pDq20.7
+    paper_algorithms.py interior DELTRI INPUT ALG N Q     Sec. 7.2, strategy N, -q Q, --algorithm=ALG
+    paper_algorithms.py fewer DELTRI INPUT Q              Sec. 4.1: Chew makes fewer triangles than Ruppert
+    paper_algorithms.py refusals DELTRI INPUT             the combinations the paper rules out: exit 2,
+                                                          one line on stderr, no output file
+
+Every mode first checks that the input has no two segments meeting at an angle under 60 degrees and
+no segments that cross or touch inside (the paper's condition), from the input file itself; each run
+is made twice and must give the same bytes; the run must exit 0.
+- ruppert: the mesh is truly Delaunay, checked exactly (rational arithmetic on the doubles written:
+  for every edge between two triangles, segments included, the far vertex is not strictly inside the
+  other's circumcircle), and has no angle under 20.7 degrees (B = sqrt 2).
+- interior: a vertex lies in a segment interior when it is an end of an output .poly segment and not
+  an input vertex (exact coordinates); the output segments must lie on the input segments (checked).
+  Strategy 1: every triangle with no such vertex has all angles >= 30, every other one >= Q.
+  Strategy 2: every angle >= Q, and every triangle with an angle under 30 has a circumcircle that
+  meets an input segment (the paper: such triangles "only occur near segments").
+- fewer: at -pqQ, Chew's mesh (constrained Delaunay, checked exactly with the segments as
+  constraints, no angle under Q) has fewer triangles than Ruppert's.
+Angles are computed in doubles with a tolerance of 1e-9 degrees.
+"""
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+from fractions import Fraction
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
+from exact_delaunay_check import incircle, orient  # noqa: E402 (exact, on Fractions)
+
+TOLERANCE = 1e-9
+
+
+def rows(path):
+    out = []
+    with open(path) as f:
+        for line in f:
+            r = line.split('#')[0].split()
+            if r:
+                out.append(r)
+    return out
+
+
+def read_poly(path):
+    """Vertices (id -> (x, y) floats) and segments (pairs of ids) of a .poly, or of a .node (no segments)."""
+    r = rows(path)
+    n = int(r[0][0])
+    src = r
+    if path.endswith('.poly') and n == 0:
+        src = rows(path[:-5] + '.node')
+        n = int(src[0][0])
+    pts = {int(x[0]): (float(x[1]), float(x[2])) for x in src[1:1 + n]}
+    if not path.endswith('.poly'):
+        return pts, []
+    at = 1 + (int(r[0][0]))
+    m = int(r[at][0])
+    segs = [(int(x[1]), int(x[2])) for x in r[at + 1:at + 1 + m]]
+    return pts, segs
+
+
+def angle_at(w, a, b):
+    ux, uy = a[0] - w[0], a[1] - w[1]
+    vx, vy = b[0] - w[0], b[1] - w[1]
+    return math.degrees(math.atan2(abs(ux * vy - uy * vx), ux * vx + uy * vy))
+
+
+def smallest_input_angle(pts, segs):
+    """The smallest angle between two segments at a common end; 0 when segments cross or touch inside."""
+    ends = {}
+    for a, b in segs:
+        if pts[a] == pts[b]:
+            continue
+        ends.setdefault(pts[a], []).append(pts[b])
+        ends.setdefault(pts[b], []).append(pts[a])
+    smallest = 180.0
+    for w, others in ends.items():
+        for i in range(len(others)):
+            for j in range(i + 1, len(others)):
+                smallest = min(smallest, angle_at(w, others[i], others[j]))
+    exact = [(tuple(map(Fraction, pts[a])), tuple(map(Fraction, pts[b]))) for a, b in segs if pts[a] != pts[b]]
+    vertices = {tuple(map(Fraction, p)) for p in pts.values()}
+    if len(exact) > 3000:
+        return 0.0  # too large to check for crossings here: not used
+    for i, (p, q) in enumerate(exact):
+        for v in vertices:  # a vertex inside a segment splits it into two at 180 degrees: fine, but
+            if v != p and v != q and orient(p, q, v) == 0 and between(p, q, v):
+                smallest = min(smallest, 180.0)  # ... the pieces are what the mesher sees
+        for (r, s) in exact[i + 1:]:
+            if len({p, q, r, s}) < 4:
+                continue
+            if proper_cross(p, q, r, s):
+                return 0.0
+    return smallest
+
+
+def between(p, q, v):
+    return min(p[0], q[0]) <= v[0] <= max(p[0], q[0]) and min(p[1], q[1]) <= v[1] <= max(p[1], q[1])
+
+
+def proper_cross(p, q, r, s):
+    o1, o2, o3, o4 = orient(p, q, r), orient(p, q, s), orient(r, s, p), orient(r, s, q)
+    if o1 * o2 < 0 and o3 * o4 < 0:
+        return True
+    for (a, b, c, o) in ((p, q, r, o1), (p, q, s, o2), (r, s, p, o3), (r, s, q, o4)):
+        if o == 0 and between(a, b, c) and c != a and c != b:
+            return True  # an end of one segment inside the other
+    return False
+
+
+def run(deltri, inp, switches, work):
+    """Runs deltri twice; returns the output base path. Fails on a non-zero exit or differing bytes."""
+    outputs = []
+    for k in range(2):
+        d = os.path.join(work, 'run%d' % k)
+        shutil.rmtree(d, ignore_errors=True)
+        os.makedirs(d)
+        shutil.copy(inp, d)
+        if inp.endswith('.poly') and os.path.exists(inp[:-5] + '.node'):
+            shutil.copy(inp[:-5] + '.node', d)
+        name = os.path.basename(inp)
+        r = subprocess.run([deltri] + switches + ['-Q', name], cwd=d, capture_output=True, text=True, timeout=900)
+        if r.returncode != 0:
+            raise SystemExit('FAIL: %s %s: exit %d: %s' % (name, ' '.join(switches), r.returncode, r.stderr.strip()))
+        base = os.path.join(d, name.rsplit('.', 1)[0] + '.1')
+        outputs.append(base)
+    for ext in ('.node', '.ele', '.poly'):
+        a, b = outputs[0] + ext, outputs[1] + ext
+        if os.path.exists(a) and open(a, 'rb').read() != open(b, 'rb').read():
+            raise SystemExit('FAIL: %s %s: two runs wrote different %s files' % (inp, ' '.join(switches), ext))
+    return outputs[0]
+
+
+def read_mesh(base):
+    r = rows(base + '.node')
+    pts = {int(x[0]): (float(x[1]), float(x[2])) for x in r[1:1 + int(r[0][0])]}
+    r = rows(base + '.ele')
+    tris = [tuple(int(v) for v in x[1:4]) for x in r[1:1 + int(r[0][0])]]
+    segs = []
+    if os.path.exists(base + '.poly'):
+        r = rows(base + '.poly')
+        at = 1 + int(r[0][0])
+        segs = [(int(x[1]), int(x[2])) for x in r[at + 1:at + 1 + int(r[at][0])]]
+    return pts, tris, segs
+
+
+def min_angle(pts, t):
+    a, b, c = pts[t[0]], pts[t[1]], pts[t[2]]
+    return min(angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b))
+
+
+def delaunay_faults(pts, tris, constrained):
+    """Exact: triangles counter-clockwise, and every edge between two triangles locally Delaunay
+    (segments included unless they are in `constrained`)."""
+    exact = {k: (Fraction(x), Fraction(y)) for k, (x, y) in pts.items()}
+    edges, faults = {}, []
+    for (a, b, c) in tris:
+        if orient(exact[a], exact[b], exact[c]) <= 0:
+            faults.append('triangle %d %d %d not counter-clockwise' % (a, b, c))
+        for (u, v, w) in ((a, b, c), (b, c, a), (c, a, b)):
+            edges[(u, v)] = w
+    for (u, v), w in edges.items():
+        other = edges.get((v, u))
+        if other is None or u > v or frozenset((u, v)) in constrained:
+            continue
+        if incircle(exact[u], exact[v], exact[w], exact[other]) > 0:
+            faults.append('edge %d-%d not Delaunay: vertex %d inside the circumcircle of %d %d %d' % (u, v, other, u, v, w))
+    return faults
+
+
+def require_eligible(inp):
+    pts, segs = read_poly(inp)
+    m = smallest_input_angle(pts, segs)
+    if m < 60.0 - TOLERANCE:
+        raise SystemExit('FAIL: %s: not a test input for the paper\'s bounds: smallest input angle %.4f < 60' % (inp, m))
+    return pts, segs
+
+
+def check_ruppert(deltri, inp, work):
+    require_eligible(inp)
+    base = run(deltri, inp, ['-pDq20.7', '--algorithm=ruppert'], work)
+    pts, tris, _ = read_mesh(base)
+    faults = delaunay_faults(pts, tris, set())
+    worst = min(min_angle(pts, t) for t in tris)
+    if worst < 20.7 - TOLERANCE:
+        faults.append('smallest angle %.6f < 20.7' % worst)
+    report(faults, '%s ruppert -pDq20.7: %d triangles, truly Delaunay, smallest angle %.4f' % (inp, len(tris), worst))
+
+
+def segment_interior(pts, segs, inputs, input_segs):
+    """The output vertices in a segment interior: ends of output segments that are not input vertices;
+    each must lie on an input segment (within rounding: split points are rounded doubles)."""
+    input_points = set(inputs.values())
+    interior = {v for s in segs for v in s if pts[v] not in input_points}
+    for v in interior:
+        x, y = pts[v]
+        near = False
+        for a, b in input_segs:
+            (ax, ay), (bx, by) = inputs[a], inputs[b]
+            length = math.hypot(bx - ax, by - ay)
+            cross = abs((bx - ax) * (y - ay) - (by - ay) * (x - ax)) / length
+            along = ((x - ax) * (bx - ax) + (y - ay) * (by - ay)) / length
+            scale = max(abs(ax), abs(ay), abs(bx), abs(by), length)
+            if cross <= 1e-12 * scale and -1e-12 * scale < along < length * (1 + 1e-12):
+                near = True
+                break
+        if not near:
+            raise SystemExit('FAIL: output segment vertex %d %s lies on no input segment' % (v, pts[v]))
+    return interior
+
+
+def circumcircle_meets_segment(p, t, inputs, input_segs):
+    (ax, ay), (bx, by), (cx, cy) = p[t[0]], p[t[1]], p[t[2]]
+    d = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    ux = ((ax * ax + ay * ay) * (by - cy) + (bx * bx + by * by) * (cy - ay) + (cx * cx + cy * cy) * (ay - by)) / d
+    uy = ((ax * ax + ay * ay) * (cx - bx) + (bx * bx + by * by) * (ax - cx) + (cx * cx + cy * cy) * (bx - ax)) / d
+    r = math.hypot(ax - ux, ay - uy)
+    for s, e in input_segs:
+        (sx, sy), (ex, ey) = inputs[s], inputs[e]
+        dx, dy = ex - sx, ey - sy
+        k = max(0.0, min(1.0, ((ux - sx) * dx + (uy - sy) * dy) / (dx * dx + dy * dy)))
+        if math.hypot(sx + k * dx - ux, sy + k * dy - uy) <= r * (1 + 1e-9):
+            return True
+    return False
+
+
+def check_interior(deltri, inp, algorithm, strategy, q, work):
+    inputs, input_segs = require_eligible(inp)
+    switches = ['-pq' + q, '--algorithm=' + algorithm, '--interior-bound=' + strategy]
+    base = run(deltri, inp, switches, work)
+    pts, tris, segs = read_mesh(base)
+    interior = segment_interior(pts, segs, inputs, input_segs)
+    q = float(q)
+    faults, away, near, worst_away, worst_near = [], 0, 0, 180.0, 180.0
+    for t in tris:
+        m = min_angle(pts, t)
+        touches = any(v in interior for v in t)
+        if strategy == '1':
+            bound = q if touches else max(q, 30.0)
+        else:
+            bound = q if m >= 30.0 - TOLERANCE or circumcircle_meets_segment(pts, t, inputs, input_segs) else 30.0
+        if touches:
+            near, worst_near = near + 1, min(worst_near, m)
+        else:
+            away, worst_away = away + 1, min(worst_away, m)
+        if m < bound - TOLERANCE and len(faults) < 10:
+            faults.append('triangle %s: smallest angle %.6f < %g (%s a segment interior)' % (t, m, bound, 'touches' if touches else 'away from'))
+    report(faults, '%s %s: %d triangles; %d with no vertex in a segment interior (smallest angle %.4f), %d with one (%.4f)'
+           % (inp, ' '.join(switches), len(tris), away, worst_away, near, worst_near))
+
+
+def check_fewer(deltri, inp, q, work):
+    require_eligible(inp)
+    counts = {}
+    faults = []
+    for algorithm in ('ruppert', 'chew'):
+        base = run(deltri, inp, ['-pq' + q, '--algorithm=' + algorithm], os.path.join(work, algorithm))
+        pts, tris, segs = read_mesh(base)
+        counts[algorithm] = len(tris)
+        constrained = {frozenset(s) for s in segs} if algorithm == 'chew' else set()
+        faults += ['%s: %s' % (algorithm, f) for f in delaunay_faults(pts, tris, constrained)[:5]]
+        worst = min(min_angle(pts, t) for t in tris)
+        if worst < float(q) - TOLERANCE:
+            faults.append('%s: smallest angle %.6f < %s' % (algorithm, worst, q))
+    if counts['chew'] >= counts['ruppert']:
+        faults.append('Chew made %d triangles, not fewer than Ruppert\'s %d' % (counts['chew'], counts['ruppert']))
+    report(faults, '%s -pq%s: Chew %d triangles, Ruppert %d (ratio %.3f)'
+           % (inp, q, counts['chew'], counts['ruppert'], counts['chew'] / counts['ruppert']))
+
+
+REFUSED = [
+    (['-pDq', '--algorithm=chew'], 'constrained Delaunay meshes only'),
+    (['-pq', '--interior-bound=1'], "Ruppert's or Chew's algorithm"),
+    (['-p', '--algorithm=ruppert', '--interior-bound=2'], 'give -q'),
+    (['-pq', '--algorithm=chew', '--decline-cluster-splits'], 'belongs to the Terminator'),
+    (['-pq', '--algorithm=lawson'], 'terminator, ruppert or chew'),
+    (['-pq', '--algorithm=ruppert', '--interior-bound=3'], 'give 1 or 2'),
+]
+
+
+def check_refusals(deltri, inp, work):
+    faults = []
+    shutil.copy(inp, work)
+    name = os.path.basename(inp)
+    for switches, expect in REFUSED:
+        r = subprocess.run([deltri] + switches + [name], cwd=work, capture_output=True, text=True, timeout=60)
+        lines = r.stderr.strip().split('\n')
+        written = [f for f in os.listdir(work) if f != name]
+        if r.returncode != 2 or len(lines) != 1 or expect not in lines[0] or written:
+            faults.append('%s: exit %d, stderr %r, files %s' % (' '.join(switches), r.returncode, r.stderr, written))
+    report(faults, '%d combinations refused with exit 2 and one line' % len(REFUSED))
+
+
+def report(faults, summary):
+    for f in faults[:10]:
+        print('FAIL:', f)
+    if faults:
+        raise SystemExit(1)
+    print('ok:', summary)
+
+
+def main(argv):
+    mode = argv[1]
+    if mode == 'eligible':
+        for inp in argv[2:]:
+            try:
+                pts, segs = read_poly(inp)
+                if segs and smallest_input_angle(pts, segs) >= 60.0 - TOLERANCE:
+                    print(inp, flush=True)
+            except (ValueError, IndexError, KeyError, OSError):
+                continue  # not a file this reader takes (the tool is for choosing inputs)
+        return 0
+    work = tempfile.mkdtemp()
+    try:
+        if mode == 'ruppert':
+            check_ruppert(argv[2], argv[3], work)
+        elif mode == 'interior':
+            check_interior(argv[2], argv[3], argv[4], argv[5], argv[6], work)
+        elif mode == 'fewer':
+            check_fewer(argv[2], argv[3], argv[4], work)
+        elif mode == 'refusals':
+            check_refusals(argv[2], argv[3], work)
+        else:
+            raise SystemExit('unknown mode ' + mode)
+    finally:
+        shutil.rmtree(work)
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv))
