@@ -168,6 +168,7 @@ RefineOptions refine_options(const Switches& sw, bool area_file) {
   opt.off_centers = !sw.circumcenters_only;
   opt.queue_order = sw.queue_order;
   opt.decline_cluster_splits = sw.decline_cluster_splits;
+  opt.range_restricted = sw.range_restricted;
   opt.threads = threads_to_use(sw);
   opt.memory_budget = memory_budget();
   return opt;

@@ -187,6 +187,10 @@ constexpr std::array kLongOptions = {
     LongOption{"decline-cluster-splits", "", false,
                "let SPLITPERMITTED (Shewchuk 2001, Fig. 38) decline to split subsegment clusters",
                [](S& s, const std::string*) { s.decline_cluster_splits = true; }},
+    LongOption{"range-restricted", "", false,
+               "range-restricted segment splitting (Shewchuk 2001, Sec. 7.3): subsegment lengths c 2^x, "
+               "c in [1, sqrt 3) (with -D: [1, sqrt 2)); an illegal length is split once, unevenly",
+               [](S& s, const std::string*) { s.range_restricted = true; }},
     LongOption{"threads", "N", false,
                "refine large meshes (and build the triangulation) on up to N threads (default: all cores); "
                "the output is the same for every N",

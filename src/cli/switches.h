@@ -22,6 +22,7 @@ struct Switches {
   bool circumcenters_only = false;  // -k: Steiner points at circumcentres, no off-centres
   QueueOrder queue_order = QueueOrder::Ratio;  // --queue=
   bool decline_cluster_splits = false;               // --decline-cluster-splits
+  bool range_restricted = false;                     // --range-restricted (Sec. 7.3)
   bool regional_attributes = false;  // -A
   bool convex_hull = false;      // -c
   bool conforming_delaunay = false;  // -D

@@ -44,6 +44,9 @@ struct RefineOptions {
   // subsegment is split as in Triangle; the isosceles shell triangles at a junction are exempt
   // instead (Miller-Pav-Walkington), and the guard still bounds every new edge.
   bool decline_cluster_splits = false;
+  // Sec. 7.3: range-restricted segment splitting (refine/range_restricted.h). Off: midpoints,
+  // shells and mirrored splits as before.
+  bool range_restricted = false;
   // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h) and the halves
   // run at once. The mesh does not depend on it.
   int threads = 1;

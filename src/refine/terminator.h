@@ -107,6 +107,7 @@ class Terminator {
     SplitRadius radius{};
   };
   std::optional<Outcome> plan_split(EdgeRef s, bool owed_to_size, SplitPlan& plan);  // Fig. 39 l.39
+  Point split_point_of(EdgeRef s);  // the split-point policy plan_split consults
   std::optional<Outcome> replan_after_deletions(EdgeRef s, SplitPlan& plan);
   SplitRadius split_radius(EdgeRef s, const Point& p);
   // Would splitting s at p leave every new triangle counter-clockwise?

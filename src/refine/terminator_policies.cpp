@@ -12,6 +12,7 @@
 #include "refine/bottom_scale.h"
 #include "refine/concentric_shells.h"
 #include "refine/mirrored_split.h"
+#include "refine/range_restricted.h"
 #include "refine/steiner_point.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"
@@ -47,8 +48,7 @@ std::optional<Outcome> Terminator::guard_insertion(const Assessment& a, const Ca
   return std::nullopt;
 }
 
-// Fig. 39 l.39: the split point of s, across a thin wedge aligned with the vertex opposite
-// (mirrored_split.h), else on concentric shells. Out of precision (it rounds onto an end, or a
+// Fig. 39 l.39: the split point of s (split_point_of). Out of precision (it rounds onto an end, or a
 // neighbour is flush with s there, unless it is one that Chew's step deletes; checked again after
 // the step) and at the bottom of double precision the doubles near it are tried
 // (bottom_scale_split); if none will do, s is locked.
@@ -56,9 +56,7 @@ std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, Spli
   const VertexId a = mesh_.org(s), b = mesh_.dest(s);
   const Point& pa = mesh_.point(a);
   const Point& pb = mesh_.point(b);
-  Point p;
-  if (!mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
-    p = shell_split_point(pa, pb, apices_.uses_shells(a), apices_.uses_shells(b));
+  Point p = split_point_of(s);
   const auto out_of_precision = [&](const Point& q) {
     // A split point that overflowed (segments spanning most of the double range) is no point.
     return !std::isfinite(q.x) || !std::isfinite(q.y) || q == pa || q == pb ||
@@ -76,6 +74,23 @@ std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, Spli
   plan.radius = split_radius(s, p);
   if (plan.radius.after_chew < plan.floor) return Outcome::BelowFloor;
   return std::nullopt;
+}
+
+// Fig. 39 l.39's point before the precision checks. By default: mirrored across a thin wedge,
+// else on concentric shells (or the midpoint). With range-restricted splitting (Sec. 7.3) shells
+// come first, as the paper orders them, and every other subsegment follows the ladder of legal
+// lengths; mirrored points would leave arbitrary lengths, so they are not used.
+Point Terminator::split_point_of(EdgeRef s) {
+  const VertexId a = mesh_.org(s), b = mesh_.dest(s);
+  const Point& pa = mesh_.point(a);
+  const Point& pb = mesh_.point(b);
+  const bool shell_a = apices_.uses_shells(a), shell_b = apices_.uses_shells(b);
+  if (opt_.range_restricted && !shell_a && !shell_b)
+    return range_restricted_split_point(pa, pb, legal_range_top(uses_lenses()));
+  Point p;
+  if (opt_.range_restricted || !mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
+    p = shell_split_point(pa, pb, shell_a, shell_b);
+  return p;
 }
 
 // After Chew's step (Fig. 39 l.40-43) the split point is checked again: a free vertex flush with
