@@ -42,10 +42,10 @@ std::vector<std::string> long_options_of(const std::string& switches, std::strin
     if (from == std::string::npos) break;
     const std::size_t to = std::min(switches.find_first_of(" \t", from), switches.size());
     const std::string word = switches.substr(from, to - from);
-    if (word.rfind("--threads=", 0) == 0) {
+    if (word.rfind("--threads=", 0) == 0 || word == "--range-restricted" || word == "--corner-lopping") {
       options.push_back(word);
     } else if (word.rfind("--", 0) == 0 || !letters.empty()) {
-      throw api::Error(DELTRI_USAGE_ERROR, word + ": the switches are one word of letters, then optionally --threads=N");
+      throw api::Error(DELTRI_USAGE_ERROR, word + ": the switches are one word of letters, then optionally --threads=N, --range-restricted, --corner-lopping");
     } else {
       letters = word;
     }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cdt/convex_hull.h"
+#include "cdt/corner_lopping.h"
 #include "cdt/holes_and_regions.h"
 #include "cdt/insert_segments.h"
 #include "cdt/markers.h"
@@ -89,6 +90,17 @@ void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Swi
   if (sw.regional_attributes || region_areas)
     report.regions = spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas);
   report.counters.add(pred.counters);
+}
+
+// --corner-lopping (Sec. 6.1): X becomes X' and its spokes (cdt/corner_lopping.h); which angles lie
+// inside the domain is read off X's own constrained Delaunay triangulation, built on a copy.
+CornerLopping lop_corners_of(Pslg& pslg, const Switches& sw) {
+  Pslg copy = pslg;
+  Mesh domain = mesh_from_pslg(copy);
+  const DelaunayReport dt = delaunay_triangulate(domain, sw.algorithm, 1);
+  RunReport scratch;
+  constrain(domain, copy, dt, sw, scratch);
+  return lop_corners(pslg, domain);
 }
 
 // Output numbers of the vertices: every vertex but deleted ones, or with -j only those a
@@ -196,6 +208,8 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
 
   PipelineResult result;
   Mesh& mesh = result.mesh;
+  CornerLopping lopping;
+  if (sw.corner_lopping && source.is_poly && !rebuilding) lopping = lop_corners_of(pslg, sw);
   mesh = mesh_from_pslg(pslg);
   AreaField area_field;
   if (rebuilding) {
@@ -232,12 +246,14 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     RefineOptions opt = refine_options(sw, area_bounds_read(source));
     opt.size_test = source.size_test;
     opt.area_field = &area_field;
+    if (lopping.apices > 0) opt.lopped_apices = &lopping.apex;
     report.refine = refine_mesh(mesh, pred, opt);
     report.counters.add(pred.counters);
     mesh.compact_triangles();
     stage("refinement");
     check_stage(mesh, "refinement", sw.conforming_delaunay);
   }
+  forget_lopping_edges(mesh, lopping.internal);
   // Once, at the end: every marker follows from input markers, subsegments and the boundary.
   assign_boundary_markers(mesh, pslg.has_markers);
 

@@ -23,6 +23,7 @@ struct Switches {
   QueueOrder queue_order = QueueOrder::Ratio;  // --queue=
   bool decline_cluster_splits = false;               // --decline-cluster-splits
   bool range_restricted = false;                     // --range-restricted (Sec. 7.3)
+  bool corner_lopping = false;                       // --corner-lopping (Sec. 6.1)
   bool regional_attributes = false;  // -A
   bool convex_hull = false;      // -c
   bool conforming_delaunay = false;  // -D

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <iterator>
+#include <vector>
 
 #include "geometry/mesh_bounds.h"
 #include "geometry/point.h"
@@ -47,6 +48,9 @@ struct RefineOptions {
   // Sec. 7.3: range-restricted segment splitting (refine/range_restricted.h). Off: midpoints,
   // shells and mirrored splits as before.
   bool range_restricted = false;
+  // --corner-lopping (Sec. 6.1, cdt/corner_lopping.h): by vertex id, the apices whose fans fill the
+  // lopped corners; the triangles at them are left alone and the subsegments at them never split.
+  const std::vector<char>* lopped_apices = nullptr;
   // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h) and the halves
   // run at once. The mesh does not depend on it.
   int threads = 1;

@@ -126,6 +126,8 @@ class Terminator {
   // assess_triangle plus the equal-shell exemption (shell_exempt).
   Assessment assess(TriangleId t) const;
   bool shell_exempt(EdgeRef shortest) const;
+  bool in_lopped_corner(TriangleId t) const;  // --corner-lopping: a fan triangle (Sec. 6.1)
+  bool at_lopped_apex(VertexId v) const;
 
   // --- Chew's step (chew_step.cpp), Fig. 39 l.40-43 ---
   // Returns the edge of the subsegment afterwards, or kNone.

@@ -233,6 +233,7 @@ bool Terminator::budget_left() {
 
 Assessment Terminator::assess(TriangleId t) const {
   Assessment a = assess_triangle(mesh_, t, rules_);
+  if (opt_.lopped_apices && in_lopped_corner(t)) a.skinny = a.too_large = false;  // Sec. 6.1: the fan stays
   if (a.skinny && shell_exempt(a.shape.shortest)) a.skinny = false;
   return a;
 }
@@ -258,4 +259,16 @@ bool Terminator::shell_exempt(EdgeRef shortest) const {
   constexpr double k = 0.999 * 0.999;  // the distances within 0.1%, compared squared
   return da2 > k * db2 && db2 > k * da2;
 }
+
+// --corner-lopping: t is a triangle of a fan that fills a lopped corner (it has the apex as a corner).
+bool Terminator::in_lopped_corner(TriangleId t) const {
+  for (VertexId v : mesh_.corners(t))
+    if (at_lopped_apex(v)) return true;
+  return false;
+}
+
+bool Terminator::at_lopped_apex(VertexId v) const {
+  return opt_.lopped_apices && v < opt_.lopped_apices->size() && (*opt_.lopped_apices)[v];
+}
+
 }  // namespace deltri
