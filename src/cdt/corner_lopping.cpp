@@ -70,7 +70,7 @@ std::vector<std::vector<char>> inside_sectors(const Mesh& domain, const std::vec
 
 bool has_small_inside_angle(const std::vector<Spoke>& spokes, const std::vector<char>& inside) {
   for (std::size_t k = 0; k < inside.size(); ++k)
-    if (inside[k] && sector_width(spokes, k) < kSmallAngle) return true;
+    if (inside[k] && sector_width(spokes, k) < kSmallAngle * (1.0 - 1e-9)) return true;  // 60 degrees to rounding is not small
   return false;
 }
 
