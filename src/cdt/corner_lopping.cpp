@@ -85,8 +85,10 @@ double distance_to_segment(const Point& p, const Point& a, const Point& b) {
 double feature_size(const Pslg& pslg, const Mesh& domain, VertexId a) {
   double nearest = HUGE_VAL;
   const Point& pa = domain.point(a);
-  for (VertexId v = 0; v < pslg.points.size(); ++v)
-    if (v != a && domain.kind[v] == VertexKind::Input) nearest = std::min(nearest, std::hypot(domain.point(v).x - pa.x, domain.point(v).y - pa.y));
+  for (VertexId v = 0; v < pslg.points.size(); ++v) {
+    const Point& q = domain.point(v);
+    if (v != a && domain.kind[v] == VertexKind::Input) nearest = std::min(nearest, std::hypot(q.x - pa.x, q.y - pa.y));
+  }
   for (const Pslg::Segment& s : pslg.segments)
     if (s.a != a && s.b != a) nearest = std::min(nearest, distance_to_segment(pa, domain.point(s.a), domain.point(s.b)));
   return nearest;
@@ -192,7 +194,7 @@ CornerLopping lop_corners(Pslg& pslg, const Mesh& domain) {
 }
 
 void forget_lopping_edges(Mesh& mesh, const std::vector<char>& internal) {
-  if (!mesh.has_subsegments()) return;
+  if (internal.empty() || !mesh.has_subsegments()) return;  // no corner lopped: the mesh stays as it is
   for (EdgeRef e = 0; e < mesh.subseg.size(); ++e) {
     const SubsegmentId s = mesh.subseg[e];
     if (s == kNone || !mesh.is_live(triangle_of(e))) continue;
