@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "mesh/subsegments.h"
 
@@ -182,13 +183,16 @@ void Lopper::split_cut_segments() {
 CornerLopping lop_corners(Pslg& pslg, const Mesh& domain) {
   const auto at = segments_at(pslg, domain);
   const auto inside = inside_sectors(domain, at);
-  CornerLopping out;
-  Lopper lopper(pslg, out);
+  // Every radius first, from X alone: the shields added to the PSLG are no features of X.
+  std::vector<std::pair<VertexId, double>> shields;
   for (VertexId v = 0; v < at.size(); ++v) {
     if (inside[v].empty() || !has_small_inside_angle(at[v], inside[v])) continue;
     const double r = feature_size(pslg, domain, v) / 3.0;
-    if (r > 0.0 && std::isfinite(r)) lopper.lop(v, r, at[v], inside[v]);
+    if (r > 0.0 && std::isfinite(r)) shields.emplace_back(v, r);
   }
+  CornerLopping out;
+  Lopper lopper(pslg, out);
+  for (const auto& [v, r] : shields) lopper.lop(v, r, at[v], inside[v]);
   lopper.split_cut_segments();
   return out;
 }
