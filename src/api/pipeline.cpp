@@ -253,7 +253,6 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     stage("refinement");
     check_stage(mesh, "refinement", sw.conforming_delaunay);
   }
-  forget_lopping_edges(mesh, lopping.internal);
   // Once, at the end: every marker follows from input markers, subsegments and the boundary.
   assign_boundary_markers(mesh, pslg.has_markers);
 
@@ -273,6 +272,9 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     }
   }
 
+  // After -C, which checks the constrained Delaunay triangulation refinement made, with the lopped
+  // corners' chords and spokes still constrained: the fans need not be Delaunay without them.
+  forget_lopping_edges(mesh, lopping.internal);
   if (refinement_wanted(sw, source)) report.misses = count_bound_misses(mesh, bound_request(sw, source, report));
 
   if (sw.order == 2) result.midpoints = add_edge_midpoints(mesh);

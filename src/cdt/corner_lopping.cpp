@@ -69,7 +69,11 @@ std::vector<std::vector<char>> inside_sectors(const Mesh& domain, const std::vec
   return inside;
 }
 
+// Segments overlapping at a (a sector of width 0 to rounding) would put two shield vertices at one
+// place: such an apex is not lopped.
 bool has_small_inside_angle(const std::vector<Spoke>& spokes, const std::vector<char>& inside) {
+  for (std::size_t k = 0; k < inside.size(); ++k)
+    if (sector_width(spokes, k) < 1e-9) return false;
   for (std::size_t k = 0; k < inside.size(); ++k)
     if (inside[k] && sector_width(spokes, k) < kSmallAngle * (1.0 - 1e-9)) return true;  // 60 degrees to rounding is not small
   return false;
