@@ -35,7 +35,7 @@ std::string without_suffix(std::string text, const std::string& suffix) {
 bool is_library_option(const std::string& word) {
   for (const char* prefix : {"--threads=", "--algorithm=", "--interior-bound="})
     if (word.rfind(prefix, 0) == 0) return true;
-  return false;
+  return word == "--range-restricted" || word == "--corner-lopping";
 }
 
 // The switches may end with words of the options the library takes beyond Triangle's letters
@@ -53,7 +53,8 @@ std::vector<std::string> long_options_of(const std::string& switches, std::strin
       options.push_back(word);
     } else if (word.rfind("--", 0) == 0 || !letters.empty()) {
       throw api::Error(DELTRI_USAGE_ERROR, word + ": the switches are one word of letters, then optionally "
-                                                  "--threads=N, --algorithm=NAME, --interior-bound=N");
+                                                  "--threads=N, --algorithm=NAME, --interior-bound=N, "
+                                                  "--range-restricted, --corner-lopping");
     } else {
       letters = word;
     }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cdt/convex_hull.h"
+#include "cdt/corner_lopping.h"
 #include "cdt/holes_and_regions.h"
 #include "cdt/insert_segments.h"
 #include "cdt/markers.h"
@@ -91,6 +92,17 @@ void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Swi
   report.counters.add(pred.counters);
 }
 
+// --corner-lopping (Sec. 6.1): X becomes X' and its spokes (cdt/corner_lopping.h); which angles lie
+// inside the domain is read off X's own constrained Delaunay triangulation, built on a copy.
+CornerLopping lop_corners_of(Pslg& pslg, const Switches& sw) {
+  Pslg copy = pslg;
+  Mesh domain = mesh_from_pslg(copy);
+  const DelaunayReport dt = delaunay_triangulate(domain, sw.algorithm, 1);
+  RunReport scratch;
+  constrain(domain, copy, dt, sw, scratch);
+  return lop_corners(pslg, domain);
+}
+
 // Output numbers of the vertices: every vertex but deleted ones, or with -j only those a
 // triangle uses (its corners and, with -o2, its midpoints). Empty when every vertex is written in
 // id order.
@@ -170,6 +182,7 @@ RefineOptions refine_options(const Switches& sw, bool area_file) {
   opt.decline_cluster_splits = sw.decline_cluster_splits;
   opt.algorithm = sw.refinement;
   opt.interior_bound = sw.interior_bound;
+  opt.range_restricted = sw.range_restricted;
   opt.threads = threads_to_use(sw);
   opt.memory_budget = memory_budget();
   return opt;
@@ -197,6 +210,8 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
 
   PipelineResult result;
   Mesh& mesh = result.mesh;
+  CornerLopping lopping;
+  if (sw.corner_lopping && source.is_poly && !rebuilding) lopping = lop_corners_of(pslg, sw);
   mesh = mesh_from_pslg(pslg);
   AreaField area_field;
   if (rebuilding) {
@@ -233,6 +248,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     RefineOptions opt = refine_options(sw, area_bounds_read(source));
     opt.size_test = source.size_test;
     opt.area_field = &area_field;
+    if (lopping.apices > 0) opt.lopped_apices = &lopping.apex;
     report.refine = refine_mesh(mesh, pred, opt);
     report.counters.add(pred.counters);
     mesh.compact_triangles();
@@ -258,6 +274,9 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     }
   }
 
+  // After -C, which checks the constrained Delaunay triangulation refinement made, with the lopped
+  // corners' chords and spokes still constrained: the fans need not be Delaunay without them.
+  forget_lopping_edges(mesh, lopping.internal);
   if (refinement_wanted(sw, source)) report.misses = count_bound_misses(mesh, bound_request(sw, source, report));
 
   if (sw.order == 2) result.midpoints = add_edge_midpoints(mesh);

@@ -154,6 +154,19 @@ int threads_to_use(const Switches& sw) {
   return cores > 0 ? static_cast<int>(cores) : 1;
 }
 
+// --corner-lopping (Sec. 6.1) shields the angles of a PSLG's segments (-p), puts vertices on those
+// segments (which -Y/-YY forbid) and fills the corners with fixed fans, which need not be Delaunay (-D).
+namespace {
+void refuse_corner_lopping_combinations(const Switches& s) {
+  if (!s.corner_lopping) return;
+  if (!s.poly || s.refine) throw RefusedSwitchError("--corner-lopping: needs -p and no -r (it shields the input angles of a PSLG)");
+  if (s.no_boundary_steiner > 0)
+    throw RefusedSwitchError("--corner-lopping: cannot be combined with -Y or -YY (the shields put vertices on the segments)");
+  if (s.conforming_delaunay)
+    throw RefusedSwitchError("--corner-lopping: cannot be combined with -D (the fans in the lopped corners need not be Delaunay)");
+}
+}  // namespace
+
 Switches parse_switches(int argc, const char* const* argv) {
   Switches s;
   for (int k = 0; k < argc; ++k) s.command_line += (k ? " " : "") + std::string(argv[k]);
@@ -176,6 +189,7 @@ Switches parse_switches(int argc, const char* const* argv) {
   int to_stdout = 0;
   for (const Switches::FileRequest* r : {&s.msh, &s.vtu, &s.svg, &s.json, &s.stl}) to_stdout += r->wanted && r->path == "-";
   if (to_stdout > 1) throw UsageError("-: only one of --msh=-, --vtu=-, --svg=-, --json=- can go to standard output");
+  refuse_corner_lopping_combinations(s);
   return s;
 }
 

@@ -212,6 +212,14 @@ constexpr std::array kLongOptions = {
                "with ruppert or chew, 30 degrees away from segments (Sec. 7.2): 1 for triangles with no vertex in a "
                "segment interior, 2 by splitting only subsegments whose midpoint is no closer than the triangle's shortest edge",
                set_interior_bound},
+    LongOption{"range-restricted", "", false,
+               "range-restricted segment splitting (Shewchuk 2001, Sec. 7.3): subsegment lengths c 2^x, "
+               "c in [1, sqrt 3) with lenses (with -D or ruppert: [1, sqrt 2)); an illegal length is split once, unevenly",
+               [](S& s, const std::string*) { s.range_restricted = true; }},
+    LongOption{"corner-lopping", "", false,
+               "with -p: corner-lopping (Shewchuk 2001, Sec. 6.1): shield each input angle under 60 degrees at "
+               "radius lfs/3, refine around the shields, fill the lopped corners with fans",
+               [](S& s, const std::string*) { s.corner_lopping = true; }},
     LongOption{"threads", "N", false,
                "refine large meshes (and build the triangulation) on up to N threads (default: all cores); "
                "the output is the same for every N",

@@ -25,6 +25,8 @@ struct Switches {
   bool decline_cluster_splits = false;               // --decline-cluster-splits
   RefinementAlgorithm refinement = RefinementAlgorithm::Terminator;  // --algorithm=terminator|ruppert|chew
   int interior_bound = 0;                            // --interior-bound=1|2 (Sec. 7.2)
+  bool range_restricted = false;                     // --range-restricted (Sec. 7.3)
+  bool corner_lopping = false;                       // --corner-lopping (Sec. 6.1)
   bool regional_attributes = false;  // -A
   bool convex_hull = false;      // -c
   bool conforming_delaunay = false;  // -D

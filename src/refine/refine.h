@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <iterator>
+#include <vector>
 
 #include "geometry/mesh_bounds.h"
 #include "geometry/point.h"
@@ -53,6 +54,12 @@ struct RefineOptions {
   // under 30 degrees is split, but one that meets -q has its encroached subsegments split only where
   // the midpoint's insertion radius (half the subsegment) is at least its shortest edge.
   int interior_bound = 0;
+  // Sec. 7.3: range-restricted segment splitting (refine/range_restricted.h). Off: midpoints,
+  // shells and mirrored splits as before.
+  bool range_restricted = false;
+  // --corner-lopping (Sec. 6.1, cdt/corner_lopping.h): by vertex id, the apices whose fans fill the
+  // lopped corners; the triangles at them are left alone and the subsegments at them never split.
+  const std::vector<char>* lopped_apices = nullptr;
   // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h) and the halves
   // run at once. The mesh does not depend on it.
   int threads = 1;

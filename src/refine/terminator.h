@@ -107,7 +107,7 @@ class Terminator {
     SplitRadius radius{};
   };
   std::optional<Outcome> plan_split(EdgeRef s, bool owed_to_size, SplitPlan& plan);  // Fig. 39 l.39
-  Point split_point(EdgeRef s);  // l.39: shells or a mirrored split (Terminator), else the midpoint
+  Point split_point(EdgeRef s);  // l.39: the split-point policy plan_split consults
   std::optional<Outcome> replan_after_deletions(EdgeRef s, SplitPlan& plan);
   SplitRadius split_radius(EdgeRef s, const Point& p);
   // Would splitting s at p leave every new triangle counter-clockwise?
@@ -131,6 +131,8 @@ class Terminator {
   const QualityRules& rules_for(TriangleId t) const;  // Sec. 7.2: the 30 degrees, or -q
   bool below_asked_bound(const Assessment& a) const;   // under -q, not only under Sec. 7.2's bound
   bool shell_exempt(EdgeRef shortest) const;
+  bool in_lopped_corner(TriangleId t) const;  // --corner-lopping: a fan triangle (Sec. 6.1)
+  bool at_lopped_apex(VertexId v) const;
 
   // --- Chew's step (chew_step.cpp), Fig. 39 l.40-43 ---
   // Returns the edge of the subsegment afterwards, or kNone.

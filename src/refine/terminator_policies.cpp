@@ -12,6 +12,7 @@
 #include "refine/bottom_scale.h"
 #include "refine/concentric_shells.h"
 #include "refine/mirrored_split.h"
+#include "refine/range_restricted.h"
 #include "refine/split_permitted.h"
 #include "refine/steiner_point.h"
 #include "refine/termination_guard.h"
@@ -48,8 +49,7 @@ std::optional<Outcome> Terminator::guard_insertion(const Assessment& a, const Ca
   return std::nullopt;
 }
 
-// Fig. 39 l.39: the split point of s, across a thin wedge aligned with the vertex opposite
-// (mirrored_split.h), else on concentric shells. Out of precision (it rounds onto an end, or a
+// Fig. 39 l.39: the split point of s (split_point). Out of precision (it rounds onto an end, or a
 // neighbour is flush with s there, unless it is one that Chew's step deletes; checked again after
 // the step) and at the bottom of double precision the doubles near it are tried
 // (bottom_scale_split); if none will do, s is locked.
@@ -76,6 +76,26 @@ std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, Spli
   return std::nullopt;
 }
 
+// Fig. 39 l.39's point before the precision checks. The Terminator's: mirrored across a thin
+// wedge, else on concentric shells (or the midpoint); Ruppert's and Chew's algorithms split at the
+// midpoint (Sec. 3.1, 4.1). With range-restricted splitting (Sec. 7.3) shells come first, as the
+// paper orders them, and every other subsegment follows the ladder of legal lengths; mirrored
+// points would leave arbitrary lengths, so they are not used.
+Point Terminator::split_point(EdgeRef s) {
+  const VertexId a = mesh_.org(s), b = mesh_.dest(s);
+  const Point& pa = mesh_.point(a);
+  const Point& pb = mesh_.point(b);
+  const bool terminator = opt_.algorithm == RefinementAlgorithm::Terminator;
+  const bool shell_a = terminator && apices_.uses_shells(a), shell_b = terminator && apices_.uses_shells(b);
+  if (opt_.range_restricted && !shell_a && !shell_b)
+    return range_restricted_split_point(pa, pb, legal_range_top(rule_.min_apex_angle_deg > 90.0));
+  Point p;
+  if (!terminator || opt_.range_restricted ||
+      !mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
+    p = shell_split_point(pa, pb, shell_a, shell_b);
+  return p;
+}
+
 // After Chew's step (Fig. 39 l.40-43) the split point is checked again: a free vertex flush with
 // s that the step did not delete, or one its search could not reach, still counts.
 std::optional<Outcome> Terminator::replan_after_deletions(EdgeRef s, SplitPlan& plan) {
@@ -87,17 +107,6 @@ std::optional<Outcome> Terminator::replan_after_deletions(EdgeRef s, SplitPlan& 
   if (plan.radius.now < plan.floor && split_insertion_radius(mesh_, pred_, s, plan.point, marks_) < plan.floor)
     return Outcome::BelowFloor;
   return std::nullopt;
-}
-
-// Fig. 39 l.39: the Terminator's split point (above); Ruppert's and Chew's algorithms split at the
-// midpoint (Sec. 3.1, 4.1).
-Point Terminator::split_point(EdgeRef s) {
-  const VertexId a = mesh_.org(s), b = mesh_.dest(s);
-  if (opt_.algorithm != RefinementAlgorithm::Terminator) return shell_split_point(mesh_.point(a), mesh_.point(b), false, false);
-  Point p;
-  if (!mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
-    p = shell_split_point(mesh_.point(a), mesh_.point(b), apices_.uses_shells(a), apices_.uses_shells(b));
-  return p;
 }
 
 // Fig. 39 l.40-43 runs for the Terminator with lenses and always in Chew's second algorithm, whose
@@ -252,9 +261,10 @@ bool Terminator::budget_left() {
 }
 
 // The equal-shell exemption is the Terminator's (Ruppert's and Chew's algorithms split every skinny
-// triangle).
+// triangle); the fans of lopped corners stay as they are (Sec. 6.1).
 Assessment Terminator::assess_with(TriangleId t, const QualityRules& rules) const {
   Assessment a = assess_triangle(mesh_, t, rules);
+  if (opt_.lopped_apices && in_lopped_corner(t)) a.skinny = a.too_large = false;
   if (a.skinny && opt_.algorithm == RefinementAlgorithm::Terminator && shell_exempt(a.shape.shortest)) a.skinny = false;
   return a;
 }
@@ -280,4 +290,16 @@ bool Terminator::shell_exempt(EdgeRef shortest) const {
   constexpr double k = 0.999 * 0.999;  // the distances within 0.1%, compared squared
   return da2 > k * db2 && db2 > k * da2;
 }
+
+// --corner-lopping: t is a triangle of a fan that fills a lopped corner (it has the apex as a corner).
+bool Terminator::in_lopped_corner(TriangleId t) const {
+  for (VertexId v : mesh_.corners(t))
+    if (at_lopped_apex(v)) return true;
+  return false;
+}
+
+bool Terminator::at_lopped_apex(VertexId v) const {
+  return opt_.lopped_apices && v < opt_.lopped_apices->size() && (*opt_.lopped_apices)[v];
+}
+
 }  // namespace deltri

@@ -58,3 +58,8 @@ add_test(NAME api.surface COMMAND sh -c "/usr/bin/python3 -c 'import numpy' 2>/d
          ${API_DIR}/surface_clients.py $<TARGET_FILE:deltri> $<TARGET_FILE:test_api_surface_c>
          $<TARGET_FILE:test_api_surface_cpp> ${CMAKE_SOURCE_DIR})
 set_tests_properties(api.surface PROPERTIES ENVIRONMENT "${API_PYTHON_ENV}" SKIP_RETURN_CODE 77 TIMEOUT 600)
+# --range-restricted and --corner-lopping through the library (the letters' words), and the refusal.
+add_executable(test_api_paper_options ${API_DIR}/test_paper_options.cpp)
+target_compile_options(test_api_paper_options PRIVATE ${DELTRI_WARNINGS})
+target_link_libraries(test_api_paper_options PRIVATE deltri_core)
+add_test(NAME api.paper_options COMMAND test_api_paper_options)
