@@ -21,6 +21,17 @@ bool star_of(const Mesh& mesh, EdgeRef out, std::vector<EdgeRef>& spokes) {
   return e == out && spokes.size() >= 3;
 }
 
+// Whether cutting the ear (a, b, c) off v's link by flipping v-b leaves v strictly inside the rest.
+// With four link vertices, v may lie on the chord a-c itself (a circumcentre at the midpoint of a
+// right triangle's hypotenuse): the flip then leaves a flat triangle (a, c, v) for a moment, and the
+// merge of the last three triangles that follows at once removes it with v, leaving (a, b, c) and
+// the proper triangle on the other side of a-c. Refusing that case left such vertices undeletable,
+// and Chew's step (Sec. 4) split ever smaller subsegments around them.
+bool ear_keeps_v_inside(Predicates& pred, const Point& a, const Point& c, const Point& v, std::size_t m) {
+  const double side = pred.orient2d(a, c, v);
+  return side > 0 || (side == 0 && m == 4);
+}
+
 // Picks the ears to cut, as positions in the shrinking list of link vertices; false if at some
 // point no ear is both flippable and empty.
 bool plan_ears(Predicates& pred, const Point& v, std::vector<Point> link, std::vector<std::size_t>& order) {
@@ -32,7 +43,7 @@ bool plan_ears(Predicates& pred, const Point& v, std::vector<Point> link, std::v
       const Point& a = link[(i + m - 1) % m];
       const Point& b = link[i];
       const Point& c = link[(i + 1) % m];
-      if (pred.orient2d(a, b, c) <= 0 || pred.orient2d(a, c, v) <= 0) continue;
+      if (pred.orient2d(a, b, c) <= 0 || !ear_keeps_v_inside(pred, a, c, v, m)) continue;
       bool empty = true;
       for (std::size_t j = 0; j < m && empty; ++j)
         if (j != i && j != (i + 1) % m && j != (i + m - 1) % m) empty = pred.incircle(a, b, c, link[j]) <= 0;

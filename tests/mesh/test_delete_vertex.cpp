@@ -93,3 +93,25 @@ TEST(boundary_vertices_and_subsegment_ends_are_not_deleted) {
   CHECK(m.corner == before);
   CHECK(created.empty());
 }
+
+// The centre of a square lies on both diagonals of its link, so every ear's chord passes through
+// it; a circumcentre at the midpoint of a right triangle's hypotenuse is the same case. It must
+// still be deletable (Chew's step relies on it), leaving two proper triangles.
+TEST(a_vertex_on_a_chord_of_its_four_link_vertices_is_deleted) {
+  Predicates pred;
+  for (const Point centre : {Point{0.5, 0.5}, Point{0.5, 0.25}}) {
+    Mesh m = unit_square();
+    const VertexId c = m.add_vertex(centre, VertexKind::Free);
+    REQUIRE(insert_vertex(m, pred, c, 0).status == InsertStatus::Inserted);
+    std::vector<TriangleId> created;
+    REQUIRE(delete_vertex(m, pred, leaving(m, c), created));
+    CHECK_EQ(all_faults(m), 0);
+    CHECK_EQ(delaunay_faults(m), 0);
+    CHECK_EQ(static_cast<std::size_t>(m.live_triangles()), std::size_t{2});
+    for (TriangleId t : created)
+      if (m.is_live(t)) {
+        const auto p = m.corner_points(t);
+        CHECK(pred.orient2d(p.a, p.b, p.c) > 0);
+      }
+  }
+}
