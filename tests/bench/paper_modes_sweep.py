@@ -50,8 +50,14 @@ def corpus(corpus_dir, reference):
     return sorted(files, key=lambda f: (os.path.getsize(os.path.join(corpus_dir, f)), f))  # small ones first
 
 
+def output_base(name):
+    """The output's name: x.poly gives x.1, x.1.poly (an earlier output) gives x.2."""
+    m = re.match(r'(.*)\.(\d+)\.poly$', name)
+    return f'{m.group(1)}.{int(m.group(2)) + 1}' if m else name[:-5] + '.1'
+
+
 def deltri_once(deltri, switches, work, name, timeout):
-    base = os.path.join(work, name[:-5] + '.1')
+    base = os.path.join(work, output_base(name))
     for ext in ('node', 'ele', 'poly'):
         if os.path.exists(f'{base}.{ext}'):
             os.remove(f'{base}.{ext}')
@@ -85,7 +91,7 @@ def one(args, mode, f):
         warned = re.search(r'(\d+) triangles miss the requested bounds[^\n]*', err)
         rec['warning'] = warned.group(0) if warned else ''
         cmd = ['/usr/bin/python3', args.meshcheck, '--input', os.path.join(work, name),
-               '--mesh', os.path.join(work, name[:-5] + '.1'), '--min-angle', str(q), '--json']
+               '--mesh', os.path.join(work, output_base(name)), '--min-angle', str(q), '--json']
         if '-pDq20.7' in switches:
             cmd.append('--conforming-delaunay')
         try:
