@@ -248,7 +248,10 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     RefineOptions opt = refine_options(sw, area_bounds_read(source));
     opt.size_test = source.size_test;
     opt.area_field = &area_field;
-    if (lopping.apices > 0) opt.lopped_apices = &lopping.apex;
+    if (lopping.apices > 0) {
+      opt.lopped_apices = &lopping.apex;
+      opt.lopped_sectors = &lopping.sectors;
+    }
     report.refine = refine_mesh(mesh, pred, opt);
     report.counters.add(pred.counters);
     mesh.compact_triangles();

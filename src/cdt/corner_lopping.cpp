@@ -69,14 +69,31 @@ std::vector<std::vector<char>> inside_sectors(const Mesh& domain, const std::vec
   return inside;
 }
 
-// Segments overlapping at a (a sector of width 0 to rounding) would put two shield vertices at one
-// place: such an apex is not lopped.
-bool has_small_inside_angle(const std::vector<Spoke>& spokes, const std::vector<char>& inside) {
-  for (std::size_t k = 0; k < inside.size(); ++k)
+// A sector inside the domain under 60 degrees (60 to rounding is not small): its corner is lopped.
+bool is_lopped_sector(const std::vector<Spoke>& spokes, const std::vector<char>& inside, std::size_t k) {
+  return inside[k] && sector_width(spokes, k) < kSmallAngle * (1.0 - 1e-9);
+}
+
+// Whether a is lopped: it has a small sector inside the domain, and no segment between such a
+// sector and a wider one inside (a vertex where the domain pinches, a segment hanging into it at a
+// small angle). The paper cuts such a wider sector's arc into pieces of at most 60 degrees, but
+// refinement splits those chords where they are encroached from outside, and the fan behind them
+// then has thin triangles at a in an angle that is not small (water.poly: 8 degrees in a
+// 359-degree sector); shielding the small sector alone leaves thin triangles beside its spoke,
+// which cannot be split. Such an apex is left to refinement, as without the option. Segments
+// overlapping at a (a sector of width 0 to rounding) would put two shield vertices at one place:
+// such an apex is not lopped either.
+bool to_be_lopped(const std::vector<Spoke>& spokes, const std::vector<char>& inside) {
+  const std::size_t n = inside.size();
+  bool small = false;
+  for (std::size_t k = 0; k < n; ++k) {
     if (sector_width(spokes, k) < 1e-9) return false;
-  for (std::size_t k = 0; k < inside.size(); ++k)
-    if (inside[k] && sector_width(spokes, k) < kSmallAngle * (1.0 - 1e-9)) return true;  // 60 degrees to rounding is not small
-  return false;
+    if (!is_lopped_sector(spokes, inside, k)) continue;
+    small = true;
+    for (const std::size_t j : {(k + 1) % n, (k + n - 1) % n})
+      if (inside[j] && !is_lopped_sector(spokes, inside, j)) return false;
+  }
+  return small;
 }
 
 double distance_to_segment(const Point& p, const Point& a, const Point& b) {
@@ -115,7 +132,6 @@ class Lopper {
     pslg_.segments.push_back({a, b, marker});
     out_.internal.push_back(internal ? 1 : 0);
   }
-  void shield_arc(VertexId a, double r, VertexId from, double direction, double width, VertexId to);
   Pslg& pslg_;
   CornerLopping& out_;
   std::vector<std::array<VertexId, 2>> cut_;  // by original segment: the shield vertex near its a, near its b
@@ -127,41 +143,31 @@ VertexId Lopper::add_point(const Point& p, int marker, VertexId like) {
   const auto n = static_cast<std::size_t>(pslg_.num_attributes);
   for (std::size_t i = 0; i < n; ++i) pslg_.attributes.push_back(pslg_.attributes[like * n + i]);
   if (pslg_.has_markers) pslg_.markers.push_back(marker);
-  out_.apex.push_back(0);
+  out_.apex.push_back(kShieldVertex);
   return v;
 }
 
-// One apex: a shield vertex on each of its segments, then the arcs of the sectors inside.
+// One apex: a shield vertex on each segment that bounds a small sector inside the domain (the
+// segment's other side is outside or small too), and the chord across each such sector (under 60
+// degrees: one arc; the fan is the triangle of a and the chord, more once the chord is split).
 void Lopper::lop(VertexId a, double r, const std::vector<Spoke>& spokes, const std::vector<char>& inside) {
   const Point pa = pslg_.points[a];
-  std::vector<VertexId> on_segment;
-  for (const Spoke& s : spokes) {
-    const Pslg::Segment seg = pslg_.segments[s.segment];
-    on_segment.push_back(add_point({pa.x + r * std::cos(s.direction), pa.y + r * std::sin(s.direction)}, seg.marker, a));
-    cut_[s.segment][seg.a == a ? 0 : 1] = on_segment.back();
+  const std::size_t n = spokes.size();
+  std::vector<VertexId> on_segment(n, kNone);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!is_lopped_sector(spokes, inside, k) && !is_lopped_sector(spokes, inside, (k + n - 1) % n)) continue;
+    const Pslg::Segment seg = pslg_.segments[spokes[k].segment];
+    on_segment[k] = add_point({pa.x + r * std::cos(spokes[k].direction), pa.y + r * std::sin(spokes[k].direction)}, seg.marker, a);
+    cut_[spokes[k].segment][seg.a == a ? 0 : 1] = on_segment[k];
   }
-  for (std::size_t k = 0; k < spokes.size(); ++k)
-    if (inside[k])
-      shield_arc(a, r, on_segment[k], spokes[k].direction, sector_width(spokes, k), on_segment[(k + 1) % spokes.size()]);
-  out_.apex[a] = 1;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!is_lopped_sector(spokes, inside, k)) continue;
+    add_segment(on_segment[k], on_segment[(k + 1) % n], 0, true);  // the chord
+    out_.sectors.push_back({a, on_segment[k], on_segment[(k + 1) % n]});
+  }
+  out_.apex[a] = kLoppedApex;
   ++out_.apices;
   out_.shortest_radius = out_.apices == 1 ? r : std::min(out_.shortest_radius, r);
-}
-
-// The chords over one sector's arc, cut into equal arcs of at most 60 degrees, and the spokes to
-// the vertices between.
-void Lopper::shield_arc(VertexId a, double r, VertexId from, double direction, double width, VertexId to) {
-  const int arcs = std::max(1, static_cast<int>(std::ceil(width / kSmallAngle)));
-  const Point pa = pslg_.points[a];
-  VertexId previous = from;
-  for (int j = 1; j < arcs; ++j) {
-    const double d = direction + width * j / arcs;
-    const VertexId v = add_point({pa.x + r * std::cos(d), pa.y + r * std::sin(d)}, 0, a);
-    add_segment(a, v, 0, true);
-    add_segment(previous, v, 0, true);
-    previous = v;
-  }
-  add_segment(previous, to, 0, true);
 }
 
 // Each original segment a-b with shield vertices becomes a-s, s-t, t-b (the same marker): pieces
@@ -190,7 +196,7 @@ CornerLopping lop_corners(Pslg& pslg, const Mesh& domain) {
   // Every radius first, from X alone: the shields added to the PSLG are no features of X.
   std::vector<std::pair<VertexId, double>> shields;
   for (VertexId v = 0; v < at.size(); ++v) {
-    if (inside[v].empty() || !has_small_inside_angle(at[v], inside[v])) continue;
+    if (inside[v].empty() || !to_be_lopped(at[v], inside[v])) continue;
     const double r = feature_size(pslg, domain, v) / 3.0;
     if (r > 0.0 && std::isfinite(r)) shields.emplace_back(v, r);
   }

@@ -2,15 +2,16 @@
 // input PSLG X becomes X' by shielding each apex a of an input angle under 60 degrees inside the
 // domain. The shield is the circle of radius lfs(a)/3 around a (lfs from the nearest feature not
 // incident to a: another vertex or a segment without a as an end); a vertex goes where the circle
-// meets each segment at a, the arcs between them that lie inside the domain and span over 60
-// degrees are cut into equal arcs of at most 60 degrees, and the chords (shield edges) become
-// segments. The lopped corner is filled at once with its fan: the spoke edges from a to the arc
-// vertices are segments too, so that the triangles inside the shield are exactly the fan, and
-// refinement leaves them alone (RefineOptions::lopped_apices) while it meshes X' around them.
-// Chords and spokes are internal: forget_lopping_edges drops them before output, whose segments
-// are then those of X, split.
+// meets each segment that bounds such a small angle, and the chord across each small angle (a
+// shield edge) becomes a segment. An apex whose small sector has a wider one inside the domain
+// next to it is not lopped (see to_be_lopped). The lopped corner is the triangle of a and its chord (its fan, more
+// triangles once the chord is split): refinement leaves the triangles inside the small sectors
+// alone (RefineOptions::lopped_sectors) and never splits the pieces of segments from a to its
+// shield vertices, while it meshes X' around them. Chords are internal: forget_lopping_edges drops
+// them before output, whose segments are then those of X, split.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -19,9 +20,13 @@
 
 namespace deltri {
 
+inline constexpr char kLoppedApex = 1;    // CornerLopping::apex: the centre of a fan
+inline constexpr char kShieldVertex = 2;  // a vertex on a shield circle
+
 struct CornerLopping {
-  std::vector<char> apex;           // by vertex id: a lopped apex (the centre of a fan)
-  std::vector<char> internal;       // by segment index of the changed PSLG: a chord or spoke
+  std::vector<char> apex;           // by vertex id: kLoppedApex, kShieldVertex or 0
+  std::vector<std::array<VertexId, 3>> sectors;  // apex, shield vertex, next one counter-clockwise; by apex
+  std::vector<char> internal;       // by segment index of the changed PSLG: a chord
   std::uint32_t apices = 0;         // how many corners were lopped
   double shortest_radius = 0.0;     // the smallest shield radius, lfs(a)/3 (0 if none)
 };
@@ -30,7 +35,7 @@ struct CornerLopping {
 // exterior and holes removed (vertex ids those of pslg), which says which angles lie inside.
 CornerLopping lop_corners(Pslg& pslg, const Mesh& domain);
 
-// Drops the subsegments of the chords and spokes (internal, by input segment index), so that the
+// Drops the subsegments of the chords (internal, by input segment index), so that the
 // output's segments are X's.
 void forget_lopping_edges(Mesh& mesh, const std::vector<char>& internal);
 

@@ -12,6 +12,7 @@
 // split (Chew; Fig. 39 l.40-43, mesh/delete_vertex.h).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <iterator>
 #include <vector>
@@ -57,9 +58,12 @@ struct RefineOptions {
   // Sec. 7.3: range-restricted segment splitting (refine/range_restricted.h). Off: midpoints,
   // shells and mirrored splits as before.
   bool range_restricted = false;
-  // --corner-lopping (Sec. 6.1, cdt/corner_lopping.h): by vertex id, the apices whose fans fill the
-  // lopped corners; the triangles at them are left alone and the subsegments at them never split.
+  // --corner-lopping (Sec. 6.1, cdt/corner_lopping.h): by vertex id, 1 for an apex whose fans fill
+  // lopped corners, 2 for a shield vertex; the sectors (apex, shield vertex, next shield vertex
+  // counter-clockwise, sorted by apex) whose triangles at the apex are left alone. A subsegment
+  // from an apex to a shield vertex is never split.
   const std::vector<char>* lopped_apices = nullptr;
+  const std::vector<std::array<VertexId, 3>>* lopped_sectors = nullptr;
   // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h) and the halves
   // run at once. The mesh does not depend on it.
   int threads = 1;

@@ -360,7 +360,7 @@ EdgeRef Terminator::current_edge(const EncroachedSubsegment& entry) {
 
 bool Terminator::is_splittable(EdgeRef e) const {
   if (kept_by_switch(e)) return false;
-  if (opt_.lopped_apices && (at_lopped_apex(mesh_.org(e)) || at_lopped_apex(mesh_.dest(e)))) return false;  // a spoke
+  if (opt_.lopped_apices && is_spoke(mesh_.org(e), mesh_.dest(e))) return false;
   const SubsegmentId id = mesh_.subseg[e];
   if (id == kSeamEdge) return false;
   return id >= locked_.size() || !locked_[id];

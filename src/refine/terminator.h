@@ -133,6 +133,7 @@ class Terminator {
   bool shell_exempt(EdgeRef shortest) const;
   bool in_lopped_corner(TriangleId t) const;  // --corner-lopping: a fan triangle (Sec. 6.1)
   bool at_lopped_apex(VertexId v) const;
+  bool is_spoke(VertexId a, VertexId b) const;  // a piece of a segment from a lopped apex to its shield
 
   // --- Chew's step (chew_step.cpp), Fig. 39 l.40-43 ---
   // Returns the edge of the subsegment afterwards, or kNone.

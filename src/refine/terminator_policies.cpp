@@ -291,15 +291,36 @@ bool Terminator::shell_exempt(EdgeRef shortest) const {
   return da2 > k * db2 && db2 > k * da2;
 }
 
-// --corner-lopping: t is a triangle of a fan that fills a lopped corner (it has the apex as a corner).
+// --corner-lopping: t is a triangle of a fan that fills a lopped corner: its angle at a lopped apex
+// lies in a lopped sector (under 60 degrees, so the bisector is inside exactly when t is). The
+// wider sectors at the same apex are meshed as anywhere else.
 bool Terminator::in_lopped_corner(TriangleId t) const {
-  for (VertexId v : mesh_.corners(t))
-    if (at_lopped_apex(v)) return true;
+  const auto c = mesh_.corners(t);
+  for (int i = 0; i < 3; ++i) {
+    if (!at_lopped_apex(c[i]) || opt_.lopped_sectors == nullptr) continue;
+    const Point& o = mesh_.point(c[i]);
+    const Point& p = mesh_.point(c[(i + 1) % 3]);
+    const Point& q = mesh_.point(c[(i + 2) % 3]);
+    const double lp = std::hypot(p.x - o.x, p.y - o.y), lq = std::hypot(q.x - o.x, q.y - o.y);
+    const double bx = (p.x - o.x) / lp + (q.x - o.x) / lq, by = (p.y - o.y) / lp + (q.y - o.y) / lq;
+    const auto& sectors = *opt_.lopped_sectors;
+    auto s = std::lower_bound(sectors.begin(), sectors.end(), c[i], [](const auto& x, VertexId v) { return x[0] < v; });
+    for (; s != sectors.end() && (*s)[0] == c[i]; ++s) {
+      const Point& from = mesh_.point((*s)[1]);
+      const Point& to = mesh_.point((*s)[2]);
+      if ((from.x - o.x) * by - (from.y - o.y) * bx > 0.0 && bx * (to.y - o.y) - by * (to.x - o.x) > 0.0) return true;
+    }
+  }
   return false;
 }
 
 bool Terminator::at_lopped_apex(VertexId v) const {
-  return opt_.lopped_apices && v < opt_.lopped_apices->size() && (*opt_.lopped_apices)[v];
+  return opt_.lopped_apices && v < opt_.lopped_apices->size() && (*opt_.lopped_apices)[v] == 1;
+}
+
+bool Terminator::is_spoke(VertexId a, VertexId b) const {
+  const auto kind = [&](VertexId v) { return v < opt_.lopped_apices->size() ? (*opt_.lopped_apices)[v] : 0; };
+  return (kind(a) == 1 && kind(b) == 2) || (kind(a) == 2 && kind(b) == 1);
 }
 
 }  // namespace deltri
