@@ -53,6 +53,14 @@ void check_coordinate_range_for_refinement(const Pslg& pslg, const std::string& 
     throw InputError(path, 0, "every vertex coordinate is below 2^-150 (about 7.0e-46) in magnitude, too small for refinement; scale the input up");
 }
 
+// The paper's other algorithms and options (--algorithm=ruppert|chew, --interior-bound,
+// --range-restricted, --corner-lopping) are younger than the Terminator and less tried on hard
+// inputs: their meshes always get the -C check, so that a fault ends in an error, never in exit 0.
+bool always_checked(const Switches& sw) {
+  return sw.refinement != RefinementAlgorithm::Terminator || sw.interior_bound != 0 || sw.range_restricted ||
+         sw.corner_lopping;
+}
+
 // Debug builds check the mesh after every stage, so that a fault is caught in the stage that made
 // it rather than at the end (or never, without -C). A fault there is a bug, not bad input.
 void check_stage([[maybe_unused]] const Mesh& mesh, [[maybe_unused]] const char* stage,
@@ -261,7 +269,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
   // Once, at the end: every marker follows from input markers, subsegments and the boundary.
   assign_boundary_markers(mesh, pslg.has_markers);
 
-  if (sw.check) {
+  if (sw.check || always_checked(sw)) {
     CheckOptions opt;
     // Where the termination guard stopped refinement (its warning says so), segments may still be
     // encroached: the mesh is then held to the constrained Delaunay property only.

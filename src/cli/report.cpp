@@ -35,7 +35,7 @@ void Messages::notice(const std::string& text) const {
 }
 
 void Messages::check_failed(const CheckReport& check) const {
-  std::fprintf(stderr, "deltri: -C: the mesh is not consistent; no files written\n%s", check.summary().c_str());
+  std::fprintf(stderr, "deltri: -C: the mesh is not consistent (with the paper's other algorithms this check is always on); no files written\n%s", check.summary().c_str());
 }
 
 std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
