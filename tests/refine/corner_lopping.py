@@ -93,13 +93,19 @@ def angles(p, q, r):
     return at(p, q, r), at(q, r, p), at(r, p, q)
 
 
-def small_angle_apices(points, segments):
-    """Input vertices between two segments at less than 60 degrees (all sectors, inside or not)."""
+def segment_neighbours(segments):
+    """For each vertex, the other ends of the (non-degenerate) segments at it."""
     around = {}
     for a, b in segments:
         if a != b:
             around.setdefault(a, []).append(b)
             around.setdefault(b, []).append(a)
+    return around
+
+
+def small_angle_apices(points, segments):
+    """Input vertices between two segments at less than 60 degrees (all sectors, inside or not)."""
+    around = segment_neighbours(segments)
     apices = set()
     for v, ws in around.items():
         d = sorted(math.atan2(points[w][1] - points[v][1], points[w][0] - points[v][0]) for w in ws)
@@ -111,11 +117,7 @@ def small_angle_apices(points, segments):
 def lopped_apices(points, segments, outer):
     """The apices deltri lops: a sector under 60 degrees inside the domain, and no such sector next to
     a wider one inside (an angle at a vertex the domain lies on both sides of is left to refinement)."""
-    around = {}
-    for a, b in segments:
-        if a != b:
-            around.setdefault(a, []).append(b)
-            around.setdefault(b, []).append(a)
+    around = segment_neighbours(segments)
     apices = set()
     for v, ws in around.items():
         if len(ws) < 2:
