@@ -295,9 +295,10 @@ bool Terminator::shell_exempt(EdgeRef shortest) const {
 // lies in a lopped sector (under 60 degrees, so the bisector is inside exactly when t is). The
 // wider sectors at the same apex are meshed as anywhere else.
 bool Terminator::in_lopped_corner(TriangleId t) const {
+  if (opt_.lopped_sectors == nullptr) return false;
   const auto c = mesh_.corners(t);
   for (int i = 0; i < 3; ++i) {
-    if (!at_lopped_apex(c[i]) || opt_.lopped_sectors == nullptr) continue;
+    if (!at_lopped_apex(c[i])) continue;
     const Point& o = mesh_.point(c[i]);
     const Point& p = mesh_.point(c[(i + 1) % 3]);
     const Point& q = mesh_.point(c[(i + 2) % 3]);

@@ -34,18 +34,9 @@ from fractions import Fraction
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools'))
 from exact_delaunay_check import incircle, orient  # noqa: E402 (exact, on Fractions)
+from exact_delaunay_check import numbers as rows  # noqa: E402 (the rows of a Triangle file, comments cut)
 
 TOLERANCE = 1e-9
-
-
-def rows(path):
-    out = []
-    with open(path) as f:
-        for line in f:
-            r = line.split('#')[0].split()
-            if r:
-                out.append(r)
-    return out
 
 
 def read_poly(path):
