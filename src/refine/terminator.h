@@ -116,8 +116,12 @@ class Terminator {
   bool deletes_before_split() const;  // Chew's step (l.40-43): the Terminator with lenses, and Chew
   bool split_allowed(EdgeRef s, const Assessment& a, double d) const;  // Fig. 38 l.21
   // -Y / -YY: whether c, for bad triangle t, is refused: it would lower the smallest angle below
-  // floor_sin2_, or spoil a triangle next to a subsegment kept whole.
+  // floor_sin2_ (-YY), make a bad triangle nothing can split, or spoil one next to a subsegment
+  // kept whole.
   bool refused_by_kept_boundary(const Point& c, TriangleId t);
+  // Would c make a triangle below `below` (sin^2) whose own Steiner point no insertion can use?
+  bool would_strand(const Point& c, double below);
+  bool stranded_point(TriangleId from, const Point& p);
   double smallest_made_sine2(const Point& c);  // over the triangles c makes with the cavity's boundary
   double smallest_replaced_sine2();            // over the cavity's triangles
   bool budget_left();                   // the Steiner cap and -S
@@ -193,6 +197,7 @@ class Terminator {
   EdgeFinder finder_;
   Box extent_;  // the bounding box of the vertices: the queue's scale, the bottom scale's coordinates
   CavityMarks marks_;
+  CavityMarks lookahead_marks_;  // -Y/-YY: would_strand's probes, which must not disturb marks_
   QualityQueue bad_triangles_;       // Q_t
   EncroachedQueue encroached_;       // Q_s
   RefineReport report_;
