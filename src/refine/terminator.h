@@ -116,8 +116,8 @@ class Terminator {
   bool deletes_before_split() const;  // Chew's step (l.40-43): the Terminator with lenses, and Chew
   bool split_allowed(EdgeRef s, const Assessment& a, double d) const;  // Fig. 38 l.21
   // -Y / -YY: whether c, for bad triangle t, is refused: it would lower the smallest angle below
-  // floor_sin2_ (-YY), make a bad triangle nothing can split, or spoil one next to a subsegment
-  // kept whole.
+  // floor_sin2_, make a bad triangle nothing can split, or spoil one next to a subsegment kept
+  // whole.
   bool refused_by_kept_boundary(const Point& c, TriangleId t);
   // Would c make a triangle below `below` (sin^2) whose own Steiner point no insertion can use?
   bool would_strand(const Point& c, double below);
@@ -188,7 +188,8 @@ class Terminator {
   EncroachRule rule_;
   double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
   double kept_bound_sin2_ = 0.0;    // -Y/-YY: sin^2 of the angle bound, of the least lens without -q
-  double floor_sin2_ = 0.0;         // -Y/-YY: sin^2 of min(that angle, the initial mesh's smallest)
+  double floor_sin2_ = 0.0;         // sin^2 of min(that angle, the initial mesh's smallest) where -Y/-YY
+                                    // keep every subsegment, else 0
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;

@@ -181,18 +181,18 @@ bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pe
 
 // -Y/-YY: may c, whose probe was just made, be inserted? c replaces the triangles of its cavity
 // (CavityMarks) by those it makes with the cavity's boundary. It is refused when
-//  (0) with -YY, it would make a triangle below the floor, min(angle bound, smallest angle of the
-//      mesh the Terminator started from), and worse than every triangle it replaces. Then no
-//      insertion lowers the smallest angle of the mesh below the floor; with -YY, where nothing
-//      else changes the mesh, the result has no angle below it (docs/refinement.md, "-Y, -YY": the
-//      initial constrained Delaunay triangulation shows the fixed boundary allows that much).
+//  (0) where no subsegment may be split (-YY, or -Y with segments on the boundary only), it would
+//      make a triangle below the floor, min(angle bound, smallest angle of the mesh the Terminator
+//      started from), and worse than every triangle it replaces. Then no insertion lowers the
+//      smallest angle of the mesh below the floor, and as nothing else changes the mesh, the
+//      result has no angle below it (docs/refinement.md, "-Y, -YY": the initial constrained
+//      Delaunay triangulation shows the fixed boundary allows that much). Elsewhere floor_sin2_
+//      is 0.
 //  (1) it would make a triangle below the bound, worse than every triangle it replaces, that no
 //      later point can mend (would_strand): its own Steiner point lies behind a kept subsegment or
 //      in the lens of one. Delaunay refinement makes worse triangles on its way everywhere and
 //      splits them in their turn; next to a kept boundary that turn may never come (guitar.poly
-//      -pYYq33 kept a 7.1 degree triangle made for a 24.5 degree one; with a single -Y a dip below
-//      the floor whose triangles can all be split again is allowed, as interior segment splits
-//      are not bound by the floor anyway).
+//      -pYYq33 kept a 7.1 degree triangle made for a 24.5 degree one).
 // The triangle on a kept subsegment s changes only when a new point lands in its circumcircle,
 // that is when s is on the boundary of the point's cavity, and the point then becomes its apex.
 // So c is also refused when, for a kept s on the cavity's boundary,
@@ -208,8 +208,7 @@ bool Terminator::refused_by_kept_boundary(const Point& c, TriangleId t) {
   if (opt_.no_steiner_on_segments == 0) return false;
   const double made = smallest_made_sine2(c);
   const double replaced = smallest_replaced_sine2();
-  const bool all_kept = opt_.no_steiner_on_segments >= 2;
-  if (all_kept && made < floor_sin2_ && made < replaced) return true;  // (0)
+  if (made < floor_sin2_ && made < replaced) return true;  // (0)
   const double worse = std::min(kept_bound_sin2_, replaced);
   if (made < worse && would_strand(c, worse)) return true;  // (1)
   bool touches = false;
