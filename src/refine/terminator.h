@@ -122,6 +122,8 @@ class Terminator {
   // Would c make a triangle below `below` (sin^2) whose own Steiner point no insertion can use?
   bool would_strand(const Point& c, double below);
   bool stranded_point(TriangleId from, const Point& p);
+  // -Y: would splitting interior subsegment s at p spoil the triangle on a kept subsegment?
+  bool split_spoils_kept_boundary(EdgeRef s, const Point& p);
   double smallest_made_sine2(const Point& c);  // over the triangles c makes with the cavity's boundary
   double smallest_replaced_sine2();            // over the cavity's triangles
   bool budget_left();                   // the Steiner cap and -S

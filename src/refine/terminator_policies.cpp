@@ -253,6 +253,24 @@ bool Terminator::stranded_point(TriangleId from, const Point& p) {
   return false;
 }
 
+// -Y: may the interior subsegment s be split at p? plan_split left p's cavity in marks_. A kept
+// subsegment k on its boundary gets p as its apex; the split is refused when that triangle would be
+// below the bound and worse than both the one on k now and those beside s, which the split is
+// for. Otherwise a split near a corner where a long kept segment meets an interior one at a small
+// angle made the triangle on the kept segment a sliver that nothing mends (drufat's la.poly
+// -pYq30a0.019: 0.032 degrees, Triangle 1.6 0.043). -D needs every encroached subsegment split.
+bool Terminator::split_spoils_kept_boundary(EdgeRef s, const Point& p) {
+  if (opt_.no_steiner_on_segments == 0 || opt_.conforming_delaunay) return false;
+  double worse = std::min(kept_bound_sin2_, triangle_sine2(mesh_, triangle_of(s)));
+  if (mesh_.link[s] != kNone) worse = std::min(worse, triangle_sine2(mesh_, triangle_of(mesh_.link[s])));
+  for (EdgeRef k : marks_.boundary_subsegments()) {
+    if (!kept_by_switch(k)) continue;
+    const double made = smallest_angle_sine2(mesh_.point(mesh_.org(k)), mesh_.point(mesh_.dest(k)), p);
+    if (made < std::min(worse, triangle_sine2(mesh_, triangle_of(k)))) return true;
+  }
+  return false;
+}
+
 // The sin^2 of the smallest angle among the triangles that c makes with the cavity's boundary.
 double Terminator::smallest_made_sine2(const Point& c) {
   double smallest = 1.0;
