@@ -12,4 +12,7 @@ namespace deltri {
 // is AngleBound::off_center_factor(), or 0 for the circumcentre (-k).
 Point steiner_point(const Mesh& mesh, EdgeRef shortest, double off_center_factor);
 
+// The same for a triangle abc (counter-clockwise) that is not in the mesh yet: -Y's look-ahead.
+Point steiner_point_of(const Point& a, const Point& b, const Point& c, double off_center_factor);
+
 }  // namespace deltri

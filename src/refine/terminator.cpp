@@ -54,6 +54,18 @@ double smallest_sine2(const Mesh& mesh) {
   return smallest;
 }
 
+// Whether -Y/-YY leave every subsegment whole: -YY, or -Y where every segment lies on the
+// boundary. Then only insertions change the mesh, and rule (0) of refused_by_kept_boundary keeps
+// its smallest angle at the floor; where interior segments are split, their splits are not bound
+// by it, and neither is an insertion.
+bool keeps_every_subsegment(const Mesh& mesh, int no_steiner_on_segments) {
+  if (no_steiner_on_segments != 1) return no_steiner_on_segments >= 2;
+  if (!mesh.has_subsegments()) return true;
+  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+    if (mesh.corner[e] != kNone && mesh.subseg[e] != kNone && mesh.link[e] != kNone) return false;
+  return true;
+}
+
 // The bounding box of the vertices.
 Box extent_of(const Mesh& mesh) {
   Box box;
@@ -175,7 +187,8 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
   report_.guard_length = guard_floor_;
-  if (opt.no_steiner_on_segments != 0) floor_sin2_ = std::min(kept_bound_sin2_, smallest_sine2(mesh));
+  if (keeps_every_subsegment(mesh, opt.no_steiner_on_segments))
+    floor_sin2_ = std::min(kept_bound_sin2_, smallest_sine2(mesh));
   const bool size_bounds = opt.size.any() || opt.size_test;
   bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
   if (bottom_possible_) {

@@ -116,8 +116,14 @@ class Terminator {
   bool deletes_before_split() const;  // Chew's step (l.40-43): the Terminator with lenses, and Chew
   bool split_allowed(EdgeRef s, const Assessment& a, double d) const;  // Fig. 38 l.21
   // -Y / -YY: whether c, for bad triangle t, is refused: it would lower the smallest angle below
-  // floor_sin2_, or spoil a triangle next to a subsegment kept whole.
+  // floor_sin2_, make a bad triangle nothing can split, or spoil one next to a subsegment kept
+  // whole.
   bool refused_by_kept_boundary(const Point& c, TriangleId t);
+  // Would c make a triangle below `below` (sin^2) whose own Steiner point no insertion can use?
+  bool would_strand(const Point& c, double below);
+  bool stranded_point(TriangleId from, const Point& p);
+  // -Y: would splitting interior subsegment s at p spoil the triangle on a kept subsegment?
+  bool split_spoils_kept_boundary(EdgeRef s, const Point& p);
   double smallest_made_sine2(const Point& c);  // over the triangles c makes with the cavity's boundary
   double smallest_replaced_sine2();            // over the cavity's triangles
   bool budget_left();                   // the Steiner cap and -S
@@ -184,7 +190,8 @@ class Terminator {
   EncroachRule rule_;
   double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
   double kept_bound_sin2_ = 0.0;    // -Y/-YY: sin^2 of the angle bound, of the least lens without -q
-  double floor_sin2_ = 0.0;         // -Y/-YY: sin^2 of min(that angle, the initial mesh's smallest)
+  double floor_sin2_ = 0.0;         // sin^2 of min(that angle, the initial mesh's smallest) where -Y/-YY
+                                    // keep every subsegment, else 0
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;
@@ -193,6 +200,7 @@ class Terminator {
   EdgeFinder finder_;
   Box extent_;  // the bounding box of the vertices: the queue's scale, the bottom scale's coordinates
   CavityMarks marks_;
+  CavityMarks lookahead_marks_;  // -Y/-YY: would_strand's probes, which must not disturb marks_
   QualityQueue bad_triangles_;       // Q_t
   EncroachedQueue encroached_;       // Q_s
   RefineReport report_;

@@ -88,6 +88,7 @@ std::uint64_t Terminator::split_encroached_subsegments(bool queue_triangles, boo
 Outcome Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_size) {
   SplitPlan plan;
   if (const auto refusal = plan_split(s, owed_to_size, plan)) return *refusal;  // l.39
+  if (split_spoils_kept_boundary(s, plan.point)) return Outcome::KeptBoundary;
   if (deletes_before_split()) {                                                  // l.40-43
     s = delete_free_vertices_near(s, plan.point, queue_triangles);
     if (s == kNone) return Outcome::Gone;

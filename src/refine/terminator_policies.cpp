@@ -181,39 +181,94 @@ bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pe
 
 // -Y/-YY: may c, whose probe was just made, be inserted? c replaces the triangles of its cavity
 // (CavityMarks) by those it makes with the cavity's boundary. It is refused when
-//  (0) it would make a triangle below the floor, min(angle bound, smallest angle of the mesh the
-//      Terminator started from), and worse than every triangle it replaces. Then no insertion
-//      lowers the smallest angle of the mesh below the floor; with -YY, where nothing else changes
-//      the mesh, the result has no angle below it (docs/refinement.md, "-Y, -YY": the initial
-//      constrained Delaunay triangulation shows the fixed boundary allows that much).
+//  (0) where no subsegment may be split (-YY, or -Y with segments on the boundary only), it would
+//      make a triangle below the floor, min(angle bound, smallest angle of the mesh the Terminator
+//      started from), and worse than every triangle it replaces. Then no insertion lowers the
+//      smallest angle of the mesh below the floor, and as nothing else changes the mesh, the
+//      result has no angle below it (docs/refinement.md, "-Y, -YY": the initial constrained
+//      Delaunay triangulation shows the fixed boundary allows that much). Elsewhere floor_sin2_
+//      is 0.
+//  (1) it would make a triangle below the bound, worse than every triangle it replaces, that no
+//      later point can mend (would_strand): its own Steiner point lies behind a kept subsegment or
+//      in the lens of one. Delaunay refinement makes worse triangles on its way everywhere and
+//      splits them in their turn; next to a kept boundary that turn may never come (guitar.poly
+//      -pYYq33 kept a 7.1 degree triangle made for a 24.5 degree one).
 // The triangle on a kept subsegment s changes only when a new point lands in its circumcircle,
 // that is when s is on the boundary of the point's cavity, and the point then becomes its apex.
 // So c is also refused when, for a kept s on the cavity's boundary,
-//  (1) c encroaches upon s (lies in its lens): the rule of Fig. 38 l.18 with no split allowed; or
-//  (2) t is bad only for its size and c would lower the smallest angle of the triangles it
-//      replaces below theirs (and below the bound): near a kept boundary a worse triangle may be
-//      one whose own Steiner point is refused or blocked, and the size bound is not worth a
-//      sliver. The area bound is given up there instead (the closing survey counts it).
-// A skinny t may make worse triangles, also on s, as Delaunay refinement does everywhere: their own
-// points mend them later. Refusing those not on s left the bound unmet where it is within reach
-// (p01.poly at -pYq: 16.8 degrees instead of 20); refusing those on s (a rule until 2026-12-03)
-// stopped refinement where Triangle 1.6 goes on (Constrained_Sweden -pYYq: 0.97 degrees against
-// 1.85). docs/refinement.md, "-Y", has the measurements.
+//  (2) c encroaches upon s (lies in its lens): the rule of Fig. 38 l.18 with no split allowed; or
+//  (3) t is bad only for its size and c would lower the smallest angle of the triangles it
+//      replaces below theirs (and below the bound): the size bound is not worth a sliver. The area
+//      bound is given up there instead (the closing survey counts it).
+// Refusing every worse triangle not on s left the bound unmet where it is within reach (p01.poly
+// at -pYq: 16.8 degrees instead of 20); refusing those on s (a rule until 2026-12-03) stopped
+// refinement where Triangle 1.6 goes on (Constrained_Sweden -pYYq: 0.97 degrees against 1.85).
+// docs/refinement.md, "-Y", has the measurements.
 bool Terminator::refused_by_kept_boundary(const Point& c, TriangleId t) {
   if (opt_.no_steiner_on_segments == 0) return false;
   const double made = smallest_made_sine2(c);
   const double replaced = smallest_replaced_sine2();
   if (made < floor_sin2_ && made < replaced) return true;  // (0)
+  const double worse = std::min(kept_bound_sin2_, replaced);
+  if (made < worse && would_strand(c, worse)) return true;  // (1)
   bool touches = false;
   for (EdgeRef e : marks_.boundary_subsegments()) {
     if (!kept_by_switch(e)) continue;
     touches = true;
     const Point& a = mesh_.point(mesh_.org(e));
     const Point& b = mesh_.point(mesh_.dest(e));
-    if (encroaches(pred_, a, b, c, rule_)) return true;  // (1)
+    if (encroaches(pred_, a, b, c, rule_)) return true;  // (2)
   }
   if (!touches || assess(t).skinny) return false;
-  return made < std::min(kept_bound_sin2_, replaced);  // (2)
+  return made < worse;  // (3)
+}
+
+// Would one of the triangles c makes with the cavity's boundary, with a smallest angle whose sin^2
+// is below `below`, be left as it is? Its Steiner point is probed in today's mesh from the cavity
+// triangle on the same edge (the new triangle lies in the cavity, which no subsegment crosses), so
+// the walk meets the subsegments the new triangle's point would meet. Reads the cavity (marks_)
+// and leaves it as it was: the look-ahead has marks of its own.
+bool Terminator::would_strand(const Point& c, double below) {
+  for (EdgeRef e : marks_.boundary()) {
+    const Point& a = mesh_.point(mesh_.org(e));
+    const Point& b = mesh_.point(mesh_.dest(e));
+    if (!(smallest_angle_sine2(a, b, c) < below)) continue;
+    const Point p = steiner_point_of(a, b, c, off_center_factor_);
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || stranded_point(triangle_of(e), p)) return true;
+  }
+  return false;
+}
+
+// Whether the Steiner point p, probed from triangle `from`, is one no insertion can use: the
+// probe finds no place for it (behind a kept subsegment or the mesh's boundary, on a vertex), or
+// it lies in the lens of a kept subsegment of its cavity (refused by (2)).
+bool Terminator::stranded_point(TriangleId from, const Point& p) {
+  const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
+  const Probe probe = probe_candidate(mesh_, pred_, from, p, rule_, lookahead_marks_, splittable);
+  if (probe.status == ProbeStatus::Unusable) return true;
+  if (probe.status == ProbeStatus::Encroaches) return false;  // the subsegments split instead
+  for (EdgeRef e : lookahead_marks_.boundary_subsegments())
+    if (kept_by_switch(e) && encroaches(pred_, mesh_.point(mesh_.org(e)), mesh_.point(mesh_.dest(e)), p, rule_))
+      return true;
+  return false;
+}
+
+// -Y: may the interior subsegment s be split at p? plan_split left p's cavity in marks_. A kept
+// subsegment k on its boundary gets p as its apex; the split is refused when that triangle would be
+// below the bound and worse than both the one on k now and those beside s, which the split is
+// for. Otherwise a split near a corner where a long kept segment meets an interior one at a small
+// angle made the triangle on the kept segment a sliver that nothing mends (drufat's la.poly
+// -pYq30a0.019: 0.032 degrees, Triangle 1.6 0.043). -D needs every encroached subsegment split.
+bool Terminator::split_spoils_kept_boundary(EdgeRef s, const Point& p) {
+  if (opt_.no_steiner_on_segments == 0 || opt_.conforming_delaunay) return false;
+  double worse = std::min(kept_bound_sin2_, triangle_sine2(mesh_, triangle_of(s)));
+  if (mesh_.link[s] != kNone) worse = std::min(worse, triangle_sine2(mesh_, triangle_of(mesh_.link[s])));
+  for (EdgeRef k : marks_.boundary_subsegments()) {
+    if (!kept_by_switch(k)) continue;
+    const double made = smallest_angle_sine2(mesh_.point(mesh_.org(k)), mesh_.point(mesh_.dest(k)), p);
+    if (made < std::min(worse, triangle_sine2(mesh_, triangle_of(k)))) return true;
+  }
+  return false;
 }
 
 // The sin^2 of the smallest angle among the triangles that c makes with the cavity's boundary.

@@ -1,20 +1,30 @@
 #!/usr/bin/env python3
 """With -Y / -YY, no output angle may lie below the floor the fixed boundary certainly allows.
 
-    kept_boundary_bound.py DELTRI INPUT.poly SWITCHES    (SWITCHES such as -pYYq or -pYYq33)
+    kept_boundary_bound.py DELTRI INPUT.poly SWITCHES    (SWITCHES such as -pYYq, -pYYq33, -pYq30)
 
 The floor is min(q, m), where q is the -q angle (20 when bare) and m the smallest angle of the
 input's constrained Delaunay triangulation, read from `DELTRI -p` (triangulation only, no
 refinement). That triangulation keeps every segment whole and adds no vertex, so it is a mesh the
-fixed boundary allows: a -Y mesh with a smaller angle is worse than the input's own triangulation.
-With -YY deltri guarantees the floor (docs/refinement.md, "-Y, -YY"). Angles are computed here from
-the written .node/.ele in doubles; nothing deltri reports about quality is used.
+fixed boundary allows; and as a constrained Delaunay triangulation maximises the smallest angle
+over all triangulations of its vertices that keep its segments, m is a fact of the input geometry,
+not of deltri: the script checks that the -p output is constrained Delaunay (every edge that is not
+a segment passes the empty-circle test, in exact rational arithmetic), so that a wrong -p
+triangulation cannot lower the floor. A -Y mesh with a smaller angle is worse than the input's own
+triangulation. deltri guarantees the floor where no subsegment may be split: -YY, or a single -Y
+on an input whose segments all lie on the boundary (docs/refinement.md, "-Y, -YY"); with a single
+-Y and an interior segment the script refuses the case, as no such floor holds there. Also checks
+that every segment that the switches keep whole (all with -YY, the boundary ones with -Y) is still
+an edge of the refined mesh. Angles are computed here from the written .node/.ele in doubles;
+nothing deltri reports about quality is used.
 
-Also fails when the run fails. Exit 0 when the check passes, 1 otherwise. On main before
+Also fails when a run fails. Exit 0 when the check passes, 1 otherwise. On main before
 issue 16 (9e54440) debug2.poly -pYYq33 failed: 0.0111 degrees against a floor of 0.0180 (Triangle
-1.6: 0.0123), and water-huge.poly -pYYq33: 0.0307 against 0.1282.
+1.6: 0.0123), and water-huge.poly -pYYq33: 0.0307 against 0.1282. With the floor rule left out
+for a single -Y (2df5ef3), touching-holes6.poly -pYq failed: see tests/CMakeLists.txt.
 """
-import math, os, re, shutil, subprocess, sys, tempfile
+import collections, math, os, re, shutil, subprocess, sys, tempfile
+from fractions import Fraction
 
 
 def rows(path):
@@ -43,7 +53,41 @@ def run(deltri, inp, switches, d):
     pts = {int(x[0]): (float(x[1]), float(x[2])) for x in nr[1:1 + int(nr[0][0])]}
     er = rows(os.path.join(d, base + '.1.ele'))
     tris = [tuple(int(v) for v in x[1:4]) for x in er[1:1 + int(er[0][0])]]
-    return pts, tris
+    pr = rows(os.path.join(d, base + '.1.poly'))
+    segs = [(int(x[1]), int(x[2])) for x in pr[2:2 + int(pr[1][0])]]
+    return pts, tris, segs
+
+
+def edge_triangles(tris):
+    """Each undirected edge with the vertices opposite it."""
+    opposite = collections.defaultdict(list)
+    for a, b, c in tris:
+        for u, v, w in ((a, b, c), (b, c, a), (c, a, b)):
+            opposite[frozenset((u, v))].append(w)
+    return opposite
+
+
+def incircle(a, b, c, d):
+    """> 0 when d lies strictly inside the circle through the counter-clockwise a, b, c; exact."""
+    a, b, c, d = ([Fraction(x) for x in p] for p in (a, b, c, d))
+    rows_ = [(p[0] - d[0], p[1] - d[1]) for p in (a, b, c)]
+    m = [(x, y, x * x + y * y) for x, y in rows_]
+    return (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
+
+
+def check_constrained_delaunay(pts, tris, segs):
+    """None if every edge that is not a segment is locally Delaunay, else a message."""
+    seg_set = {frozenset(s) for s in segs}
+    opposite = edge_triangles(tris)
+    for a, b, c in tris:
+        for u, v, w in ((a, b, c), (b, c, a), (c, a, b)):
+            e = frozenset((u, v))
+            if e in seg_set: continue
+            for x in opposite[e]:
+                if x != w and incircle(pts[u], pts[v], pts[w], pts[x]) > 0:
+                    return f'edge {u}-{v} of the -p triangulation is not Delaunay (vertex {x} in the circle)'
+    return None
 
 
 def smallest_angle(pts, tris):
@@ -61,12 +105,24 @@ def main():
     theta = float(q.group(1)) if q and q.group(1) else 20.0
     d = tempfile.mkdtemp()
     try:
-        pts0, tris0 = run(deltri, inp, '-p', d)
-        m, _ = smallest_angle(pts0, tris0)
-        pts, tris = run(deltri, inp, switches, d)
+        pts0, tris0, segs0 = run(deltri, inp, '-p', d)
+        pts, tris, _ = run(deltri, inp, switches, d)
     finally:
         shutil.rmtree(d)
     name = os.path.basename(inp)
+    problem = check_constrained_delaunay(pts0, tris0, segs0)
+    if problem: raise SystemExit(f'FAIL: {name} -p: {problem}')
+    sides = edge_triangles(tris0)
+    interior = [s for s in segs0 if len(sides[frozenset(s)]) == 2]
+    all_kept = re.search(r'YY', switches) is not None
+    if not all_kept and interior:
+        raise SystemExit(f'FAIL: {name} {switches}: {len(interior)} interior segments; a single -Y keeps no floor there')
+    # Kept segments are those with one triangle (-Y) or all (-YY); -p's vertices keep their numbers.
+    kept = segs0 if all_kept else [s for s in segs0 if len(sides[frozenset(s)]) == 1]
+    edges = edge_triangles(tris)
+    split = [s for s in kept if frozenset(s) not in edges]
+    if split: raise SystemExit(f'FAIL: {name} {switches}: kept segment {split[0]} is not an edge of the mesh')
+    m, _ = smallest_angle(pts0, tris0)
     floor = min(theta, m)
     smallest, where = smallest_angle(pts, tris)
     ok = smallest >= floor * (1 - 1e-9)
