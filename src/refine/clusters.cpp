@@ -79,6 +79,17 @@ SegmentApices::SegmentApices(const Mesh& mesh) : apex_(mesh.vertex_count(), fals
   }
 }
 
+SegmentApices SegmentApices::of_vertices(const std::vector<VertexId>& vertices) const {
+  SegmentApices part;
+  part.apex_.reserve(vertices.size());
+  part.shells_.reserve(vertices.size());
+  for (VertexId v : vertices) {
+    part.apex_.push_back(is_apex(v));
+    part.shells_.push_back(uses_shells(v));
+  }
+  return part;
+}
+
 Cluster subsegment_cluster(const Mesh& mesh, EdgeRef from_apex) {
   Cluster cluster;
   cluster.members.push_back(from_apex);

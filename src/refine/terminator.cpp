@@ -62,6 +62,16 @@ Box extent_of(const Mesh& mesh) {
   return box;
 }
 
+// The box around the vertices and `known` (TerminatorStart::extent).
+Box extent_with(const Mesh& mesh, const Box& known) {
+  Box box = extent_of(mesh);
+  if (!known.empty()) {
+    box.add({known.lo_x, known.lo_y});
+    box.add({known.hi_x, known.hi_y});
+  }
+  return box;
+}
+
 // The squared diagonal of a box, 1 for an empty one.
 double squared_diameter(const Box& box) {
   if (box.empty()) return 1.0;
@@ -169,7 +179,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       pieces_(std::move(start.pieces)),
       apices_(std::move(start.apices)),
       finder_(mesh),
-      extent_(extent_of(mesh)),
+      extent_(extent_with(mesh, start.extent)),
       bad_triangles_(opt.queue_order, squared_diameter(extent_), edge_level_bits(opt.angle.degrees())),
       locked_(std::move(start.locked)),
       small_pages_(start.small_pages),
@@ -266,8 +276,15 @@ RefineReport Terminator::finish() {
 std::vector<TriangleId> Terminator::unsplit_triangles() && { return std::move(unsplit_); }
 
 TerminatorStart Terminator::hand_over() && {
-  return {guard_floor_, steiner_cap_, cap_kind_, std::move(pieces_), std::move(apices_), std::move(locked_),
-          static_cast<std::int64_t>(report_.hopeless_edges), false};
+  return {guard_floor_,
+          steiner_cap_,
+          cap_kind_,
+          std::move(pieces_),
+          std::move(apices_),
+          std::move(locked_),
+          static_cast<std::int64_t>(report_.hopeless_edges),
+          false,
+          extent_with(mesh_, extent_)};
 }
 
 void Terminator::warm_pages() {

@@ -52,6 +52,9 @@ struct TerminatorStart {
   // Keep the arrays' growth in small pages (prefer_small_pages): for two meshes refined at once,
   // whose partly used last huge pages would add to the peak memory.
   bool small_pages = false;
+  // Vertices the mesh no longer holds whose box still counts (a part holds only its own vertices,
+  // and its Terminator's scale is that of the whole mesh's): the extent is the box around both.
+  Box extent;
   static TerminatorStart of(const Mesh& mesh, const RefineOptions& opt);
   static constexpr std::uint32_t kParallelStartSlots = 50000;
 };
