@@ -122,15 +122,13 @@ Mesh Mesh::part_with(const std::vector<VertexId>& vertices, const std::vector<Su
                         attributes.begin() + static_cast<std::ptrdiff_t>((v + 1) * na));
   }
   m.num_triangle_attributes = num_triangle_attributes;
-  const auto local = [&](VertexId v) {
-    const auto at = std::lower_bound(vertices.begin(), vertices.end(), v);
-    return at != vertices.end() && *at == v ? static_cast<VertexId>(at - vertices.begin()) : kNone;
-  };
+  std::vector<VertexId> local(points.size(), kNone);
+  for (VertexId i = 0; i < vertices.size(); ++i) local[vertices[i]] = i;
   m.subsegments.reserve(records.size() + records.size() / 4);
   for (SubsegmentId s : records) {
     Subsegment r = subsegments[s];
-    r.a = local(r.a);
-    r.b = local(r.b);
+    r.a = r.a == kNone ? kNone : local[r.a];
+    r.b = r.b == kNone ? kNone : local[r.b];
     m.subsegments.push_back(r);
   }
   return m;

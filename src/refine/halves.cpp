@@ -291,6 +291,7 @@ RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions&
   const int depth = part_depth(mesh, opt);
   RefineReport initial;
   TerminatorStart whole = split_initial_encroachments(mesh, pred, opt, initial);
+  whole.extent = extent_of(mesh);  // the parts' scale: every vertex, the initial splits included
   const std::uint64_t cap = whole.steiner_cap;
   const PartPlan plan{depth, std::max(1, opt.threads), &one_thread, &opt, steiner_of(initial), true};
   if (cut_in_two(mesh).empty()) {  // nothing to cut: one Terminator on the whole mesh

@@ -54,14 +54,6 @@ double smallest_sine2(const Mesh& mesh) {
   return smallest;
 }
 
-// The bounding box of the vertices.
-Box extent_of(const Mesh& mesh) {
-  Box box;
-  for (const Point& p : mesh.points)
-    if (std::isfinite(p.x) && std::isfinite(p.y)) box.add(p);
-  return box;
-}
-
 // The box around the vertices and `known` (TerminatorStart::extent).
 Box extent_with(const Mesh& mesh, const Box& known) {
   Box box = extent_of(mesh);
@@ -134,6 +126,13 @@ EncroachRule rule_for(const RefineOptions& opt) {
 }
 
 }  // namespace
+
+Box extent_of(const Mesh& mesh) {
+  Box box;
+  for (const Point& p : mesh.points)
+    if (std::isfinite(p.x) && std::isfinite(p.y)) box.add(p);
+  return box;
+}
 
 // The guard's floor takes a pass over every edge, the rest a pass over the subsegments and a sort;
 // with a second thread and a large mesh they are computed at once.
@@ -284,7 +283,7 @@ TerminatorStart Terminator::hand_over() && {
           std::move(locked_),
           static_cast<std::int64_t>(report_.hopeless_edges),
           false,
-          extent_with(mesh_, extent_)};
+          extent_};
 }
 
 void Terminator::warm_pages() {
