@@ -58,7 +58,7 @@ void list_part_ids(const Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t
 // part owns and which lie on the cut.
 void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, const std::vector<TriangleId>& slot,
                SubsegmentId mark) {
-  const std::vector<VertexId> vertex = local_ids(cut.vertices, mesh.vertex_count());
+  const std::vector<VertexId> vertex = cut.vertex_map(mesh.vertex_count());
   const std::vector<SubsegmentId> record_of = local_ids(cut.records, mesh.subsegments.size());
   Mesh& r = cut.part;
   const TriangleId n = r.triangle_slots();
@@ -92,10 +92,7 @@ void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, 
 
 }  // namespace
 
-VertexId CutOff::local_vertex(VertexId v) const {
-  const auto at = std::lower_bound(vertices.begin(), vertices.end(), v);
-  return at != vertices.end() && *at == v ? static_cast<VertexId>(at - vertices.begin()) : kNone;
-}
+std::vector<VertexId> CutOff::vertex_map(std::size_t count) const { return local_ids(vertices, count); }
 
 CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId mark, std::vector<char> keep) {
   CutOff cut;

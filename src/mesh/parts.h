@@ -27,8 +27,8 @@ struct CutOff {
   std::vector<std::uint64_t> cut_keys;
   std::vector<VertexId> vertices;     // the mesh's id of each of the part's vertices, increasing
   std::vector<SubsegmentId> records;  // the mesh's id of each of the part's records, increasing
-  // The part's id of the mesh's vertex v, or kNone when the part does not hold it.
-  VertexId local_vertex(VertexId v) const;
+  // The part's id of each of the mesh's `count` vertices, kNone for those it does not hold.
+  std::vector<VertexId> vertex_map(std::size_t count) const;
 };
 
 // Moves the live triangles t with moves[t] != 0 into a mesh of their own (the vertices they use and

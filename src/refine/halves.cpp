@@ -110,15 +110,9 @@ std::vector<char> vertices_needed(const Mesh& mesh, const std::vector<std::uint8
 // The start of the part cut off, in its ids (cut_off): the pieces, splits, apices and locks of what
 // it holds, and the whole mesh's extent.
 TerminatorStart start_of_part(const TerminatorStart& from, const Mesh& mesh, const CutOff& cut) {
-  TerminatorStart start;
-  start.guard_floor = from.guard_floor;
-  start.steiner_cap = from.steiner_cap;
-  start.cap_kind = from.cap_kind;
-  start.hopeless_edges = from.hopeless_edges;
-  start.small_pages = from.small_pages;
-  start.extent = from.extent;
-  std::vector<VertexId> local(mesh.vertex_count(), kNone);
-  for (VertexId v = 0; v < cut.vertices.size(); ++v) local[cut.vertices[v]] = v;
+  TerminatorStart start{from.guard_floor, from.steiner_cap, from.cap_kind, {}, {}, {}, from.hopeless_edges,
+                        from.small_pages, from.extent};
+  const std::vector<VertexId> local = cut.vertex_map(mesh.vertex_count());
   const auto local_ends = [&](const PieceEnds& p) {
     return PieceEnds{p[0] == kNone ? kNone : local[p[0]], p[1] == kNone ? kNone : local[p[1]]};
   };
