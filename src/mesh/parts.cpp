@@ -31,6 +31,7 @@ std::vector<Id> local_ids(const std::vector<Id>& ids, std::size_t count) {
 template <class Id>
 std::vector<Id> marked_ids(const std::vector<char>& marked) {
   std::vector<Id> ids;
+  ids.reserve(static_cast<std::size_t>(std::count_if(marked.begin(), marked.end(), [](char m) { return m != 0; })));
   for (std::size_t i = 0; i < marked.size(); ++i)
     if (marked[i]) ids.push_back(static_cast<Id>(i));
   return ids;

@@ -81,11 +81,11 @@ SegmentApices::SegmentApices(const Mesh& mesh) : apex_(mesh.vertex_count(), fals
 
 SegmentApices SegmentApices::of_vertices(const std::vector<VertexId>& vertices) const {
   SegmentApices part;
-  part.apex_.reserve(vertices.size());
-  part.shells_.reserve(vertices.size());
-  for (VertexId v : vertices) {
-    part.apex_.push_back(is_apex(v));
-    part.shells_.push_back(uses_shells(v));
+  part.apex_.assign(vertices.size(), false);
+  part.shells_.assign(vertices.size(), false);
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (is_apex(vertices[i])) part.apex_[i] = true;
+    if (uses_shells(vertices[i])) part.shells_[i] = true;
   }
   return part;
 }

@@ -1,6 +1,7 @@
 #include "refine/halves.h"
 
 #include <algorithm>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -127,7 +128,8 @@ TerminatorStart start_of_part(const TerminatorStart& from, const Mesh& mesh, con
       const VertexId a = local[key >> 32], b = local[key & 0xffffffffu];
       if (a != kNone && b != kNone) keys.push_back(SegmentPieces::piece_key(a, b));
     }
-  pieces.set_initial(std::move(keys));
+  // Sorted already: the part's ids keep the order of the mesh's.
+  pieces.initial = std::make_shared<const std::vector<std::uint64_t>>(std::move(keys));
   start.apices = from.apices.of_vertices(cut.vertices);
   start.locked.reserve(cut.records.size());
   for (SubsegmentId s : cut.records) start.locked.push_back(s < from.locked.size() && from.locked[s]);
