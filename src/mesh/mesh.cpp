@@ -100,34 +100,37 @@ void Mesh::compact_triangles() {
   free_triangles.clear();
 }
 
-namespace {
-
-// A copy of `from` with at least `room` capacity (and never less than from's own), so that the
-// part's first appends do not reallocate: a copy of exactly its size doubled at the first new
-// vertex or subsegment, and the abandoned copy stayed resident in the refining thread's malloc
-// arena (four parts of the 50x50 holes: 12 MB of the peak).
-template <class Vector>
-Vector copy_with_room(const Vector& from, std::size_t room) {
-  Vector to;
-  to.reserve(std::max({room, from.capacity(), from.size()}));
-  to.assign(from.begin(), from.end());
-  return to;
-}
-
-}  // namespace
-
-Mesh Mesh::without_triangles() const {
-  // Room for the vertices this mesh has room for (refinement reserved its expected count, and a
-  // part adds no more than the whole), and a quarter more subsegment records.
-  const std::size_t vertices = points.capacity();
+// The part's vertex arrays have room for the vertices this mesh still has room for (refinement
+// reserved its expected count, and a part adds no more than the whole), its records a quarter more,
+// so that the part's first appends do not reallocate: a copy of exactly its size doubled at the
+// first new vertex or subsegment, and the abandoned copy stayed resident in the refining thread's
+// malloc arena (four parts of the 50x50 holes: 12 MB of the peak).
+Mesh Mesh::part_with(const std::vector<VertexId>& vertices, const std::vector<SubsegmentId>& records) const {
+  const std::size_t room = vertices.size() + (points.capacity() - points.size());
+  const std::size_t na = static_cast<std::size_t>(num_attributes);
   Mesh m;
-  m.points = copy_with_room(points, vertices);
-  m.kind = copy_with_room(kind, vertices);
-  m.marker = copy_with_room(marker, marker.empty() ? 0 : vertices);
+  m.points.reserve(room);
+  m.kind.reserve(room);
+  if (!marker.empty()) m.marker.reserve(room);
   m.num_attributes = num_attributes;
-  m.attributes = attributes;
+  m.attributes.reserve(vertices.size() * na);
+  for (VertexId v : vertices) {
+    m.points.push_back(points[v]);
+    m.kind.push_back(kind[v]);
+    if (!marker.empty()) m.marker.push_back(marker[v]);
+    m.attributes.insert(m.attributes.end(), attributes.begin() + static_cast<std::ptrdiff_t>(v * na),
+                        attributes.begin() + static_cast<std::ptrdiff_t>((v + 1) * na));
+  }
   m.num_triangle_attributes = num_triangle_attributes;
-  m.subsegments = copy_with_room(subsegments, subsegments.size() + subsegments.size() / 4);
+  std::vector<VertexId> local(points.size(), kNone);
+  for (VertexId i = 0; i < vertices.size(); ++i) local[vertices[i]] = i;
+  m.subsegments.reserve(records.size() + records.size() / 4);
+  for (SubsegmentId s : records) {
+    Subsegment r = subsegments[s];
+    r.a = r.a == kNone ? kNone : local[r.a];
+    r.b = r.b == kNone ? kNone : local[r.b];
+    m.subsegments.push_back(r);
+  }
   return m;
 }
 

@@ -60,7 +60,7 @@ struct Subsegment {
 };
 
 struct Mesh {
-  // Vertices. A new per-vertex array must also be carried by without_triangles and take_vertices.
+  // Vertices. A new per-vertex array must also be carried by part_with and take_vertices.
   BigVector<Point> points;
   std::vector<VertexKind> kind;
   std::vector<int> marker;          // empty when nothing carries markers
@@ -143,9 +143,11 @@ struct Mesh {
   void compact_triangles();
 
   // --- sub-meshes (refine/halves.cpp cuts a mesh in two and joins the halves again) ---
-  // A mesh with this one's vertices (every per-vertex array), subsegment records and attribute
-  // layouts, and no triangles, into which part of the triangles can be moved with their ids kept.
-  Mesh without_triangles() const;
+  // A mesh with the given vertices of this one (every per-vertex array), the given subsegment
+  // records (their endpoints renumbered alike) and the attribute layouts, and no triangles, into
+  // which part of the triangles can be moved: its vertex i is vertices[i] and its record i is
+  // records[i], both lists increasing, so ids keep their order. It holds only what the part uses.
+  Mesh part_with(const std::vector<VertexId>& vertices, const std::vector<SubsegmentId>& records) const;
   // Appends from's vertices with ids from `first` on, with all their per-vertex data (as the
   // vertices numbered after this mesh's own); from's points are freed as they are copied.
   void take_vertices(Mesh& from, VertexId first);

@@ -19,10 +19,48 @@ std::size_t data_width(const Mesh& mesh, std::vector<double> Mesh::*array) {
 
 std::uint64_t edge_key(VertexId a, VertexId b) { return static_cast<std::uint64_t>(a) << 32 | b; }
 
-// Copies the part's slots: corners, links inside the part, subsegments (cut edges marked on both
-// sides), and the triangle data; records which records the part owns and which lie on the cut.
+// The part's id of each of the mesh's vertices or records listed in `ids`, kNone for the others.
+template <class Id>
+std::vector<Id> local_ids(const std::vector<Id>& ids, std::size_t count) {
+  std::vector<Id> local(count, kNone);
+  for (std::size_t i = 0; i < ids.size(); ++i) local[ids[i]] = static_cast<Id>(i);
+  return local;
+}
+
+// The ids i with marked[i] != 0, increasing.
+template <class Id>
+std::vector<Id> marked_ids(const std::vector<char>& marked) {
+  std::vector<Id> ids;
+  ids.reserve(static_cast<std::size_t>(std::count_if(marked.begin(), marked.end(), [](char m) { return m != 0; })));
+  for (std::size_t i = 0; i < marked.size(); ++i)
+    if (marked[i]) ids.push_back(static_cast<Id>(i));
+  return ids;
+}
+
+// Lists what the part holds: the vertices its triangles use and those marked in keep, and the
+// records on their edges.
+void list_part_ids(const Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, std::vector<char> keep) {
+  keep.resize(mesh.vertex_count(), 0);
+  std::vector<char> records(mesh.subsegments.size(), 0);
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (!moves[t] || !mesh.is_live(t)) continue;
+    for (unsigned i = 0; i < 3; ++i) {
+      const EdgeRef e = edge_of(t, i);
+      keep[mesh.corner[e]] = 1;
+      if (mesh.subseg[e] < records.size()) records[mesh.subseg[e]] = 1;
+    }
+  }
+  cut.vertices = marked_ids<VertexId>(keep);
+  cut.records = marked_ids<SubsegmentId>(records);
+}
+
+// Copies the part's slots: corners and subsegments in the part's ids, links inside the part,
+// subsegments (cut edges marked on both sides), and the triangle data; records which records the
+// part owns and which lie on the cut.
 void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, const std::vector<TriangleId>& slot,
                SubsegmentId mark) {
+  const std::vector<VertexId> vertex = cut.vertex_map(mesh.vertex_count());
+  const std::vector<SubsegmentId> record_of = local_ids(cut.records, mesh.subsegments.size());
   Mesh& r = cut.part;
   const TriangleId n = r.triangle_slots();
   std::size_t width[std::size(kTriangleData)];
@@ -37,13 +75,13 @@ void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, 
       const EdgeRef e = edge_of(t, i), f = edge_of(slot[t], i);
       const EdgeRef twin = mesh.link[e];
       const bool on_cut = twin != kNone && !moves[triangle_of(twin)];
-      r.corner[f] = mesh.corner[e];
+      r.corner[f] = vertex[mesh.corner[e]];
       r.link[f] = twin == kNone || on_cut ? kNone : edge_of(slot[triangle_of(twin)], side_of(twin));
       SubsegmentId s = mesh.subseg[e];
       if (on_cut) cut.cut_keys.push_back(edge_key(mesh.corner[twin], mesh.corner[lnext(twin)]));
       if (record(s)) (on_cut ? cut.cut_records : cut.part_records)[s] = 1;
       if (on_cut && s == kNone) mesh.subseg[twin] = s = mark;
-      r.subseg[f] = s;
+      r.subseg[f] = record(s) ? record_of[s] : s;
     }
     for (std::size_t k = 0; k < std::size(kTriangleData); ++k) {
       const auto& from = mesh.*kTriangleData[k];
@@ -55,11 +93,12 @@ void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, 
 
 }  // namespace
 
-CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId mark) {
+std::vector<VertexId> CutOff::vertex_map(std::size_t count) const { return local_ids(vertices, count); }
+
+CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId mark, std::vector<char> keep) {
   CutOff cut;
-  cut.v0 = mesh.vertex_count();
-  cut.s0 = static_cast<SubsegmentId>(mesh.subsegments.size());
-  cut.part = mesh.without_triangles();
+  list_part_ids(mesh, cut, moves, std::move(keep));
+  cut.part = mesh.part_with(cut.vertices, cut.records);
   cut.part_records.assign(mesh.subsegments.size(), 0);
   cut.cut_records.assign(mesh.subsegments.size(), 0);
   std::vector<TriangleId> slot(mesh.triangle_slots(), kNone);
@@ -81,7 +120,12 @@ CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId 
 // their cost: the links and vertices on a second thread, the rest on this one.
 PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark) {
   Mesh& r = cut.part;
-  const PartIds ids{cut.v0, mesh.vertex_count(), cut.s0, static_cast<SubsegmentId>(mesh.subsegments.size()),
+  const PartIds ids{&cut.vertices,
+                    &cut.records,
+                    static_cast<VertexId>(cut.vertices.size()),
+                    mesh.vertex_count(),
+                    static_cast<SubsegmentId>(cut.records.size()),
+                    static_cast<SubsegmentId>(mesh.subsegments.size()),
                     mesh.triangle_slots()};
   const auto moved = [&](Subsegment s) {
     s.a = ids.vertex(s.a);
@@ -89,7 +133,7 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark) {
     return s;
   };
   for (SubsegmentId s = 0; s < ids.s0; ++s)
-    if (cut.part_records[s]) mesh.subsegments[s] = moved(r.subsegments[s]);
+    if (cut.part_records[cut.records[s]]) mesh.subsegments[cut.records[s]] = moved(r.subsegments[s]);
   for (SubsegmentId s = ids.s0; s < r.subsegments.size(); ++s) mesh.subsegments.push_back(moved(r.subsegments[s]));
   const auto links_and_vertices = [&] {
     move_appending(r.link, mesh.link, [&](EdgeRef e) { return e == kNone ? kNone : edge_of(ids.triangle_base, 0) + e; });

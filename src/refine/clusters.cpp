@@ -79,6 +79,17 @@ SegmentApices::SegmentApices(const Mesh& mesh) : apex_(mesh.vertex_count(), fals
   }
 }
 
+SegmentApices SegmentApices::of_vertices(const std::vector<VertexId>& vertices) const {
+  SegmentApices part;
+  part.apex_.assign(vertices.size(), false);
+  part.shells_.assign(vertices.size(), false);
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (is_apex(vertices[i])) part.apex_[i] = true;
+    if (uses_shells(vertices[i])) part.shells_[i] = true;
+  }
+  return part;
+}
+
 Cluster subsegment_cluster(const Mesh& mesh, EdgeRef from_apex) {
   Cluster cluster;
   cluster.members.push_back(from_apex);

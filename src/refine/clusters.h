@@ -27,6 +27,8 @@ class SegmentApices {
   explicit SegmentApices(const Mesh& mesh);
   bool is_apex(VertexId v) const { return v < apex_.size() && apex_[v]; }
   bool uses_shells(VertexId v) const { return v < shells_.size() && shells_[v]; }
+  // The same marks for a part that holds only `vertices` (increasing), renumbered from 0.
+  SegmentApices of_vertices(const std::vector<VertexId>& vertices) const;
 
  private:
   std::vector<bool> apex_;

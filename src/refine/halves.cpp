@@ -1,6 +1,7 @@
 #include "refine/halves.h"
 
 #include <algorithm>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "refine/bottom_scale.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"
+#include "util/big_allocator.h"
 #include "util/run_both.h"
 
 namespace deltri {
@@ -83,25 +85,77 @@ TerminatorStart split_initial_encroachments(Mesh& mesh, Predicates& pred, const 
 
 std::uint64_t steiner_of(const RefineReport& r) { return r.interior_steiner + r.segment_steiner; }
 
+// The vertices a part needs besides those of its triangles: the ends of the segment pieces of its
+// subsegments and of its refinement splits (shells and mirrored splits are measured from them),
+// and the corners of its triangles, which cut_off would add anyway.
+std::vector<char> vertices_needed(const Mesh& mesh, const std::vector<std::uint8_t>& moves, const SegmentPieces& pieces) {
+  std::vector<char> keep(mesh.vertex_count(), 0);
+  const auto keep_ends = [&](const PieceEnds& ends) {
+    for (VertexId v : ends)
+      if (v != kNone) keep[v] = 1;
+  };
+  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    if (!moves[t] || !mesh.is_live(t)) continue;
+    for (unsigned i = 0; i < 3; ++i) {
+      const EdgeRef e = edge_of(t, i);
+      keep[mesh.corner[e]] = 1;
+      if (mesh.subseg[e] < pieces.of_subsegment.size()) keep_ends(pieces.of_subsegment[mesh.subseg[e]]);
+    }
+  }
+  // A split is never a piece's end, so keep[] marks a split only as a corner of the part.
+  for (const SegmentPieces::Split& split : pieces.splits)
+    if (keep[split.vertex]) keep_ends(split.piece);
+  return keep;
+}
+
+// The start of the part cut off, in its ids (cut_off): the pieces, splits, apices and locks of what
+// it holds, and the whole mesh's extent.
+TerminatorStart start_of_part(const TerminatorStart& from, const Mesh& mesh, const CutOff& cut) {
+  TerminatorStart start{from.guard_floor, from.steiner_cap, from.cap_kind, {}, {}, {}, from.hopeless_edges,
+                        from.small_pages, from.extent};
+  const std::vector<VertexId> local = cut.vertex_map(mesh.vertex_count());
+  const auto local_ends = [&](const PieceEnds& p) {
+    return PieceEnds{p[0] == kNone ? kNone : local[p[0]], p[1] == kNone ? kNone : local[p[1]]};
+  };
+  SegmentPieces& pieces = start.pieces;
+  pieces.of_subsegment.reserve(cut.records.size());
+  for (SubsegmentId s : cut.records) pieces.of_subsegment.push_back(local_ends(from.pieces.of_subsegment[s]));
+  for (const SegmentPieces::Split& split : from.pieces.splits)
+    if (local[split.vertex] != kNone) pieces.splits.push_back({local[split.vertex], local_ends(split.piece)});
+  std::vector<std::uint64_t> keys;
+  if (from.pieces.initial)
+    for (std::uint64_t key : *from.pieces.initial) {
+      const VertexId a = local[key >> 32], b = local[key & 0xffffffffu];
+      if (a != kNone && b != kNone) keys.push_back(SegmentPieces::piece_key(a, b));
+    }
+  // Sorted already: the part's ids keep the order of the mesh's.
+  pieces.initial = std::make_shared<const std::vector<std::uint64_t>>(std::move(keys));
+  start.apices = from.apices.of_vertices(cut.vertices);
+  start.locked.reserve(cut.records.size());
+  for (SubsegmentId s : cut.records) start.locked.push_back(s < from.locked.size() && from.locked[s]);
+  return start;
+}
+
 // The seam's Terminator goes on from both sides' segment pieces and locks, in the joined ids;
 // the seam's own records are as they were before the cut.
 TerminatorStart join_starts(TerminatorStart left, const TerminatorStart& right, const std::vector<char>& before,
                             const Mesh& joined, const PartIds& ids, const CutOff& cut) {
   TerminatorStart start = std::move(left);
   SegmentPieces& pieces = start.pieces;
+  const auto joined_ends = [&](const PieceEnds& p) { return PieceEnds{ids.vertex(p[0]), ids.vertex(p[1])}; };
   for (const SegmentPieces::Split& split : right.pieces.splits)
-    if (split.vertex >= ids.v0) pieces.splits.push_back({ids.vertex(split.vertex), split.piece});
+    if (split.vertex >= ids.v0) pieces.splits.push_back({ids.vertex(split.vertex), joined_ends(split.piece)});
   pieces.of_subsegment.resize(ids.record_base, {kNone, kNone});
   for (SubsegmentId s = ids.s0; s < right.pieces.of_subsegment.size(); ++s)
-    pieces.of_subsegment.push_back(right.pieces.of_subsegment[s]);
+    pieces.of_subsegment.push_back(joined_ends(right.pieces.of_subsegment[s]));
   pieces.of_subsegment.resize(joined.subsegments.size(), {kNone, kNone});
   std::vector<char>& locked = start.locked;
   locked.resize(joined.subsegments.size(), 0);
   const auto locked_right = [&](SubsegmentId s) { return s < right.locked.size() && right.locked[s]; };
-  for (SubsegmentId s = 0; s < ids.s0; ++s) {
-    if (cut.part_records[s]) locked[s] = locked_right(s);
+  for (SubsegmentId s = 0; s < ids.s0; ++s)
+    if (cut.part_records[cut.records[s]]) locked[cut.records[s]] = locked_right(s);
+  for (SubsegmentId s = 0; s < cut.cut_records.size(); ++s)
     if (cut.cut_records[s]) locked[s] = s < before.size() && before[s];
-  }
   const std::size_t right_records = joined.subsegments.size() - ids.record_base + ids.s0;  // its own count
   for (SubsegmentId s = ids.s0; s < right_records; ++s) locked[ids.record(s, kSeamEdge)] = locked_right(s);
   return start;
@@ -149,12 +203,13 @@ void refine_sides(Mesh& mesh, CutOff& cut, Predicates& pred, const PartPlan& pla
   start.locked.resize(cut.cut_records.size(), 0);
   for (SubsegmentId s = 0; s < cut.cut_records.size(); ++s) start.locked[s] |= cut.cut_records[s];
   start.small_pages = true;
-  TerminatorStart left_start = start;
+  TerminatorStart right_start = start_of_part(start, mesh, cut);
+  TerminatorStart left_start = std::move(start);
   PartPlan left_plan{plan.depth - 1, plan.threads - plan.threads / 2, plan.parts, plan.parts, 0, false};
   PartPlan right_plan = left_plan;
   right_plan.threads = std::max(1, plan.threads / 2);
   Predicates right_pred;
-  const auto refine_right = [&] { right = refine_part(cut.part, right_pred, right_plan, std::move(start)); };
+  const auto refine_right = [&] { right = refine_part(cut.part, right_pred, right_plan, std::move(right_start)); };
   const auto refine_left = [&] { left = refine_part(mesh, pred, left_plan, std::move(left_start)); };
   if (plan.threads >= 2) {
     run_both(refine_right, refine_left);
@@ -173,6 +228,10 @@ PartResult join_sides(Mesh& mesh, Predicates& pred, const PartPlan& plan, CutOff
   const PartIds ids = append_part(mesh, cut, kSeamEdge);
   const std::vector<TriangleId> seeds = sew_and_flip(mesh, pred, ids, cut, left.unsplit, right.unsplit);
   TerminatorStart seam_start = join_starts(std::move(left.end), right.end, before.locked, mesh, ids, cut);
+  // The right side's small arrays and its Terminator's queue were freed into the malloc arena of
+  // the thread that refined it, which kept them: the seams and the rest of the run held them on
+  // top (50x50 holes, one thread: 2.6 MiB of the peak).
+  release_free_heap();
   const std::uint64_t used = plan.spent + steiner_of(left.report) + steiner_of(right.report);
   seam_start.steiner_cap = before.steiner_cap > used ? before.steiner_cap - used : 0;
   seam_start.cap_kind = before.cap_kind;
@@ -200,7 +259,7 @@ PartResult refine_part(Mesh& mesh, Predicates& pred, const PartPlan& plan, Termi
   before.steiner_cap = start.steiner_cap;
   before.cap_kind = start.cap_kind;
   before.locked = start.locked;
-  CutOff cut = cut_off(mesh, moves, kSeamEdge);
+  CutOff cut = cut_off(mesh, moves, kSeamEdge, vertices_needed(mesh, moves, start.pieces));
   PartResult left, right;
   refine_sides(mesh, cut, pred, plan, std::move(start), left, right);
   return join_sides(mesh, pred, plan, cut, left, right, before);
@@ -233,6 +292,7 @@ RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions&
   const int depth = part_depth(mesh, opt);
   RefineReport initial;
   TerminatorStart whole = split_initial_encroachments(mesh, pred, opt, initial);
+  whole.extent = extent_of(mesh);  // the parts' scale: every vertex, the initial splits included
   const std::uint64_t cap = whole.steiner_cap;
   const PartPlan plan{depth, std::max(1, opt.threads), &one_thread, &opt, steiner_of(initial), true};
   if (cut_in_two(mesh).empty()) {  // nothing to cut: one Terminator on the whole mesh

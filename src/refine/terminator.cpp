@@ -66,11 +66,13 @@ bool keeps_every_subsegment(const Mesh& mesh, int no_steiner_on_segments) {
   return true;
 }
 
-// The bounding box of the vertices.
-Box extent_of(const Mesh& mesh) {
-  Box box;
-  for (const Point& p : mesh.points)
-    if (std::isfinite(p.x) && std::isfinite(p.y)) box.add(p);
+// The box around the vertices and `known` (TerminatorStart::extent).
+Box extent_with(const Mesh& mesh, const Box& known) {
+  Box box = extent_of(mesh);
+  if (!known.empty()) {
+    box.add({known.lo_x, known.lo_y});
+    box.add({known.hi_x, known.hi_y});
+  }
   return box;
 }
 
@@ -137,6 +139,13 @@ EncroachRule rule_for(const RefineOptions& opt) {
 
 }  // namespace
 
+Box extent_of(const Mesh& mesh) {
+  Box box;
+  for (const Point& p : mesh.points)
+    if (std::isfinite(p.x) && std::isfinite(p.y)) box.add(p);
+  return box;
+}
+
 // The guard's floor takes a pass over every edge, the rest a pass over the subsegments and a sort;
 // with a second thread and a large mesh they are computed at once.
 TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) {
@@ -181,7 +190,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       pieces_(std::move(start.pieces)),
       apices_(std::move(start.apices)),
       finder_(mesh),
-      extent_(extent_of(mesh)),
+      extent_(extent_with(mesh, start.extent)),
       bad_triangles_(opt.queue_order, squared_diameter(extent_), edge_level_bits(opt.angle.degrees())),
       locked_(std::move(start.locked)),
       small_pages_(start.small_pages),
@@ -279,8 +288,15 @@ RefineReport Terminator::finish() {
 std::vector<TriangleId> Terminator::unsplit_triangles() && { return std::move(unsplit_); }
 
 TerminatorStart Terminator::hand_over() && {
-  return {guard_floor_, steiner_cap_, cap_kind_, std::move(pieces_), std::move(apices_), std::move(locked_),
-          static_cast<std::int64_t>(report_.hopeless_edges), false};
+  return {guard_floor_,
+          steiner_cap_,
+          cap_kind_,
+          std::move(pieces_),
+          std::move(apices_),
+          std::move(locked_),
+          static_cast<std::int64_t>(report_.hopeless_edges),
+          false,
+          extent_};
 }
 
 void Terminator::warm_pages() {

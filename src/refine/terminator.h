@@ -52,9 +52,16 @@ struct TerminatorStart {
   // Keep the arrays' growth in small pages (prefer_small_pages): for two meshes refined at once,
   // whose partly used last huge pages would add to the peak memory.
   bool small_pages = false;
+  // Vertices the mesh does not hold whose box still counts (a part holds only its own vertices,
+  // and its Terminator's scale is that of the whole mesh's): the extent is the box around both.
+  // hand_over() gives the Terminator's extent, which a seam's Terminator extends by the joined mesh.
+  Box extent;
   static TerminatorStart of(const Mesh& mesh, const RefineOptions& opt);
   static constexpr std::uint32_t kParallelStartSlots = 50000;
 };
+
+// The bounding box of the mesh's vertices (those with finite coordinates): a Terminator's scale.
+Box extent_of(const Mesh& mesh);
 
 class Terminator {
  public:

@@ -2,6 +2,9 @@
 
 #include <cstdint>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #ifdef __linux__
 #include <sys/mman.h>
 #include <unistd.h>
@@ -78,6 +81,12 @@ void prefer_small_pages(void* p, std::size_t bytes) noexcept {
   if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_NOHUGEPAGE);
 #else
   (void)p, (void)bytes;
+#endif
+}
+
+void release_free_heap() noexcept {
+#ifdef __GLIBC__
+  malloc_trim(0);
 #endif
 }
 

@@ -27,6 +27,10 @@ void release_pages(void* p, std::size_t bytes) noexcept;
 // meshes growing at once, whose last, partly used huge pages would add to the peak).
 void prefer_small_pages(void* p, std::size_t bytes) noexcept;
 
+// Gives the free memory that the C library's allocator holds back to the system, where it can
+// (glibc's malloc_trim; nothing elsewhere).
+void release_free_heap() noexcept;
+
 template <class T>
 struct BigAllocator {
   using value_type = T;

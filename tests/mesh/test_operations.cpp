@@ -129,32 +129,39 @@ TEST(split_boundary_edge) {
   CHECK_EQ(m.area_bound[m.triangle_slots() - 1], 0.5);
 }
 
-// refine/halves.cpp refines parts cut off by without_triangles: the part's vertex and subsegment
-// arrays must keep room for what the part adds (the whole mesh's reserved vertex room, a quarter
-// more records), since a copy of exactly its size reallocated at the first addition and the
-// abandoned copy stayed resident (the 50x50 holes' peak). Same contents, no reallocation.
-TEST(without_triangles_copies_the_vertices_with_room_to_grow) {
+// refine/halves.cpp refines parts cut off with part_with: the part holds only the vertices and
+// subsegment records it is given, renumbered in their order (record endpoints too), and keeps room
+// for what the part adds (the whole mesh's reserved vertex room, a quarter more records), since a
+// copy of exactly its size reallocated at the first addition and the abandoned copy stayed
+// resident (the 50x50 holes' peak). Same contents, no reallocation.
+TEST(part_with_copies_the_given_vertices_with_room_to_grow) {
   Mesh m = unit_square();
   m.marker.assign(m.vertex_count(), 3);
+  m.marker[3] = 7;
   m.points.reserve(1000);
   m.kind.reserve(1000);
-  for (SubsegmentId s = 0; s < 40; ++s) m.subsegments.push_back({0, 1, 5, s});
-  Mesh part = m.without_triangles();
-  CHECK(part.points == m.points);
-  CHECK(part.kind == m.kind);
-  CHECK(part.marker == m.marker);
-  CHECK_EQ(part.subsegments.size(), 40u);
-  CHECK_EQ(part.subsegments[39].segment, 39u);
+  for (SubsegmentId s = 0; s < 40; ++s) m.subsegments.push_back({s % 2 ? 1u : 3u, 3, 5, s});
+  std::vector<SubsegmentId> records;
+  for (SubsegmentId s = 0; s < 40; s += 2) records.push_back(s);
+  Mesh part = m.part_with({1, 3}, records);
+  CHECK_EQ(part.vertex_count(), 2u);
+  CHECK(part.points[0] == m.points[1] && part.points[1] == m.points[3]);
+  CHECK(part.kind[1] == m.kind[3]);
+  CHECK_EQ(part.marker[1], 7);
+  CHECK_EQ(part.subsegments.size(), 20u);
+  CHECK_EQ(part.subsegments[19].segment, 38u);
+  CHECK_EQ(part.subsegments[19].a, 1u);  // vertex 3 of the mesh
+  CHECK_EQ(part.subsegments[19].b, 1u);
   CHECK_EQ(part.triangle_slots(), 0u);
   const Point* points = part.points.data();
   const VertexKind* kind = part.kind.data();
   const int* marker = part.marker.data();
-  const Subsegment* records = part.subsegments.data();
+  const Subsegment* records_data = part.subsegments.data();
   for (int i = 0; i < 900; ++i) part.add_vertex({0.5, 0.001 * i}, VertexKind::Free);
-  for (SubsegmentId s = 0; s < 10; ++s) part.subsegments.push_back({1, 2, 0, s});
+  for (SubsegmentId s = 0; s < 5; ++s) part.subsegments.push_back({1, 2, 0, s});
   CHECK(part.points.data() == points);
   CHECK(part.kind.data() == kind);
   CHECK(part.marker.data() == marker);
-  CHECK(part.subsegments.data() == records);
+  CHECK(part.subsegments.data() == records_data);
   CHECK_EQ(part.marker.size(), part.vertex_count());
 }
