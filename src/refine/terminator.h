@@ -130,6 +130,7 @@ class Terminator {
   Assessment assess_with(TriangleId t, const QualityRules& rules) const;
   const QualityRules& rules_for(TriangleId t) const;  // Sec. 7.2: the 30 degrees, or -q
   bool below_asked_bound(const Assessment& a) const;   // under -q, not only under Sec. 7.2's bound
+  bool only_for_interior_bound(TriangleId t, const Assessment& a) const;  // bad for Sec. 7.2's bound alone
   bool shell_exempt(EdgeRef shortest) const;
   bool in_lopped_corner(TriangleId t) const;  // --corner-lopping: a fan triangle (Sec. 6.1)
   bool at_lopped_apex(VertexId v) const;
@@ -145,6 +146,9 @@ class Terminator {
   // --- the driver and bookkeeping (terminator.cpp) ---
   // Leaves s whole from now on, as -Y leaves the boundary: doubles cannot split it.
   void lock(EdgeRef s);
+  // -D: tries the locked subsegments that are encroached again, in rounds while some split.
+  void retry_locked_encroachments();
+  static constexpr int kLockRetryRounds = 8;
   std::vector<EdgeRef> initially_encroached();  // Fig. 38 l.3-4
   // Fig. 38 l.10-11: serve Q_t until it is empty.
   void drain_queue();
