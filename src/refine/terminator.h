@@ -178,6 +178,7 @@ class Terminator {
   };
   std::optional<BottomScore> bottom_score(const Point& c, const KnownCavity& cavity, double l2, double t_sine2);
   Point bottom_scale_split(EdgeRef s, const Point& ideal, bool chew_pending);
+  bool beyond_boundary(EdgeRef s, const Point& c);  // c strictly outside the mesh's boundary edge s
   void find_hopeless_edges();  // counts them into report_.hopeless_edges
 
   Mesh& mesh_;

@@ -176,11 +176,7 @@ Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
 // when an apex lies within rounding distance of s (a vertex flush with a segment, beyond what
 // doubles resolve), p can land on the far side of the line through that apex and a clockwise
 // triangle would appear. Such a split is refused, like one whose point rounds onto an endpoint.
-// On the boundary, p must not lie outside s either: the two new triangles would then reach
-// beyond the mesh, over whatever lies a few ulps across (a split point chosen near the segment's
-// own line at the bottom scale did so on water.poly, ruppert --interior-bound=2 -pq20.7).
 bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pending) {
-  if (mesh_.link[s] == kNone && pred_.orient2d(mesh_.point(mesh_.org(s)), mesh_.point(mesh_.dest(s)), p) < 0) return false;
   for (EdgeRef e : {s, mesh_.link[s]}) {
     if (e == kNone) continue;
     const Point& o = mesh_.point(mesh_.org(e));
