@@ -148,6 +148,7 @@ class Terminator {
   void lock(EdgeRef s);
   // -D: tries the locked subsegments that are encroached again, in rounds while some split.
   void retry_locked_encroachments();
+  bool retries_locks() const;  // -D with Ruppert's algorithm
   static constexpr int kLockRetryRounds = 8;
   std::vector<EdgeRef> initially_encroached();  // Fig. 38 l.3-4
   // Fig. 38 l.10-11: serve Q_t until it is empty.
