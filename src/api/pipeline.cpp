@@ -17,6 +17,7 @@
 #include "io/midpoints.h"
 #include "pslg/errors.h"
 #include "quality/bound_misses.h"
+#include "quality/conformity.h"
 #include "quality/check_mesh.h"
 #include "refine/area_field.h"
 #include "refine/refine.h"
@@ -59,6 +60,12 @@ void check_coordinate_range_for_refinement(const Pslg& pslg, const std::string& 
 bool always_checked(const Switches& sw) {
   return sw.refinement != RefinementAlgorithm::Terminator || sw.interior_bound != 0 || sw.range_restricted ||
          sw.corner_lopping;
+}
+
+// -D asks for a conforming Delaunay mesh; where subsegments are counted as not Delaunay
+// (quality/conformity.h; their warning says so), it is held to the constrained property only.
+bool conforming_expected(const Switches& sw, const RunReport& report) {
+  return sw.conforming_delaunay && !(report.conformity && report.conformity->total > 0);
 }
 
 // Debug builds check the mesh after every stage, so that a fault is caught in the stage that made
@@ -264,17 +271,17 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     report.counters.add(pred.counters);
     mesh.compact_triangles();
     stage("refinement");
-    check_stage(mesh, "refinement", sw.conforming_delaunay);
+    // -D: the subsegments refinement could not split keep the mesh from being Delaunay; they are
+    // counted (and warned of), and the checks then hold the mesh to the constrained property.
+    if (sw.conforming_delaunay) report.conformity = count_conformity_misses(mesh);
+    check_stage(mesh, "refinement", conforming_expected(sw, report));
   }
   // Once, at the end: every marker follows from input markers, subsegments and the boundary.
   assign_boundary_markers(mesh, pslg.has_markers);
 
   if (sw.check || always_checked(sw)) {
     CheckOptions opt;
-    // Where the termination guard stopped refinement (its warning says so), segments may still be
-    // encroached: the mesh is then held to the constrained Delaunay property only.
-    const bool stopped = report.refine && (report.refine->stopped_by_guard || report.refine->stopped_by_cap);
-    opt.conforming = sw.conforming_delaunay && !stopped;
+    opt.conforming = conforming_expected(sw, report);
     // Split points on hull edges are rounded, so a refined hull is convex only up to rounding.
     opt.convex_hull_expected = !source.is_poly && !report.refine && !rebuilding;
     report.check = check_mesh(mesh, opt);

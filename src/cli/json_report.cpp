@@ -153,6 +153,15 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   j.integer("other", b.other);
   j.close();
   j.integer("triangles_missing_bounds_not_forced_by_input", b.not_forced_by_input());
+  if (sw.interior_bound != 0)
+    j.integer("interior_bound_left_at_double_precision", q ? q->interior_bound_refusals : 0);
+  if (const auto& c = r.conformity) {  // -D (quality/conformity.h)
+    j.open("subsegments_not_delaunay");
+    j.integer("total", c->total);
+    j.integer("double_precision", c->double_precision);
+    j.integer("other", c->other());
+    j.close();
+  }
   j.open("why_missed", '[');
   if (q && q->stopped_by_guard) j.string(nullptr, "termination guard: points that would have made edges far below the local feature size were refused");
   if (q && q->stopped_by_max_steiner) j.string(nullptr, "the -S limit of Steiner points was reached");

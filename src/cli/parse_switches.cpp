@@ -122,7 +122,7 @@ constexpr const char* kExitStatus[][2] = {
     {"0", "success"},
     {"1", "bad input file (one line: file:line: what is wrong)"},
     {"2", "bad switches"},
-    {"3", "with --strict: triangles miss the -q/-a/-u bounds for a reason other than a small input angle, or the mesh is empty (the files are written)"},
+    {"3", "with --strict: triangles miss the -q/-a/-u bounds for a reason other than a small input angle, -D left subsegments not Delaunay, or the mesh is empty (the files are written)"},
     {"4", "an output file could not be written"},
     {"5", "-C found faults in the mesh"},
     {"6", "out of memory or an internal error"},

@@ -23,6 +23,14 @@ bool has_regional_area_bounds(const Pslg* pslg) {
   return false;
 }
 
+// -D: the subsegments that are not Delaunay (quality/conformity.h), by cause.
+std::string conformity_warning(const ConformityMisses& c, bool guard_stopped) {
+  return plural(c.total, "subsegment is", "subsegments are") +
+         " not Delaunay: -D asked for a conforming Delaunay mesh, and it is only constrained Delaunay there (" +
+         std::to_string(c.double_precision) + " at the limit of double precision, " + std::to_string(c.other()) +
+         (guard_stopped ? " where the termination guard refused to split them)" : " other)");
+}
+
 }  // namespace
 
 std::vector<const char*> unsupported_switches(const Switches&) {  // none today (-s landed in issue 23)
@@ -80,6 +88,10 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
            (q->stopped_by_guard ? ", where the termination guard stopped refinement" : "") + " (" + both + ")");
     }
   }
+  if (const auto& q = r.refine; q && q->interior_bound_refusals > 0)
+    warn(plural(q->interior_bound_refusals, "triangle", "triangles") +
+         " under the 30 degrees of --interior-bound left at the limit of double precision (Sec. 7.2 proves them for "
+         "input angles of 60 degrees or more)");
   if (r.switches && r.switches->variable_area && !r.area_file && !has_regional_area_bounds(r.pslg))
     warn("bare -a has no effect: the input has no regional area bounds (-a<area> bounds every triangle)");
   if (const auto& b = r.misses; b && b->not_forced_by_input() > 0 && !(r.refine && r.refine->bad_triangles_left > 0))
@@ -87,6 +99,7 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
          " the requested bounds for a reason other than a small input angle (" + std::to_string(b->repaired_input) +
          " next to repaired crossings or overlaps, " + std::to_string(b->double_precision) + " at the limit of double precision, " +
          std::to_string(b->steiner_limits) + " at -S/-Y limits, " + std::to_string(b->other) + " other)");
+  if (const auto& c = r.conformity; c && c->total > 0) warn(conformity_warning(*c, r.refine && r.refine->stopped_by_guard));
   if (mesh.live_triangles() == 0) {
     if (r.pslg && r.pslg->has_segment_section && mesh.vertex_count() >= 3 && r.holes && r.holes->triangles_removed > 0)
       warn("every triangle lies outside the segments or in a hole: the mesh is empty (try -c or -O)");
@@ -186,6 +199,9 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
       std::fprintf(out_, "  Steiner points sought among nearby doubles: %llu times, %llu with none better\n",
                   static_cast<unsigned long long>(q->bottom_scale_searches),
                   static_cast<unsigned long long>(q->bottom_scale_refusals));
+    if (q->interior_bound_refusals > 0)
+      std::fprintf(out_, "  triangles under the 30 degrees of --interior-bound left at the limit of double precision: %llu\n",
+                  static_cast<unsigned long long>(q->interior_bound_refusals));
     if (q->locked_subsegments > 0)
       std::fprintf(out_, "  subsegments left whole because doubles cannot split them: %llu\n",
                   static_cast<unsigned long long>(q->locked_subsegments));
@@ -200,6 +216,10 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
                 static_cast<unsigned long long>(b->double_precision), static_cast<unsigned long long>(b->steiner_limits),
                 static_cast<unsigned long long>(b->other));
   }
+  if (const auto& c = r.conformity; c && c->total > 0)
+    std::fprintf(out_, "Conforming Delaunay (-D): %llu subsegments not Delaunay (%llu at the limit of double precision, %llu other)\n",
+                static_cast<unsigned long long>(c->total), static_cast<unsigned long long>(c->double_precision),
+                static_cast<unsigned long long>(c->other()));
   if (r.check) std::fprintf(out_, "Consistency check (-C): %s", r.check->summary().c_str());
 }
 

@@ -16,6 +16,7 @@
 #include "pslg/pslg.h"
 #include "quality/bound_misses.h"
 #include "quality/check_mesh.h"
+#include "quality/conformity.h"
 #include "refine/refine.h"
 
 namespace deltri {
@@ -40,6 +41,7 @@ struct RunReport {
   std::optional<RefineReport> refine;
   bool area_file = false;         // per-triangle area bounds were read (-r with a bare -a, or a .area)
   std::optional<BoundMisses> misses;  // the final mesh against the -q/-a/-u bounds, when any was asked
+  std::optional<ConformityMisses> conformity;  // -D: the subsegments that are not Delaunay
   // -j: the vertices the .node lists (those some triangle uses, -o2 midpoints included), which the
   // summary reports instead of every vertex of the mesh.
   std::optional<std::size_t> jettisoned_vertex_count;

@@ -262,8 +262,10 @@ int run(const Switches& sw) {
   }
 
   const std::vector<std::uint32_t>& numbering = result.numbering;
-  // --strict: misses a small input angle does not force, or no mesh at all.
-  const bool bounds_missed = report.misses && report.misses->not_forced_by_input() > 0;
+  // --strict: misses a small input angle does not force, subsegments -D left not Delaunay, or no
+  // mesh at all.
+  const bool bounds_missed = (report.misses && report.misses->not_forced_by_input() > 0) ||
+                             (report.conformity && report.conformity->total > 0);
   const int status = sw.strict && (bounds_missed || mesh.live_triangles() == 0) ? kExitBounds : kExitOk;
   OutputSet outputs;
   schedule_outputs(outputs, {mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering,

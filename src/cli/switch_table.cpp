@@ -181,7 +181,7 @@ constexpr std::array kLongOptions = {
     LongOption{"json", "FILE", true, "also write a JSON report of the run; FILE - is standard output",
                [](S& s, const std::string* v) { request(s.json, v, "json"); }},
     LongOption{"strict", "", false, "exit with status 3 when triangles miss the -q/-a/-u bounds for a reason other than a small "
-               "input angle, or when the mesh is empty (files are still written)",
+               "input angle, when -D leaves subsegments not Delaunay, or when the mesh is empty (files are still written)",
                [](S& s, const std::string*) { s.strict = true; }},
     LongOption{"exact-input", "", false,
                "take every coordinate exactly as written: a vertex within 4 ulps of a segment is not "

@@ -62,9 +62,9 @@ std::optional<Point> Terminator::bottom_scale_point(TriangleId t, const Point& i
 }
 
 // The double near `ideal` that splits s best at the bottom scale: in the middle half of s, with
-// the triangles on both sides still counter-clockwise, and nearest the line of s's segment piece
-// (the subsegment of the initial mesh s lies on), so that a chain of such splits never wanders off
-// its segment; the ideal point itself if none qualifies.
+// the triangles on both sides still counter-clockwise, not outside s where s bounds the mesh, and
+// nearest the line of s's segment piece (the subsegment of the initial mesh s lies on), so that a
+// chain of such splits never wanders off its segment; the ideal point itself if none qualifies.
 Point Terminator::bottom_scale_split(EdgeRef s, const Point& ideal, bool chew_pending) {
   std::vector<Point>& candidates = lattice_scratch_;
   candidates.clear();
@@ -85,12 +85,23 @@ Point Terminator::bottom_scale_split(EdgeRef s, const Point& ideal, bool chew_pe
     if (!(balance >= 0.25)) continue;
     const double off = std::fabs(ux * (c.y - A.y) - uy * (c.x - A.x));  // |AB| times the distance
     if (off > best_off || (off == best_off && balance <= best_balance)) continue;
-    if (!split_keeps_orientation(s, c, chew_pending)) continue;
+    if (!split_keeps_orientation(s, c, chew_pending) || beyond_boundary(s, c)) continue;
     best = c;
     best_off = off;
     best_balance = balance;
   }
   return best;
+}
+
+// On the boundary the piece's line can run an ulp outside s: a split point there made two
+// triangles that reached beyond the mesh, over the triangles of a nearly collinear segment a few
+// ulps across (water.poly, ruppert --interior-bound=2 -pq20.7: exit 5, triangles overlap). Ruppert's
+// and Chew's algorithms, which ping-pong down to the bottom scale at small input angles, keep such
+// points inside; the Terminator keeps the rule its meshes were checked with (the corpus and the
+// robustness inputs, whose bottom-scale splits on the convex hull have nothing beyond them).
+bool Terminator::beyond_boundary(EdgeRef s, const Point& c) {
+  if (opt_.algorithm == RefinementAlgorithm::Terminator || mesh_.link[s] != kNone) return false;
+  return pred_.orient2d(mesh_.point(mesh_.org(s)), mesh_.point(mesh_.dest(s)), c) < 0;
 }
 
 std::uint64_t count_hopeless_edges(const Mesh& mesh, double sin2_theta) {

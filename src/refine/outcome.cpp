@@ -26,6 +26,7 @@ void count(Outcome o, RefineReport& report) {
       break;
     case Outcome::KeptBoundary: ++report.kept_boundary_refusals; break;
     case Outcome::Locked: ++report.locked_subsegments; break;
+    case Outcome::InteriorBoundAtBottom: ++report.interior_bound_refusals; break;
     case Outcome::NotBad:
     case Outcome::Gone:
     case Outcome::OverBudget:  // budget_left() raised its flag

@@ -26,6 +26,7 @@ enum class Outcome : std::uint8_t {
   OnSubsegment,    // the point lies on a subsegment that may not be split
   Declined,        // SPLITPERMITTED (Fig. 38 l.21) refused every encroached subsegment
   Locked,          // doubles cannot split the subsegment: it is kept whole from now on
+  InteriorBoundAtBottom,  // bad only for Sec. 7.2's 30 degrees, at the bottom of double precision
 };
 
 constexpr bool refused(Outcome o) { return o >= Outcome::OverBudget; }

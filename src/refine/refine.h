@@ -105,6 +105,7 @@ struct RefineWork {
   std::uint64_t locked_subsegments = 0;   // subsegments left unsplit: doubles could not split them
   std::uint64_t bottom_scale_searches = 0;  // Steiner points chosen among nearby doubles (bottom_scale.h)
   std::uint64_t bottom_scale_refusals = 0;  // of those, triangles no nearby double improved
+  std::uint64_t interior_bound_refusals = 0;  // Sec. 7.2: triangles bad only for its 30 degrees, left at the bottom scale
 };
 
 // Every counter of RefineWork, once: the static_assert fails when a counter is added to the struct
@@ -113,7 +114,7 @@ inline constexpr std::uint64_t RefineWork::*kWorkCounts[] = {
     &RefineWork::interior_steiner,       &RefineWork::segment_steiner,        &RefineWork::vertices_deleted,
     &RefineWork::encroached_splits,      &RefineWork::rejected_candidates,    &RefineWork::declined_splits,
     &RefineWork::guard_refusals,         &RefineWork::kept_boundary_refusals, &RefineWork::locked_subsegments,
-    &RefineWork::bottom_scale_searches,  &RefineWork::bottom_scale_refusals,
+    &RefineWork::bottom_scale_searches,  &RefineWork::bottom_scale_refusals,  &RefineWork::interior_bound_refusals,
 };
 static_assert(sizeof(RefineWork) == std::size(kWorkCounts) * sizeof(std::uint64_t),
               "every RefineWork counter must be listed in kWorkCounts");

@@ -410,6 +410,40 @@ void Terminator::lock(EdgeRef s) {
   locked_[id] = 1;
 }
 
+// A subsegment is locked for what its neighbours were when its split failed: a vertex flush with it,
+// often one of a sliver between nearly collinear segments that later insertions replace. With -D
+// a subsegment left encroached keeps the mesh from being Delaunay (quality/conformity.h), so once
+// the queue is empty the encroached locked ones are unlocked and split where doubles now can; each
+// round ends the retries unless it split something (water.poly, ruppert -pDq20.7: 14 such
+// subsegments were left between vertices 1e-6 apart). Only for Ruppert's algorithm (-D with
+// Chew's is refused): the Terminator's -D meshes stay as they were checked (on VVingerfly's
+// test.poly the retries took its subsegments left not Delaunay from 627 to 6, and doubled the mesh).
+bool Terminator::retries_locks() const {
+  return opt_.conforming_delaunay && opt_.algorithm != RefinementAlgorithm::Terminator;
+}
+
+void Terminator::retry_locked_encroachments() {
+  for (int round = 0; round < kLockRetryRounds; ++round) {
+    bool any = false;
+    for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {
+      if (!mesh_.is_live(triangle_of(e)) || mesh_.subseg[e] == kNone) continue;
+      if (mesh_.link[e] != kNone && mesh_.link[e] < e) continue;
+      const SubsegmentId id = mesh_.subseg[e];
+      if (id >= locked_.size() || !locked_[id] || !is_encroached(mesh_, pred_, e, rule_)) continue;
+      locked_[id] = 0;
+      if (!is_splittable(e)) {
+        locked_[id] = 1;
+        continue;
+      }
+      if (report_.locked_subsegments > 0) --report_.locked_subsegments;  // counted again if locked again
+      enqueue_subsegment(e);
+      any = true;
+    }
+    if (!any || split_encroached_subsegments(true) == 0) return;
+    drain_queue();
+  }
+}
+
 // A segment vertex takes the segment's marker and attributes interpolated along the subsegment.
 VertexId Terminator::add_segment_vertex(const Point& p, EdgeRef s) {
   const VertexId a = mesh_.org(s), b = mesh_.dest(s);

@@ -143,6 +143,7 @@ class Terminator {
   Assessment assess_with(TriangleId t, const QualityRules& rules) const;
   const QualityRules& rules_for(TriangleId t) const;  // Sec. 7.2: the 30 degrees, or -q
   bool below_asked_bound(const Assessment& a) const;   // under -q, not only under Sec. 7.2's bound
+  bool only_for_interior_bound(TriangleId t, const Assessment& a) const;  // bad for Sec. 7.2's bound alone
   bool shell_exempt(EdgeRef shortest) const;
   bool in_lopped_corner(TriangleId t) const;  // --corner-lopping: a fan triangle (Sec. 6.1)
   bool at_lopped_apex(VertexId v) const;
@@ -158,6 +159,10 @@ class Terminator {
   // --- the driver and bookkeeping (terminator.cpp) ---
   // Leaves s whole from now on, as -Y leaves the boundary: doubles cannot split it.
   void lock(EdgeRef s);
+  // -D: tries the locked subsegments that are encroached again, in rounds while some split.
+  void retry_locked_encroachments();
+  bool retries_locks() const;  // -D with Ruppert's algorithm
+  static constexpr int kLockRetryRounds = 8;
   std::vector<EdgeRef> initially_encroached();  // Fig. 38 l.3-4
   // Fig. 38 l.10-11: serve Q_t until it is empty.
   void drain_queue();
@@ -187,6 +192,7 @@ class Terminator {
   };
   std::optional<BottomScore> bottom_score(const Point& c, const KnownCavity& cavity, double l2, double t_sine2);
   Point bottom_scale_split(EdgeRef s, const Point& ideal, bool chew_pending);
+  bool beyond_boundary(EdgeRef s, const Point& c);  // c strictly outside the mesh's boundary edge s
   void find_hopeless_edges();  // counts them into report_.hopeless_edges
 
   Mesh& mesh_;

@@ -8,6 +8,8 @@ deltri's output files with nothing deltri reports about quality.
     paper_algorithms.py fewer DELTRI INPUT Q              Sec. 4.1: Chew makes fewer triangles than Ruppert
     paper_algorithms.py refusals DELTRI INPUT             the combinations the paper rules out: exit 2,
                                                           one line on stderr, no output file
+    paper_algorithms.py conformity DELTRI INPUT           -pDq20.7 on any input: edges left not Delaunay
+                                                          are warned of, counted exactly, and --strict fails
 
 Every mode first checks that the input has no two segments meeting at an angle under 60 degrees and
 no segments that cross or touch inside (the paper's condition), from the input file itself; each run
@@ -22,6 +24,10 @@ is made twice and must give the same bytes; the run must exit 0.
   meets an input segment (the paper: such triangles "only occur near segments").
 - fewer: at -pqQ, Chew's mesh (constrained Delaunay, checked exactly with the segments as
   constraints, no angle under Q) has fewer triangles than Ruppert's.
+- conformity (no condition on the input angles): Ruppert at -pDq20.7, its output checked exactly as
+  above; N edges not Delaunay (segments included) must come with the warning "N subsegments are not
+  Delaunay" (the same N) and exit 3 under --strict; none must come with no such warning and exit 0
+  under --strict (issue 22: these meshes used to end with exit 0 and no word of it).
 Angles are computed in doubles with a tolerance of 1e-9 degrees.
 """
 import math
@@ -288,6 +294,30 @@ def check_refusals(deltri, inp, work):
     report(faults, '%d combinations refused with exit 2 and one line' % len(REFUSED))
 
 
+def check_conformity(deltri, inp, work):
+    switches = ['-pDq20.7', '--algorithm=ruppert']
+    base = run(deltri, inp, switches, work)
+    pts, tris, _ = read_mesh(base)
+    faults = delaunay_faults(pts, tris, set())
+    bad = sum(' not Delaunay: ' in f for f in faults)
+    faults = [f for f in faults if ' not Delaunay: ' not in f]
+    d = os.path.join(work, 'strict')
+    os.makedirs(d)
+    shutil.copy(inp, d)
+    r = subprocess.run([deltri] + switches + ['--strict', '-Q', os.path.basename(inp)], cwd=d, capture_output=True,
+                       text=True, timeout=900)
+    warned = [line for line in r.stderr.splitlines() if 'not Delaunay' in line]
+    expected = '%d subsegment%s not Delaunay' % (bad, ' is' if bad == 1 else 's are')
+    if bad > 0 and not any(expected in line for line in warned):
+        faults.append('%d edges not Delaunay, but no warning "%s": %s' % (bad, expected, warned))
+    if bad == 0 and warned:
+        faults.append('truly Delaunay, yet warned: %s' % warned)
+    if bad > 0 and r.returncode != 3:
+        faults.append('%d edges not Delaunay, yet --strict exits %d, not 3' % (bad, r.returncode))
+    report(faults, '%s ruppert -pDq20.7: %d triangles, %d edges not Delaunay, warned of exactly; --strict exit %d'
+           % (inp, len(tris), bad, r.returncode))
+
+
 def report(faults, summary):
     for f in faults[:10]:
         print('FAIL:', f)
@@ -317,6 +347,8 @@ def main(argv):
             check_fewer(argv[2], argv[3], argv[4], work)
         elif mode == 'refusals':
             check_refusals(argv[2], argv[3], work)
+        elif mode == 'conformity':
+            check_conformity(argv[2], argv[3], work)
         else:
             raise SystemExit('unknown mode ' + mode)
     finally:
