@@ -54,9 +54,12 @@ double smallest_sine2(const Mesh& mesh) {
   return smallest;
 }
 
+// sin^2 of half the acute angle whose sin^2 is s2: (1 - cos) / 2.
+double half_angle_sine2(double s2) { return 0.5 * (1.0 - std::sqrt(std::max(0.0, 1.0 - s2))); }
+
 // Whether -Y/-YY leave every subsegment whole: -YY, or -Y where every segment lies on the
 // boundary. Then only insertions change the mesh, and rule (0) of refused_by_kept_boundary keeps
-// its smallest angle at the floor; where interior segments are split, their splits are not bound
+// its smallest angle at the hard floor; where interior segments are split, their splits are not bound
 // by it, and neither is an insertion.
 bool keeps_every_subsegment(const Mesh& mesh, int no_steiner_on_segments) {
   if (no_steiner_on_segments != 1) return no_steiner_on_segments >= 2;
@@ -188,7 +191,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       warmer_(opt.threads > 1) {
   report_.guard_length = guard_floor_;
   if (keeps_every_subsegment(mesh, opt.no_steiner_on_segments))
-    floor_sin2_ = std::min(kept_bound_sin2_, smallest_sine2(mesh));
+    floor_sin2_ = half_angle_sine2(std::min(kept_bound_sin2_, smallest_sine2(mesh)));
   const bool size_bounds = opt.size.any() || opt.size_test;
   bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
   if (bottom_possible_) {
