@@ -59,8 +59,8 @@ double half_angle_sine2(double s2) { return 0.5 * (1.0 - std::sqrt(std::max(0.0,
 
 // Whether -Y/-YY leave every subsegment whole: -YY, or -Y where every segment lies on the
 // boundary. Then only insertions change the mesh, and rule (0) of refused_by_kept_boundary keeps
-// its smallest angle at the hard floor; where interior segments are split, their splits are not bound
-// by it, and neither is an insertion.
+// its smallest angle at the floor (half of it without a size bound); where interior segments are
+// split, their splits are not bound by it, and neither is an insertion.
 bool keeps_every_subsegment(const Mesh& mesh, int no_steiner_on_segments) {
   if (no_steiner_on_segments != 1) return no_steiner_on_segments >= 2;
   if (!mesh.has_subsegments()) return true;
@@ -190,9 +190,13 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
   report_.guard_length = guard_floor_;
-  if (keeps_every_subsegment(mesh, opt.no_steiner_on_segments))
-    floor_sin2_ = half_angle_sine2(std::min(kept_bound_sin2_, smallest_sine2(mesh)));
   const bool size_bounds = opt.size.any() || opt.size_test;
+  if (keeps_every_subsegment(mesh, opt.no_steiner_on_segments)) {
+    // Without a size bound a dip below the floor is allowed down to half its angle: Triangle 1.6
+    // makes one on bicycle_seat.poly -pYYq33 and mends it (docs/refinement.md, "-Y, -YY").
+    floor_sin2_ = std::min(kept_bound_sin2_, smallest_sine2(mesh));
+    if (!size_bounds) floor_sin2_ = half_angle_sine2(floor_sin2_);
+  }
   bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
   if (bottom_possible_) {
     if (start.hopeless_edges >= 0) report_.hopeless_edges = static_cast<std::uint64_t>(start.hopeless_edges);
