@@ -54,10 +54,21 @@ double smallest_sine2(const Mesh& mesh) {
   return smallest;
 }
 
+// sin^2 of half the acute angle whose sin^2 is s2: (1 - cos) / 2.
+double half_angle_sine2(double s2) { return 0.5 * (1.0 - std::sqrt(std::max(0.0, 1.0 - s2))); }
+
+// Rule (0)'s floor where no subsegment may be split: min(angle bound, the mesh's smallest angle).
+// Without a size bound a dip below it is allowed down to half its angle: Triangle 1.6 makes one on
+// bicycle_seat.poly -pYYq33 and mends it (docs/refinement.md, "-Y, -YY", "Rule 0's dip").
+double kept_floor_sine2(const Mesh& mesh, double bound_sin2, bool size_bounds) {
+  const double floor = std::min(bound_sin2, smallest_sine2(mesh));
+  return size_bounds ? floor : half_angle_sine2(floor);
+}
+
 // Whether -Y/-YY leave every subsegment whole: -YY, or -Y where every segment lies on the
 // boundary. Then only insertions change the mesh, and rule (0) of refused_by_kept_boundary keeps
-// its smallest angle at the floor; where interior segments are split, their splits are not bound
-// by it, and neither is an insertion.
+// its smallest angle at the floor (half of it without a size bound); where interior segments are
+// split, their splits are not bound by it, and neither is an insertion.
 bool keeps_every_subsegment(const Mesh& mesh, int no_steiner_on_segments) {
   if (no_steiner_on_segments != 1) return no_steiner_on_segments >= 2;
   if (!mesh.has_subsegments()) return true;
@@ -196,9 +207,9 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
   report_.guard_length = guard_floor_;
-  if (keeps_every_subsegment(mesh, opt.no_steiner_on_segments))
-    floor_sin2_ = std::min(kept_bound_sin2_, smallest_sine2(mesh));
   const bool size_bounds = opt.size.any() || opt.size_test;
+  if (keeps_every_subsegment(mesh, opt.no_steiner_on_segments))
+    floor_sin2_ = kept_floor_sine2(mesh, kept_bound_sin2_, size_bounds);
   bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
   if (bottom_possible_) {
     if (start.hopeless_edges >= 0) report_.hopeless_edges = static_cast<std::uint64_t>(start.hopeless_edges);

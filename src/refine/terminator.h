@@ -203,8 +203,8 @@ class Terminator {
   EncroachRule rule_;
   double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
   double kept_bound_sin2_ = 0.0;    // -Y/-YY: sin^2 of the angle bound, of the least lens without -q
-  double floor_sin2_ = 0.0;         // sin^2 of min(that angle, the initial mesh's smallest) where -Y/-YY
-                                    // keep every subsegment, else 0
+  double floor_sin2_ = 0.0;         // sin^2 of min(that angle, the initial mesh's smallest), of half that
+                                    // angle without a size bound, where -Y/-YY keep every subsegment, else 0
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;

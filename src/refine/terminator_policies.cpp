@@ -196,8 +196,10 @@ bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pe
 //      started from), and worse than every triangle it replaces. Then no insertion lowers the
 //      smallest angle of the mesh below the floor, and as nothing else changes the mesh, the
 //      result has no angle below it (docs/refinement.md, "-Y, -YY": the initial constrained
-//      Delaunay triangulation shows the fixed boundary allows that much). Elsewhere floor_sin2_
-//      is 0.
+//      Delaunay triangulation shows the fixed boundary allows that much). Without a size bound
+//      the floor is half that angle: a dip that a later point mends is allowed, as Triangle 1.6
+//      makes one (bicycle_seat.poly -pYYq33: 34.35 degrees instead of the floor, 32.12); the whole
+//      floor is measured there, not proved. Elsewhere floor_sin2_ is 0.
 //  (1) it would make a triangle below the bound, worse than every triangle it replaces, that no
 //      later point can mend (would_strand): its own Steiner point lies behind a kept subsegment or
 //      in the lens of one. Delaunay refinement makes worse triangles on its way everywhere and
