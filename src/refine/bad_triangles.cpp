@@ -46,9 +46,7 @@ TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta
   len2[0] = squared_distance(a, b);
   len2[1] = squared_distance(b, c);
   len2[2] = squared_distance(c, a);
-  unsigned s = 0;
-  if (len2[1] < len2[s]) s = 1;
-  if (len2[2] < len2[s]) s = 2;
+  const unsigned s = shortest_side(len2);
   shape.shortest = edge_of(t, s);
   shape.shortest_length2 = len2[s];
   const double twice_area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);

@@ -36,6 +36,15 @@ struct TriangleShape {
 
 TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta);
 
+// The side (0, 1, 2) with the least of the squared lengths len2, the first of tied ones: the edge
+// whose Steiner point a triangle gets (measure_triangle, steiner_point_of).
+inline unsigned shortest_side(const double len2[3]) {
+  unsigned s = 0;
+  if (len2[1] < len2[s]) s = 1;
+  if (len2[2] < len2[s]) s = 2;
+  return s;
+}
+
 struct Assessment {
   bool skinny = false;     // smallest angle below theta and not between two subsegments
   bool too_large = false;  // delta(t)

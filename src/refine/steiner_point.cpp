@@ -1,6 +1,7 @@
 #include "refine/steiner_point.h"
 
 #include "geometry/constructions.h"
+#include "refine/bad_triangles.h"
 
 namespace deltri {
 
@@ -10,10 +11,10 @@ Point steiner_point(const Mesh& mesh, EdgeRef shortest, double off_center_factor
 }
 
 Point steiner_point_of(const Point& a, const Point& b, const Point& c, double off_center_factor) {
-  const double ab = squared_distance(a, b), bc = squared_distance(b, c), ca = squared_distance(c, a);
-  if (ab <= bc && ab <= ca) return off_center(a, b, c, off_center_factor);
-  if (bc <= ca) return off_center(b, c, a, off_center_factor);
-  return off_center(c, a, b, off_center_factor);
+  const Point* p[3] = {&a, &b, &c};
+  const double len2[3] = {squared_distance(a, b), squared_distance(b, c), squared_distance(c, a)};
+  const unsigned s = shortest_side(len2);
+  return off_center(*p[s], *p[(s + 1) % 3], *p[(s + 2) % 3], off_center_factor);
 }
 
 }  // namespace deltri
