@@ -102,6 +102,28 @@ TEST(a_second_sheet_is_refused_and_a_piece_in_a_hole_is_not) {
   CHECK(overlap_found(sheets));
 }
 
+// Separate unit squares on a lattice, 2 apart: many loops whose lowest vertices share rows and
+// columns, so the rays of the winding test pass exactly through other loops' vertices and along
+// their horizontal edges. Sound as they are, and with a triangle left of a row; a triangle over a
+// square or on its edge is refused. (With many more loops in a row the ray work exceeds the
+// certificate's budget and the pair search decides.)
+TEST(many_loops_on_a_lattice) {
+  Mesh squares;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) {
+      Mesh square = grid(1);
+      for (Point& p : square.points) p = {p.x + 2 * i, p.y + 2 * j};
+      add_piece(squares, square);
+    }
+  CHECK(certified(squares));
+  for (const Point corner : {Point{0, 0}, Point{18.5, 0.5}, Point{11, 10.25}, Point{-1, 10}}) {
+    Mesh m = squares;
+    add_piece(m, with_triangle(small_triangle(corner, 0.5)));
+    CHECK_EQ(certified(m), corner.x == -1);
+    CHECK_EQ(overlap_found(m), corner.x != -1);
+  }
+}
+
 // A closed fan wound twice around its centre (rim at radius 1, then 2): every triangle is
 // counter-clockwise and every twin sound, but its one boundary loop crosses itself.
 TEST(a_fan_wound_twice_is_refused) {
