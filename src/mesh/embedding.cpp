@@ -34,8 +34,8 @@ class Certificate {
 
   const Point& org(std::uint32_t k) const { return mesh_.point(mesh_.org(boundary_[k])); }
   const Point& dest(std::uint32_t k) const { return mesh_.point(mesh_.dest(boundary_[k])); }
-  // Budgets for the parts that are not linear in the worst case: past them the pair search is
-  // no slower than this would be.
+  // The work allowed to the parts that are not linear in the worst case; past it the certificate
+  // gives up (it is meant to cost little next to the pair search, which then decides).
   std::size_t budget() const { return 16 * boundary_.size() + 4096; }
 
   // The edges without a twin, each vertex leaving at most one (two: a "bow tie", refused).
