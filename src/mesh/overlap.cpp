@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace deltri {
@@ -32,11 +33,15 @@ struct Grid {
 
 class OverlapFinder {
  public:
-  OverlapFinder(const Mesh& mesh, Predicates& pred) : mesh_(mesh), pred_(pred) {}
-
-  std::optional<OverlapFinding> run() {
+  OverlapFinder(const Mesh& mesh, Predicates& pred) : mesh_(mesh), pred_(pred) {
     for (TriangleId t = 0; t < mesh_.triangle_slots(); ++t)
       if (mesh_.is_live(t)) live_.push_back(t);
+  }
+  // The pairs among `some` triangles only.
+  OverlapFinder(const Mesh& mesh, Predicates& pred, std::vector<TriangleId> some)
+      : mesh_(mesh), pred_(pred), live_(std::move(some)) {}
+
+  std::optional<OverlapFinding> run() {
     if (live_.size() < 2) return std::nullopt;
     boxes_.reserve(live_.size());
     for (const TriangleId t : live_) boxes_.push_back(box_of(t));
@@ -129,12 +134,15 @@ class OverlapFinder {
       else if (starts_row) row_here_.push_back(k);
       else if (starts_column) column_here_.push_back(k);
     }
+    const bool apart = corner_here_.size() > kCrowded && corner_here_.size() < live_.size();
+    if (apart)
+      if (auto found = pairs_among_corner_here()) return found;
     for (std::size_t i = 0; i < corner_here_.size(); ++i) {
       const std::uint32_t p = corner_here_[i];
       for (std::size_t j = cell_start_[c]; j < cell_start_[c + 1]; ++j) {
         const std::uint32_t q = in_cell_[j];
         const bool q_corner_here = ranges_[q].r0 == row && ranges_[q].c0 == column;
-        if (q == p || (q_corner_here && q < p)) continue;  // a pair of two starting here: once
+        if (q == p || (q_corner_here && (apart || q < p))) continue;  // a pair of two starting here: once
         if (auto found = test_if_boxes_meet(p, q)) return found;
       }
     }
@@ -142,6 +150,17 @@ class OverlapFinder {
       for (const std::uint32_t q : column_here_)
         if (auto found = test_if_boxes_meet(p, q)) return found;
     return std::nullopt;
+  }
+
+  // A graded mesh (refinement towards a small input angle) puts thousands of small triangles in one
+  // cell of a grid sized for the average triangle, and testing them pair by pair there was
+  // quadratic (Chew's algorithm on debug2.poly: minutes). The pairs of triangles that start in such
+  // a cell are found by a finder of their own, whose grid fits them; each pair is still tested once.
+  static constexpr std::size_t kCrowded = 64;
+  std::optional<OverlapFinding> pairs_among_corner_here() {
+    std::vector<TriangleId> some(corner_here_.size());
+    for (std::size_t i = 0; i < some.size(); ++i) some[i] = live_[corner_here_[i]];
+    return OverlapFinder(mesh_, pred_, std::move(some)).run();
   }
 
   std::optional<OverlapFinding> test_if_boxes_meet(std::uint32_t p, std::uint32_t q) {
