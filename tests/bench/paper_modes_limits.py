@@ -12,7 +12,10 @@ modes get -C added. Per run: seconds, peak resident KB, triangles, Steiner point
 (sure-fire refusals among them), whether the Steiner cap or the guard stopped refinement. Prints one
 JSON line per run, then the worst runs by time and by memory.
 """
-import argparse, concurrent.futures, json, os, re, shutil, subprocess, tempfile
+import argparse, json, os, re, shutil, subprocess, sys, tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from paper_modes_sweep import run_jobs  # noqa: E402
 
 MODES = {
     'ruppert -pq20.7': ['--algorithm=ruppert', '-pq20.7'],
@@ -51,7 +54,7 @@ def one(args, mode, path):
                    steiner=sum(int(x) for x in re.findall(r'Steiner points: (\d+) interior, (\d+) on segments', out)[0])
                    if re.search(r'Steiner points: \d+ interior', out) else 0,
                    guard_refusals=number(r'guard refusals: (\d+)', out, 0),
-                   sure_fire=number(r'sure-fire refusals: (\d+)', out, 0),
+                   sure_fire=number(r'sure-fire refusals[^:]*: (\d+)', out, 0),
                    cap="the termination guard's cap" in out,
                    check='Mesh is consistent' in out)
         rec['outcome'] = 'ok' if r.returncode == 0 and rec['check'] else 'error'
@@ -72,15 +75,7 @@ def main():
     args.deltri = os.path.abspath(args.deltri)
     files = sorted({os.path.join(d, f) for top in args.dirs for d, _, fs in os.walk(top) for f in fs if f.endswith('.poly')})
     jobs = [(m, f) for f in files for m in args.modes.split(',')]
-    results = []
-    log = open(args.log, 'a') if args.log else None
-    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        for rec in concurrent.futures.as_completed([pool.submit(one, args, *j) for j in jobs]):
-            rec = rec.result()
-            results.append(rec)
-            print(json.dumps(rec), flush=True)
-            if log:
-                log.write(json.dumps(rec) + '\n'); log.flush()
+    results = run_jobs(args, jobs, one)
     bad = [r for r in results if r['outcome'] != 'ok']
     print(f'{len(results)} runs, {len(bad)} timed out or failed')
     for key in ('seconds', 'peak_kb'):
