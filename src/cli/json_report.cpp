@@ -167,7 +167,7 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
     j.close();
   }
   j.open("why_missed", '[');
-  if (q && q->stopped_by_guard) j.string(nullptr, "termination guard: points that would have made edges far below the local feature size were refused");
+  if (q && q->guard_refusals > q->sure_fire_refusals) j.string(nullptr, "termination guard: points that would have made edges far below the local feature size were refused");
   if (q && q->sure_fire_refusals > 0)
     j.string(nullptr, "termination guard: subsegment splits through a small input angle were refused (Sec. 6.2's sure-fire rule)");
   if (q && q->stopped_by_max_steiner) j.string(nullptr, "the -S limit of Steiner points was reached");

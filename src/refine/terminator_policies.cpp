@@ -161,6 +161,9 @@ bool Terminator::refused_by_sure_fire_rule(EdgeRef s, const SplitPlan& plan) con
 }
 
 // Does refinement split w lie on a piece that meets `piece` at a common end at under 60 degrees?
+// Beyond rounding: the corners of an equilateral triangle, written in doubles, measure 60 degrees
+// give or take 1e-15, and the paper's proofs (and range-restricted splitting's Theorem 13) hold at
+// 60 degrees, so cos must exceed 1/2 by a relative 1e-9.
 bool Terminator::meets_at_small_angle(const PieceEnds& piece, VertexId w) const {
   const PieceEnds* other = pieces_.piece_of(w);
   if (other == nullptr) return false;
@@ -171,7 +174,8 @@ bool Terminator::meets_at_small_angle(const PieceEnds& piece, VertexId w) const 
   const Point& q = mesh_.point((*other)[0] == j ? (*other)[1] : (*other)[0]);
   const double ux = p.x - o.x, uy = p.y - o.y, vx = q.x - o.x, vy = q.y - o.y;
   const double dot = ux * vx + uy * vy;
-  return dot > 0.0 && dot * dot > 0.25 * (ux * ux + uy * uy) * (vx * vx + vy * vy);  // cos > 1/2
+  constexpr double kHalfSquared = 0.25 * (1.0 + 2e-9);  // (1/2 (1 + 1e-9))^2
+  return dot > 0.0 && dot * dot > kHalfSquared * (ux * ux + uy * uy) * (vx * vx + vy * vy);
 }
 
 // Sec. 7.2: strategy 1 holds the triangles with no vertex in a segment interior (none of kind
