@@ -155,6 +155,10 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   j.integer("triangles_missing_bounds_not_forced_by_input", b.not_forced_by_input());
   if (sw.interior_bound != 0)
     j.integer("interior_bound_left_at_double_precision", q ? q->interior_bound_refusals : 0);
+  if (sw.refinement != RefinementAlgorithm::Terminator || sw.range_restricted) {  // where the sure-fire rule applies
+    j.integer("guard_refusals", q ? q->guard_refusals : 0);
+    j.integer("sure_fire_refusals", q ? q->sure_fire_refusals : 0);
+  }
   if (const auto& c = r.conformity) {  // -D (quality/conformity.h)
     j.open("subsegments_not_delaunay");
     j.integer("total", c->total);
@@ -163,7 +167,9 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
     j.close();
   }
   j.open("why_missed", '[');
-  if (q && q->stopped_by_guard) j.string(nullptr, "termination guard: points that would have made edges far below the local feature size were refused");
+  if (q && q->guard_refusals > q->sure_fire_refusals) j.string(nullptr, "termination guard: points that would have made edges far below the local feature size were refused");
+  if (q && q->sure_fire_refusals > 0)
+    j.string(nullptr, "termination guard: subsegment splits through a small input angle were refused (Sec. 6.2's sure-fire rule)");
   if (q && q->stopped_by_max_steiner) j.string(nullptr, "the -S limit of Steiner points was reached");
   if (q && q->stopped_by_cap) j.string(nullptr, cap_explanation(*q));
   if (q && q->bad_triangles_left > 0 && sw.no_boundary_steiner > 0) j.string(nullptr, "-Y/-YY: segments were not split");

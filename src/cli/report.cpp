@@ -202,6 +202,9 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
     if (q->interior_bound_refusals > 0)
       std::fprintf(out_, "  triangles under the 30 degrees of --interior-bound left at the limit of double precision: %llu\n",
                   static_cast<unsigned long long>(q->interior_bound_refusals));
+    if (q->sure_fire_refusals > 0)
+      std::fprintf(out_, "  sure-fire refusals (splits through a small input angle, Sec. 6.2; among the guard refusals): %llu\n",
+                  static_cast<unsigned long long>(q->sure_fire_refusals));
     if (q->locked_subsegments > 0)
       std::fprintf(out_, "  subsegments left whole because doubles cannot split them: %llu\n",
                   static_cast<unsigned long long>(q->locked_subsegments));

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "geometry/box.h"
@@ -58,11 +59,13 @@ class BoxPairs {
   bool scan_cell(std::uint32_t c, Visit& visit) {
     sort_cell(c);
     const std::uint32_t row = c / columns_, column = c % columns_;
+    const bool apart = corner_here_.size() > kCrowded && corner_here_.size() < boxes_.size();
+    if (apart && pairs_among_corner_here(visit)) return true;
     for (const std::uint32_t p : corner_here_) {
       for (std::size_t j = cell_start_[c]; j < cell_start_[c + 1]; ++j) {
         const std::uint32_t q = in_cell_[j];
         const bool q_corner_here = ranges_[q].r0 == row && ranges_[q].c0 == column;
-        if (q == p || (q_corner_here && q < p)) continue;  // a pair of two starting here: once
+        if (q == p || (q_corner_here && (apart || q < p))) continue;  // a pair of two starting here: once
         if (meet(p, q) && visit(item_[p], item_[q])) return true;
       }
     }
@@ -70,6 +73,21 @@ class BoxPairs {
       for (const std::uint32_t q : column_here_)
         if (meet(p, q) && visit(item_[p], item_[q])) return true;
     return false;
+  }
+
+  // A graded mesh (refinement towards a small input angle) puts thousands of small boxes in one
+  // cell of a grid sized for the average box, and testing them pair by pair there was quadratic
+  // (Chew's algorithm on debug2.poly: minutes). The pairs of boxes that start in such a cell are
+  // found by a BoxPairs of their own, whose grid fits them; each pair is still visited once.
+  static constexpr std::size_t kCrowded = 64;
+  template <class Visit>
+  bool pairs_among_corner_here(Visit& visit) {
+    std::vector<Box> some;
+    some.reserve(corner_here_.size());
+    for (const std::uint32_t p : corner_here_) some.push_back(boxes_[p]);
+    return BoxPairs(std::move(some)).any([&](std::uint32_t i, std::uint32_t j) {
+      return visit(item_[corner_here_[i]], item_[corner_here_[j]]);
+    });
   }
 
   // Sorted by home cell (so that a cell's boxes sit together in memory); item_ maps back.

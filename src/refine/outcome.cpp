@@ -27,6 +27,10 @@ void count(Outcome o, RefineReport& report) {
     case Outcome::KeptBoundary: ++report.kept_boundary_refusals; break;
     case Outcome::Locked: ++report.locked_subsegments; break;
     case Outcome::InteriorBoundAtBottom: ++report.interior_bound_refusals; break;
+    case Outcome::SureFire:
+      ++report.sure_fire_refusals;
+      guard();
+      break;
     case Outcome::NotBad:
     case Outcome::Gone:
     case Outcome::OverBudget:  // budget_left() raised its flag

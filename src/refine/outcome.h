@@ -27,6 +27,8 @@ enum class Outcome : std::uint8_t {
   Declined,        // SPLITPERMITTED (Fig. 38 l.21) refused every encroached subsegment
   Locked,          // doubles cannot split the subsegment: it is kept whole from now on
   InteriorBoundAtBottom,  // bad only for Sec. 7.2's 30 degrees, at the bottom of double precision
+  SureFire,  // Ruppert, Chew: the split would have a smaller insertion radius than the split on an incident
+             // segment that encroaches (Sec. 6.2's rule, Terminator::refused_by_sure_fire_rule)
 };
 
 constexpr bool refused(Outcome o) { return o >= Outcome::OverBudget; }

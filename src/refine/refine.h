@@ -106,6 +106,7 @@ struct RefineWork {
   std::uint64_t bottom_scale_searches = 0;  // Steiner points chosen among nearby doubles (bottom_scale.h)
   std::uint64_t bottom_scale_refusals = 0;  // of those, triangles no nearby double improved
   std::uint64_t interior_bound_refusals = 0;  // Sec. 7.2: triangles bad only for its 30 degrees, left at the bottom scale
+  std::uint64_t sure_fire_refusals = 0;  // Ruppert, Chew: splits refused by Sec. 6.2's rule (also guard refusals)
 };
 
 // Every counter of RefineWork, once: the static_assert fails when a counter is added to the struct
@@ -115,6 +116,7 @@ inline constexpr std::uint64_t RefineWork::*kWorkCounts[] = {
     &RefineWork::encroached_splits,      &RefineWork::rejected_candidates,    &RefineWork::declined_splits,
     &RefineWork::guard_refusals,         &RefineWork::kept_boundary_refusals, &RefineWork::locked_subsegments,
     &RefineWork::bottom_scale_searches,  &RefineWork::bottom_scale_refusals,  &RefineWork::interior_bound_refusals,
+    &RefineWork::sure_fire_refusals,
 };
 static_assert(sizeof(RefineWork) == std::size(kWorkCounts) * sizeof(std::uint64_t),
               "every RefineWork counter must be listed in kWorkCounts");

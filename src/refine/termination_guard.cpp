@@ -51,6 +51,7 @@ double smallest_input_angle(const Mesh& mesh) {
     for (EdgeRef g = e;;) {
       const EdgeRef in = lprev(g);  // apex(g) -> v
       if (mesh.subseg[in] != kNone) {
+        if (mesh.org(in) == mesh.dest(e)) break;  // e itself from its other side: v is a free end
         const Point& x = mesh.point(mesh.org(in));
         const double ux = to.x - v.x, uy = to.y - v.y, wx = x.x - v.x, wy = x.y - v.y;
         double angle = std::atan2(ux * wy - uy * wx, ux * wx + uy * wy);

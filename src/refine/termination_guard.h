@@ -62,6 +62,12 @@ inline constexpr int kCoarsePrecisionOctaves = 36;
 // edge length a size bound asks for.
 double guard_floor(double feature, double size_floor);
 
+// Ruppert's and Chew's algorithms and range-restricted splitting also refuse subsegment splits by
+// Sec. 6.2's sure-fire rule where two segments meet at under 60 degrees: no split with a smaller
+// insertion radius than its ancestor on the other segment (Terminator::refused_by_sure_fire_rule).
+// Any floor leaves about ln(R / r) / phi coupled splits between segments at an angle phi, and
+// VVingerfly's test.poly (phi = 2e-6) ran until the memory was gone under Ruppert's algorithm.
+
 // The cap on Steiner points: the last line of defence against refinement that runs away.
 //
 // What a good mesh needs grows with the integral of 1/lfs^2 over the domain (Sec. 3.3 and 4.3,

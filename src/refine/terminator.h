@@ -124,6 +124,10 @@ class Terminator {
   bool split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pending);
   bool deletes_before_split() const;  // Chew's step (l.40-43): the Terminator with lenses, and Chew
   bool split_allowed(EdgeRef s, const Assessment& a, double d) const;  // Fig. 38 l.21
+  // Ruppert, Chew: Sec. 6.2's sure-fire rule on the split of s planned as `plan`.
+  bool refused_by_sure_fire_rule(EdgeRef s, const SplitPlan& plan) const;
+  bool meets_at_small_angle(const PieceEnds& piece, VertexId w) const;
+  bool tracks_split_radii() const { return opt_.algorithm != RefinementAlgorithm::Terminator || opt_.range_restricted; }
   // -Y / -YY: whether c, for bad triangle t, is refused: it would lower the smallest angle below
   // floor_sin2_, make a bad triangle nothing can split, or spoil one next to a subsegment kept
   // whole.
@@ -233,8 +237,14 @@ class Terminator {
   EncroachedQueue encroached_;       // Q_s
   RefineReport report_;
   std::vector<char> locked_;  // by subsegment record: a split failed for want of precision
-  std::vector<Point> lattice_scratch_;
-  std::vector<TriangleId> mend_scratch_;  // bad_replaced's list  // bottom_scale_point's candidates
+  // Ruppert, Chew: by vertex id, the insertion radius of each refinement split this Terminator
+  // made, 0 for every other vertex (refused_by_sure_fire_rule).
+  std::vector<double> split_radius_;
+  // While the subsegments a rejected circumcentre encroaches upon are split: the newer end of its
+  // triangle's shortest edge, else kNone.
+  VertexId sure_fire_parent_ = kNone;
+  std::vector<Point> lattice_scratch_;    // bottom_scale_point's candidates
+  std::vector<TriangleId> mend_scratch_;  // tally_replaced's list
   // Whether any split can come within kBottomScaleUlps of the coordinates: false when the feature
   // floor is above that everywhere and no size bound is given, and then the bottom-scale code is
   // skipped altogether (ordinary meshes).

@@ -4,6 +4,8 @@
 // policies of terminator_policies.cpp; the queue's mechanics, prefetching and page warming are the
 // driver's (terminator.cpp); l.1-2 (the constrained Delaunay triangulation, exterior removed) are
 // the earlier stages'.
+#include <algorithm>
+
 #include "mesh/operations.h"
 #include "refine/lawson.h"
 #include "refine/terminator.h"
@@ -69,7 +71,10 @@ Outcome Terminator::split_encroached_instead(const QueuedTriangle& entry, const 
   // l.24-25, in the other order: t goes back only if something was split, so that a guard refusal
   // cannot repeat the same attempt forever. Splits owed to a size bound meet only the precision
   // floor, as t itself does (floor_for).
-  if (split_encroached_subsegments(true, a.too_large) > 0 && is_current(mesh_, entry)) enqueue_if_bad(entry.triangle);
+  if (tracks_split_radii()) sure_fire_parent_ = std::max(mesh_.org(a.shape.shortest), mesh_.dest(a.shape.shortest));
+  const std::uint64_t splits = split_encroached_subsegments(true, a.too_large);
+  sure_fire_parent_ = kNone;
+  if (splits > 0 && is_current(mesh_, entry)) enqueue_if_bad(entry.triangle);
   return Outcome::Deferred;
 }
 
@@ -96,12 +101,17 @@ Outcome Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_
   SplitPlan plan;
   if (const auto refusal = plan_split(s, owed_to_size, plan)) return *refusal;  // l.39
   if (split_spoils_kept_boundary(s, plan.point)) return Outcome::KeptBoundary;
+  if (refused_by_sure_fire_rule(s, plan)) return Outcome::SureFire;
   if (deletes_before_split()) {                                                  // l.40-43
     s = delete_free_vertices_near(s, plan.point, queue_triangles);
     if (s == kNone) return Outcome::Gone;
     if (const auto refusal = replan_after_deletions(s, plan)) return *refusal;
   }
   const VertexId v = add_segment_vertex(plan.point, s);
+  if (tracks_split_radii()) {
+    split_radius_.resize(v + 1, 0.0);
+    split_radius_[v] = plan.radius.after_chew;
+  }
   const PieceEnds piece = pieces_.of_subsegment[mesh_.subseg[s]];
   EdgeRef out = split_edge(mesh_, s, v);  // l.44
   pieces_.record_split(mesh_, v, piece);

@@ -129,6 +129,55 @@ bool Terminator::split_allowed(EdgeRef s, const Assessment& a, double d) const {
   return !opt_.decline_cluster_splits || split_permitted(mesh_, apices_, s, d);
 }
 
+// Sec. 6.2's sure-fire rule, for Ruppert's and Chew's algorithms and range-restricted splitting,
+// which have no proof of termination where two segments meet at under 60 degrees (Sec. 3.3, 4,
+// 7.3): a subsegment s is not split where the new vertex's insertion radius would be smaller than
+// that of its most recently inserted ancestor, a refinement split w on a piece that meets s's piece
+// at a common end at under 60 degrees. w is an ancestor when it encroaches upon s (Ruppert's
+// mutual encroachment, Fig. 24) or is the newer end of the shortest edge of the skinny triangle
+// whose rejected circumcentre asked for the split (the figure-eight cycle of Fig. 26, through a
+// free vertex). Two pieces at an angle phi are coupled: each split of one leads to a split of the
+// other, until the subsegments are as short as the gap between the pieces, phi times the distance
+// to the apex: about ln(R / r) / phi splits (VVingerfly's test.poly, phi = 2e-6: tens of millions,
+// until the memory ran out). With the rule no split is the child of a wider one through the angle,
+// so the cycle, whose multiplier is below one, cannot repeat. The paper's exceptions stand: input
+// vertices, and splits on pieces that do not share an end with s's (a real feature nearby, which
+// bounds refinement by lfs), encroach as always. Where every input angle is 60 degrees or more the
+// rule never applies, so meshes in the range of the paper's proofs are unchanged.
+// docs/refinement.md, "The sure-fire rule".
+bool Terminator::refused_by_sure_fire_rule(EdgeRef s, const SplitPlan& plan) const {
+  if (!tracks_split_radii()) return false;
+  const PieceEnds& piece = pieces_.of_subsegment[mesh_.subseg[s]];
+  const double radius = plan.radius.after_chew;
+  const auto ancestor = [&](VertexId w) {
+    return w < split_radius_.size() && radius < split_radius_[w] && meets_at_small_angle(piece, w);
+  };
+  if (sure_fire_parent_ != kNone && ancestor(sure_fire_parent_)) return true;
+  const Point& a = mesh_.point(mesh_.org(s));
+  const Point& b = mesh_.point(mesh_.dest(s));
+  for (EdgeRef e : {s, mesh_.link[s]})
+    if (e != kNone && ancestor(mesh_.apex(e)) && encroaches(pred_, a, b, mesh_.point(mesh_.apex(e)), rule_)) return true;
+  return false;
+}
+
+// Does refinement split w lie on a piece that meets `piece` at a common end at under 60 degrees?
+// Beyond rounding: the corners of an equilateral triangle, written in doubles, measure 60 degrees
+// give or take 1e-15, and the paper's proofs (and range-restricted splitting's Theorem 13) hold at
+// 60 degrees, so cos must exceed 1/2 by a relative 1e-9.
+bool Terminator::meets_at_small_angle(const PieceEnds& piece, VertexId w) const {
+  const PieceEnds* other = pieces_.piece_of(w);
+  if (other == nullptr) return false;
+  const VertexId j = shared_end(piece, *other);
+  if (j == kNone) return false;
+  const Point& o = mesh_.point(j);
+  const Point& p = mesh_.point(piece[0] == j ? piece[1] : piece[0]);
+  const Point& q = mesh_.point((*other)[0] == j ? (*other)[1] : (*other)[0]);
+  const double ux = p.x - o.x, uy = p.y - o.y, vx = q.x - o.x, vy = q.y - o.y;
+  const double dot = ux * vx + uy * vy;
+  constexpr double kHalfSquared = 0.25 * (1.0 + 2e-9);  // (1/2 (1 + 1e-9))^2
+  return dot > 0.0 && dot * dot > kHalfSquared * (ux * ux + uy * uy) * (vx * vx + vy * vy);
+}
+
 // Sec. 7.2: strategy 1 holds the triangles with no vertex in a segment interior (none of kind
 // Segment: input vertices on a segment are its ends) to 30 degrees, strategy 2 every triangle.
 const QualityRules& Terminator::rules_for(TriangleId t) const {

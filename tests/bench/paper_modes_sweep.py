@@ -183,6 +183,21 @@ def one(args, mode, f):
         shutil.rmtree(work, ignore_errors=True)
 
 
+def run_jobs(args, jobs, run_one):
+    """run_one(args, *job) for every job on args.jobs threads; prints each record as a JSON line
+    (and appends it to args.log); returns the records."""
+    results = []
+    log = open(args.log, 'a') if args.log else None
+    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+        for rec in concurrent.futures.as_completed([pool.submit(run_one, args, *j) for j in jobs]):
+            rec = rec.result()
+            results.append(rec)
+            print(json.dumps(rec), flush=True)
+            if log:
+                log.write(json.dumps(rec) + '\n'); log.flush()
+    return results
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('deltri'); ap.add_argument('corpus'); ap.add_argument('reference'); ap.add_argument('meshcheck')
@@ -197,15 +212,7 @@ def main():
         files = [f for f in files if f in args.files.split(',')]
     modes = args.modes.split(',')
     jobs = [(m, f) for f in files for m in modes]  # file by file: a partial sweep covers every mode
-    results = []
-    log = open(args.log, 'a') if args.log else None
-    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        for rec in concurrent.futures.as_completed([pool.submit(one, args, *j) for j in jobs]):
-            rec = rec.result()
-            results.append(rec)
-            print(json.dumps(rec), flush=True)
-            if log:
-                log.write(json.dumps(rec) + '\n'); log.flush()
+    results = run_jobs(args, jobs, one)
     print('| mode | runs | pass | reported | silent | unchecked | error | timeout | nondeterministic |')
     print('|---|---|---|---|---|---|---|---|---|')
     for mode in modes:

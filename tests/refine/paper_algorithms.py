@@ -10,6 +10,8 @@ deltri's output files with nothing deltri reports about quality.
                                                           one line on stderr, no output file
     paper_algorithms.py conformity DELTRI INPUT           -pDq20.7 on any input: edges left not Delaunay
                                                           are warned of, counted exactly, and --strict fails
+    paper_algorithms.py sure_fire DELTRI DEG SWITCHES...  two segments from one vertex DEG degrees apart in a
+                                                          box: the guard stops the ping-pong (issue 16)
 
 Every mode first checks that the input has no two segments meeting at an angle under 60 degrees and
 no segments that cross or touch inside (the paper's condition), from the input file itself; each run
@@ -28,10 +30,19 @@ is made twice and must give the same bytes; the run must exit 0.
   above; N edges not Delaunay (segments included) must come with the warning "N subsegments are not
   Delaunay" (the same N) and exit 3 under --strict; none must come with no such warning and exit 0
   under --strict (issue 22: these meshes used to end with exit 0 and no word of it).
+- sure_fire (issue 16): the box [-1, 2] x [-1, 1] with two segments from (0, 0), of lengths 1 and 0.9,
+  DEG degrees apart. Ruppert's algorithm ping-pongs between them (Sec. 3.3, 5): at 5 degrees it used
+  to run to the Steiner cap, at 0.1 until the memory was gone. The run must exit 0 within a generous
+  time limit (a guard against a hang, not a measurement) and under a 4 GiB address-space limit; its
+  --json report must name the sure-fire rule among the reasons and count its refusals, and not the
+  Steiner cap; the mesh must be constrained Delaunay with counter-clockwise triangles (exact) and
+  cover the box exactly (the triangles' areas, exact, sum to 6).
 Angles are computed in doubles with a tolerance of 1e-9 degrees.
 """
+import json
 import math
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -318,6 +329,48 @@ def check_conformity(deltri, inp, work):
            % (inp, len(tris), bad, r.returncode))
 
 
+def wedge_poly(path, degrees):
+    a = math.radians(degrees)
+    pts = [(-1.0, -1.0), (2.0, -1.0), (2.0, 1.0), (-1.0, 1.0), (0.0, 0.0), (1.0, 0.0),
+           (0.9 * math.cos(a), 0.9 * math.sin(a))]
+    segs = [(1, 2), (2, 3), (3, 4), (4, 1), (5, 6), (5, 7)]
+    with open(path, 'w') as f:
+        f.write('%d 2 0 0\n' % len(pts) + ''.join('%d %r %r\n' % (i + 1, x, y) for i, (x, y) in enumerate(pts)))
+        f.write('%d 0\n' % len(segs) + ''.join('%d %d %d\n' % (i + 1, a, b) for i, (a, b) in enumerate(segs)))
+        f.write('0\n')
+
+
+def limit_memory():
+    resource.setrlimit(resource.RLIMIT_AS, (4 << 30, 4 << 30))
+
+
+def check_sure_fire(deltri, degrees, switches, work):
+    inp = os.path.join(work, 'wedge.poly')
+    wedge_poly(inp, float(degrees))
+    try:
+        r = subprocess.run([deltri] + switches + ['-Q', '--json=wedge.json', 'wedge.poly'], cwd=work, capture_output=True,
+                           text=True, timeout=300, preexec_fn=limit_memory)
+    except subprocess.TimeoutExpired:
+        raise SystemExit('FAIL: %s degrees %s: no end within 300 s (the ping-pong was not stopped)' % (degrees, switches))
+    if r.returncode != 0:
+        raise SystemExit('FAIL: %s degrees %s: exit %d: %s' % (degrees, switches, r.returncode, r.stderr.strip()[-300:]))
+    q = json.load(open(os.path.join(work, 'wedge.json')))['quality']
+    faults = []
+    why = ' | '.join(q.get('why_missed', []))
+    if 'sure-fire' not in why or not q.get('sure_fire_refusals', 0) > 0:
+        faults.append('the report does not name the sure-fire rule: %r, refusals %r' % (why, q.get('sure_fire_refusals')))
+    if 'cap' in why:
+        faults.append('the Steiner cap stopped refinement: %r' % why)
+    pts, tris, segs = read_mesh(os.path.join(work, 'wedge.1'))
+    faults += delaunay_faults(pts, tris, {frozenset(s) for s in segs})[:5]
+    exact = {k: (Fraction(x), Fraction(y)) for k, (x, y) in pts.items()}
+    area = sum(orient(exact[a], exact[b], exact[c]) for a, b, c in tris) / 2
+    if area != 6:
+        faults.append('the triangles cover %s, not the box\'s 6' % float(area))
+    report(faults, '%s degrees %s: %d triangles, %d sure-fire refusals, constrained Delaunay, covers the box'
+           % (degrees, ' '.join(switches), len(tris), q.get('sure_fire_refusals', 0)))
+
+
 def report(faults, summary):
     for f in faults[:10]:
         print('FAIL:', f)
@@ -349,6 +402,8 @@ def main(argv):
             check_refusals(argv[2], argv[3], work)
         elif mode == 'conformity':
             check_conformity(argv[2], argv[3], work)
+        elif mode == 'sure_fire':
+            check_sure_fire(argv[2], argv[3], argv[4:], work)
         else:
             raise SystemExit('unknown mode ' + mode)
     finally:
