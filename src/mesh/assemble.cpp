@@ -50,8 +50,9 @@ AssemblyProblem add_triangles(Mesh& mesh, Predicates& pred, std::span<const std:
   mesh.link.assign(3 * static_cast<std::size_t>(count), kNone);
   mesh.subseg.clear();
   mesh.free_triangles.clear();
-  for (TriangleId t = 0; t < count; ++t) {
-    const std::uint32_t* c = &corners[static_cast<std::size_t>(t) * stride];
+  for (TriangleId t{0}; t < count; ++t) {
+    const std::uint32_t* in = &corners[static_cast<std::size_t>(t) * stride];
+    const VertexId c[3] = {VertexId{in[0]}, VertexId{in[1]}, VertexId{in[2]}};
     if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0]) return {Kind::RepeatedVertex, t};
     if (pred.orient2d(mesh.point(c[0]), mesh.point(c[1]), mesh.point(c[2])) <= 0) return {Kind::Clockwise, t};
     for (unsigned i = 0; i < 3; ++i) mesh.corner[edge_of(t, i)] = c[i];
@@ -61,7 +62,7 @@ AssemblyProblem add_triangles(Mesh& mesh, Predicates& pred, std::span<const std:
 
 AssemblyProblem pair_edges(Mesh& mesh) {
   std::vector<EdgeKey> keys(mesh.corner.size());
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) keys[e] = {undirected(mesh.org(e), mesh.dest(e)), e};
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) keys[e] = {undirected(mesh.org(e), mesh.dest(e)), e};
   std::sort(keys.begin(), keys.end());
   for (std::size_t i = 0; i < keys.size();) {
     std::size_t j = i + 1;

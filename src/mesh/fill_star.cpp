@@ -69,15 +69,15 @@ EdgeRef fill_star(Mesh& m, Predicates& pred, VertexId v, const KnownCavity& cavi
     slot[j] = first                        ? owner
               : spare < cavity.inner.size() ? cavity.inner[spare++]
                                             : m.add_triangle(kNone, kNone, kNone);
-    const EdgeRef e = 3 * slot[j];
+    const EdgeRef e = edge_of(slot[j], 0);
     m.corner[e] = org[j];
     m.corner[e + 1] = dest[j];
     m.corner[e + 2] = v;
     attach(m, e, {outside_link[j], outside_seg[j]});
     if (!first) copy_triangle_data(m, owner, slot[j]);
   }
-  for (std::size_t j = 0; j < n; ++j) bond_inner(m, 3 * slot[j] + 1, 3 * slot[next[j]] + 2);
-  return 3 * slot[0] + 2;
+  for (std::size_t j = 0; j < n; ++j) bond_inner(m, edge_of(slot[j], 1), edge_of(slot[next[j]], 2));
+  return edge_of(slot[0], 2);
 }
 
 }  // namespace deltri::detail

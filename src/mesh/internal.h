@@ -12,8 +12,8 @@ namespace deltri::detail {
 
 // Ghost triangles carry kGhostVertex as one corner; geometry must never be asked about them.
 inline bool is_ghost(const Mesh& m, TriangleId t) {
-  return m.corner[3 * t] == kGhostVertex || m.corner[3 * t + 1] == kGhostVertex ||
-         m.corner[3 * t + 2] == kGhostVertex;
+  return m.corner[edge_of(t, 0)] == kGhostVertex || m.corner[edge_of(t, 1)] == kGhostVertex ||
+         m.corner[edge_of(t, 2)] == kGhostVertex;
 }
 
 inline bool carries_subsegment(const Mesh& m, EdgeRef e) {
@@ -55,14 +55,14 @@ inline void copy_triangle_data(Mesh& m, TriangleId from, TriangleId to) {
 // Frees a slot whose neighbours have already been re-attached elsewhere, so they must not be
 // unlinked by kill_triangle.
 inline void release(Mesh& m, TriangleId t) {
-  m.link[3 * t] = m.link[3 * t + 1] = m.link[3 * t + 2] = kNone;
+  m.link[edge_of(t, 0)] = m.link[edge_of(t, 1)] = m.link[edge_of(t, 2)] = kNone;
   m.kill_triangle(t);
 }
 
 // The side of t whose origin is v, or 3 if v is not a corner of t.
 inline unsigned corner_index(const Mesh& m, TriangleId t, VertexId v) {
   unsigned i = 0;
-  while (i < 3 && m.corner[3 * t + i] != v) ++i;
+  while (i < 3 && m.corner[edge_of(t, i)] != v) ++i;
   return i;
 }
 

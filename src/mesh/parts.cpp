@@ -42,7 +42,7 @@ std::vector<Id> marked_ids(const std::vector<char>& marked) {
 void list_part_ids(const Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, std::vector<char> keep) {
   keep.resize(mesh.vertex_count(), 0);
   std::vector<char> records(mesh.subsegments.size(), 0);
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!moves[t] || !mesh.is_live(t)) continue;
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
@@ -62,14 +62,14 @@ void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, 
   const std::vector<VertexId> vertex = cut.vertex_map(mesh.vertex_count());
   const std::vector<SubsegmentId> record_of = local_ids(cut.records, mesh.subsegments.size());
   Mesh& r = cut.part;
-  const TriangleId n = r.triangle_slots();
+  const std::uint32_t n = r.triangle_slots();
   std::size_t width[std::size(kTriangleData)];
   for (std::size_t k = 0; k < std::size(kTriangleData); ++k) {
     width[k] = data_width(mesh, kTriangleData[k]);
     (r.*kTriangleData[k]).resize(static_cast<std::size_t>(n) * width[k]);
   }
   const auto record = [&](SubsegmentId s) { return s < mesh.subsegments.size(); };
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!moves[t] || !mesh.is_live(t)) continue;
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i), f = edge_of(slot[t], i);
@@ -102,8 +102,8 @@ CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId 
   cut.part_records.assign(mesh.subsegments.size(), 0);
   cut.cut_records.assign(mesh.subsegments.size(), 0);
   std::vector<TriangleId> slot(mesh.triangle_slots(), kNone);
-  TriangleId n = 0;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+  TriangleId n{0};
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (moves[t] && mesh.is_live(t)) slot[t] = n++;
   Mesh& r = cut.part;
   r.corner.resize(3 * static_cast<std::size_t>(n));
@@ -111,7 +111,7 @@ CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId 
   r.subseg.resize(r.corner.size());
   copy_part(mesh, cut, moves, slot, mark);
   std::sort(cut.cut_keys.begin(), cut.cut_keys.end());
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (moves[t] && mesh.is_live(t)) mesh.kill_triangle(t);  // unlinks the other side's cut edges
   return cut;
 }
@@ -123,20 +123,20 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark) {
   const PartIds ids{&cut.vertices,
                     &cut.records,
                     static_cast<VertexId>(cut.vertices.size()),
-                    mesh.vertex_count(),
+                    VertexId{mesh.vertex_count()},
                     static_cast<SubsegmentId>(cut.records.size()),
                     static_cast<SubsegmentId>(mesh.subsegments.size()),
-                    mesh.triangle_slots()};
+                    TriangleId{mesh.triangle_slots()}};
   const auto moved = [&](Subsegment s) {
     s.a = ids.vertex(s.a);
     s.b = ids.vertex(s.b);
     return s;
   };
-  for (SubsegmentId s = 0; s < ids.s0; ++s)
+  for (SubsegmentId s{0}; s < ids.s0; ++s)
     if (cut.part_records[cut.records[s]]) mesh.subsegments[cut.records[s]] = moved(r.subsegments[s]);
   for (SubsegmentId s = ids.s0; s < r.subsegments.size(); ++s) mesh.subsegments.push_back(moved(r.subsegments[s]));
   const auto links_and_vertices = [&] {
-    move_appending(r.link, mesh.link, [&](EdgeRef e) { return e == kNone ? kNone : edge_of(ids.triangle_base, 0) + e; });
+    move_appending(r.link, mesh.link, [&](EdgeRef e) { return e == kNone ? e : EdgeRef{edge_of(ids.triangle_base, 0) + e}; });
     mesh.take_vertices(r, ids.v0);
   };
   const auto corners_and_subsegments = [&] {
@@ -157,7 +157,7 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark) {
 std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, SubsegmentId mark) {
   const std::vector<std::uint64_t>& keys = cut.cut_keys;
   std::vector<EdgeRef> stayed(keys.size(), kNone), moved(keys.size(), kNone);
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.link[e] != kNone || mesh.corner[e] == kNone) continue;
     const SubsegmentId s = mesh.subseg[e];
     if (s != mark && (s >= cut.cut_records.size() || !cut.cut_records[s])) continue;

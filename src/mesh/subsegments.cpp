@@ -22,7 +22,7 @@ Subsegment unconstrain(Mesh& mesh, EdgeRef e) {
 std::size_t constrain_boundary(Mesh& mesh, int marker) {
   mesh.enable_subsegments();
   std::size_t added = 0;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.corner[e] == kNone || mesh.link[e] != kNone || mesh.subseg[e] != kNone) continue;
     constrain(mesh, e, {mesh.org(e), mesh.dest(e), marker, kNone});
     ++added;
@@ -32,8 +32,8 @@ std::size_t constrain_boundary(Mesh& mesh, int marker) {
 
 void drop_dead_subsegments(Mesh& mesh) {
   std::vector<SubsegmentId> renumber(mesh.subsegments.size(), kNone);
-  SubsegmentId next = 0;
-  for (SubsegmentId s = 0; s < mesh.subsegments.size(); ++s) {
+  SubsegmentId next{0};
+  for (SubsegmentId s{0}; s < mesh.subsegments.size(); ++s) {
     if (mesh.subsegments[s].a == kNone) continue;
     renumber[s] = next;
     mesh.subsegments[next++] = mesh.subsegments[s];
@@ -47,16 +47,16 @@ void drop_dead_subsegments(Mesh& mesh) {
 std::size_t drop_unused_subsegments(Mesh& mesh) {
   if (!mesh.has_subsegments()) return 0;
   std::vector<char> used(mesh.subsegments.size(), 0);
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
     if (mesh.corner[e] != kNone && mesh.subseg[e] != kNone) used[mesh.subseg[e]] = 1;
   std::size_t dropped = 0;
-  for (SubsegmentId s = 0; s < used.size(); ++s)
+  for (SubsegmentId s{0}; s < used.size(); ++s)
     if (!used[s] && mesh.subsegments[s].a != kNone) {
       mesh.subsegments[s].a = kNone;
       ++dropped;
     }
   // kill_triangle leaves subseg entries in dead slots; clear them before renumbering.
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
     if (mesh.corner[e] == kNone) mesh.subseg[e] = kNone;
   drop_dead_subsegments(mesh);
   return dropped;
