@@ -38,6 +38,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "mesh/topology_writer.h"
+
 namespace deltri {
 namespace {
 
@@ -576,9 +578,9 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
                                  std::vector<std::pair<VertexId, VertexId>>& duplicates,
                                  PredicateCounters& counters) {
   const int threads = std::max(1, options.threads);
-  mesh.corner.clear();
-  mesh.link.clear();
-  mesh.subseg.clear();
+  detail::corner_slots(mesh).clear();
+  detail::link_slots(mesh).clear();
+  detail::subseg_slots(mesh).clear();
   mesh.free_triangles.clear();
 
   const MortonKey key(mesh.points, mesh.kind, threads);
@@ -609,15 +611,15 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   const std::size_t slots = 2 * static_cast<std::size_t>(m) - 2;
   // Zero-filling the two arrays (and faulting in their pages) is done by a thread each.
   split_in_two(2, worth_two(threads, m), [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k) k == 0 ? mesh.corner.resize(3 * slots) : mesh.link.resize(3 * slots);
+    for (std::size_t k = from; k < to; ++k) k == 0 ? detail::corner_slots(mesh).resize(3 * slots) : detail::link_slots(mesh).resize(3 * slots);
   });
-  Builder builder(sorted.data(), order.data(), mesh.corner, mesh.link, cut_key);
+  Builder builder(sorted.data(), order.data(), detail::corner_slots(mesh), detail::link_slots(mesh), cut_key);
   builder.build(0, m, 0, threads);
   counters.add(builder.pred.counters);
 
   split_in_two(mesh.corner.size(), worth_two(threads, m), [&](std::size_t from, std::size_t to) {
     for (std::size_t e = from; e < to; ++e)
-      if (mesh.corner[e] != kGhostVertex) mesh.corner[e] = order[mesh.corner[e]];
+      if (mesh.corner[e] != kGhostVertex) detail::corner_slots(mesh)[e] = order[mesh.corner[e]];
   });
   // The bystanders' ids complete the permutation: their slots past m are empty and get the
   // bystanders' coordinates afterwards.

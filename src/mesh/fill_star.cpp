@@ -4,6 +4,7 @@
 // triangle beyond the first); here each is written once.
 #include "mesh/internal.h"
 #include "mesh/operations.h"
+#include "mesh/topology_writer.h"
 
 namespace deltri::detail {
 namespace {
@@ -70,9 +71,9 @@ EdgeRef fill_star(Mesh& m, Predicates& pred, VertexId v, const KnownCavity& cavi
               : spare < cavity.inner.size() ? cavity.inner[spare++]
                                             : m.add_triangle(kNone, kNone, kNone);
     const EdgeRef e = edge_of(slot[j], 0);
-    m.corner[e] = org[j];
-    m.corner[e + 1] = dest[j];
-    m.corner[e + 2] = v;
+    detail::corner_slots(m)[e] = org[j];
+    detail::corner_slots(m)[e + 1] = dest[j];
+    detail::corner_slots(m)[e + 2] = v;
     attach(m, e, {outside_link[j], outside_seg[j]});
     if (!first) copy_triangle_data(m, owner, slot[j]);
   }

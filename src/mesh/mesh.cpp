@@ -5,6 +5,9 @@
 namespace deltri {
 
 TriangleId Mesh::add_triangle(VertexId a, VertexId b, VertexId c) {
+  auto& corner = this->corner.slots_;
+  auto& link = this->link.slots_;
+  auto& subseg = this->subseg.slots_;
   if (free_triangles.empty()) return append_triangle(a, b, c);
   const TriangleId t = free_triangles.back();
   free_triangles.pop_back();
@@ -20,6 +23,9 @@ TriangleId Mesh::add_triangle(VertexId a, VertexId b, VertexId c) {
 // push_back rather than resize: resize's out-of-line value-initialisation showed in profiles of
 // refinement, which appends a triangle for every two it creates.
 TriangleId Mesh::append_triangle(VertexId a, VertexId b, VertexId c) {
+  auto& corner = this->corner.slots_;
+  auto& link = this->link.slots_;
+  auto& subseg = this->subseg.slots_;
   const TriangleId t{triangle_slots()};
   for (VertexId v : {a, b, c}) corner.push_back(v);
   for (int i = 0; i < 3; ++i) link.push_back(kNone);
@@ -32,6 +38,8 @@ TriangleId Mesh::append_triangle(VertexId a, VertexId b, VertexId c) {
 }
 
 void Mesh::kill_triangle(TriangleId t) {
+  auto& corner = this->corner.slots_;
+  auto& link = this->link.slots_;
   for (unsigned i = 0; i < 3; ++i) {
     const EdgeRef e = edge_of(t, i);
     if (link[e] != kNone) link[link[e]] = kNone;
@@ -66,10 +74,15 @@ void Mesh::interpolate_attributes(VertexId v, VertexId a, VertexId b) {
 }
 
 void Mesh::enable_subsegments() {
+  auto& corner = this->corner.slots_;
+  auto& subseg = this->subseg.slots_;
   if (subseg.size() != corner.size()) subseg.assign(corner.size(), kNone);
 }
 
 void Mesh::compact_triangles() {
+  auto& corner = this->corner.slots_;
+  auto& link = this->link.slots_;
+  auto& subseg = this->subseg.slots_;
   if (free_triangles.empty()) return;
   TriangleId last{triangle_slots()};
   const int na = num_triangle_attributes;

@@ -7,6 +7,7 @@
 #include "mesh/lawson.h"
 #include "mesh/operations.h"
 #include "util/run_both.h"
+#include "mesh/topology_writer.h"
 
 namespace deltri {
 namespace {
@@ -75,13 +76,13 @@ void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, 
       const EdgeRef e = edge_of(t, i), f = edge_of(slot[t], i);
       const EdgeRef twin = mesh.link[e];
       const bool on_cut = twin != kNone && !moves[triangle_of(twin)];
-      r.corner[f] = vertex[mesh.corner[e]];
-      r.link[f] = twin == kNone || on_cut ? kNone : edge_of(slot[triangle_of(twin)], side_of(twin));
+      detail::corner_slots(r)[f] = vertex[mesh.corner[e]];
+      detail::link_slots(r)[f] = twin == kNone || on_cut ? kNone : edge_of(slot[triangle_of(twin)], side_of(twin));
       SubsegmentId s = mesh.subseg[e];
       if (on_cut) cut.cut_keys.push_back(edge_key(mesh.corner[twin], mesh.corner[lnext(twin)]));
       if (record(s)) (on_cut ? cut.cut_records : cut.part_records)[s] = 1;
-      if (on_cut && s == kNone) mesh.subseg[twin] = s = mark;
-      r.subseg[f] = record(s) ? record_of[s] : s;
+      if (on_cut && s == kNone) detail::subseg_slots(mesh)[twin] = s = mark;
+      detail::subseg_slots(r)[f] = record(s) ? record_of[s] : s;
     }
     for (std::size_t k = 0; k < std::size(kTriangleData); ++k) {
       const auto& from = mesh.*kTriangleData[k];
@@ -106,9 +107,9 @@ CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId 
   for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (moves[t] && mesh.is_live(t)) slot[t] = n++;
   Mesh& r = cut.part;
-  r.corner.resize(3 * static_cast<std::size_t>(n));
-  r.link.resize(r.corner.size());
-  r.subseg.resize(r.corner.size());
+  detail::corner_slots(r).resize(3 * static_cast<std::size_t>(n));
+  detail::link_slots(r).resize(r.corner.size());
+  detail::subseg_slots(r).resize(r.corner.size());
   copy_part(mesh, cut, moves, slot, mark);
   std::sort(cut.cut_keys.begin(), cut.cut_keys.end());
   for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
@@ -136,12 +137,12 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark) {
     if (cut.part_records[cut.records[s]]) mesh.subsegments[cut.records[s]] = moved(r.subsegments[s]);
   for (SubsegmentId s = ids.s0; s < r.subsegments.size(); ++s) mesh.subsegments.push_back(moved(r.subsegments[s]));
   const auto links_and_vertices = [&] {
-    move_appending(r.link, mesh.link, [&](EdgeRef e) { return e == kNone ? e : EdgeRef{edge_of(ids.triangle_base, 0) + e}; });
+    move_appending(detail::link_slots(r), detail::link_slots(mesh), [&](EdgeRef e) { return e == kNone ? e : EdgeRef{edge_of(ids.triangle_base, 0) + e}; });
     mesh.take_vertices(r, ids.v0);
   };
   const auto corners_and_subsegments = [&] {
-    move_appending(r.corner, mesh.corner, [&](VertexId v) { return ids.vertex(v); });
-    move_appending(r.subseg, mesh.subseg, [&](SubsegmentId s) { return ids.record(s, mark); });
+    move_appending(detail::corner_slots(r), detail::corner_slots(mesh), [&](VertexId v) { return ids.vertex(v); });
+    move_appending(detail::subseg_slots(r), detail::subseg_slots(mesh), [&](SubsegmentId s) { return ids.record(s, mark); });
   };
   run_both(links_and_vertices, corners_and_subsegments);
   for (std::vector<double> Mesh::*array : kTriangleData) {
@@ -172,7 +173,7 @@ std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, 
     const EdgeRef e = stayed[k], f = moved[k];
     if (e == kNone || f == kNone) throw std::logic_error("the parts' cut edges do not match");
     mesh.bond(e, f);
-    if (mesh.subseg[e] == mark) mesh.subseg[e] = mesh.subseg[f] = kNone;
+    if (mesh.subseg[e] == mark) detail::subseg_slots(mesh)[e] = detail::subseg_slots(mesh)[f] = kNone;
   }
   return stayed;
 }

@@ -2,6 +2,7 @@
 // their corners (only one corner becomes the new vertex).
 #include "mesh/internal.h"
 #include "mesh/operations.h"
+#include "mesh/topology_writer.h"
 
 namespace deltri {
 
@@ -20,7 +21,7 @@ EdgeRef split_triangle(Mesh& mesh, EdgeRef e, VertexId v) {
   const TriangleId n2 = layout == SplitLayout::VertexFirst ? mesh.add_triangle(v, c, a) : mesh.add_triangle(c, a, v);
   detail::copy_triangle_data(mesh, t, n1);
   detail::copy_triangle_data(mesh, t, n2);
-  mesh.corner[t2] = v;
+  detail::corner_slots(mesh)[t2] = v;
   detail::attach(mesh, side(n1, 1), bc);
   detail::attach(mesh, side(n2, 1), ca);
   detail::bond_inner(mesh, t1, side(n1, 0));
@@ -43,7 +44,7 @@ EdgeRef split_edge(Mesh& mesh, EdgeRef e, VertexId v) {
   const detail::EdgeSurround bc = detail::surround_of(mesh, lnext(e));
   const TriangleId n1 = mesh.add_triangle(v, b, c);
   detail::copy_triangle_data(mesh, t, n1);
-  mesh.corner[lnext(e)] = v;
+  detail::corner_slots(mesh)[lnext(e)] = v;
   detail::attach(mesh, edge_of(n1, 1), bc);
   detail::bond_inner(mesh, lnext(e), edge_of(n1, 2));
   if (f != kNone) {
@@ -52,7 +53,7 @@ EdgeRef split_edge(Mesh& mesh, EdgeRef e, VertexId v) {
     const detail::EdgeSurround ad = detail::surround_of(mesh, lnext(f));
     const TriangleId n2 = mesh.add_triangle(v, a, d);
     detail::copy_triangle_data(mesh, u, n2);
-    mesh.corner[lnext(f)] = v;
+    detail::corner_slots(mesh)[lnext(f)] = v;
     detail::attach(mesh, edge_of(n2, 1), ad);
     detail::bond_inner(mesh, lnext(f), edge_of(n2, 2));
     detail::bond_inner(mesh, e, edge_of(n2, 0));

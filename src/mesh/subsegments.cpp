@@ -1,4 +1,5 @@
 #include "mesh/subsegments.h"
+#include "mesh/topology_writer.h"
 
 #include <vector>
 
@@ -40,7 +41,7 @@ void drop_dead_subsegments(Mesh& mesh) {
   }
   if (next == mesh.subsegments.size()) return;
   mesh.subsegments.resize(next);
-  for (SubsegmentId& s : mesh.subseg)
+  for (SubsegmentId& s : detail::subseg_slots(mesh))
     if (s != kNone) s = renumber[s];
 }
 
@@ -57,7 +58,7 @@ std::size_t drop_unused_subsegments(Mesh& mesh) {
     }
   // kill_triangle leaves subseg entries in dead slots; clear them before renumbering.
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
-    if (mesh.corner[e] == kNone) mesh.subseg[e] = kNone;
+    if (mesh.corner[e] == kNone) detail::subseg_slots(mesh)[e] = kNone;
   drop_dead_subsegments(mesh);
   return dropped;
 }
@@ -69,7 +70,7 @@ PeeledEdges peel_boundary_triangle(Mesh& mesh, EdgeRef e) {
   const Subsegment old = mesh.subsegments[id];
   const TriangleId t = triangle_of(e);
   mesh.kill_triangle(t);
-  for (unsigned i = 0; i < 3; ++i) mesh.subseg[edge_of(t, i)] = kNone;
+  for (unsigned i = 0; i < 3; ++i) detail::subseg_slots(mesh)[edge_of(t, i)] = kNone;
   mesh.subsegments[id] = {a, v, old.marker, old.segment};
   mesh.set_subsegment(out.av, id);
   constrain(mesh, out.vb, {v, b, old.marker, old.segment});

@@ -80,7 +80,7 @@ TEST(boundary_vertices_and_subsegment_ends_are_not_deleted) {
   Mesh m = unit_square();
   const VertexId c = m.add_vertex({0.5, 0.5}, VertexKind::Free);
   REQUIRE(insert_vertex(m, pred, c, 0_e).status == InsertStatus::Inserted);
-  const BigVector<VertexId> before = m.corner;
+  const BigVector<VertexId> before(m.corner.begin(), m.corner.end());
   std::vector<TriangleId> created;
   CHECK(!delete_vertex(m, pred, leaving(m, 0_v), created));  // a corner of the square
   CHECK(m.corner == before);

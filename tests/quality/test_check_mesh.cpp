@@ -8,6 +8,7 @@
 #include "harness/check.h"
 #include "harness/id_literals.h"
 #include "mesh/overlap.h"
+#include "mesh/topology_writer.h"
 #include "quality/check_mesh.h"
 #include "quality/mesh_builders.h"
 
@@ -96,7 +97,7 @@ TEST(fan_with_a_missing_triangle_has_one_reflex_turn) {
 
 TEST(one_sided_link_breaks_involution_and_opens_the_boundary) {
   Mesh m = diamond_short_diagonal();
-  m.link[5] = kNone;  // edge 1 still points at 5
+  detail::link_slots(m)[5] = kNone;  // edge 1 still points at 5
   const CheckReport r = check_mesh(m, hull_mode());
   CHECK(has_exactly(r, {{FaultKind::LinkNotInvolution, 1}, {FaultKind::OpenBoundary, 2}}));
   CHECK_EQ(r.example(FaultKind::LinkNotInvolution), 1u);
@@ -121,7 +122,7 @@ TEST(link_to_wrong_edge_has_unswapped_endpoints) {
 
 TEST(link_into_a_dead_slot) {
   Mesh m = diamond_short_diagonal();
-  m.corner[3] = m.corner[4] = m.corner[5] = kNone;  // killed without unlinking
+  detail::corner_slots(m)[3] = detail::corner_slots(m)[4] = detail::corner_slots(m)[5] = kNone;  // killed without unlinking
   m.free_triangles.push_back(1_t);
   const CheckReport r = check_mesh(m, CheckOptions{});
   CHECK(has_exactly(r, {{FaultKind::LinkToDeadTriangle, 1}, {FaultKind::OpenBoundary, 2}}));
@@ -224,9 +225,9 @@ TEST(subsegment_on_one_twin_only) {
   Mesh m = diamond_short_diagonal();
   m.enable_subsegments();
   m.subsegments.push_back({1_v, 3_v, 1, 0});
-  m.subseg[1] = 0_s;
+  detail::subseg_slots(m)[1] = 0_s;
   CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::SubsegmentMismatch, 1}}));
-  m.subseg[5] = 0_s;
+  detail::subseg_slots(m)[5] = 0_s;
   CHECK(check_mesh(m, CheckOptions{}).ok());
   m.subsegments[0] = {0_v, 2_v, 1, 0};  // a-c, but lying on b-d
   const CheckReport r = check_mesh(m, CheckOptions{});
@@ -236,7 +237,7 @@ TEST(subsegment_on_one_twin_only) {
 
 TEST(storage_faults_stop_the_later_layers) {
   Mesh m = diamond_long_diagonal();  // not Delaunay, but that must not be reached
-  m.corner[4] = 9_v;
+  detail::corner_slots(m)[4] = 9_v;
   const CheckReport r = check_mesh(m, hull_mode());
   CHECK(has_exactly(r, {{FaultKind::CornerOutOfRange, 1}}));
   CHECK_EQ(r.example(FaultKind::CornerOutOfRange), 1u);
@@ -246,7 +247,7 @@ TEST(storage_faults_stop_the_later_layers) {
 
 TEST(repeated_corner) {
   Mesh m = diamond_short_diagonal();
-  m.corner[4] = m.corner[3];
+  detail::corner_slots(m)[4] = m.corner[3];
   CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::RepeatedCorner, 1}}));
 }
 
@@ -268,16 +269,16 @@ TEST(free_list_faults) {
 
 TEST(ids_out_of_range) {
   Mesh m = diamond_short_diagonal();
-  m.link[0] = 6_e;
+  detail::link_slots(m)[0] = 6_e;
   m.enable_subsegments();
-  m.subseg[2] = 0_s;  // there are no subsegments
+  detail::subseg_slots(m)[2] = 0_s;  // there are no subsegments
   CHECK(has_exactly(check_mesh(m, CheckOptions{}),
                     {{FaultKind::LinkOutOfRange, 1}, {FaultKind::SubsegmentOutOfRange, 1}}));
 }
 
 TEST(array_sizes) {
   Mesh m = diamond_short_diagonal();
-  m.link.pop_back();
+  detail::link_slots(m).pop_back();
   m.kind.push_back(VertexKind::Input);
   const CheckReport r = check_mesh(m, CheckOptions{});
   CHECK(has_exactly(r, {{FaultKind::ArraySize, 2}}));

@@ -148,7 +148,8 @@ struct Snapshot {
   BigVector<SubsegmentId> subseg;
   std::size_t subsegments = 0;
   explicit Snapshot(const Mesh& m)
-      : points(m.points), corner(m.corner), link(m.link), subseg(m.subseg),
+      : points(m.points), corner(m.corner.begin(), m.corner.end()), link(m.link.begin(), m.link.end()),
+        subseg(m.subseg.begin(), m.subseg.end()),
         subsegments(m.subsegments.size()) {}
   bool operator==(const Snapshot&) const = default;
 };

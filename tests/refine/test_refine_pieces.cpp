@@ -10,6 +10,7 @@
 #include "mesh/internal.h"
 #include "mesh/mesh_checks.h"
 #include "mesh/operations.h"
+#include "mesh/topology_writer.h"
 #include "refine/bad_triangles.h"
 #include "refine/candidate_probe.h"
 #include "refine/clusters.h"
@@ -120,7 +121,7 @@ TEST(small_angle_between_two_subsegments_is_not_split) {
       CHECK(!a.skinny);
     }
   }
-  m.subseg.assign(m.subseg.size(), kNone);  // without the subsegments it is skinny
+  detail::subseg_slots(m).assign(m.subseg.size(), kNone);  // without the subsegments it is skinny
   bool found = false;
   for (TriangleId t{0}; t < m.triangle_slots(); ++t) found = found || assess_triangle(m, t, q).skinny;
   CHECK(found);
