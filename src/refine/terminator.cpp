@@ -276,6 +276,7 @@ void Terminator::refine_around(std::span<const TriangleId> triangles) {
   for (TriangleId t : triangles)
     if (t < mesh_.triangle_slots() && mesh_.is_live(t)) enqueue_if_bad(t);
   drain_queue();
+  mend_kept_boundary();
 }
 
 void Terminator::drain_queue() {

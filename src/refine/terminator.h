@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -95,6 +96,7 @@ class Terminator {
     bool no_better_double = false;  // at the bottom scale, no double near it improves the mesh
   };
   Outcome insert_point(TriangleId t, const Assessment& a, const Candidate& c, const Probe& probe);  // l.15-17
+  Outcome insert_free_vertex(const Point& p, const Probe& probe);  // l.16-17, no refusals
   Outcome split_encroached_instead(const QueuedTriangle& entry, const Assessment& a, const Probe& probe);  // l.18-25
   // Fig. 39 l.36-38; returns the number of subsegments split. owed_to_size: the splits are asked
   // for by a triangle over its size bound, and meet only the precision floor (floor_for).
@@ -131,6 +133,19 @@ class Terminator {
   bool stranded_point(TriangleId from, const Point& p);
   // -Y: would splitting interior subsegment s at p spoil the triangle on a kept subsegment?
   bool split_spoils_kept_boundary(EdgeRef s, const Point& p);
+  // -Y/-YY, once Q_t is empty (terminator_mending.cpp): the triangles left below the bound, worst
+  // first, get a point across their longest edge where that betters every triangle it replaces.
+  void mend_kept_boundary();
+  bool mend(TriangleId t);
+  double mending_score(TriangleId t, const Assessment& assessed, const Point& q);
+  struct MendTally {
+    double worst_sine2 = 1.0;  // of the smallest angles
+    std::size_t below_angle = 0, over_size = 0;
+    double tightest_area = HUGE_VAL;  // the least area bound among them
+  };
+  MendTally tally_replaced();
+  MendTally tally_made(const Point& q, double tightest_area);
+  static constexpr int kMendRounds = 4;
   double smallest_made_sine2(const Point& c);  // over the triangles c makes with the cavity's boundary
   double smallest_replaced_sine2();            // over the cavity's triangles
   bool budget_left();                   // the Steiner cap and -S
@@ -218,7 +233,8 @@ class Terminator {
   EncroachedQueue encroached_;       // Q_s
   RefineReport report_;
   std::vector<char> locked_;  // by subsegment record: a split failed for want of precision
-  std::vector<Point> lattice_scratch_;  // bottom_scale_point's candidates
+  std::vector<Point> lattice_scratch_;
+  std::vector<TriangleId> mend_scratch_;  // bad_replaced's list  // bottom_scale_point's candidates
   // Whether any split can come within kBottomScaleUlps of the coordinates: false when the feature
   // floor is above that everywhere and no size bound is given, and then the bottom-scale code is
   // skipped altogether (ordinary meshes).

@@ -16,6 +16,7 @@ void Terminator::refine_all() {
   for (TriangleId t{0}; t < mesh_.triangle_slots(); ++t)  // l.7
     if (mesh_.is_live(t)) enqueue_if_bad(t);                 // l.8-9
   drain_queue();                                             // l.10-11, the driver
+  mend_kept_boundary();                                       // -Y/-YY: the driver
   if (retries_locks()) retry_locked_encroachments();          // -D: the driver
 }
 
@@ -41,7 +42,12 @@ Outcome Terminator::insert_point(TriangleId t, const Assessment& a, const Candid
   // (counted by the closing survey).
   if (refused_by_kept_boundary(c.point, t)) return Outcome::KeptBoundary;
   if (const auto refusal = guard_insertion(a, c, probe.insertion_radius)) return *refusal;
-  const VertexId v = add_free_vertex(c.point, probe.container);
+  return insert_free_vertex(c.point, probe);
+}
+
+// l.16-17 for a point the probe found Clear.
+Outcome Terminator::insert_free_vertex(const Point& p, const Probe& probe) {
+  const VertexId v = add_free_vertex(p, probe.container);
   // The probe's cavity search left exactly the triangles c destroys marked.
   const InsertResult inserted =
       insert_vertex_into_cavity(mesh_, pred_, v, probe.container, probe.strictly_inside, marks_.marked());  // l.16

@@ -1,0 +1,124 @@
+// -Y / -YY: mending the triangles that refinement leaves below the angle bound next to a kept
+// boundary. Such a triangle's own Steiner point lies behind the kept boundary or in a kept
+// subsegment's lens (terminator_policies.cpp, rule 1), so Figure 38 never inserts anything for it,
+// and which vertex ends up as its apex depends on the order of earlier insertions. Most of these
+// triangles are caps: a vertex close to their longest edge. A point just across that edge, inside
+// the circumcircle, replaces the cap and its neighbour by triangles with that vertex and the point,
+// and often by better ones (eberly-6.poly -pYq30a0.0031: the 0.29 degree cap goes, the mesh's worst
+// becomes a 1.28 degree triangle elsewhere; Triangle 1.6 keeps a 0.31 degree one). So once Q_t is
+// empty each such triangle, worst first, is offered a few points along and across its longest edge,
+// and the best of them is inserted if every triangle it makes is better than the worst it replaces:
+// the smallest angle of the mesh never falls, and each round ends at the triangles it has.
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "geometry/constructions.h"
+#include "geometry/lattice.h"
+#include "refine/terminator.h"
+
+namespace deltri {
+
+void Terminator::mend_kept_boundary() {
+  // A caller's size test (-u) cannot judge triangles that do not exist yet.
+  if (opt_.no_steiner_on_segments == 0 || rules_.size_test != nullptr) return;
+  for (int round = 0; round < kMendRounds; ++round) {
+    std::vector<std::pair<double, TriangleId>> worst;
+    for (TriangleId t{0}; t < mesh_.triangle_slots(); ++t)
+      if (mesh_.is_live(t) && assess(t).skinny) worst.emplace_back(triangle_sine2(mesh_, t), t);
+    std::sort(worst.begin(), worst.end());
+    std::uint64_t mended = 0;
+    for (const auto& [sine2, t] : worst)
+      if (mesh_.is_live(t) && triangle_sine2(mesh_, t) == sine2 && budget_left()) mended += mend(t);
+    if (mended == 0) return;
+    // (nothing else: what the mending makes that still misses the bounds is counted)
+  }
+}
+
+// The point across t's longest edge a-b (away from the opposite corner o) at fractions f along it
+// and offsets h of its length: h = 0 is on the edge, the others in the neighbour's side of t's
+// circumcircle when t is a cap.
+bool Terminator::mend(TriangleId t) {
+  const auto c = mesh_.corners(t);
+  const auto len2 = [&](int i) { return squared_distance(mesh_.point(c[i]), mesh_.point(c[(i + 1) % 3])); };
+  int i = 0;
+  if (len2(1) > len2(i)) i = 1;
+  if (len2(2) > len2(i)) i = 2;
+  const Point& a = mesh_.point(c[i]);
+  const Point& b = mesh_.point(c[(i + 1) % 3]);
+  // t is counter-clockwise, so o lies left of a->b, and (dy, -dx) points right, away from it.
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const Assessment assessed = assess(t);
+  std::optional<Point> best;
+  double best_made = 0.0;
+  for (double f : {0.5, 0.25, 0.75, -0.25, 1.25})
+    for (double h : {0.0, 0.05, 0.1, 0.2, 0.4}) {
+      const Point q{a.x + f * dx + h * dy, a.y + f * dy - h * dx};
+      const double made = mending_score(t, assessed, q);
+      if (made > best_made) best_made = made, best = q;
+    }
+  if (!best) return false;
+  const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
+  const Probe probe = probe_candidate(mesh_, pred_, t, *best, rule_, marks_, splittable);
+  return insert_free_vertex(*best, probe) == Outcome::Inserted;
+}
+
+// The sin^2 of the smallest angle among the triangles q would make, if q may be inserted for t and
+// mends: its cavity holds t, every triangle q makes is better than the worst it replaces, and q
+// makes no more triangles below the angle bound, nor over the size bounds, than it replaces; else 0.
+double Terminator::mending_score(TriangleId t, const Assessment& assessed, const Point& q) {
+  const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
+  const Probe probe = probe_candidate(mesh_, pred_, t, q, rule_, marks_, splittable);
+  if (probe.status != ProbeStatus::Clear || !marks_.contains(t)) return 0.0;
+  const MendTally replaced = tally_replaced();
+  const MendTally made = tally_made(q, replaced.tightest_area);
+  if (!(made.worst_sine2 > replaced.worst_sine2) || made.below_angle > replaced.below_angle ||
+      made.over_size > replaced.over_size)
+    return 0.0;
+  // The rules of refused_by_kept_boundary are not asked: a point in a kept subsegment's lens, or
+  // one below the floor, makes a triangle no better than the worst it replaces, refused above.
+  if (guard_insertion(assessed, Candidate{q}, probe.insertion_radius)) return 0.0;
+  return made.worst_sine2;
+}
+
+// The cavity's triangles (marks_), each once: those with a boundary edge and the inner ones.
+Terminator::MendTally Terminator::tally_replaced() {
+  std::vector<TriangleId>& replaced = mend_scratch_;
+  replaced.assign(marks_.inner().begin(), marks_.inner().end());
+  for (EdgeRef e : marks_.boundary()) replaced.push_back(triangle_of(e));
+  std::sort(replaced.begin(), replaced.end());
+  replaced.erase(std::unique(replaced.begin(), replaced.end()), replaced.end());
+  MendTally tally;
+  for (TriangleId u : replaced) {
+    const double sine2 = triangle_sine2(mesh_, u);
+    const Assessment a = assess(u);
+    tally.worst_sine2 = std::min(tally.worst_sine2, sine2);
+    tally.below_angle += sine2 < kept_bound_sin2_;
+    tally.over_size += a.too_large;
+    if (const double bound = area_bound_of(mesh_, u, rules_for(u)); bound > 0.0)
+      tally.tightest_area = std::min(tally.tightest_area, bound);
+  }
+  return tally;
+}
+
+// The triangles q makes with the cavity's boundary, held to the global size bounds and to the
+// tightest area bound of the triangles they replace.
+Terminator::MendTally Terminator::tally_made(const Point& q, double tightest_area) {
+  const SizeBounds& size = rules_.size;
+  if (size.max_area > 0.0) tightest_area = std::min(tightest_area, size.max_area);
+  MendTally tally;
+  for (EdgeRef e : marks_.boundary()) {
+    const Point& a = mesh_.point(mesh_.org(e));
+    const Point& b = mesh_.point(mesh_.dest(e));
+    const double sine2 = smallest_angle_sine2(a, b, q);
+    tally.worst_sine2 = std::min(tally.worst_sine2, sine2);
+    tally.below_angle += sine2 < kept_bound_sin2_;
+    const double area = std::abs((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x)) / 2;
+    const double longest2 = std::max({squared_distance(a, b), squared_distance(b, q), squared_distance(q, a)});
+    tally.over_size += area > tightest_area ||
+                       (size.max_edge_length > 0.0 && longest2 > size.max_edge_length * size.max_edge_length);
+  }
+  return tally;
+}
+
+}  // namespace deltri
