@@ -16,7 +16,7 @@ void fill_points(api::Mesh& out, const Mesh& mesh, const VertexNumbering& number
   out.point_attribute_count = mesh.num_attributes;
   out.point_count = as_int(number.written_count(mesh.vertex_count()));
   if (sw.no_node) return;
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+  for (VertexId v{0}; v < mesh.vertex_count(); ++v) {
     if (!number.written(v)) continue;
     out.points.push_back(mesh.points[v].x);
     out.points.push_back(mesh.points[v].y);
@@ -34,7 +34,7 @@ void fill_triangles(api::Mesh& out, const PipelineResult& result, const VertexNu
   out.corner_count = mid ? 6 : 3;
   out.triangle_attribute_count = mesh.num_triangle_attributes;
   const std::vector<std::uint32_t> numbers = number_live_triangles(mesh);
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     if (!sw.no_ele) {
       for (EdgeRef e : edges_of(t)) out.triangles.push_back(as_int(number(mesh.corner[e])));
@@ -53,7 +53,7 @@ void fill_triangles(api::Mesh& out, const PipelineResult& result, const VertexNu
 // As write_poly_file's segments; without segments, the count of boundary edges (as Triangle).
 void fill_segments(api::Mesh& out, const Mesh& mesh, const VertexNumbering& number, const Switches& sw, bool poly_input) {
   if (!(poly_input || sw.convex_hull)) {
-    for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+    for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
       if (mesh.is_live(t))
         for (EdgeRef e : edges_of(t)) out.segment_count += mesh.link[e] == kNone;
     return;
@@ -61,7 +61,7 @@ void fill_segments(api::Mesh& out, const Mesh& mesh, const VertexNumbering& numb
   const LiveSubsegments live = find_live_subsegments(mesh);
   out.segment_count = as_int(live.count);
   if (sw.no_poly) return;
-  for (SubsegmentId s = 0; s < live.edge.size(); ++s) {
+  for (SubsegmentId s{0}; s < live.edge.size(); ++s) {
     const EdgeRef e = live.edge[s];
     if (e == kNone) continue;
     out.segments.push_back(as_int(number(mesh.org(e))));
@@ -76,7 +76,7 @@ void fill_edges(api::Mesh& out, const Mesh& mesh, const VertexNumbering& number,
   out.edge_count = as_int(count_edges(mesh));
   if (!sw.edges && !sw.voronoi) return;
   const std::vector<std::uint32_t> numbers = number_live_triangles(mesh);
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     const int here = as_int(triangle_number(numbers, t) + number.first_index);
     for (EdgeRef e : edges_of(t)) {
@@ -104,7 +104,7 @@ void fill_edges(api::Mesh& out, const Mesh& mesh, const VertexNumbering& number,
 // As write_voronoi_node_file.
 void fill_voronoi_points(api::Mesh& out, const Mesh& mesh) {
   std::vector<double> attributes;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     const Point cc = voronoi_vertex(mesh, t, attributes);
     out.voronoi_points.push_back(cc.x);

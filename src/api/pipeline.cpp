@@ -131,7 +131,7 @@ std::vector<std::uint32_t> vertex_numbering(const Mesh& mesh, bool jettison, con
       if (v != kNone) keep[v] = 1;
   }
   bool all = true;
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+  for (VertexId v{0}; v < mesh.vertex_count(); ++v) {
     if (mesh.kind[v] == VertexKind::Dead) keep[v] = 0;
     all = all && keep[v];
   }
@@ -139,7 +139,7 @@ std::vector<std::uint32_t> vertex_numbering(const Mesh& mesh, bool jettison, con
   if (all) return numbering;
   numbering.assign(mesh.vertex_count(), kNone);
   std::uint32_t next = 0;
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+  for (VertexId v{0}; v < mesh.vertex_count(); ++v)
     if (keep[v]) numbering[v] = next++;
   return numbering;
 }

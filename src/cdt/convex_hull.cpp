@@ -51,7 +51,7 @@ struct Run {
 std::size_t absorb_near_hull_vertices(Mesh& mesh, Predicates& pred) {
   if (!mesh.has_subsegments()) return 0;
   std::vector<EdgeRef> hull;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
     if (is_hull_edge(mesh, e)) hull.push_back(e);
   if (hull.size() < 3) return 0;
   // straight[e]: the hull edge after e when the hull goes on straight through dest(e).

@@ -25,8 +25,8 @@ std::vector<std::vector<Spoke>> segments_at(const Pslg& pslg, const Mesh& domain
   for (std::uint32_t i = 0; i < pslg.segments.size(); ++i) {
     const auto [a, b, marker] = pslg.segments[i];
     if (a == b) continue;
-    const Point& pa = domain.point(a);
-    const Point& pb = domain.point(b);
+    const Point& pa = domain.point(VertexId{a});
+    const Point& pb = domain.point(VertexId{b});
     at[a].push_back({std::atan2(pb.y - pa.y, pb.x - pa.x), i});
     at[b].push_back({std::atan2(pa.y - pb.y, pa.x - pb.x), i});
   }
@@ -53,7 +53,7 @@ double sector_width(const std::vector<Spoke>& spokes, std::size_t k) {
 std::vector<std::vector<char>> inside_sectors(const Mesh& domain, const std::vector<std::vector<Spoke>>& at) {
   std::vector<std::vector<char>> inside(at.size());
   for (std::size_t v = 0; v < at.size(); ++v) inside[v].assign(at[v].size() >= 2 ? at[v].size() : 0, 0);
-  for (TriangleId t = 0; t < domain.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < domain.triangle_slots(); ++t) {
     if (!domain.is_live(t)) continue;
     const auto c = domain.corners(t);
     for (int i = 0; i < 3; ++i) {
@@ -107,12 +107,12 @@ double distance_to_segment(const Point& p, const Point& a, const Point& b) {
 double feature_size(const Pslg& pslg, const Mesh& domain, VertexId a) {
   double nearest = HUGE_VAL;
   const Point& pa = domain.point(a);
-  for (VertexId v = 0; v < pslg.points.size(); ++v) {
+  for (VertexId v{0}; v < pslg.points.size(); ++v) {
     const Point& q = domain.point(v);
     if (v != a && domain.kind[v] == VertexKind::Input) nearest = std::min(nearest, std::hypot(q.x - pa.x, q.y - pa.y));
   }
   for (const Pslg::Segment& s : pslg.segments)
-    if (s.a != a && s.b != a) nearest = std::min(nearest, distance_to_segment(pa, domain.point(s.a), domain.point(s.b)));
+    if (s.a != a && s.b != a) nearest = std::min(nearest, distance_to_segment(pa, domain.point(VertexId{s.a}), domain.point(VertexId{s.b})));
   return nearest;
 }
 
@@ -179,10 +179,10 @@ void Lopper::split_cut_segments() {
     const Pslg::Segment seg = pslg_.segments[i];
     VertexId chain[4];
     std::size_t n = 0;
-    chain[n++] = seg.a;
+    chain[n++] = VertexId{seg.a};
     if (near_a != kNone) chain[n++] = near_a;
     if (near_b != kNone) chain[n++] = near_b;
-    chain[n++] = seg.b;
+    chain[n++] = VertexId{seg.b};
     pslg_.segments[i].b = chain[1];
     for (std::size_t k = 1; k + 1 < n; ++k) add_segment(chain[k], chain[k + 1], seg.marker, false);
   }
@@ -195,7 +195,7 @@ CornerLopping lop_corners(Pslg& pslg, const Mesh& domain) {
   const auto inside = inside_sectors(domain, at);
   // Every radius first, from X alone: the shields added to the PSLG are no features of X.
   std::vector<std::pair<VertexId, double>> shields;
-  for (VertexId v = 0; v < at.size(); ++v) {
+  for (VertexId v{0}; v < at.size(); ++v) {
     if (inside[v].empty() || !to_be_lopped(at[v], inside[v])) continue;
     const double r = feature_size(pslg, domain, v) / 3.0;
     if (r > 0.0 && std::isfinite(r)) shields.emplace_back(v, r);
@@ -209,7 +209,7 @@ CornerLopping lop_corners(Pslg& pslg, const Mesh& domain) {
 
 void forget_lopping_edges(Mesh& mesh, const std::vector<char>& internal) {
   if (internal.empty() || !mesh.has_subsegments()) return;  // no corner lopped: the mesh stays as it is
-  for (EdgeRef e = 0; e < mesh.subseg.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.subseg.size(); ++e) {
     const SubsegmentId s = mesh.subseg[e];
     if (s == kNone || !mesh.is_live(triangle_of(e))) continue;
     const std::uint32_t segment = mesh.subsegments[s].segment;

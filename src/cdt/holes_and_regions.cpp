@@ -45,7 +45,7 @@ TriangleId hole_triangle(const Mesh& mesh, const Location& at) {
 
 std::vector<TriangleId> hull_seeds(const Mesh& mesh) {
   std::vector<TriangleId> seeds;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
     if (mesh.corner[e] != kNone && mesh.link[e] == kNone && !constrained(mesh, e))
       seeds.push_back(triangle_of(e));
   return seeds;

@@ -33,7 +33,7 @@ SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Ps
   SegmentReport report;
   mesh.enable_subsegments();
   std::vector<VertexId> kept(mesh.vertex_count());
-  for (VertexId v = 0; v < kept.size(); ++v) kept[v] = v;
+  for (VertexId v{0}; v < kept.size(); ++v) kept[v] = v;
   for (const auto& [dup, original] : duplicates) kept[dup] = original;
 
   // Clean every segment first: ends remapped, kNone marking the ignored ones.

@@ -11,7 +11,7 @@ void assign_boundary_markers(Mesh& mesh, bool input_had_markers) {
     for (const VertexId v : {s.a, s.b})
       if (mesh.marker[v] == 0) mesh.marker[v] = s.marker;
   }
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.corner[e] == kNone || mesh.link[e] != kNone) continue;
     for (const VertexId v : {mesh.org(e), mesh.dest(e)})
       if (mesh.marker[v] == 0) mesh.marker[v] = 1;

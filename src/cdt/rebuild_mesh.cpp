@@ -42,7 +42,7 @@ void drop_midpoint_nodes(Mesh& mesh, const EleData& ele) {
     if (i % 6 < 3) role[v] = 1;
     else if (role[v] == 0) role[v] = 2;
   }
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+  for (VertexId v{0}; v < mesh.vertex_count(); ++v)
     if (role[v] == 2) mesh.kind[v] = VertexKind::Dead;
 }
 
@@ -64,7 +64,7 @@ void protect_boundary(Mesh& mesh) { constrain_boundary(mesh, 1); }
 
 void make_constrained_delaunay(Mesh& mesh, Predicates& pred) {
   ConstrainedEditor editor(mesh, pred);
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
     if (mesh.corner[e] != kNone && mesh.link[e] != kNone && mesh.link[e] > e) editor.legalize_from(e);
 }
 

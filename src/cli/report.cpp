@@ -127,7 +127,7 @@ void Messages::finished(const Mesh& mesh, const RunReport& r) const {
   std::string files;
   for (const auto& w : r.written) files += " " + w;
   std::size_t used = 0;
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+  for (VertexId v{0}; v < mesh.vertex_count(); ++v)
     used += mesh.kind[v] != VertexKind::Duplicate && mesh.kind[v] != VertexKind::Dead;
   if (r.jettisoned_vertex_count) used = *r.jettisoned_vertex_count;
   std::string input = plural(r.input_vertices, "vertex", "vertices");

@@ -35,7 +35,10 @@
 #include <bit>
 #include <cmath>
 #include <thread>
+#include <type_traits>
 #include <utility>
+
+#include "mesh/topology_writer.h"
 
 namespace deltri {
 namespace {
@@ -170,10 +173,24 @@ void radix_sort(BigVector<KeyedVertex>& items, int threads) {
 
 // --- the triangulation builder ---
 
+// The builder keeps raw arrays (issue 20 allows this one file to): it fills slots 3t..3t+2 of
+// its triangles by hand, so inside it the ids are plain integers and lnext, lprev and triangle_of
+// are its own. The mesh's arrays of Id<...> are read through std::uint32_t pointers, which
+// raw() checks is the same layout.
 class Builder {
+  using VertexId = std::uint32_t;
+  using TriangleId = std::uint32_t;
+  using EdgeRef = std::uint32_t;
+  static constexpr EdgeRef lnext(EdgeRef e) { return e % 3 == 2 ? e - 2 : e + 1; }
+  static constexpr EdgeRef lprev(EdgeRef e) { return e % 3 == 0 ? e + 2 : e - 1; }
+  static constexpr TriangleId triangle_of(EdgeRef e) { return e / 3; }
+
  public:
   // `key` null: vertical cuts at the median of points in x order (-l).
-  Builder(Point* pts, VertexId* order, VertexId* corner, EdgeRef* link, const MortonKey* key)
+  Builder(Point* pts, deltri::VertexId* order, BigVector<deltri::VertexId>& corner, BigVector<deltri::EdgeRef>& link,
+          const MortonKey* key)
+      : Builder(pts, order, raw(corner), raw(link), key) {}
+  Builder(Point* pts, deltri::VertexId* order, VertexId* corner, EdgeRef* link, const MortonKey* key)
       : p_(pts), order_(order), corner_(corner), link_(link), key_(key) {}
 
   // Triangulates sites [lo, lo+n) into triangle slots starting at `slot` and returns a ghost
@@ -201,8 +218,14 @@ class Builder {
   Predicates pred;
 
  private:
+  template <class Tag>
+  static std::uint32_t* raw(BigVector<Id<Tag>>& ids) {
+    static_assert(sizeof(Id<Tag>) == sizeof(std::uint32_t) && std::is_standard_layout_v<Id<Tag>>);
+    return reinterpret_cast<std::uint32_t*>(ids.data());
+  }
+
   Point* p_;
-  VertexId* order_;
+  deltri::VertexId* order_;
   VertexId* corner_;
   EdgeRef* link_;
   const MortonKey* key_;
@@ -359,7 +382,7 @@ class Builder {
 // Guibas-Stolfi merge. The base edge l->r starts as the lower common tangent and climbs until it
 // becomes the upper one; the region above it is bounded by ghost triangles of both halves, `gl`
 // and `gr` being those on the base's ends.
-TriangleId Builder::merge(TriangleId left_ring, TriangleId right_ring, int axis, TriangleId slot) {
+Builder::TriangleId Builder::merge(TriangleId left_ring, TriangleId right_ring, int axis, TriangleId slot) {
   // Lower common tangent: walk l clockwise around the left hull and r counter-clockwise around the
   // right hull while the other end sees past the current hull edge.
   TriangleId in_l = extreme_ghost(left_ring, axis, true, true);      // ghost over w->l
@@ -451,7 +474,7 @@ BigVector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, in
   const std::size_t n = mesh.vertex_count();
   const bool two = worth_two(threads, n);
   std::size_t first_half = 0, all = 0;  // Input vertices in [0, n/2), in [0, n)
-  for (VertexId v = 0; v < n; ++v) {
+  for (VertexId v{0}; v < n; ++v) {
     if (v == n / 2) first_half = all;
     all += mesh.kind[v] == VertexKind::Input;
   }
@@ -542,9 +565,9 @@ void permute_in_place(Point* points, VertexId* order, std::size_t n) {
 
 // Deletes the ghost triangles and packs the live ones into the first slots.
 void remove_ghosts(Mesh& mesh) {
-  const TriangleId slots = mesh.triangle_slots();
-  for (TriangleId t = 0; t < slots; ++t) {
-    if (mesh.corner[3 * t + 2] == kGhostVertex) mesh.kill_triangle(t);
+  const std::uint32_t slots = mesh.triangle_slots();
+  for (TriangleId t{0}; t < slots; ++t) {
+    if (mesh.corner[edge_of(t, 2)] == kGhostVertex) mesh.kill_triangle(t);
   }
   mesh.compact_triangles();
 }
@@ -555,9 +578,9 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
                                  std::vector<std::pair<VertexId, VertexId>>& duplicates,
                                  PredicateCounters& counters) {
   const int threads = std::max(1, options.threads);
-  mesh.corner.clear();
-  mesh.link.clear();
-  mesh.subseg.clear();
+  detail::corner_slots(mesh).clear();
+  detail::link_slots(mesh).clear();
+  detail::subseg_slots(mesh).clear();
   mesh.free_triangles.clear();
 
   const MortonKey key(mesh.points, mesh.kind, threads);
@@ -573,7 +596,7 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   // of vertices that take no part (duplicates, other kinds) are kept aside.
   const std::size_t total = mesh.points.size();
   std::vector<std::pair<VertexId, Point>> bystanders;
-  for (VertexId v = 0; v < total; ++v)
+  for (VertexId v{0}; v < total; ++v)
     if (mesh.kind[v] != VertexKind::Input) bystanders.emplace_back(v, mesh.points[v]);
   BigVector<Point> sorted;
   BigVector<VertexId> order;
@@ -588,15 +611,15 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   const std::size_t slots = 2 * static_cast<std::size_t>(m) - 2;
   // Zero-filling the two arrays (and faulting in their pages) is done by a thread each.
   split_in_two(2, worth_two(threads, m), [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k) (k == 0 ? mesh.corner : mesh.link).resize(3 * slots);
+    for (std::size_t k = from; k < to; ++k) k == 0 ? detail::corner_slots(mesh).resize(3 * slots) : detail::link_slots(mesh).resize(3 * slots);
   });
-  Builder builder(sorted.data(), order.data(), mesh.corner.data(), mesh.link.data(), cut_key);
+  Builder builder(sorted.data(), order.data(), detail::corner_slots(mesh), detail::link_slots(mesh), cut_key);
   builder.build(0, m, 0, threads);
   counters.add(builder.pred.counters);
 
   split_in_two(mesh.corner.size(), worth_two(threads, m), [&](std::size_t from, std::size_t to) {
     for (std::size_t e = from; e < to; ++e)
-      if (mesh.corner[e] != kGhostVertex) mesh.corner[e] = order[mesh.corner[e]];
+      if (mesh.corner[e] != kGhostVertex) detail::corner_slots(mesh)[e] = order[mesh.corner[e]];
   });
   // The bystanders' ids complete the permutation: their slots past m are empty and get the
   // bystanders' coordinates afterwards.

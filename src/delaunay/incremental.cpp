@@ -89,7 +89,7 @@ std::vector<VertexId> distinct_inputs(Mesh& mesh,
                                       std::vector<std::pair<VertexId, VertexId>>& duplicates) {
   clear_triangles(mesh);
   std::vector<VertexId> ids;
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+  for (VertexId v{0}; v < mesh.vertex_count(); ++v)
     if (mesh.kind[v] == VertexKind::Input) ids.push_back(v);
   const auto& p = mesh.points;
   std::sort(ids.begin(), ids.end(), [&p](VertexId a, VertexId b) {
@@ -120,7 +120,7 @@ void incremental_delaunay(Mesh& mesh, Predicates& pred,
   if (pred.orient2d(mesh.point(order[0]), mesh.point(order[1]), mesh.point(order[2])) < 0)
     std::swap(order[0], order[1]);
   seed_with_ghosts(mesh, order[0], order[1], order[2]);
-  EdgeRef hint = 0;
+  EdgeRef hint{0};
   for (std::size_t k = 3; k < order.size(); ++k) {
     const InsertResult r = insert_vertex(mesh, pred, order[k], hint);
     if (r.status == InsertStatus::Inserted) hint = r.edge;

@@ -8,7 +8,7 @@ namespace deltri {
 
 void lawson_pass(Mesh& mesh, Predicates& pred) {
   std::vector<EdgeRef> stack;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
     if (mesh.link[e] != kNone && mesh.link[e] > e) stack.push_back(e);
   // A far vertex inside (or, by the tie rule, on) the circle makes a convex quadrilateral, so
   // the flip is valid; each flip lowers the perturbed lifted surface, so the loop ends.

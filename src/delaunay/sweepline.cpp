@@ -198,7 +198,7 @@ class Sweep {
 bool tiles_convex_hull(const Mesh& mesh, Predicates& pred, std::size_t distinct) {
   std::vector<EdgeRef> next_boundary(mesh.vertex_count(), kNone);
   std::size_t boundary = 0;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
     if (mesh.link[e] == kNone) {
       if (next_boundary[mesh.org(e)] != kNone) return false;
       next_boundary[mesh.org(e)] = e;
@@ -207,7 +207,7 @@ bool tiles_convex_hull(const Mesh& mesh, Predicates& pred, std::size_t distinct)
   if (boundary < 3 || mesh.triangle_slots() + 2 + boundary != 2 * distinct) return false;
   // Walk the loop: it must close after `boundary` steps, turning left or going straight.
   const EdgeRef first = [&] {
-    for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+    for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
       if (mesh.link[e] == kNone) return e;
     return EdgeRef{kNone};
   }();

@@ -6,7 +6,7 @@ namespace deltri {
 
 std::uint32_t count_edges(const Mesh& mesh) {
   std::uint32_t count = 0;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (mesh.is_live(t))
       for (EdgeRef e : edges_of(t)) count += edge_written_here(mesh, e);
   return count;
@@ -21,7 +21,7 @@ void write_edge_file(ByteSink& sink, const Mesh& mesh, const EdgeWriteOptions& o
   out.next_integer(options.markers ? 1 : 0);
   out.end_line();
   long long index = options.first_index;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     for (EdgeRef e : edges_of(t)) {
       if (!edge_written_here(mesh, e)) continue;

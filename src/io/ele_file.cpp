@@ -79,7 +79,7 @@ void write_ele_file(ByteSink& sink, const Mesh& mesh, const EleWriteOptions& opt
   out.end_line();
   long long index = options.first_index;
   const std::size_t fields = (mid ? 7 : 4) + static_cast<std::size_t>(na);
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     if (fields <= TextWriter::kMaxLineFields) {
       TextWriter::Line line = out.line(fields);

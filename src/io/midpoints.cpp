@@ -10,7 +10,7 @@ std::vector<VertexId> add_edge_midpoints(Mesh& mesh) {
   // Vertex markers exist in every output run (assign_boundary_markers fills them), but a mesh
   // built without them must not gain a half-filled array.
   const bool markers = !mesh.marker.empty();
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     for (EdgeRef e : edges_of(t)) {
       // Edge e runs from corner e to corner lnext(e): it lies opposite corner lprev(e).

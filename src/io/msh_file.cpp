@@ -92,10 +92,11 @@ struct MshContent {
       if (mid) f(number((*mid)[lprev(e)]));
       return;
     }
-    for (EdgeRef c = 0; c < 3; ++c) f(number(mesh.corner[e + c]));
+    const TriangleId t = triangle_of(e);  // e is its first edge
+    for (unsigned c = 0; c < 3; ++c) f(number(mesh.corner[edge_of(t, c)]));
     // Gmsh orders the midpoints by edge: (0,1), (1,2), (2,0), i.e. opposite corners 2, 0, 1.
     if (mid)
-      for (EdgeRef c : {2u, 0u, 1u}) f(number((*mid)[e + c]));
+      for (unsigned c : {2u, 0u, 1u}) f(number((*mid)[edge_of(t, c)]));
   }
   // Calls f(set, group, first, end) for each non-empty block of set.order.
   template <class F>
@@ -169,7 +170,7 @@ void write_nodes(MshOut& out, const MshContent& c, int version) {
     out.count_line(c.node_count);
   } else {
     long long min_tag = 0, max_tag = 0;
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    for (VertexId v{0}; v < mesh.vertex_count(); ++v)
       if (c.number.written(v)) {
         if (min_tag == 0) min_tag = c.number(v);
         max_tag = c.number(v);
@@ -179,7 +180,7 @@ void write_nodes(MshOut& out, const MshContent& c, int version) {
     if (c.node_count > 0) {
       out.i32(2), out.i32(1), out.i32(0), out.u64(c.node_count);
       out.end_line();
-      for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+      for (VertexId v{0}; v < mesh.vertex_count(); ++v)
         if (c.number.written(v)) {
           out.u64(c.number(v));
           out.end_line();
@@ -189,7 +190,7 @@ void write_nodes(MshOut& out, const MshContent& c, int version) {
   if (!out.binary && version == 41) {
     write_points_xyz(out.ascii, mesh, c.number);
   } else {
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+    for (VertexId v{0}; v < mesh.vertex_count(); ++v) {
       if (!c.number.written(v)) continue;
       if (out.binary) {
         if (version == 22) out.raw.put(static_cast<std::int32_t>(c.number(v)));
@@ -264,7 +265,7 @@ void write_data_view(MshOut& out, const std::string& name, const MshContent& c,
                      double (*value)(const Mesh&, VertexId, int), int k) {
   out.text("$NodeData\n1\n\"" + name + "\"\n1\n0\n3\n0\n1\n");
   out.count_line(c.node_count);
-  for (VertexId v = 0; v < c.mesh.vertex_count(); ++v) {
+  for (VertexId v{0}; v < c.mesh.vertex_count(); ++v) {
     if (!c.number.written(v)) continue;
     out.i32(c.number(v));
     out.f64(value(c.mesh, v, k));
@@ -284,7 +285,7 @@ void write_msh_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& optio
     c.lines.items = boundary_and_segment_edges(mesh);
     for (EdgeRef e : c.lines.items) line_values.push_back(edge_marker(mesh, e));
   }
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     c.triangles.items.push_back(edge_of(t, 0));
     surface_values.push_back(na > 0 ? mesh.triangle_attributes[static_cast<std::size_t>(t) * na] : 1.0);
@@ -306,7 +307,7 @@ void write_msh_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& optio
       }
   }
   if (c.triangles.items.empty())
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    for (VertexId v{0}; v < mesh.vertex_count(); ++v)
       if (c.number.written(v)) c.triangles.boxes[0].add(mesh.points[v]);
 
   sink.expect(static_cast<std::size_t>(c.node_count) * 56 + c.triangles.items.size() * (c.mid ? 64 : 36));

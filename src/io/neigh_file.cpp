@@ -12,7 +12,7 @@ void write_neigh_file(ByteSink& sink, const Mesh& mesh, int first_index) {
   out.next_integer(3);
   out.end_line();
   long long index = first_index;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     out.integer(index++);
     for (unsigned k = 0; k < 3; ++k) {

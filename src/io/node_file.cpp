@@ -317,7 +317,7 @@ void write_vertex_line(Out& out, const Mesh& mesh, const NodeWriteOptions& optio
 void write_vertex_lines(TextWriter& out, const Mesh& mesh, const NodeWriteOptions& options) {
   const VertexNumbering number{options.numbering, options.first_index};
   const std::size_t fields = 4 + static_cast<std::size_t>(mesh.num_attributes);
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+  for (VertexId v{0}; v < mesh.vertex_count(); ++v) {
     if (!number.written(v)) continue;
     if (fields <= TextWriter::kMaxLineFields) {
       TextWriter::Line line = out.line(fields);
@@ -331,7 +331,7 @@ void write_vertex_lines(TextWriter& out, const Mesh& mesh, const NodeWriteOption
 std::uint32_t written_vertex_count(const Mesh& mesh, const NodeWriteOptions& options) {
   if (!options.numbering) return mesh.vertex_count();
   std::uint32_t count = 0;
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v) count += (*options.numbering)[v] != kNone;
+  for (VertexId v{0}; v < mesh.vertex_count(); ++v) count += (*options.numbering)[v] != kNone;
   return count;
 }
 

@@ -19,7 +19,7 @@ struct VertexNumbering {
   bool written(VertexId v) const { return map == nullptr || (*map)[v] != kNone; }
   std::uint32_t written_count(std::uint32_t vertex_count) const {
     std::uint32_t n = 0;
-    for (VertexId v = 0; v < vertex_count; ++v) n += written(v);
+    for (VertexId v{0}; v < vertex_count; ++v) n += written(v);
     return n;
   }
   long long operator()(VertexId v) const {

@@ -140,7 +140,7 @@ LiveSubsegments find_live_subsegments(const Mesh& mesh) {
   if (!mesh.has_subsegments()) return live;
   live.edge.assign(mesh.subsegments.size(), kNone);
   live.boundary.assign(mesh.subsegments.size(), false);
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     for (EdgeRef e : edges_of(t)) {
       const SubsegmentId s = mesh.subseg[e];
@@ -164,7 +164,7 @@ void write_segments(TextWriter& out, const Mesh& mesh, const PolyWriteOptions& o
   out.next_integer(options.markers ? 1 : 0);
   out.end_line();
   long long index = options.first_index;
-  for (SubsegmentId s = 0; s < live.edge.size(); ++s) {
+  for (SubsegmentId s{0}; s < live.edge.size(); ++s) {
     const EdgeRef e = live.edge[s];
     if (e == kNone) continue;
     out.integer(index++);

@@ -25,7 +25,7 @@ class Canvas {
  public:
   Canvas(const Mesh& mesh, const VertexNumbering& number, const std::vector<Point>& holes) {
     Box box;
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    for (VertexId v{0}; v < mesh.vertex_count(); ++v)
       if (number.written(v)) box.add(mesh.points[v]);
     for (const Point& h : holes) box.add(h);
     if (box.empty()) box = Box{0, 0, 1, 1};
@@ -55,7 +55,7 @@ void write_svg_file(ByteSink& sink, const Mesh& mesh, const SvgOptions& options)
   const VertexNumbering number{options.mesh.numbering, options.first_index};
   const Canvas canvas(mesh, number, options.holes);
   std::array<std::vector<TriangleId>, kShades> shade;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     const auto [a, b, c] = mesh.corner_points(t);
     const double angle = smallest_angle_degrees(a, b, c);
@@ -97,7 +97,7 @@ void write_svg_file(ByteSink& sink, const Mesh& mesh, const SvgOptions& options)
   out.text("</g>\n");
   if (mesh.has_subsegments()) {
     out.text("<path fill=\"none\" stroke=\"black\" stroke-width=\"15\" stroke-linecap=\"round\" d=\"");
-    for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
       if (!mesh.is_live(t)) continue;
       for (EdgeRef e : edges_of(t)) {
         if (mesh.subseg[e] == kNone || !(mesh.link[e] == kNone || mesh.link[e] > e)) continue;
@@ -120,7 +120,7 @@ void write_svg_file(ByteSink& sink, const Mesh& mesh, const SvgOptions& options)
   }
   if (options.vertex_numbers) {
     out.text("<g font-family=\"sans-serif\" font-size=\"90\" fill=\"#003\">\n");
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+    for (VertexId v{0}; v < mesh.vertex_count(); ++v) {
       if (!number.written(v) || mesh.kind[v] == VertexKind::Duplicate || mesh.kind[v] == VertexKind::Dead) continue;
       out.text("<text x=\"");
       out.integer(canvas.x(mesh.points[v]) + 20);

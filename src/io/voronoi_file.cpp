@@ -35,7 +35,7 @@ void write_voronoi_node_file(ByteSink& sink, const Mesh& mesh, int first_index) 
   out.end_line();
   std::vector<double> attributes;
   long long index = first_index;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     const Point cc = voronoi_vertex(mesh, t, attributes);
     out.integer(index++);
@@ -56,7 +56,7 @@ void write_voronoi_edge_file(ByteSink& sink, const Mesh& mesh, int first_index) 
   out.next_integer(0);
   out.end_line();
   long long index = first_index;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     const long long here = static_cast<long long>(triangle_number(numbers, t)) + first_index;
     for (EdgeRef e : edges_of(t)) {

@@ -35,12 +35,12 @@ void write_binary_vtu(ByteSink& sink, const Mesh& mesh, const ExportOptions& opt
   const std::uint32_t point_count = number.written_count(mesh.vertex_count());
   const std::vector<EdgeRef> lines = options.markers ? boundary_and_segment_edges(mesh) : std::vector<EdgeRef>{};
   std::vector<TriangleId> triangles;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (mesh.is_live(t)) triangles.push_back(t);
   const std::size_t cells = lines.size() + triangles.size();
   const int nva = mesh.num_attributes, nta = mesh.num_triangle_attributes;
   const auto each_point = [&](BinaryWriter& w, const std::function<void(BinaryWriter&, VertexId)>& f) {
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    for (VertexId v{0}; v < mesh.vertex_count(); ++v)
       if (number.written(v)) f(w, v);
   };
   std::vector<RawArray> point_data, cell_data, geometry;
@@ -76,9 +76,9 @@ void write_binary_vtu(ByteSink& sink, const Mesh& mesh, const ExportOptions& opt
                           if (mid) put((*mid)[lprev(e)]);
                         }
                         for (TriangleId t : triangles) {
-                          for (EdgeRef c = 0; c < 3; ++c) put(mesh.corner[edge_of(t, c)]);
+                          for (unsigned c = 0; c < 3; ++c) put(mesh.corner[edge_of(t, c)]);
                           if (mid)
-                            for (EdgeRef c : {2u, 0u, 1u}) put((*mid)[edge_of(t, c)]);
+                            for (unsigned c : {2u, 0u, 1u}) put((*mid)[edge_of(t, c)]);
                         }
                       }});
   geometry.push_back({"Int64", "offsets", 1, cells, 8, [&](BinaryWriter& w) {
@@ -131,7 +131,7 @@ void write_vtu_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& optio
   const std::uint32_t point_count = number.written_count(mesh.vertex_count());
   const std::vector<EdgeRef> lines = options.markers ? boundary_and_segment_edges(mesh) : std::vector<EdgeRef>{};
   std::vector<TriangleId> triangles;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (mesh.is_live(t)) triangles.push_back(t);
   const std::size_t cells = lines.size() + triangles.size();
   const int nva = mesh.num_attributes, nta = mesh.num_triangle_attributes;
@@ -144,7 +144,7 @@ void write_vtu_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& optio
            "\" NumberOfCells=\"" + std::to_string(cells) + "\">\n<PointData>\n");
   if (options.markers && !mesh.marker.empty()) {
     open_array(out, "Int32", "marker");
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    for (VertexId v{0}; v < mesh.vertex_count(); ++v)
       if (number.written(v)) {
         out.integer(mesh.marker[v]);
         out.end_line();
@@ -153,7 +153,7 @@ void write_vtu_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& optio
   }
   for (int k = 0; k < nva; ++k) {
     open_array(out, "Float64", "attribute_" + std::to_string(k + 1));
-    for (VertexId v = 0; v < mesh.vertex_count(); ++v)
+    for (VertexId v{0}; v < mesh.vertex_count(); ++v)
       if (number.written(v)) {
         out.real(mesh.attributes[static_cast<std::size_t>(v) * nva + k]);
         out.end_line();
@@ -199,7 +199,7 @@ void write_vtu_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& optio
     line.next_integer(number(c));
     // VTK orders the midpoints by edge: (0,1), (1,2), (2,0), i.e. opposite corners 2, 0, 1.
     if (mid)
-      for (EdgeRef c : {2u, 0u, 1u}) line.next_integer(number((*mid)[edge_of(t, c)]));
+      for (unsigned c : {2u, 0u, 1u}) line.next_integer(number((*mid)[edge_of(t, c)]));
     line.end_line();
   }
   out.text("</DataArray>\n");

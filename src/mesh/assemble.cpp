@@ -1,4 +1,5 @@
 #include "mesh/assemble.h"
+#include "mesh/topology_writer.h"
 
 #include <algorithm>
 #include <vector>
@@ -6,17 +7,17 @@
 namespace deltri {
 
 void clear_triangles(Mesh& mesh) {
-  mesh.corner.clear();
-  mesh.link.clear();
-  mesh.subseg.clear();
+  detail::corner_slots(mesh).clear();
+  detail::link_slots(mesh).clear();
+  detail::subseg_slots(mesh).clear();
   mesh.free_triangles.clear();
   mesh.triangle_attributes.clear();
   mesh.area_bound.clear();
 }
 
 void reserve_triangles(Mesh& mesh, std::size_t triangles) {
-  mesh.corner.reserve(mesh.corner.size() + 3 * triangles);
-  mesh.link.reserve(mesh.link.size() + 3 * triangles);
+  detail::corner_slots(mesh).reserve(mesh.corner.size() + 3 * triangles);
+  detail::link_slots(mesh).reserve(mesh.link.size() + 3 * triangles);
 }
 
 TriangleId append_unlinked(Mesh& mesh, VertexId a, VertexId b, VertexId c) {
@@ -46,22 +47,23 @@ using Kind = AssemblyProblem::Kind;
 
 AssemblyProblem add_triangles(Mesh& mesh, Predicates& pred, std::span<const std::uint32_t> corners,
                               std::uint32_t count, std::uint32_t stride) {
-  mesh.corner.assign(3 * static_cast<std::size_t>(count), kNone);
-  mesh.link.assign(3 * static_cast<std::size_t>(count), kNone);
-  mesh.subseg.clear();
+  detail::corner_slots(mesh).assign(3 * static_cast<std::size_t>(count), kNone);
+  detail::link_slots(mesh).assign(3 * static_cast<std::size_t>(count), kNone);
+  detail::subseg_slots(mesh).clear();
   mesh.free_triangles.clear();
-  for (TriangleId t = 0; t < count; ++t) {
-    const std::uint32_t* c = &corners[static_cast<std::size_t>(t) * stride];
+  for (TriangleId t{0}; t < count; ++t) {
+    const std::uint32_t* in = &corners[static_cast<std::size_t>(t) * stride];
+    const VertexId c[3] = {VertexId{in[0]}, VertexId{in[1]}, VertexId{in[2]}};
     if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0]) return {Kind::RepeatedVertex, t};
     if (pred.orient2d(mesh.point(c[0]), mesh.point(c[1]), mesh.point(c[2])) <= 0) return {Kind::Clockwise, t};
-    for (unsigned i = 0; i < 3; ++i) mesh.corner[edge_of(t, i)] = c[i];
+    for (unsigned i = 0; i < 3; ++i) detail::corner_slots(mesh)[edge_of(t, i)] = c[i];
   }
   return {};
 }
 
 AssemblyProblem pair_edges(Mesh& mesh) {
   std::vector<EdgeKey> keys(mesh.corner.size());
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) keys[e] = {undirected(mesh.org(e), mesh.dest(e)), e};
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) keys[e] = {undirected(mesh.org(e), mesh.dest(e)), e};
   std::sort(keys.begin(), keys.end());
   for (std::size_t i = 0; i < keys.size();) {
     std::size_t j = i + 1;

@@ -2,6 +2,7 @@
 
 #include "mesh/internal.h"
 #include "mesh/operations.h"
+#include "mesh/topology_writer.h"
 
 namespace deltri {
 namespace {
@@ -64,7 +65,7 @@ TriangleId merge_last_three(Mesh& mesh, EdgeRef out) {
   const TriangleId t1 = triangle_of(in_t1), t2 = triangle_of(in_t2);
   const VertexId u2 = mesh.org(in_t2);
   const detail::EdgeSurround s12 = detail::surround_of(mesh, in_t1), s20 = detail::surround_of(mesh, in_t2);
-  mesh.corner[e0] = u2;
+  detail::corner_slots(mesh)[e0] = u2;
   detail::attach(mesh, e2, s12);
   detail::attach(mesh, e0, s20);
   detail::release(mesh, t1);

@@ -41,7 +41,7 @@ class Certificate {
   // The edges without a twin, each vertex leaving at most one (two: a "bow tie", refused).
   bool collect_boundary() {
     leaving_.assign(mesh_.vertex_count(), kNone);
-    for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {
+    for (EdgeRef e{0}; e < mesh_.corner.size(); ++e) {
       if (!mesh_.is_live(triangle_of(e)) || mesh_.link[e] != kNone) continue;
       if (leaving_[mesh_.org(e)] != kNone) return false;
       leaving_[mesh_.org(e)] = static_cast<std::uint32_t>(boundary_.size());

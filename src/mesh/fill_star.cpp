@@ -4,6 +4,7 @@
 // triangle beyond the first); here each is written once.
 #include "mesh/internal.h"
 #include "mesh/operations.h"
+#include "mesh/topology_writer.h"
 
 namespace deltri::detail {
 namespace {
@@ -69,15 +70,15 @@ EdgeRef fill_star(Mesh& m, Predicates& pred, VertexId v, const KnownCavity& cavi
     slot[j] = first                        ? owner
               : spare < cavity.inner.size() ? cavity.inner[spare++]
                                             : m.add_triangle(kNone, kNone, kNone);
-    const EdgeRef e = 3 * slot[j];
-    m.corner[e] = org[j];
-    m.corner[e + 1] = dest[j];
-    m.corner[e + 2] = v;
+    const EdgeRef e = edge_of(slot[j], 0);
+    detail::corner_slots(m)[e] = org[j];
+    detail::corner_slots(m)[e + 1] = dest[j];
+    detail::corner_slots(m)[e + 2] = v;
     attach(m, e, {outside_link[j], outside_seg[j]});
     if (!first) copy_triangle_data(m, owner, slot[j]);
   }
-  for (std::size_t j = 0; j < n; ++j) bond_inner(m, 3 * slot[j] + 1, 3 * slot[next[j]] + 2);
-  return 3 * slot[0] + 2;
+  for (std::size_t j = 0; j < n; ++j) bond_inner(m, edge_of(slot[j], 1), edge_of(slot[next[j]], 2));
+  return edge_of(slot[0], 2);
 }
 
 }  // namespace deltri::detail

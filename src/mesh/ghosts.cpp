@@ -18,7 +18,7 @@ void seed_with_ghosts(Mesh& mesh, VertexId a, VertexId b, VertexId c) {
 }
 
 void remove_ghosts(Mesh& mesh) {
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (mesh.is_live(t) && detail::is_ghost(mesh, t)) mesh.kill_triangle(t);
   mesh.compact_triangles();
 }

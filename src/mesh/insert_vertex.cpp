@@ -24,7 +24,7 @@ bool must_flip(const Mesh& m, Predicates& pred, EdgeRef e, VertexId v) {
 }
 
 EdgeRef leaving(const Mesh& m, TriangleId t, VertexId v) {
-  return 3 * t + detail::corner_index(m, t, v);
+  return edge_of(t, detail::corner_index(m, t, v));
 }
 
 // Locates v and splits what it falls in (Inserted: an edge leaving v, no flips yet), or says why

@@ -3,6 +3,7 @@
 
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
+#include "mesh/topology_writer.h"
 
 namespace deltri {
 struct KnownCavity;
@@ -12,8 +13,8 @@ namespace deltri::detail {
 
 // Ghost triangles carry kGhostVertex as one corner; geometry must never be asked about them.
 inline bool is_ghost(const Mesh& m, TriangleId t) {
-  return m.corner[3 * t] == kGhostVertex || m.corner[3 * t + 1] == kGhostVertex ||
-         m.corner[3 * t + 2] == kGhostVertex;
+  return m.corner[edge_of(t, 0)] == kGhostVertex || m.corner[edge_of(t, 1)] == kGhostVertex ||
+         m.corner[edge_of(t, 2)] == kGhostVertex;
 }
 
 inline bool carries_subsegment(const Mesh& m, EdgeRef e) {
@@ -32,15 +33,15 @@ inline EdgeSurround surround_of(const Mesh& m, EdgeRef e) {
 }
 
 inline void attach(Mesh& m, EdgeRef e, EdgeSurround s) {
-  m.link[e] = s.link;
-  if (s.link != kNone) m.link[s.link] = e;
-  if (!m.subseg.empty()) m.subseg[e] = s.seg;
+  detail::link_slots(m)[e] = s.link;
+  if (s.link != kNone) detail::link_slots(m)[s.link] = e;
+  if (!m.subseg.empty()) detail::subseg_slots(m)[e] = s.seg;
 }
 
 // Bonds two edges that are new to each other and therefore interior to the change: no subsegment.
 inline void bond_inner(Mesh& m, EdgeRef e, EdgeRef f) {
   m.bond(e, f);
-  if (!m.subseg.empty()) m.subseg[e] = m.subseg[f] = kNone;
+  if (!m.subseg.empty()) detail::subseg_slots(m)[e] = detail::subseg_slots(m)[f] = kNone;
 }
 
 // Children of a split triangle inherit its region attributes and area bound.
@@ -55,14 +56,14 @@ inline void copy_triangle_data(Mesh& m, TriangleId from, TriangleId to) {
 // Frees a slot whose neighbours have already been re-attached elsewhere, so they must not be
 // unlinked by kill_triangle.
 inline void release(Mesh& m, TriangleId t) {
-  m.link[3 * t] = m.link[3 * t + 1] = m.link[3 * t + 2] = kNone;
+  detail::link_slots(m)[edge_of(t, 0)] = detail::link_slots(m)[edge_of(t, 1)] = detail::link_slots(m)[edge_of(t, 2)] = kNone;
   m.kill_triangle(t);
 }
 
 // The side of t whose origin is v, or 3 if v is not a corner of t.
 inline unsigned corner_index(const Mesh& m, TriangleId t, VertexId v) {
   unsigned i = 0;
-  while (i < 3 && m.corner[3 * t + i] != v) ++i;
+  while (i < 3 && m.corner[edge_of(t, i)] != v) ++i;
   return i;
 }
 

@@ -23,12 +23,12 @@ struct SideChooser {
 Location classify(TriangleId t, const double (&o)[3]) {
   const bool z0 = o[0] == 0, z1 = o[1] == 0, z2 = o[2] == 0;
   // Two collinear sides meet at the vertex between them: the origin of the later side.
-  if (z0 && z1) return {LocateStatus::OnVertex, 3 * t + 1};
-  if (z1 && z2) return {LocateStatus::OnVertex, 3 * t + 2};
-  if (z2 && z0) return {LocateStatus::OnVertex, 3 * t};
+  if (z0 && z1) return {LocateStatus::OnVertex, edge_of(t, 1)};
+  if (z1 && z2) return {LocateStatus::OnVertex, edge_of(t, 2)};
+  if (z2 && z0) return {LocateStatus::OnVertex, edge_of(t, 0)};
   for (unsigned i = 0; i < 3; ++i)
-    if (o[i] == 0) return {LocateStatus::OnEdge, 3 * t + i};
-  return {LocateStatus::InTriangle, 3 * t};
+    if (o[i] == 0) return {LocateStatus::OnEdge, edge_of(t, i)};
+  return {LocateStatus::InTriangle, edge_of(t, 0)};
 }
 
 double side_test(const Mesh& m, Predicates& pred, EdgeRef e, const Point& p) {
@@ -38,16 +38,16 @@ double side_test(const Mesh& m, Predicates& pred, EdgeRef e, const Point& p) {
 // The triangle containing p among all live real triangles, or Outside with a boundary edge that p
 // is strictly right of (`fallback` if that is one).
 Location scan(const Mesh& m, Predicates& pred, const Point& p, EdgeRef fallback) {
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t) || detail::is_ghost(m, t)) continue;
     double o[3];
     bool inside = true;
     for (unsigned i = 0; i < 3 && inside; ++i)
-      inside = (o[i] = side_test(m, pred, 3 * t + i, p)) >= 0;
+      inside = (o[i] = side_test(m, pred, edge_of(t, i), p)) >= 0;
     if (inside) return classify(t, o);
   }
   if (fallback != kNone) return {LocateStatus::Outside, fallback};
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     const TriangleId t = triangle_of(e);
     if (!m.is_live(t) || detail::is_ghost(m, t)) continue;
     const bool boundary = m.link[e] == kNone || detail::is_ghost(m, triangle_of(m.link[e]));
@@ -63,12 +63,12 @@ TriangleId start_triangle(const Mesh& m, EdgeRef hint) {
     const TriangleId t = triangle_of(hint);
     if (!detail::is_ghost(m, t)) return t;
     for (unsigned i = 0; i < 3; ++i) {
-      const EdgeRef e = 3 * t + i;
+      const EdgeRef e = edge_of(t, i);
       if (m.org(e) != kGhostVertex && m.dest(e) != kGhostVertex && m.link[e] != kNone)
         return triangle_of(m.link[e]);
     }
   }
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t)
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t)
     if (m.is_live(t) && !detail::is_ghost(m, t)) return t;
   return kNone;
 }
@@ -89,7 +89,7 @@ Location locate(const Mesh& mesh, Predicates& pred, const Point& p, EdgeRef hint
     EdgeRef exit = kNone;
     for (unsigned j = 0; j < 3 && exit == kNone; ++j) {
       const unsigned i = (first + j) % 3;
-      const EdgeRef e = 3 * t + i;
+      const EdgeRef e = edge_of(t, i);
       o[i] = e == entered ? 1.0 : side_test(mesh, pred, e, p);  // entered from its far side
       if (o[i] < 0) exit = e;
     }

@@ -5,10 +5,13 @@
 namespace deltri {
 
 TriangleId Mesh::add_triangle(VertexId a, VertexId b, VertexId c) {
+  auto& corner = this->corner.slots_;
+  auto& link = this->link.slots_;
+  auto& subseg = this->subseg.slots_;
   if (free_triangles.empty()) return append_triangle(a, b, c);
   const TriangleId t = free_triangles.back();
   free_triangles.pop_back();
-  const EdgeRef e = 3 * t;
+  const EdgeRef e = edge_of(t, 0);
   corner[e] = a;
   corner[e + 1] = b;
   corner[e + 2] = c;
@@ -20,7 +23,10 @@ TriangleId Mesh::add_triangle(VertexId a, VertexId b, VertexId c) {
 // push_back rather than resize: resize's out-of-line value-initialisation showed in profiles of
 // refinement, which appends a triangle for every two it creates.
 TriangleId Mesh::append_triangle(VertexId a, VertexId b, VertexId c) {
-  const TriangleId t = triangle_slots();
+  auto& corner = this->corner.slots_;
+  auto& link = this->link.slots_;
+  auto& subseg = this->subseg.slots_;
+  const TriangleId t{triangle_slots()};
   for (VertexId v : {a, b, c}) corner.push_back(v);
   for (int i = 0; i < 3; ++i) link.push_back(kNone);
   if (!subseg.empty())
@@ -32,8 +38,10 @@ TriangleId Mesh::append_triangle(VertexId a, VertexId b, VertexId c) {
 }
 
 void Mesh::kill_triangle(TriangleId t) {
+  auto& corner = this->corner.slots_;
+  auto& link = this->link.slots_;
   for (unsigned i = 0; i < 3; ++i) {
-    const EdgeRef e = 3 * t + i;
+    const EdgeRef e = edge_of(t, i);
     if (link[e] != kNone) link[link[e]] = kNone;
     link[e] = kNone;
     corner[e] = kNone;
@@ -42,7 +50,7 @@ void Mesh::kill_triangle(TriangleId t) {
 }
 
 VertexId Mesh::add_vertex(const Point& p, VertexKind k) {
-  const VertexId v = vertex_count();
+  const VertexId v{vertex_count()};
   points.push_back(p);
   kind.push_back(k);
   if (!marker.empty()) marker.push_back(0);
@@ -66,22 +74,27 @@ void Mesh::interpolate_attributes(VertexId v, VertexId a, VertexId b) {
 }
 
 void Mesh::enable_subsegments() {
+  auto& corner = this->corner.slots_;
+  auto& subseg = this->subseg.slots_;
   if (subseg.size() != corner.size()) subseg.assign(corner.size(), kNone);
 }
 
 void Mesh::compact_triangles() {
+  auto& corner = this->corner.slots_;
+  auto& link = this->link.slots_;
+  auto& subseg = this->subseg.slots_;
   if (free_triangles.empty()) return;
-  TriangleId last = triangle_slots();
+  TriangleId last{triangle_slots()};
   const int na = num_triangle_attributes;
   // Fill each dead slot below the end with the last live triangle.
-  TriangleId write = 0;
+  TriangleId write{0};
   while (true) {
     while (write < last && is_live(write)) ++write;
-    while (last > write && !is_live(last - 1)) --last;
+    while (last > write && !is_live(TriangleId{last - 1})) --last;
     if (write >= last) break;
-    const TriangleId from = last - 1;
+    const TriangleId from{last - 1};
     for (unsigned i = 0; i < 3; ++i) {
-      const EdgeRef src = 3 * from + i, dst = 3 * write + i;
+      const EdgeRef src = edge_of(from, i), dst = edge_of(write, i);
       corner[dst] = corner[src];
       link[dst] = link[src];
       if (link[dst] != kNone) link[link[dst]] = dst;
@@ -123,7 +136,7 @@ Mesh Mesh::part_with(const std::vector<VertexId>& vertices, const std::vector<Su
   }
   m.num_triangle_attributes = num_triangle_attributes;
   std::vector<VertexId> local(points.size(), kNone);
-  for (VertexId i = 0; i < vertices.size(); ++i) local[vertices[i]] = i;
+  for (VertexId i{0}; i < vertices.size(); ++i) local[vertices[i]] = i;
   m.subsegments.reserve(records.size() + records.size() / 4);
   for (SubsegmentId s : records) {
     Subsegment r = subsegments[s];

@@ -59,6 +59,34 @@ struct Subsegment {
   std::uint32_t segment = kNone;  // index of the input segment it is part of
 };
 
+namespace detail {
+struct TopologyWriter;  // mesh/topology_writer.h: the kernel's write access
+}
+
+// One of the three topology arrays (corner, link, subseg): anyone reads it like a vector (m.corner[e],
+// m.corner.size()); only Mesh's own members and the kernel's operations, through
+// detail::TopologyWriter, write it. Everything is inline: reads cost what a vector's do.
+template <class T>
+class TopologyArray {
+ public:
+  using value_type = T;
+  const T& operator[](std::size_t i) const { return slots_[i]; }
+  std::size_t size() const { return slots_.size(); }
+  std::size_t capacity() const { return slots_.capacity(); }
+  bool empty() const { return slots_.empty(); }
+  const T* data() const { return slots_.data(); }
+  auto begin() const { return slots_.begin(); }
+  auto end() const { return slots_.end(); }
+  // Equal contents (tests compare meshes and snapshots slot by slot).
+  friend bool operator==(const TopologyArray& a, const TopologyArray& b) { return a.slots_ == b.slots_; }
+  friend bool operator==(const TopologyArray& a, const BigVector<T>& b) { return a.slots_ == b; }
+
+ private:
+  friend struct Mesh;
+  friend struct detail::TopologyWriter;
+  BigVector<T> slots_;
+};
+
 struct Mesh {
   // Vertices. A new per-vertex array must also be carried by part_with and take_vertices.
   BigVector<Point> points;
@@ -67,10 +95,10 @@ struct Mesh {
   int num_attributes = 0;
   std::vector<double> attributes;   // num_attributes per vertex
 
-  // Triangles.
-  BigVector<VertexId> corner;
-  BigVector<EdgeRef> link;
-  BigVector<SubsegmentId> subseg;
+  // Triangles: the topology, read by all, written by src/mesh/ only.
+  TopologyArray<VertexId> corner;
+  TopologyArray<EdgeRef> link;
+  TopologyArray<SubsegmentId> subseg;
   std::vector<TriangleId> free_triangles;
   int num_triangle_attributes = 0;
   std::vector<double> triangle_attributes;  // num_triangle_attributes per triangle
@@ -118,8 +146,8 @@ struct Mesh {
   void kill_triangle(TriangleId t);
   // Makes e and f twins.
   void bond(EdgeRef e, EdgeRef f) {
-    link[e] = f;
-    link[f] = e;
+    link.slots_[e] = f;
+    link.slots_[f] = e;
   }
   // Adds a vertex and returns its id; attributes are zero and the marker 0.
   VertexId add_vertex(const Point& p, VertexKind k);
@@ -130,14 +158,14 @@ struct Mesh {
   void enable_subsegments();
   // Attaches subsegment s to edge e and its twin.
   void set_subsegment(EdgeRef e, SubsegmentId s) {
-    subseg[e] = s;
-    if (link[e] != kNone) subseg[link[e]] = s;
+    subseg.slots_[e] = s;
+    if (link[e] != kNone) subseg.slots_[link[e]] = s;
   }
   // Room for `triangles` triangles in the triangle arrays without a reallocation.
   void reserve_triangles(std::size_t triangles) {
-    corner.reserve(3 * triangles);
-    link.reserve(3 * triangles);
-    if (has_subsegments()) subseg.reserve(3 * triangles);
+    corner.slots_.reserve(3 * triangles);
+    link.slots_.reserve(3 * triangles);
+    if (has_subsegments()) subseg.slots_.reserve(3 * triangles);
   }
   // Moves live triangles over dead slots so that every slot is live (ids change).
   void compact_triangles();

@@ -2,6 +2,7 @@
 // place(), which differs only in which slot takes which triangle and where each triangle starts.
 #include "mesh/internal.h"
 #include "mesh/operations.h"
+#include "mesh/topology_writer.h"
 
 namespace deltri {
 namespace {
@@ -14,9 +15,9 @@ EdgeRef place(Mesh& m, EdgeRef at, VertexId x0, VertexId x1, VertexId x2, detail
               detail::EdgeSurround s2) {
   const EdgeRef side0 = shift == 0 ? at : shift == 1 ? lnext(at) : lprev(at);
   const EdgeRef side1 = lnext(side0), side2 = lprev(side0);
-  m.corner[side0] = x0;
-  m.corner[side1] = x1;
-  m.corner[side2] = x2;
+  detail::corner_slots(m)[side0] = x0;
+  detail::corner_slots(m)[side1] = x1;
+  detail::corner_slots(m)[side2] = x2;
   detail::attach(m, side1, s1);
   detail::attach(m, side2, s2);
   return side0;

@@ -16,7 +16,7 @@ class OverlapFinder {
 
   std::optional<OverlapFinding> run() {
     std::vector<TriangleId> live;
-    for (TriangleId t = 0; t < mesh_.triangle_slots(); ++t)
+    for (TriangleId t{0}; t < mesh_.triangle_slots(); ++t)
       if (mesh_.is_live(t)) live.push_back(t);
     std::vector<Box> boxes;
     boxes.reserve(live.size());
@@ -30,7 +30,7 @@ class OverlapFinder {
   }
 
  private:
-  const Point& corner(TriangleId t, unsigned i) const { return mesh_.point(mesh_.corner[3 * t + i]); }
+  const Point& corner(TriangleId t, unsigned i) const { return mesh_.point(mesh_.corner[edge_of(t, i)]); }
 
   Box box_of(TriangleId t) const {
     Box b;
@@ -39,7 +39,7 @@ class OverlapFinder {
   }
 
   bool is_corner(VertexId v, TriangleId t) const {
-    return mesh_.corner[3 * t] == v || mesh_.corner[3 * t + 1] == v || mesh_.corner[3 * t + 2] == v;
+    return mesh_.corner[edge_of(t, 0)] == v || mesh_.corner[edge_of(t, 1)] == v || mesh_.corner[edge_of(t, 2)] == v;
   }
 
   // An edge line of `t` with all of u's corners on its closed outer (right) side.
@@ -56,7 +56,7 @@ class OverlapFinder {
   // A corner of u, not a corner of t, in the closed triangle t.
   bool corner_on(TriangleId t, TriangleId u) {
     for (unsigned i = 0; i < 3; ++i) {
-      const VertexId v = mesh_.corner[3 * u + i];
+      const VertexId v = mesh_.corner[edge_of(u, i)];
       if (is_corner(v, t)) continue;
       const Point& p = mesh_.point(v);
       if (pred_.orient2d(corner(t, 0), corner(t, 1), p) >= 0 && pred_.orient2d(corner(t, 1), corner(t, 2), p) >= 0 &&
@@ -70,7 +70,7 @@ class OverlapFinder {
     // Two corners in common: an edge shared in opposite directions (the same direction is a
     // repeated directed edge, rejected before), so the two lie on opposite sides of it.
     int shared = 0;
-    for (unsigned i = 0; i < 3; ++i) shared += is_corner(mesh_.corner[3 * u + i], t);
+    for (unsigned i = 0; i < 3; ++i) shared += is_corner(mesh_.corner[edge_of(u, i)], t);
     if (shared >= 2) return std::nullopt;
     if (!separates(t, u) && !separates(u, t)) return OverlapFinding{t, u, true};
     if (corner_on(t, u) || corner_on(u, t)) return OverlapFinding{t, u, false};

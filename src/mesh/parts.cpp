@@ -7,6 +7,7 @@
 #include "mesh/lawson.h"
 #include "mesh/operations.h"
 #include "util/run_both.h"
+#include "mesh/topology_writer.h"
 
 namespace deltri {
 namespace {
@@ -42,7 +43,7 @@ std::vector<Id> marked_ids(const std::vector<char>& marked) {
 void list_part_ids(const Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, std::vector<char> keep) {
   keep.resize(mesh.vertex_count(), 0);
   std::vector<char> records(mesh.subsegments.size(), 0);
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!moves[t] || !mesh.is_live(t)) continue;
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
@@ -62,26 +63,26 @@ void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, 
   const std::vector<VertexId> vertex = cut.vertex_map(mesh.vertex_count());
   const std::vector<SubsegmentId> record_of = local_ids(cut.records, mesh.subsegments.size());
   Mesh& r = cut.part;
-  const TriangleId n = r.triangle_slots();
+  const std::uint32_t n = r.triangle_slots();
   std::size_t width[std::size(kTriangleData)];
   for (std::size_t k = 0; k < std::size(kTriangleData); ++k) {
     width[k] = data_width(mesh, kTriangleData[k]);
     (r.*kTriangleData[k]).resize(static_cast<std::size_t>(n) * width[k]);
   }
   const auto record = [&](SubsegmentId s) { return s < mesh.subsegments.size(); };
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!moves[t] || !mesh.is_live(t)) continue;
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i), f = edge_of(slot[t], i);
       const EdgeRef twin = mesh.link[e];
       const bool on_cut = twin != kNone && !moves[triangle_of(twin)];
-      r.corner[f] = vertex[mesh.corner[e]];
-      r.link[f] = twin == kNone || on_cut ? kNone : edge_of(slot[triangle_of(twin)], side_of(twin));
+      detail::corner_slots(r)[f] = vertex[mesh.corner[e]];
+      detail::link_slots(r)[f] = twin == kNone || on_cut ? kNone : edge_of(slot[triangle_of(twin)], side_of(twin));
       SubsegmentId s = mesh.subseg[e];
       if (on_cut) cut.cut_keys.push_back(edge_key(mesh.corner[twin], mesh.corner[lnext(twin)]));
       if (record(s)) (on_cut ? cut.cut_records : cut.part_records)[s] = 1;
-      if (on_cut && s == kNone) mesh.subseg[twin] = s = mark;
-      r.subseg[f] = record(s) ? record_of[s] : s;
+      if (on_cut && s == kNone) detail::subseg_slots(mesh)[twin] = s = mark;
+      detail::subseg_slots(r)[f] = record(s) ? record_of[s] : s;
     }
     for (std::size_t k = 0; k < std::size(kTriangleData); ++k) {
       const auto& from = mesh.*kTriangleData[k];
@@ -102,16 +103,16 @@ CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId 
   cut.part_records.assign(mesh.subsegments.size(), 0);
   cut.cut_records.assign(mesh.subsegments.size(), 0);
   std::vector<TriangleId> slot(mesh.triangle_slots(), kNone);
-  TriangleId n = 0;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+  TriangleId n{0};
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (moves[t] && mesh.is_live(t)) slot[t] = n++;
   Mesh& r = cut.part;
-  r.corner.resize(3 * static_cast<std::size_t>(n));
-  r.link.resize(r.corner.size());
-  r.subseg.resize(r.corner.size());
+  detail::corner_slots(r).resize(3 * static_cast<std::size_t>(n));
+  detail::link_slots(r).resize(r.corner.size());
+  detail::subseg_slots(r).resize(r.corner.size());
   copy_part(mesh, cut, moves, slot, mark);
   std::sort(cut.cut_keys.begin(), cut.cut_keys.end());
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (moves[t] && mesh.is_live(t)) mesh.kill_triangle(t);  // unlinks the other side's cut edges
   return cut;
 }
@@ -123,25 +124,25 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark) {
   const PartIds ids{&cut.vertices,
                     &cut.records,
                     static_cast<VertexId>(cut.vertices.size()),
-                    mesh.vertex_count(),
+                    VertexId{mesh.vertex_count()},
                     static_cast<SubsegmentId>(cut.records.size()),
                     static_cast<SubsegmentId>(mesh.subsegments.size()),
-                    mesh.triangle_slots()};
+                    TriangleId{mesh.triangle_slots()}};
   const auto moved = [&](Subsegment s) {
     s.a = ids.vertex(s.a);
     s.b = ids.vertex(s.b);
     return s;
   };
-  for (SubsegmentId s = 0; s < ids.s0; ++s)
+  for (SubsegmentId s{0}; s < ids.s0; ++s)
     if (cut.part_records[cut.records[s]]) mesh.subsegments[cut.records[s]] = moved(r.subsegments[s]);
   for (SubsegmentId s = ids.s0; s < r.subsegments.size(); ++s) mesh.subsegments.push_back(moved(r.subsegments[s]));
   const auto links_and_vertices = [&] {
-    move_appending(r.link, mesh.link, [&](EdgeRef e) { return e == kNone ? kNone : edge_of(ids.triangle_base, 0) + e; });
+    move_appending(detail::link_slots(r), detail::link_slots(mesh), [&](EdgeRef e) { return e == kNone ? e : EdgeRef{edge_of(ids.triangle_base, 0) + e}; });
     mesh.take_vertices(r, ids.v0);
   };
   const auto corners_and_subsegments = [&] {
-    move_appending(r.corner, mesh.corner, [&](VertexId v) { return ids.vertex(v); });
-    move_appending(r.subseg, mesh.subseg, [&](SubsegmentId s) { return ids.record(s, mark); });
+    move_appending(detail::corner_slots(r), detail::corner_slots(mesh), [&](VertexId v) { return ids.vertex(v); });
+    move_appending(detail::subseg_slots(r), detail::subseg_slots(mesh), [&](SubsegmentId s) { return ids.record(s, mark); });
   };
   run_both(links_and_vertices, corners_and_subsegments);
   for (std::vector<double> Mesh::*array : kTriangleData) {
@@ -157,7 +158,7 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark) {
 std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, SubsegmentId mark) {
   const std::vector<std::uint64_t>& keys = cut.cut_keys;
   std::vector<EdgeRef> stayed(keys.size(), kNone), moved(keys.size(), kNone);
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.link[e] != kNone || mesh.corner[e] == kNone) continue;
     const SubsegmentId s = mesh.subseg[e];
     if (s != mark && (s >= cut.cut_records.size() || !cut.cut_records[s])) continue;
@@ -172,7 +173,7 @@ std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, 
     const EdgeRef e = stayed[k], f = moved[k];
     if (e == kNone || f == kNone) throw std::logic_error("the parts' cut edges do not match");
     mesh.bond(e, f);
-    if (mesh.subseg[e] == mark) mesh.subseg[e] = mesh.subseg[f] = kNone;
+    if (mesh.subseg[e] == mark) detail::subseg_slots(mesh)[e] = detail::subseg_slots(mesh)[f] = kNone;
   }
   return stayed;
 }

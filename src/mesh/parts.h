@@ -45,14 +45,16 @@ CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId 
 struct PartIds {
   const std::vector<VertexId>* vertices = nullptr;  // CutOff::vertices, CutOff::records
   const std::vector<SubsegmentId>* records = nullptr;
-  VertexId v0 = 0, vertex_base = 0;
-  SubsegmentId s0 = 0, record_base = 0;
-  TriangleId triangle_base = 0;
-  VertexId vertex(VertexId v) const { return v == kNone ? v : v < v0 ? (*vertices)[v] : vertex_base + (v - v0); }
-  SubsegmentId record(SubsegmentId s, SubsegmentId mark) const {
-    return s == kNone || s == mark ? s : s < s0 ? (*records)[s] : record_base + (s - s0);
+  VertexId v0{0}, vertex_base{0};
+  SubsegmentId s0{0}, record_base{0};
+  TriangleId triangle_base{0};
+  VertexId vertex(VertexId v) const {
+    return v == kNone ? v : v < v0 ? (*vertices)[v] : VertexId{vertex_base + (v - v0)};
   }
-  TriangleId triangle(TriangleId t) const { return triangle_base + t; }
+  SubsegmentId record(SubsegmentId s, SubsegmentId mark) const {
+    return s == kNone || s == mark ? s : s < s0 ? (*records)[s] : SubsegmentId{record_base + (s - s0)};
+  }
+  TriangleId triangle(TriangleId t) const { return TriangleId{triangle_base + t}; }
 };
 
 // Appends cut.part (refined apart since) to mesh after its own triangles, vertices and records:

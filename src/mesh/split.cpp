@@ -2,6 +2,7 @@
 // their corners (only one corner becomes the new vertex).
 #include "mesh/internal.h"
 #include "mesh/operations.h"
+#include "mesh/topology_writer.h"
 
 namespace deltri {
 
@@ -12,21 +13,21 @@ EdgeRef split_triangle(Mesh& mesh, EdgeRef e, VertexId v) {
   constexpr unsigned shift = layout == SplitLayout::VertexFirst ? 0 : 2;
   const auto side = [](TriangleId n, unsigned logical) { return edge_of(n, (logical + shift) % 3); };
   const TriangleId t = triangle_of(e);
-  const EdgeRef t0 = edge_of(t, 0);
-  const VertexId a = mesh.corner[t0], b = mesh.corner[t0 + 1], c = mesh.corner[t0 + 2];
-  const detail::EdgeSurround bc = detail::surround_of(mesh, t0 + 1);
-  const detail::EdgeSurround ca = detail::surround_of(mesh, t0 + 2);
+  const EdgeRef t0 = edge_of(t, 0), t1 = edge_of(t, 1), t2 = edge_of(t, 2);
+  const VertexId a = mesh.corner[t0], b = mesh.corner[t1], c = mesh.corner[t2];
+  const detail::EdgeSurround bc = detail::surround_of(mesh, t1);
+  const detail::EdgeSurround ca = detail::surround_of(mesh, t2);
   const TriangleId n1 = layout == SplitLayout::VertexFirst ? mesh.add_triangle(v, b, c) : mesh.add_triangle(b, c, v);
   const TriangleId n2 = layout == SplitLayout::VertexFirst ? mesh.add_triangle(v, c, a) : mesh.add_triangle(c, a, v);
   detail::copy_triangle_data(mesh, t, n1);
   detail::copy_triangle_data(mesh, t, n2);
-  mesh.corner[t0 + 2] = v;
+  detail::corner_slots(mesh)[t2] = v;
   detail::attach(mesh, side(n1, 1), bc);
   detail::attach(mesh, side(n2, 1), ca);
-  detail::bond_inner(mesh, t0 + 1, side(n1, 0));
-  detail::bond_inner(mesh, t0 + 2, side(n2, 2));
+  detail::bond_inner(mesh, t1, side(n1, 0));
+  detail::bond_inner(mesh, t2, side(n2, 2));
   detail::bond_inner(mesh, side(n1, 2), side(n2, 0));
-  return t0 + 2;
+  return t2;
 }
 
 template EdgeRef split_triangle<SplitLayout::VertexFirst>(Mesh&, EdgeRef, VertexId);
@@ -43,20 +44,20 @@ EdgeRef split_edge(Mesh& mesh, EdgeRef e, VertexId v) {
   const detail::EdgeSurround bc = detail::surround_of(mesh, lnext(e));
   const TriangleId n1 = mesh.add_triangle(v, b, c);
   detail::copy_triangle_data(mesh, t, n1);
-  mesh.corner[lnext(e)] = v;
-  detail::attach(mesh, 3 * n1 + 1, bc);
-  detail::bond_inner(mesh, lnext(e), 3 * n1 + 2);
+  detail::corner_slots(mesh)[lnext(e)] = v;
+  detail::attach(mesh, edge_of(n1, 1), bc);
+  detail::bond_inner(mesh, lnext(e), edge_of(n1, 2));
   if (f != kNone) {
     const TriangleId u = triangle_of(f);
     const VertexId a = mesh.org(e), d = mesh.apex(f);
     const detail::EdgeSurround ad = detail::surround_of(mesh, lnext(f));
     const TriangleId n2 = mesh.add_triangle(v, a, d);
     detail::copy_triangle_data(mesh, u, n2);
-    mesh.corner[lnext(f)] = v;
-    detail::attach(mesh, 3 * n2 + 1, ad);
-    detail::bond_inner(mesh, lnext(f), 3 * n2 + 2);
-    detail::bond_inner(mesh, e, 3 * n2);
-    detail::bond_inner(mesh, 3 * n1, f);
+    detail::corner_slots(mesh)[lnext(f)] = v;
+    detail::attach(mesh, edge_of(n2, 1), ad);
+    detail::bond_inner(mesh, lnext(f), edge_of(n2, 2));
+    detail::bond_inner(mesh, e, edge_of(n2, 0));
+    detail::bond_inner(mesh, edge_of(n1, 0), f);
   }
   if (seg != kNone) {
     const Subsegment old = mesh.subsegments[seg];
@@ -65,7 +66,7 @@ EdgeRef split_edge(Mesh& mesh, EdgeRef e, VertexId v) {
     mesh.subsegments[seg].b = v;
     const bool first_half_at_a = old.a == mesh.org(e);
     mesh.set_subsegment(e, first_half_at_a ? seg : fresh);
-    mesh.set_subsegment(3 * n1, first_half_at_a ? fresh : seg);
+    mesh.set_subsegment(edge_of(n1, 0), first_half_at_a ? fresh : seg);
   }
   return lnext(e);
 }

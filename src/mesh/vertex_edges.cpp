@@ -45,7 +45,7 @@ EdgeRef search_near(const Mesh& mesh, TriangleId start, VertexId v) {
 }  // namespace
 
 VertexEdges::VertexEdges(const Mesh& mesh) : out_(mesh.vertex_count(), kNone) {
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
     if (mesh.corner[e] != kNone) out_[mesh.corner[e]] = e;
 }
 
@@ -78,7 +78,7 @@ EdgeRef VertexEdges::leaving(const Mesh& mesh, VertexId v) {
   if (leaves(mesh, hint, v)) return hint;
   EdgeRef found = hint != kNone && hint < mesh.corner.size() ? search_near(mesh, triangle_of(hint), v)
                                                              : kNone;
-  for (EdgeRef e = 0; found == kNone && e < mesh.corner.size(); ++e)
+  for (EdgeRef e{0}; found == kNone && e < mesh.corner.size(); ++e)
     if (mesh.corner[e] == v) found = e;
   out_[v] = found;
   return found;

@@ -71,7 +71,7 @@ SegmentVertices collect_spokes(const Mesh& m) {
   s.spokes.resize(m.vertex_count());
   s.segments.resize(m.vertex_count());
   if (!m.has_subsegments()) return s;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
     for (EdgeRef e : edges_of(t)) {
       if (m.subseg[e] == kNone || (m.link[e] != kNone && m.link[e] < e)) continue;
@@ -82,7 +82,7 @@ SegmentVertices collect_spokes(const Mesh& m) {
       s.spokes[b].push_back({std::atan2(p.y - q.y, p.x - q.x), a, seg});
     }
   }
-  for (VertexId v = 0; v < m.vertex_count(); ++v) {
+  for (VertexId v{0}; v < m.vertex_count(); ++v) {
     auto& list = s.spokes[v];
     std::sort(list.begin(), list.end(), [](const Spoke& x, const Spoke& y) { return x.direction < y.direction; });
     for (const Spoke& k : list)
@@ -178,7 +178,7 @@ VertexId explaining_junction(const Mesh& m, const SegmentVertices& s, TriangleId
 BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
   BoundMisses out;
   std::vector<char> missing(m.triangle_slots(), 0);
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
     const bool angle = misses_angle(m, t, r.angle.degrees()), size = misses_size(m, t, r);
     out.below_angle += angle;
@@ -188,7 +188,7 @@ BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
   }
   if (out.total == 0) return out;
   const SegmentVertices s = collect_spokes(m);
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t) || !missing[t]) continue;
     const VertexId j = misses_angle(m, t, r.angle.degrees()) ? explaining_junction(m, s, t) : kNone;
     bool touches_repair = false, touches_segment = false;

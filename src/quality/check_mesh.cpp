@@ -123,7 +123,7 @@ class Checker {
   }
 
   void check_triangle_slots() {
-    for (TriangleId t = 0; t < slots(); ++t) {
+    for (TriangleId t{0}; t < slots(); ++t) {
       if (!live(t)) continue;
       const auto [a, b, c] = mesh_.corners(t);
       if (a >= vertices() || b >= vertices() || c >= vertices())
@@ -142,13 +142,13 @@ class Checker {
       else
         listed[t] = 1;
     }
-    for (TriangleId t = 0; t < slots(); ++t)
+    for (TriangleId t{0}; t < slots(); ++t)
       if (!live(t) && !listed[t]) fault(FaultKind::UnlistedDeadSlot, t);
   }
 
   void check_edge_ids() {
     const std::size_t nsub = mesh_.subsegments.size();
-    for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {
+    for (EdgeRef e{0}; e < mesh_.corner.size(); ++e) {
       if (!live(triangle_of(e))) continue;
       if (mesh_.link[e] != kNone && mesh_.link[e] >= mesh_.corner.size())
         fault(FaultKind::LinkOutOfRange, e);
@@ -158,7 +158,7 @@ class Checker {
 
   // --- topology ---
   void check_topology() {
-    for (EdgeRef e = 0; e < mesh_.corner.size(); ++e)
+    for (EdgeRef e{0}; e < mesh_.corner.size(); ++e)
       if (live(triangle_of(e))) check_twin(e);
     build_out_edges();
     check_duplicate_edges();
@@ -190,11 +190,11 @@ class Checker {
   // directed edges can be found without hashing or sorting millions of keys.
   void build_out_edges() {
     first_out_.assign(static_cast<std::size_t>(vertices()) + 1, 0);
-    for (EdgeRef e = 0; e < mesh_.corner.size(); ++e)
+    for (EdgeRef e{0}; e < mesh_.corner.size(); ++e)
       if (live(triangle_of(e))) ++first_out_[mesh_.corner[e] + 1];
-    for (VertexId v = 0; v < vertices(); ++v) first_out_[v + 1] += first_out_[v];
+    for (VertexId v{0}; v < vertices(); ++v) first_out_[v + 1] += first_out_[v];
     out_dest_.resize(first_out_[vertices()]);
-    for (TriangleId t = 0; t < slots(); ++t) {
+    for (TriangleId t{0}; t < slots(); ++t) {
       if (!live(t)) continue;
       const VertexId* c = mesh_.corners_at(t);
       out_dest_[first_out_[c[0]]++] = c[1];
@@ -202,7 +202,7 @@ class Checker {
       out_dest_[first_out_[c[2]]++] = c[0];
     }
     // Each start was advanced to the next vertex's start; shift them back.
-    for (VertexId v = vertices(); v > 0; --v) first_out_[v] = first_out_[v - 1];
+    for (VertexId v{vertices()}; v > 0; --v) first_out_[v] = first_out_[v - 1];
     first_out_[0] = 0;
   }
 
@@ -213,7 +213,7 @@ class Checker {
   void check_duplicate_edges() {
     std::vector<VertexId> seen_from(vertices(), kNone);  // seen_from[d] == v: v->d already met
     VertexId first_org = kNone, first_dest = kNone;
-    for (VertexId v = 0; v < vertices(); ++v) {
+    for (VertexId v{0}; v < vertices(); ++v) {
       for (std::uint32_t i = first_out_[v]; i < first_out_[v + 1]; ++i) {
         const VertexId d = out_dest_[i];
         if (seen_from[d] != v) {
@@ -231,7 +231,7 @@ class Checker {
   // The second live edge a->b in slot order (the one reported as the repeat).
   EdgeRef second_edge(VertexId a, VertexId b) const {
     bool met = false;
-    for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {
+    for (EdgeRef e{0}; e < mesh_.corner.size(); ++e) {
       if (!live(triangle_of(e)) || mesh_.org(e) != a || mesh_.dest(e) != b) continue;
       if (met) return e;
       met = true;
@@ -240,7 +240,7 @@ class Checker {
   }
 
   void check_vertex_use() {
-    for (VertexId v = 0; v < vertices(); ++v) {
+    for (VertexId v{0}; v < vertices(); ++v) {
       const VertexKind k = mesh_.kind[v];
       if ((k == VertexKind::Duplicate || k == VertexKind::Dead) && used(v))
         fault(FaultKind::DeadVertexUsed, v);
@@ -249,7 +249,7 @@ class Checker {
 
   // --- orientation ---
   void check_orientation() {
-    for (TriangleId t = 0; t < slots(); ++t) {
+    for (TriangleId t{0}; t < slots(); ++t) {
       if (!live(t)) continue;
       const auto [a, b, c] = mesh_.corners(t);
       const double o = pred_.orient2d(at(a), at(b), at(c));
@@ -268,18 +268,18 @@ class Checker {
   // departures), so its value is in locating the damage when the topology is broken.
   void check_boundary() {
     std::vector<std::int32_t> balance(vertices(), 0);
-    for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {
+    for (EdgeRef e{0}; e < mesh_.corner.size(); ++e) {
       if (!live(triangle_of(e)) || mesh_.link[e] != kNone) continue;
       ++balance[mesh_.org(e)];
       --balance[mesh_.dest(e)];
     }
-    for (VertexId v = 0; v < vertices(); ++v)
+    for (VertexId v{0}; v < vertices(); ++v)
       if (balance[v] != 0) fault(FaultKind::OpenBoundary, v);
   }
 
   // --- delaunay ---
   void check_delaunay() {
-    for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {
+    for (EdgeRef e{0}; e < mesh_.corner.size(); ++e) {
       if (!live(triangle_of(e))) continue;
       const EdgeRef f = mesh_.link[e];
       if (f == kNone || f < e) continue;
@@ -313,7 +313,7 @@ class Checker {
   // A hole in a point-set mesh is a clockwise loop, so it shows up as reflex turns as well.
   void check_hull_loops() {
     std::vector<std::uint8_t> seen(mesh_.corner.size(), 0);
-    for (EdgeRef start = 0; start < mesh_.corner.size(); ++start) {
+    for (EdgeRef start{0}; start < mesh_.corner.size(); ++start) {
       if (!live(triangle_of(start)) || mesh_.link[start] != kNone || seen[start]) continue;
       if (++report_.boundary_loops > 1) fault(FaultKind::ExtraBoundaryLoop, start);
       EdgeRef e = start;
@@ -329,7 +329,7 @@ class Checker {
   }
 
   void check_inputs_used() {
-    for (VertexId v = 0; v < vertices(); ++v)
+    for (VertexId v{0}; v < vertices(); ++v)
       if (mesh_.kind[v] == VertexKind::Input && !used(v)) fault(FaultKind::UnusedVertex, v);
   }
 
@@ -337,7 +337,7 @@ class Checker {
   // all of them are collinear; otherwise every input vertex went missing.
   void check_inputs_degenerate() {
     std::vector<VertexId> inputs;
-    for (VertexId v = 0; v < vertices(); ++v)
+    for (VertexId v{0}; v < vertices(); ++v)
       if (mesh_.kind[v] == VertexKind::Input) inputs.push_back(v);
     if (!spans_plane(inputs)) return;
     for (const VertexId v : inputs) fault(FaultKind::UnusedVertex, v);

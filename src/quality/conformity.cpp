@@ -35,7 +35,7 @@ ConformityMisses count_conformity_misses(const Mesh& mesh) {
   ConformityMisses misses;
   if (!mesh.has_subsegments()) return misses;
   Predicates pred;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (!mesh.is_live(triangle_of(e)) || mesh.subseg[e] == kNone) continue;
     const EdgeRef f = mesh.link[e];
     if (f == kNone || f < e) continue;

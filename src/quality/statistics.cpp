@@ -90,10 +90,10 @@ void store_extremes(const Extremes& x, MeshStatistics& stats) {
 
 void count_vertices(const Mesh& mesh, MeshStatistics& stats) {
   std::vector<std::uint8_t> in_triangle(mesh.vertex_count(), 0);
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (mesh.is_live(t))
       for (unsigned i = 0; i < 3; ++i) in_triangle[mesh.corner[edge_of(t, i)]] = 1;
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v) {
+  for (VertexId v{0}; v < mesh.vertex_count(); ++v) {
     const VertexKind k = mesh.kind[v];
     if (k != VertexKind::Duplicate && k != VertexKind::Dead) ++stats.vertices;
     stats.vertices_in_triangles += in_triangle[v];
@@ -102,7 +102,7 @@ void count_vertices(const Mesh& mesh, MeshStatistics& stats) {
 
 // Each undirected edge is counted once: from its smaller twin, or from itself on the boundary.
 void count_edges(const Mesh& mesh, MeshStatistics& stats) {
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (!mesh.is_live(triangle_of(e))) continue;
     const EdgeRef f = mesh.link[e];
     if (f != kNone && f < e) continue;
@@ -184,7 +184,7 @@ MeshStatistics compute_statistics(const Mesh& mesh) {
   count_vertices(mesh, stats);
   count_edges(mesh, stats);
   Extremes extremes;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     ++stats.triangles;
     add_shape(shape_of(mesh, t), extremes, stats);

@@ -8,7 +8,7 @@ namespace {
 
 bool bounds_vary(const Mesh& mesh) {
   if (mesh.area_bound.empty()) return false;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.corner[e] == kNone || mesh.link[e] == kNone) continue;
     if (mesh.has_subsegments() && mesh.subseg[e] != kNone) continue;
     if (mesh.area_bound[triangle_of(e)] != mesh.area_bound[triangle_of(mesh.link[e])]) return true;
@@ -37,7 +37,7 @@ AreaField AreaField::of(const Mesh& mesh) {
   if (!bounds_vary(mesh)) return field;
   std::vector<Box> boxes;
   Box all;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     const auto [a, b, c] = mesh.corner_points(t);
     const Triangle tri{a, b, c, mesh.area_bound[t]};

@@ -107,7 +107,7 @@ bool Terminator::beyond_boundary(EdgeRef s, const Point& c) {
 std::uint64_t count_hopeless_edges(const Mesh& mesh, double sin2_theta) {
   if (!(sin2_theta > 0.0)) return 0;
   std::uint64_t count = 0;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.corner[e] == kNone) continue;
     const VertexId a = mesh.org(e), b = mesh.dest(e);
     if (a > b && mesh.link[e] != kNone) continue;  // each interior edge once

@@ -63,7 +63,7 @@ double wedge_to_next_subsegment(const Mesh& mesh, EdgeRef e) {
 SegmentApices::SegmentApices(const Mesh& mesh) : apex_(mesh.vertex_count(), false) {
   std::vector<unsigned char> degree(mesh.vertex_count(), 0);
   if (!mesh.has_subsegments()) return;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.corner[e] == kNone || mesh.subseg[e] == kNone) continue;
     // Count each subsegment once: from the edge whose twin is missing or has a larger id.
     const EdgeRef twin = mesh.link[e];
@@ -71,9 +71,9 @@ SegmentApices::SegmentApices(const Mesh& mesh) : apex_(mesh.vertex_count(), fals
     for (VertexId v : {mesh.org(e), mesh.dest(e)})
       if (degree[v] < 2) ++degree[v];
   }
-  for (VertexId v = 0; v < mesh.vertex_count(); ++v) apex_[v] = degree[v] >= 2;
+  for (VertexId v{0}; v < mesh.vertex_count(); ++v) apex_[v] = degree[v] >= 2;
   shells_.assign(mesh.vertex_count(), false);
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.corner[e] == kNone || !has_subsegment(mesh, e) || !apex_[mesh.org(e)]) continue;
     if (wedge_to_next_subsegment(mesh, e) < kAcute) shells_[mesh.org(e)] = true;
   }

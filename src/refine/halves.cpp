@@ -23,14 +23,14 @@ namespace {
 // triangles. Empty when one side would be nearly empty (many centroids on the median).
 std::vector<std::uint8_t> cut_in_two(const Mesh& mesh) {
   Box box;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (mesh.is_live(t))
       for (unsigned i = 0; i < 3; ++i) box.add(mesh.point(mesh.corner[edge_of(t, i)]));
   const bool along_x = box.width() >= box.height();
   std::vector<double> key(mesh.triangle_slots(), 0.0);
   std::vector<double> keys;
   keys.reserve(mesh.live_triangles());
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     for (unsigned i = 0; i < 3; ++i) {
       const Point& p = mesh.point(mesh.corner[edge_of(t, i)]);
@@ -44,7 +44,7 @@ std::vector<std::uint8_t> cut_in_two(const Mesh& mesh) {
   const double median = *middle;
   std::vector<std::uint8_t> moves(mesh.triangle_slots(), 0);
   std::size_t left = 0;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t)
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (mesh.is_live(t)) left += (moves[t] = key[t] < median ? 0 : 1) == 0;
   if (4 * left < keys.size() || 4 * (keys.size() - left) < keys.size()) return {};
   return moves;
@@ -94,7 +94,7 @@ std::vector<char> vertices_needed(const Mesh& mesh, const std::vector<std::uint8
     for (VertexId v : ends)
       if (v != kNone) keep[v] = 1;
   };
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!moves[t] || !mesh.is_live(t)) continue;
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
@@ -152,9 +152,9 @@ TerminatorStart join_starts(TerminatorStart left, const TerminatorStart& right, 
   std::vector<char>& locked = start.locked;
   locked.resize(joined.subsegments.size(), 0);
   const auto locked_right = [&](SubsegmentId s) { return s < right.locked.size() && right.locked[s]; };
-  for (SubsegmentId s = 0; s < ids.s0; ++s)
+  for (SubsegmentId s{0}; s < ids.s0; ++s)
     if (cut.part_records[cut.records[s]]) locked[cut.records[s]] = locked_right(s);
-  for (SubsegmentId s = 0; s < cut.cut_records.size(); ++s)
+  for (SubsegmentId s{0}; s < cut.cut_records.size(); ++s)
     if (cut.cut_records[s]) locked[s] = s < before.size() && before[s];
   const std::size_t right_records = joined.subsegments.size() - ids.record_base + ids.s0;  // its own count
   for (SubsegmentId s = ids.s0; s < right_records; ++s) locked[ids.record(s, kSeamEdge)] = locked_right(s);
@@ -201,7 +201,7 @@ void refine_sides(Mesh& mesh, CutOff& cut, Predicates& pred, const PartPlan& pla
                   PartResult& left, PartResult& right) {
   start.steiner_cap /= 2;
   start.locked.resize(cut.cut_records.size(), 0);
-  for (SubsegmentId s = 0; s < cut.cut_records.size(); ++s) start.locked[s] |= cut.cut_records[s];
+  for (SubsegmentId s{0}; s < cut.cut_records.size(); ++s) start.locked[s] |= cut.cut_records[s];
   start.small_pages = true;
   TerminatorStart right_start = start_of_part(start, mesh, cut);
   TerminatorStart left_start = std::move(start);

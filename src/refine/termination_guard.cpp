@@ -26,7 +26,7 @@ double apex_height(const Mesh& mesh, EdgeRef e) {
 
 std::vector<double> initial_feature_sizes(const Mesh& mesh) {
   std::vector<double> f(mesh.vertex_count(), HUGE_VAL);
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.corner[e] == kNone) continue;
     const VertexId a = mesh.org(e), b = mesh.dest(e);
     const double length = distance(mesh.point(a), mesh.point(b));
@@ -43,7 +43,7 @@ std::vector<double> initial_feature_sizes(const Mesh& mesh) {
 double smallest_input_angle(const Mesh& mesh) {
   double smallest = HUGE_VAL;
   if (!mesh.has_subsegments()) return smallest;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.corner[e] == kNone || mesh.subseg[e] == kNone) continue;
     const Point& v = mesh.point(mesh.org(e));
     const Point& to = mesh.point(mesh.dest(e));
@@ -85,7 +85,7 @@ double triangles_wanted(const Mesh& mesh, const SizeBounds& bounds) {
   const double edge_area = bounds.max_edge_length > 0.0
                                ? std::sqrt(3.0) / 4.0 * bounds.max_edge_length * bounds.max_edge_length
                                : HUGE_VAL;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     const auto [a, b, c] = mesh.corner_points(t);
     const double area = 0.5 * twice_area_of(a, b, c);
@@ -107,7 +107,7 @@ double feature_work(const Mesh& mesh) {
   const std::vector<double> f = initial_feature_sizes(mesh);
   std::vector<double> longest(mesh.vertex_count(), 0.0);
   double work = 0.0;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     const std::array<VertexId, 3> v = mesh.corners(t);
     const Point* p[3] = {&mesh.point(v[0]), &mesh.point(v[1]), &mesh.point(v[2])};
@@ -126,7 +126,7 @@ double feature_work(const Mesh& mesh) {
     const double s = std::max(longest_edge > 0.0 ? twice_area / longest_edge : 0.0, smallest_f);
     if (s > 0.0 && std::isfinite(s)) work += 0.5 * twice_area / (s * s);
   }
-  for (VertexId u = 0; u < mesh.vertex_count(); ++u)
+  for (VertexId u{0}; u < mesh.vertex_count(); ++u)
     if (f[u] > 0.0 && std::isfinite(f[u])) work += std::log2(1.0 + longest[u] / f[u]);
   return work;
 }

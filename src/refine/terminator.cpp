@@ -24,7 +24,7 @@ namespace {
 double size_floor_of(const Mesh& mesh, const RefineOptions& opt) {
   double smallest = opt.size.max_area > 0.0 ? opt.size.max_area : HUGE_VAL;
   if (opt.size.triangle_bounds)
-    for (TriangleId t = 0; t < mesh.area_bound.size(); ++t)
+    for (TriangleId t{0}; t < mesh.area_bound.size(); ++t)
       if (mesh.is_live(t) && mesh.area_bound[t] > 0.0) smallest = std::min(smallest, mesh.area_bound[t]);
   double floor = std::sqrt(smallest);
   if (opt.size.max_edge_length > 0.0) floor = std::min(floor, opt.size.max_edge_length);
@@ -48,7 +48,7 @@ double guard_floor_of(const Mesh& mesh, const RefineOptions& opt) {
 // sin^2 of the smallest angle of the live triangles, 1 for none.
 double smallest_sine2(const Mesh& mesh) {
   double smallest = 1.0;
-  for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (mesh.is_live(t)) smallest = std::min(smallest, triangle_sine2(mesh, t));
   }
   return smallest;
@@ -72,7 +72,7 @@ double kept_floor_sine2(const Mesh& mesh, double bound_sin2, bool size_bounds) {
 bool keeps_every_subsegment(const Mesh& mesh, int no_steiner_on_segments) {
   if (no_steiner_on_segments != 1) return no_steiner_on_segments >= 2;
   if (!mesh.has_subsegments()) return true;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
     if (mesh.corner[e] != kNone && mesh.subseg[e] != kNone && mesh.link[e] != kNone) return false;
   return true;
 }
@@ -249,16 +249,16 @@ std::vector<EdgeRef> Terminator::initially_encroached() {
       if (is_splittable(e) && is_encroached(mesh_, pred, e, rule_)) out.push_back(e);
     }
   };
-  const EdgeRef edges = static_cast<EdgeRef>(mesh_.corner.size());
+  const EdgeRef edges{static_cast<std::uint32_t>(mesh_.corner.size())};
   std::vector<EdgeRef> found;
   if (opt_.threads < 2 || mesh_.triangle_slots() < TerminatorStart::kParallelStartSlots) {
-    scan(0, edges, pred_, found);
+    scan(EdgeRef{0}, edges, pred_, found);
     return found;
   }
-  const EdgeRef middle = edges / 2;
+  const EdgeRef middle{edges / 2};
   std::vector<EdgeRef> upper;
   Predicates upper_pred;
-  run_both([&] { scan(middle, edges, upper_pred, upper); }, [&] { scan(0, middle, pred_, found); });
+  run_both([&] { scan(middle, edges, upper_pred, upper); }, [&] { scan(EdgeRef{0}, middle, pred_, found); });
   pred_.counters.add(upper_pred.counters);
   found.insert(found.end(), upper.begin(), upper.end());
   return found;
@@ -335,10 +335,10 @@ void Terminator::prefetch_queued() const {
   // search reads first.
   const QueuedTriangle* nearer = bad_triangles_.peek(kPrefetchDistance / 2);
   if (nearer == nullptr) return;
-  const std::size_t f = edge_of(nearer->triangle, 0);
-  if (f >= mesh_.corner.size()) return;
-  for (std::size_t i = 0; i < 3; ++i)
-    if (const EdgeRef twin = mesh_.link[f + i]; twin != kNone) prefetch(&mesh_.corner[twin - twin % 3]);
+  const TriangleId t = nearer->triangle;
+  if (edge_of(t, 0) >= mesh_.corner.size()) return;
+  for (const EdgeRef e : edges_of(t))
+    if (const EdgeRef twin = mesh_.link[e]; twin != kNone) prefetch(mesh_.corners_at(twin.triangle()));
 }
 
 void Terminator::enqueue_if_bad(TriangleId t) {
@@ -437,7 +437,7 @@ bool Terminator::retries_locks() const {
 void Terminator::retry_locked_encroachments() {
   for (int round = 0; round < kLockRetryRounds; ++round) {
     bool any = false;
-    for (EdgeRef e = 0; e < mesh_.corner.size(); ++e) {
+    for (EdgeRef e{0}; e < mesh_.corner.size(); ++e) {
       if (!mesh_.is_live(triangle_of(e)) || mesh_.subseg[e] == kNone) continue;
       if (mesh_.link[e] != kNone && mesh_.link[e] < e) continue;
       const SubsegmentId id = mesh_.subseg[e];

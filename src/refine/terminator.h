@@ -34,7 +34,7 @@ namespace deltri {
 
 // The subsegment id of a seam edge (refine/halves.h): an edge that refinement treats as a
 // subsegment it may neither split nor cross, and which has no subsegment record.
-inline constexpr SubsegmentId kSeamEdge = kNone - 1;
+inline constexpr SubsegmentId kSeamEdge{0xFFFFFFFEu};  // just below kNone
 
 // What a Terminator takes from the initial mesh: the guard's edge floor and Steiner cap, the
 // segment pieces, and the subsegments to leave whole. of() derives them; refine/halves.cpp computes
@@ -201,8 +201,8 @@ class Terminator {
   void drop_last_vertex();
   void survey_remaining();
   void survey(TriangleId from, TriangleId to, RefineReport& into) const;
-  static constexpr TriangleId kParallelSurveySlots = 100000;
-  static constexpr TriangleId kSurveyPrefetch = 16;
+  static constexpr std::uint32_t kParallelSurveySlots = 100000;
+  static constexpr std::uint32_t kSurveyPrefetch = 16;
   // At the bottom scale (bottom_scale.h): the double near `ideal` whose insertion makes the best
   // triangles, if they beat the worst one it destroys; t must be among those.
   std::optional<Point> bottom_scale_point(TriangleId t, const Point& ideal, const Assessment& a);

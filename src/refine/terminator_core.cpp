@@ -15,7 +15,7 @@ namespace deltri {
 
 void Terminator::refine_all() {
   split_initial_encroachments();                             // l.3-6
-  for (TriangleId t = 0; t < mesh_.triangle_slots(); ++t)  // l.7
+  for (TriangleId t{0}; t < mesh_.triangle_slots(); ++t)  // l.7
     if (mesh_.is_live(t)) enqueue_if_bad(t);                 // l.8-9
   drain_queue();                                             // l.10-11, the driver
   mend_kept_boundary();                                       // -Y/-YY: the driver

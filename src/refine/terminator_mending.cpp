@@ -24,7 +24,7 @@ void Terminator::mend_kept_boundary() {
   if (opt_.no_steiner_on_segments == 0 || rules_.size_test != nullptr) return;
   for (int round = 0; round < kMendRounds; ++round) {
     std::vector<std::pair<double, TriangleId>> worst;
-    for (TriangleId t = 0; t < mesh_.triangle_slots(); ++t)
+    for (TriangleId t{0}; t < mesh_.triangle_slots(); ++t)
       if (mesh_.is_live(t) && assess(t).skinny) worst.emplace_back(triangle_sine2(mesh_, t), t);
     std::sort(worst.begin(), worst.end());
     std::uint64_t mended = 0;

@@ -14,7 +14,7 @@ void Terminator::survey(TriangleId from, TriangleId to, RefineReport& into) cons
   const double sin_theta = std::sqrt(opt_.angle.sin2());
   for (TriangleId t = from; t < to; ++t) {
     // The corners come in slot order, their points from anywhere: fetch those a few slots ahead.
-    if (const TriangleId ahead = t + kSurveyPrefetch; ahead < to && mesh_.is_live(ahead))
+    if (const TriangleId ahead{t + kSurveyPrefetch}; ahead < to && mesh_.is_live(ahead))
       for (unsigned i = 0; i < 3; ++i) prefetch(&mesh_.points[mesh_.corner[edge_of(ahead, i)]]);
     if (!mesh_.is_live(t)) continue;
     const Assessment a = assess_with(t, rules_);  // the -q bound, also with Sec. 7.2's
@@ -43,14 +43,14 @@ void Terminator::survey(TriangleId from, TriangleId to, RefineReport& into) cons
 // the slots, and the upper half's findings are merged as a scan of all would have found them (the
 // last of equally skinny triangles, the first of equally oversized ones).
 void Terminator::survey_remaining() {
-  const TriangleId slots = mesh_.triangle_slots();
+  const TriangleId slots{mesh_.triangle_slots()};
   if (opt_.threads < 2 || slots < kParallelSurveySlots) {
-    survey(0, slots, report_);
+    survey(TriangleId{0}, slots, report_);
     return;
   }
-  const TriangleId middle = slots / 2;
+  const TriangleId middle{slots / 2};
   RefineReport upper;
-  run_both([&] { survey(middle, slots, upper); }, [&] { survey(0, middle, report_); });
+  run_both([&] { survey(middle, slots, upper); }, [&] { survey(TriangleId{0}, middle, report_); });
   report_.bad_triangles_left += upper.bad_triangles_left;
   report_.oversized_left += upper.oversized_left;
   report_.skinny_left += upper.skinny_left;

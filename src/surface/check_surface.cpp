@@ -24,8 +24,8 @@ void check_facets(const SurfaceMesh& m, SurfaceCheck& c) {
     const Mesh& mesh = m.facet_meshes[f];
     const CheckReport r = check_mesh(mesh, CheckOptions{});
     if (!r.ok()) fault(c, "facet " + std::to_string(f + 1) + ": " + r.summary());
-    for (EdgeRef e = 0; e < mesh.corner.size(); ++e)
-      if (mesh.is_live(e / 3) && mesh.link[e] == kNone && (!mesh.has_subsegments() || mesh.subseg[e] == kNone))
+    for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
+      if (mesh.is_live(triangle_of(e)) && mesh.link[e] == kNone && (!mesh.has_subsegments() || mesh.subseg[e] == kNone))
         fault(c, "facet " + std::to_string(f + 1) + ": a boundary edge of its mesh lies on no input segment");
   }
 }
@@ -37,8 +37,8 @@ void check_conforming(const SurfaceMesh& m, SurfaceCheck& c) {
   for (std::uint32_t f = 0; f < m.facet_meshes.size(); ++f) {
     const Mesh& mesh = m.facet_meshes[f];
     const std::vector<std::uint32_t>& global = m.facet_vertex[f];
-    for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
-      if (!mesh.is_live(e / 3) || !mesh.has_subsegments() || mesh.subseg[e] == kNone) continue;
+    for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
+      if (!mesh.is_live(triangle_of(e)) || !mesh.has_subsegments() || mesh.subseg[e] == kNone) continue;
       const std::uint32_t a = global[mesh.org(e)], b = global[mesh.dest(e)];
       facet_edges[f].insert({std::min(a, b), std::max(a, b)});
     }

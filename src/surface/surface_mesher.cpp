@@ -166,7 +166,7 @@ std::vector<std::pair<std::uint32_t, double>> SurfaceBuilder::new_cuts(std::uint
   const Mesh& mesh = state.result.mesh;
   const std::uint32_t n_local = static_cast<std::uint32_t>(state.local.size());
   std::vector<std::pair<std::uint32_t, double>> cuts;
-  for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (!mesh.has_subsegments() || mesh.subseg[e] == kNone || mesh.corner[e] < n_local) continue;
     const Subsegment& rec = mesh.subsegments[mesh.subseg[e]];
     if (rec.segment >= state.pieces.size()) continue;
@@ -298,12 +298,12 @@ SurfaceMesh SurfaceBuilder::lift() {
     std::vector<std::uint32_t> global = facet_vertices(f, split_base, out);
     FacetState& state = facets_[f];
     Mesh& mesh = state.result.mesh;
-    for (TriangleId t = 0; t < mesh.triangle_slots(); ++t) {
+    for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
       const auto [a, b, c] = mesh.corners(t);
       out.triangles.push_back({global[a], global[b], global[c]});
       out.triangle_facet.push_back(f);
     }
-    for (EdgeRef e = 0; e < mesh.corner.size(); ++e) {
+    for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
       if (!mesh.has_subsegments() || mesh.subseg[e] == kNone) continue;
       const std::uint32_t a = global[mesh.org(e)], b = global[mesh.dest(e)];
       const std::uint64_t key = (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);

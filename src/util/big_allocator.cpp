@@ -74,7 +74,7 @@ void release_pages(void* p, std::size_t bytes) noexcept {
 #endif
 }
 
-void prefer_small_pages(void* p, std::size_t bytes) noexcept {
+void prefer_small_pages(const void* p, std::size_t bytes) noexcept {
 #ifdef __linux__
   const auto at = reinterpret_cast<std::uintptr_t>(p);
   const std::uintptr_t from = at & ~(std::uintptr_t{4095}), to = (at + bytes + 4095) & ~(std::uintptr_t{4095});

@@ -25,7 +25,7 @@ void release_pages(void* p, std::size_t bytes) noexcept;
 
 // Asks that the pages of [p, p + bytes) not yet touched be small ones (refine/halves.cpp: two
 // meshes growing at once, whose last, partly used huge pages would add to the peak).
-void prefer_small_pages(void* p, std::size_t bytes) noexcept;
+void prefer_small_pages(const void* p, std::size_t bytes) noexcept;
 
 // Gives the free memory that the C library's allocator holds back to the system, where it can
 // (glibc's malloc_trim; nothing elsewhere).

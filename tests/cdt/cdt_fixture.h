@@ -11,6 +11,7 @@
 #include "cdt/insert_segments.h"
 #include "delaunay/triangulate.h"
 #include "harness/check.h"
+#include "harness/id_literals.h"
 
 namespace cdt_test {
 
@@ -35,13 +36,13 @@ inline void triangulate_and_insert(Built& b, const std::vector<Point>& points,
 // both sides of an edge carry the same subsegment, whose record names the edge's ends.
 inline bool mesh_valid(const Mesh& m) {
   Predicates p;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
-    const EdgeRef e = 3 * t;
+    const EdgeRef e = edge_of(t, 0);
     if (!(p.orient2d(m.point(m.corner[e]), m.point(m.corner[e + 1]), m.point(m.corner[e + 2])) > 0))
       return false;
     for (unsigned i = 0; i < 3; ++i) {
-      const EdgeRef a = e + i, b = m.link[a];
+      const EdgeRef a = edge_of(t, i), b = m.link[a];
       if (b != kNone) {
         if (m.link[b] != a || m.org(b) != m.dest(a) || m.dest(b) != m.org(a)) return false;
         if (m.has_subsegments() && m.subseg[a] != m.subseg[b]) return false;
@@ -60,7 +61,7 @@ inline bool mesh_valid(const Mesh& m) {
 // Every interior edge without a subsegment is locally Delaunay.
 inline bool constrained_delaunay(const Mesh& m) {
   Predicates p;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (m.corner[e] == kNone || m.link[e] == kNone) continue;
     if (m.has_subsegments() && m.subseg[e] != kNone) continue;
     if (p.incircle(m.point(m.org(e)), m.point(m.dest(e)), m.point(m.apex(e)),
@@ -72,10 +73,10 @@ inline bool constrained_delaunay(const Mesh& m) {
 
 inline double area(const Mesh& m) {
   double total = 0;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
-    const Point &a = m.point(m.corner[3 * t]), &b = m.point(m.corner[3 * t + 1]),
-                &c = m.point(m.corner[3 * t + 2]);
+    const Point &a = m.point(m.corner[edge_of(t, 0)]), &b = m.point(m.corner[edge_of(t, 1)]),
+                &c = m.point(m.corner[edge_of(t, 2)]);
     total += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
   }
   return total;
@@ -85,7 +86,7 @@ inline double area(const Mesh& m) {
 inline std::map<VertexId, std::set<VertexId>> subsegment_graph(
     const Mesh& m, const std::function<bool(const Subsegment&)>& keep) {
   std::map<VertexId, std::set<VertexId>> g;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (m.corner[e] == kNone || m.subseg[e] == kNone) continue;
     if (!keep(m.subsegments[m.subseg[e]])) continue;
     g[m.org(e)].insert(m.dest(e));
@@ -94,7 +95,9 @@ inline std::map<VertexId, std::set<VertexId>> subsegment_graph(
   return g;
 }
 
-inline bool connected(const std::map<VertexId, std::set<VertexId>>& g, VertexId a, VertexId b) {
+// (Vertex numbers as plain integers in these helpers, so that tests can name vertices by literals.)
+inline bool connected(const std::map<VertexId, std::set<VertexId>>& g, std::uint32_t from, std::uint32_t b) {
+  const VertexId a{from};
   std::set<VertexId> seen{a};
   std::vector<VertexId> stack{a};
   while (!stack.empty()) {
@@ -110,9 +113,9 @@ inline bool connected(const std::map<VertexId, std::set<VertexId>>& g, VertexId 
 }
 
 // Input segment a-b is present as a chain of subsegment edges whose vertices all lie exactly on it.
-inline bool collinear_chain(const Mesh& m, VertexId a, VertexId b) {
+inline bool collinear_chain(const Mesh& m, std::uint32_t a, std::uint32_t b) {
   Predicates p;
-  const Point pa = m.point(a), pb = m.point(b);
+  const Point pa = m.point(VertexId{a}), pb = m.point(VertexId{b});
   const auto inside = [&](VertexId v) {
     const Point& q = m.point(v);
     return p.orient2d(pa, pb, q) == 0 && std::min(pa.x, pb.x) <= q.x && q.x <= std::max(pa.x, pb.x) &&
@@ -123,13 +126,13 @@ inline bool collinear_chain(const Mesh& m, VertexId a, VertexId b) {
 }
 
 // Input segment `index` (ends a, b) is present as a chain of its own subsegment records.
-inline bool chain_of_segment(const Mesh& m, std::uint32_t index, VertexId a, VertexId b) {
+inline bool chain_of_segment(const Mesh& m, std::uint32_t index, std::uint32_t a, std::uint32_t b) {
   return connected(subsegment_graph(m, [&](const Subsegment& s) { return s.segment == index; }), a, b);
 }
 
 inline std::size_t live_edges_with_subsegment(const Mesh& m) {
   std::size_t n = 0;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e)
+  for (EdgeRef e{0}; e < m.corner.size(); ++e)
     if (m.corner[e] != kNone && m.subseg[e] != kNone && (m.link[e] == kNone || m.link[e] > e)) ++n;
   return n;
 }
@@ -137,11 +140,11 @@ inline std::size_t live_edges_with_subsegment(const Mesh& m) {
 // No live triangle contains q in its closed interior.
 inline bool uncovered(const Mesh& m, const Point& q) {
   Predicates p;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
     bool in = true;
     for (unsigned i = 0; i < 3; ++i)
-      in = in && p.orient2d(m.point(m.corner[3 * t + i]), m.point(m.corner[3 * t + (i + 1) % 3]), q) >= 0;
+      in = in && p.orient2d(m.point(m.corner[edge_of(t, i)]), m.point(m.corner[edge_of(t, (i + 1) % 3)]), q) >= 0;
     if (in) return false;
   }
   return true;

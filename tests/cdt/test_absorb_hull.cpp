@@ -5,6 +5,7 @@
 #include "cdt/convex_hull.h"
 #include "cdt_fixture.h"
 #include "harness/check.h"
+#include "harness/id_literals.h"
 
 using namespace deltri;
 using namespace cdt_test;
@@ -12,19 +13,19 @@ using namespace cdt_test;
 namespace {
 
 // Does some boundary edge (no twin) carrying a subsegment leave v?
-bool on_hull_chain(const Mesh& m, VertexId v) {
-  for (EdgeRef e = 0; e < m.corner.size(); ++e)
+bool on_hull_chain(const Mesh& m, std::uint32_t v) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e)
     if (m.corner[e] != kNone && m.link[e] == kNone && m.subseg[e] != kNone && m.org(e) == v) return true;
   return false;
 }
 
 double mesh_area(const Mesh& m) {
   double area = 0.0;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
-    const Point& a = m.point(m.corner[3 * t]);
-    const Point& b = m.point(m.corner[3 * t + 1]);
-    const Point& c = m.point(m.corner[3 * t + 2]);
+    const Point& a = m.point(m.corner[edge_of(t, 0)]);
+    const Point& b = m.point(m.corner[edge_of(t, 1)]);
+    const Point& c = m.point(m.corner[edge_of(t, 2)]);
     area += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
   }
   return area;
@@ -68,7 +69,7 @@ TEST(cdt_absorb_follows_a_chain_of_near_hull_vertices) {
   const std::size_t absorbed = absorb_near_hull_vertices(b.mesh, b.pred);
   CHECK(mesh_valid(b.mesh));
   std::size_t on_chain = 0;
-  for (VertexId v = 1; v <= 4; ++v) on_chain += on_hull_chain(b.mesh, v);
+  for (VertexId v{1}; v <= 4; ++v) on_chain += on_hull_chain(b.mesh, v);
   CHECK_EQ(on_chain, std::size_t{4});
   CHECK(absorbed >= 1);
 }

@@ -3,6 +3,7 @@
 #include "cdt/holes_and_regions.h"
 #include "cdt/markers.h"
 #include "cdt_fixture.h"
+#include "harness/id_literals.h"
 
 using namespace cdt_test;
 
@@ -42,7 +43,7 @@ TEST(cdt_concavity_and_dangling_segment_eaten) {
   // An L-shaped domain; a segment outside it ends up with no triangle on either side.
   std::vector<Point> pts{{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}, {1.5, 1.5}, {1.9, 1.9}};
   auto segs = ring(0, 6);
-  segs.push_back({6, 7, 0});
+  segs.push_back({6_v, 7_v, 0});
   triangulate_and_insert(b, pts, segs);
   const HoleReport h = carve_holes(b.mesh, b.pred, {}, false);
   CHECK_EQ(h.subsegments_removed, std::size_t{1});
@@ -109,9 +110,9 @@ TEST(cdt_regions_attributes_and_areas) {
   REQUIRE(b.mesh.triangle_attributes.size() == b.mesh.triangle_slots());
   REQUIRE(b.mesh.area_bound.size() == b.mesh.triangle_slots());
   Predicates p;
-  for (TriangleId t = 0; t < b.mesh.triangle_slots(); ++t) {
-    const Point &a = b.mesh.point(b.mesh.corner[3 * t]), &c = b.mesh.point(b.mesh.corner[3 * t + 1]),
-                &d = b.mesh.point(b.mesh.corner[3 * t + 2]);
+  for (TriangleId t{0}; t < b.mesh.triangle_slots(); ++t) {
+    const Point &a = b.mesh.point(b.mesh.corner[edge_of(t, 0)]), &c = b.mesh.point(b.mesh.corner[edge_of(t, 1)]),
+                &d = b.mesh.point(b.mesh.corner[edge_of(t, 2)]);
     const Point centroid{(a.x + c.x + d.x) / 3, (a.y + c.y + d.y) / 3};
     const bool inner = centroid.x > 1 && centroid.x < 2 && centroid.y > 1 && centroid.y < 2;
     CHECK_EQ(b.mesh.triangle_attributes[t], inner ? 3.0 : 1.0);
@@ -148,7 +149,7 @@ TEST(cdt_boundary_markers) {
   CHECK_EQ(b.mesh.marker[9], 5);
   CHECK_EQ(b.mesh.marker[2], 1);
   CHECK_EQ(b.mesh.marker[3], 9);
-  for (VertexId v = 4; v < 8; ++v) CHECK_EQ(b.mesh.marker[v], 1);  // hole boundary
+  for (VertexId v{4}; v < 8; ++v) CHECK_EQ(b.mesh.marker[v], 1);  // hole boundary
   CHECK_EQ(b.mesh.marker[8], 0);
   // Without input markers the stored corner marker is ignored.
   assign_boundary_markers(b.mesh, false);

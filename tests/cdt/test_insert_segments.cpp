@@ -4,6 +4,7 @@
 
 #include "cdt/holes_and_regions.h"
 #include "cdt_fixture.h"
+#include "harness/id_literals.h"
 
 using namespace cdt_test;
 
@@ -48,9 +49,9 @@ TEST(cdt_duplicate_vertex_in_segment) {
 TEST(cdt_zero_length_and_repeated) {
   Built b;
   auto segs = ring(0, 4, 0);
-  segs.push_back({2, 2, 0});
-  segs.push_back({1, 0, 7});  // repeats 0-1 reversed, with a marker the original lacks
-  segs.push_back({0, 1, 0});
+  segs.push_back({2_v, 2_v, 0});
+  segs.push_back({1_v, 0_v, 7});  // repeats 0-1 reversed, with a marker the original lacks
+  segs.push_back({0_v, 1_v, 0});
   triangulate_and_insert(b, box(0, 0, 1, 1), segs);
   CHECK_EQ(b.seg.zero_length, std::size_t{1});
   CHECK_EQ(b.seg.repeated, std::size_t{2});
@@ -99,8 +100,8 @@ TEST(cdt_collinear_overlap) {
 TEST(cdt_crossing_segments) {
   Built b;
   auto segs = ring(0, 4);
-  segs.push_back({0, 2, 0});
-  segs.push_back({1, 3, 0});
+  segs.push_back({0_v, 2_v, 0});
+  segs.push_back({1_v, 3_v, 0});
   triangulate_and_insert(b, box(0, 0, 1, 1), segs);
   CHECK_EQ(b.seg.crossings, std::size_t{1});
   REQUIRE(b.mesh.vertex_count() == 5u);
@@ -230,7 +231,7 @@ TEST(cdt_repeats_at_a_hub_vertex) {
   std::vector<Pslg::Segment> segs;
   for (std::uint32_t i = 1; i <= 30; ++i) segs.push_back({0, i, 0});
   for (std::uint32_t i = 1; i <= 30; i += 3) segs.push_back({i, 0, 0});  // 10 repeats, reversed
-  segs.push_back({0, 4, 0});
+  segs.push_back({0_v, 4_v, 0});
   triangulate_and_insert(b, pts, segs);
   CHECK_EQ(b.seg.repeated, std::size_t{11});
   CHECK_EQ(b.seg.subsegments, std::size_t{30});

@@ -27,12 +27,12 @@ int faults(const Mesh& m, bool expect_triangles = true) {
   int bad = meshcheck::orientation_faults(m) + meshcheck::link_faults(m) + meshcheck::delaunay_faults(m);
   if (expect_triangles && m.triangle_slots() == 0) ++bad;
   std::vector<char> used(m.vertex_count(), 0);
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) { ++bad; continue; }
     for (unsigned i = 0; i < 3; ++i)
       if (m.corner[3 * t + i] < m.vertex_count()) used[m.corner[3 * t + i]] = 1;
   }
-  for (VertexId v = 0; v < m.vertex_count(); ++v)
+  for (VertexId v{0}; v < m.vertex_count(); ++v)
     if (expect_triangles && (m.kind[v] == VertexKind::Input) != (used[v] != 0)) ++bad;
   return bad;
 }
@@ -170,7 +170,7 @@ namespace {
 // hull of the points, makes it the perturbed points' Delaunay triangulation, which is unique.
 int perturbed_faults(const Mesh& m) {
   int bad = 0;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (!m.is_live(triangle_of(e)) || m.link[e] == kNone || m.link[e] < e) continue;
     if (reference::perturbed_incircle_sign(m.point(m.org(e)), m.point(m.dest(e)), m.point(m.apex(e)),
                                            m.point(m.apex(m.link[e]))) >= 0)

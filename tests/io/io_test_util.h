@@ -6,6 +6,7 @@
 #include <random>
 #include <string>
 
+#include "harness/id_literals.h"
 #include "mesh/mesh.h"
 #include "pslg/errors.h"
 
@@ -48,8 +49,8 @@ inline deltri::Mesh two_triangles() {
   using namespace deltri;
   Mesh m;
   for (Point p : {Point{0, 0}, Point{1, 0}, Point{1, 1}, Point{0, 1}}) m.add_vertex(p, VertexKind::Input);
-  const TriangleId a = m.add_triangle(0, 1, 2);
-  const TriangleId b = m.add_triangle(0, 2, 3);
+  const TriangleId a = m.add_triangle(0_v, 1_v, 2_v);
+  const TriangleId b = m.add_triangle(0_v, 2_v, 3_v);
   m.bond(edge_of(a, 2), edge_of(b, 0));  // a's side 2 runs 2->0, b's side 0 runs 0->2
   return m;
 }

@@ -1,5 +1,6 @@
 // .ele reading/writing and .area reading.
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "io/area_file.h"
 #include "io/ele_file.h"
 #include "io_test_util.h"
@@ -14,13 +15,13 @@ std::string where(const std::string& name, int line) {
 
 TEST(ele_writer_live_triangles_in_slot_order) {
   Mesh m = iotest::two_triangles();
-  const TriangleId extra = m.add_triangle(1, 2, 3);
+  const TriangleId extra = m.add_triangle(1_v, 2_v, 3_v);
   m.num_triangle_attributes = 1;
   m.triangle_attributes = {0.5, 7, -1.25};
   std::string text;
   write_ele_file(text, m, {1, nullptr, nullptr});
   CHECK_EQ(text, "3 3 1\n1 1 2 3 0.5\n2 1 3 4 7\n3 2 3 4 -1.25\n");
-  m.kill_triangle(0);
+  m.kill_triangle(0_t);
   (void)extra;
   text.clear();
   write_ele_file(text, m, {0, nullptr, nullptr});
@@ -29,7 +30,7 @@ TEST(ele_writer_live_triangles_in_slot_order) {
 
 TEST(ele_writer_second_order_and_jettison) {
   Mesh m = iotest::two_triangles();
-  const std::vector<VertexId> mid{4, 5, 6, 7, 8, 9};
+  const std::vector<VertexId> mid{4_v, 5_v, 6_v, 7_v, 8_v, 9_v};
   for (int i = 0; i < 6; ++i) m.add_vertex({0.5, 0.5}, VertexKind::Free);
   std::string text;
   write_ele_file(text, m, {0, nullptr, &mid});

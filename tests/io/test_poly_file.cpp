@@ -1,5 +1,6 @@
 // .poly reading and writing.
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "io/poly_file.h"
 #include "io_test_util.h"
 
@@ -102,10 +103,10 @@ TEST(poly_lenient_reading_warns) {
 TEST(poly_writer_lists_live_subsegments_once) {
   Mesh m = iotest::two_triangles();
   m.enable_subsegments();
-  m.subsegments = {{0, 1, 0, 0}, {1, 2, 4, 1}, {2, 0, 0, 2}, {9, 9, 3, 3}};  // the last is gone
-  m.set_subsegment(edge_of(0, 0), 0);
-  m.set_subsegment(edge_of(0, 1), 1);
-  m.set_subsegment(edge_of(0, 2), 2);  // the shared diagonal: interior, marker 0
+  m.subsegments = {{0_v, 1_v, 0, 0}, {1_v, 2_v, 4, 1}, {2_v, 0_v, 0, 2}, {9_v, 9_v, 3, 3}};  // the last is gone
+  m.set_subsegment(edge_of(0_t, 0), 0_s);
+  m.set_subsegment(edge_of(0_t, 1), 1_s);
+  m.set_subsegment(edge_of(0_t, 2), 2_s);  // the shared diagonal: interior, marker 0
   std::string text;
   write_poly_file(text, m, {1, true, nullptr, false}, {{0.25, 0.75}}, {{{0.5, 0.25}, 2.0, -1.0}});
   CHECK_EQ(text,

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "geometry/predicates.h"
+#include "harness/id_literals.h"
 #include "mesh/mesh.h"
 
 namespace meshcheck {
@@ -26,14 +27,15 @@ inline Mesh mesh_of(const std::vector<Point>& pts) {
   return m;
 }
 
-// A mesh with the given counter-clockwise triangles, twins found by matching reversed edges.
-inline Mesh make_mesh(const std::vector<Point>& pts, const std::vector<std::array<VertexId, 3>>& tris) {
+// A mesh with the given counter-clockwise triangles (vertex numbers), twins found by matching
+// reversed edges.
+inline Mesh make_mesh(const std::vector<Point>& pts, const std::vector<std::array<std::uint32_t, 3>>& tris) {
   Mesh m = mesh_of(pts);
   std::map<std::pair<VertexId, VertexId>, EdgeRef> edges;
   for (const auto& t : tris) {
-    const TriangleId id = m.add_triangle(t[0], t[1], t[2]);
+    const TriangleId id = m.add_triangle(VertexId{t[0]}, VertexId{t[1]}, VertexId{t[2]});
     for (unsigned i = 0; i < 3; ++i) {
-      const EdgeRef e = 3 * id + i;
+      const EdgeRef e = edge_of(id, i);
       edges[{m.org(e), m.dest(e)}] = e;
       const auto twin = edges.find({m.dest(e), m.org(e)});
       if (twin != edges.end()) m.bond(e, twin->second);
@@ -46,9 +48,9 @@ inline Mesh make_mesh(const std::vector<Point>& pts, const std::vector<std::arra
 inline int orientation_faults(const Mesh& m) {
   Predicates pred;
   int bad = 0;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
-    const VertexId a = m.corner[3 * t], b = m.corner[3 * t + 1], c = m.corner[3 * t + 2];
+    const VertexId a = m.corner[edge_of(t, 0)], b = m.corner[edge_of(t, 1)], c = m.corner[edge_of(t, 2)];
     if (a >= m.vertex_count() || b >= m.vertex_count() || c >= m.vertex_count()) { ++bad; continue; }
     if (pred.orient2d(m.point(a), m.point(b), m.point(c)) <= 0) ++bad;
   }
@@ -60,7 +62,7 @@ inline int link_faults(const Mesh& m) {
   int bad = 0;
   if (m.link.size() != m.corner.size()) return 1;
   if (!m.subseg.empty() && m.subseg.size() != m.corner.size()) return 1;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (!m.is_live(triangle_of(e))) continue;
     const EdgeRef f = m.link[e];
     if (f == kNone) continue;
@@ -76,11 +78,11 @@ inline long euler_characteristic(const Mesh& m) {
   std::set<VertexId> verts;
   std::set<std::pair<VertexId, VertexId>> edges;
   long faces = 0;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
     ++faces;
     for (unsigned i = 0; i < 3; ++i) {
-      const EdgeRef e = 3 * t + i;
+      const EdgeRef e = edge_of(t, i);
       verts.insert(m.org(e));
       edges.insert(std::minmax(m.org(e), m.dest(e)));
     }
@@ -92,7 +94,7 @@ inline long euler_characteristic(const Mesh& m) {
 inline int delaunay_faults(const Mesh& m) {
   Predicates pred;
   int bad = 0;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (!m.is_live(triangle_of(e)) || m.link[e] == kNone) continue;
     if (!m.subseg.empty() && m.subseg[e] != kNone) continue;
     const Point& a = m.point(m.org(e));
@@ -105,14 +107,14 @@ inline int delaunay_faults(const Mesh& m) {
 
 inline int all_faults(const Mesh& m) { return orientation_faults(m) + link_faults(m); }
 
-using Triple = std::array<VertexId, 3>;
+using Triple = std::array<std::uint32_t, 3>;  // vertex numbers, for comparing with literals
 
 // The live triangles as vertex triples rotated to start at their smallest id, sorted.
 inline std::vector<Triple> triangle_set(const Mesh& m) {
   std::vector<Triple> s;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
-    Triple a{m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]};
+    Triple a{m.corner[edge_of(t, 0)], m.corner[edge_of(t, 1)], m.corner[edge_of(t, 2)]};
     std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
     s.push_back(a);
   }
@@ -181,9 +183,9 @@ inline Mesh unit_square() {
   return make_mesh({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2}, {0, 2, 3}});
 }
 
-// The live edge from a to b, or kNone.
-inline EdgeRef find_edge(const Mesh& m, VertexId a, VertexId b) {
-  for (EdgeRef e = 0; e < m.corner.size(); ++e)
+// The live edge from a to b (vertex numbers, so that tests can name them by literals), or kNone.
+inline EdgeRef find_edge(const Mesh& m, std::uint32_t a, std::uint32_t b) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e)
     if (m.is_live(triangle_of(e)) && m.org(e) == a && m.dest(e) == b) return e;
   return kNone;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "mesh/delete_vertex.h"
 #include "mesh/operations.h"
 #include "mesh_checks.h"
@@ -17,7 +18,7 @@ namespace {
 Mesh square_with(const std::vector<Point>& pts, std::size_t skip) {
   Mesh m = unit_square();
   Predicates pred;
-  EdgeRef hint = 0;
+  EdgeRef hint{0};
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const VertexId v = m.add_vertex(pts[i], VertexKind::Free);
     if (i == skip) {
@@ -31,7 +32,7 @@ Mesh square_with(const std::vector<Point>& pts, std::size_t skip) {
 }
 
 EdgeRef leaving(const Mesh& m, VertexId v) {
-  for (EdgeRef e = 0; e < m.corner.size(); ++e)
+  for (EdgeRef e{0}; e < m.corner.size(); ++e)
     if (m.corner[e] == v) return e;
   return kNone;
 }
@@ -63,14 +64,14 @@ TEST(deleting_every_vertex_in_turn_keeps_a_valid_delaunay_mesh) {
   Predicates pred;
   Mesh m = square_with(pts, pts.size());
   std::vector<TriangleId> created;
-  for (VertexId v = 4; v < m.vertex_count(); v += 3) {
+  for (VertexId v{4}; v < m.vertex_count(); v = VertexId{v + 3}) {
     created.clear();
     REQUIRE(delete_vertex(m, pred, leaving(m, v), created));
   }
   CHECK_EQ(all_faults(m), 0);
   CHECK_EQ(delaunay_faults(m), 0);
   std::size_t alive = 0;
-  for (VertexId v = 0; v < m.vertex_count(); ++v) alive += m.kind[v] != VertexKind::Dead;
+  for (VertexId v{0}; v < m.vertex_count(); ++v) alive += m.kind[v] != VertexKind::Dead;
   CHECK_EQ(static_cast<std::size_t>(m.live_triangles()), 2 * alive - 2 - 4);
 }
 
@@ -78,17 +79,17 @@ TEST(boundary_vertices_and_subsegment_ends_are_not_deleted) {
   Predicates pred;
   Mesh m = unit_square();
   const VertexId c = m.add_vertex({0.5, 0.5}, VertexKind::Free);
-  REQUIRE(insert_vertex(m, pred, c, 0).status == InsertStatus::Inserted);
-  const BigVector<VertexId> before = m.corner;
+  REQUIRE(insert_vertex(m, pred, c, 0_e).status == InsertStatus::Inserted);
+  const BigVector<VertexId> before(m.corner.begin(), m.corner.end());
   std::vector<TriangleId> created;
-  CHECK(!delete_vertex(m, pred, leaving(m, 0), created));  // a corner of the square
+  CHECK(!delete_vertex(m, pred, leaving(m, 0_v), created));  // a corner of the square
   CHECK(m.corner == before);
   // A subsegment from the centre to a corner pins the centre.
   m.enable_subsegments();
-  m.subsegments.push_back({c, 0, 1, 0});
+  m.subsegments.push_back({c, 0_v, 1, 0});
   EdgeRef e = find_edge(m, c, 0);
   REQUIRE(e != kNone);
-  m.set_subsegment(e, 0);
+  m.set_subsegment(e, 0_s);
   CHECK(!delete_vertex(m, pred, leaving(m, c), created));
   CHECK(m.corner == before);
   CHECK(created.empty());
@@ -102,7 +103,7 @@ TEST(a_vertex_on_a_chord_of_its_four_link_vertices_is_deleted) {
   for (const Point centre : {Point{0.5, 0.5}, Point{0.5, 0.25}}) {
     Mesh m = unit_square();
     const VertexId c = m.add_vertex(centre, VertexKind::Free);
-    REQUIRE(insert_vertex(m, pred, c, 0).status == InsertStatus::Inserted);
+    REQUIRE(insert_vertex(m, pred, c, 0_e).status == InsertStatus::Inserted);
     std::vector<TriangleId> created;
     REQUIRE(delete_vertex(m, pred, leaving(m, c), created));
     CHECK_EQ(all_faults(m), 0);

@@ -49,7 +49,7 @@ void check_delaunay_of(const std::vector<Point>& pts) {
   CHECK_EQ(static_cast<std::size_t>(m.live_triangles()), 2 * distinct - 2 - hull_boundary_points(pts));
   std::vector<char> used(m.vertex_count(), 0);
   for (VertexId c : m.corner) used[c] = 1;
-  for (VertexId v = 0; v < m.vertex_count(); ++v) CHECK_EQ(used[v] != 0, m.kind[v] == VertexKind::Input);
+  for (VertexId v{0}; v < m.vertex_count(); ++v) CHECK_EQ(used[v] != 0, m.kind[v] == VertexKind::Input);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "mesh/assemble.h"
 #include "mesh/constrained_editor.h"
 #include "mesh/ghosts.h"
@@ -28,7 +29,7 @@ Mesh bad_fan(std::size_t n) {
     pts.push_back({3 * std::cos(a), std::sin(a)});
   }
   std::vector<Triple> tris;
-  for (VertexId i = 1; i <= n; ++i) tris.push_back({0, i, i + 1});
+  for (VertexId i{1}; i <= n; ++i) tris.push_back({0, i, i + 1});
   return make_mesh(pts, tris);
 }
 
@@ -37,7 +38,7 @@ Mesh repaired(std::size_t n) {
   Mesh m = bad_fan(n);
   Predicates pred;
   std::vector<EdgeRef> stack;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e)
+  for (EdgeRef e{0}; e < m.corner.size(); ++e)
     if (m.link[e] != kNone) stack.push_back(e);
   int flips = 0;
   lawson<layout, LawsonScope::Everywhere>(
@@ -87,8 +88,8 @@ TEST(outer_edges_start_and_end_opposite_the_old_apex) {
 TEST(split_layouts_hold_the_same_triangles_rotated) {
   Mesh first = make_mesh({{0, 0}, {4, 0}, {0, 4}, {1, 1}}, {{0, 1, 2}});
   Mesh last = first;
-  split_triangle<SplitLayout::VertexFirst>(first, 0, 3);
-  split_triangle<SplitLayout::VertexLast>(last, 0, 3);
+  split_triangle<SplitLayout::VertexFirst>(first, 0_e, 3_v);
+  split_triangle<SplitLayout::VertexLast>(last, 0_e, 3_v);
   CHECK(triangle_set(first) == triangle_set(last));
   CHECK_EQ(all_faults(last), 0);
   // VertexLast: n1 = (b, c, v), n2 = (c, a, v).
@@ -102,7 +103,7 @@ TEST(split_layouts_hold_the_same_triangles_rotated) {
 TEST(constrained_editor_keeps_its_index_exact_and_the_mesh_delaunay) {
   const std::vector<Point> pts = uniform(60, 7);
   Mesh m = mesh_of({{-1, -1}, {3, -1}, {-1, 3}});
-  m.add_triangle(0, 1, 2);
+  m.add_triangle(0_v, 1_v, 2_v);
   m.enable_subsegments();
   Predicates pred;
   ConstrainedEditor ed(m, pred);
@@ -114,7 +115,7 @@ TEST(constrained_editor_keeps_its_index_exact_and_the_mesh_delaunay) {
   }
   CHECK_EQ(all_faults(m), 0);
   CHECK_EQ(delaunay_faults(m), 0);
-  for (VertexId v = 0; v < m.vertex_count(); ++v) {
+  for (VertexId v{0}; v < m.vertex_count(); ++v) {
     const EdgeRef e = ed.leaving(v);
     REQUIRE(e != kNone);
     CHECK_EQ(m.org(e), v);
@@ -125,7 +126,7 @@ TEST(constrain_and_unconstrain_keep_twins_in_step) {
   Mesh m = unit_square();
   m.enable_subsegments();
   const EdgeRef e = find_edge(m, 0, 2);
-  const SubsegmentId id = constrain(m, e, {0, 2, 5, 0});
+  const SubsegmentId id = constrain(m, e, {0_v, 2_v, 5, 0});
   CHECK_EQ(m.subseg[e], id);
   CHECK_EQ(m.subseg[m.link[e]], id);
   const Subsegment old = unconstrain(m, m.link[e]);
@@ -183,7 +184,7 @@ TEST(assemble_triangles_pairs_edges_and_reports_the_first_defect) {
 
 TEST(pair_twins_refuses_edges_that_are_not_opposite) {
   Mesh m = mesh_of({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
-  const TriangleId t = append_unlinked(m, 0, 1, 2), u = append_unlinked(m, 0, 2, 3);
+  const TriangleId t = append_unlinked(m, 0_v, 1_v, 2_v), u = append_unlinked(m, 0_v, 2_v, 3_v);
   CHECK(!pair_twins(m, edge_of(t, 0), edge_of(u, 0)));  // 0->1 against 0->2
   CHECK(pair_twins(m, edge_of(t, 2), edge_of(u, 0)));   // 2->0 against 0->2
   CHECK(!pair_twins(m, edge_of(t, 2), edge_of(u, 0)));  // already paired
@@ -192,10 +193,10 @@ TEST(pair_twins_refuses_edges_that_are_not_opposite) {
 
 TEST(ghost_ring_covers_the_hull_and_goes_away) {
   Mesh m = mesh_of({{0, 0}, {1, 0}, {0, 1}});
-  seed_with_ghosts(m, 0, 1, 2);
+  seed_with_ghosts(m, 0_v, 1_v, 2_v);
   CHECK_EQ(m.live_triangles(), 4u);
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) CHECK(m.link[e] != kNone);  // a closed surface
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) CHECK_EQ(m.link[m.link[e]], e);
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) CHECK(m.link[e] != kNone);  // a closed surface
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) CHECK_EQ(m.link[m.link[e]], e);
   remove_ghosts(m);
   CHECK_EQ(m.triangle_slots(), 1u);
   CHECK(triangle_set(m) == (std::vector<Triple>{{0, 1, 2}}));

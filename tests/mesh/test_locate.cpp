@@ -1,6 +1,7 @@
 // locate against brute force, on Delaunay meshes, non-Delaunay meshes and a non-convex mesh.
 #include "delaunay/incremental.h"
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "mesh/operations.h"
 #include "mesh_checks.h"
 
@@ -14,8 +15,8 @@ bool correct(const Mesh& m, const Point& p, const Location& loc) {
   Predicates pred;
   auto side = [&](EdgeRef e) { return pred.orient2d(m.point(m.org(e)), m.point(m.dest(e)), p); };
   if (loc.status == LocateStatus::Outside) {
-    for (TriangleId t = 0; t < m.triangle_slots(); ++t)
-      if (m.is_live(t) && side(3 * t) >= 0 && side(3 * t + 1) >= 0 && side(3 * t + 2) >= 0) return false;
+    for (TriangleId t{0}; t < m.triangle_slots(); ++t)
+      if (m.is_live(t) && side(edge_of(t, 0)) >= 0 && side(edge_of(t, 1)) >= 0 && side(edge_of(t, 2)) >= 0) return false;
     return loc.edge != kNone && m.link[loc.edge] == kNone && side(loc.edge) < 0;
   }
   if (loc.edge == kNone || !m.is_live(triangle_of(loc.edge))) return false;
@@ -40,7 +41,7 @@ Mesh delaunay_of(const std::vector<Point>& pts) {
 // (exactly on edges).
 std::vector<Point> queries(const Mesh& m, unsigned seed) {
   std::vector<Point> q = uniform(400, seed, 1.4, -0.2);
-  for (VertexId v = 0; v < m.vertex_count(); v += 7) q.push_back(m.point(v));
+  for (VertexId v{0}; v < m.vertex_count(); v = VertexId{v + 7}) q.push_back(m.point(v));
   return q;
 }
 
@@ -68,7 +69,7 @@ TEST(locate_on_grid_edges_and_vertices) {
   for (int i = 0; i <= 20; ++i)
     for (int j = 0; j <= 20; ++j) {
       const Point p{i * 0.5, j * 0.5};
-      const Location loc = locate(m, pred, p, (i * 37 + j * 11) % m.corner.size());
+      const Location loc = locate(m, pred, p, EdgeRef{static_cast<std::uint32_t>((i * 37 + j * 11) % m.corner.size())});
       if (!correct(m, p, loc)) ++wrong;
       on_edge += loc.status == LocateStatus::OnEdge;
       on_vertex += loc.status == LocateStatus::OnVertex;
@@ -84,7 +85,7 @@ TEST(locate_on_a_non_delaunay_mesh) {
   Mesh m = delaunay_of(uniform(800, 33));
   std::mt19937 rng(6);
   for (int k = 0; k < 20000; ++k) {
-    const EdgeRef e = rng() % m.corner.size();
+    const EdgeRef e{static_cast<std::uint32_t>(rng() % m.corner.size())};
     const EdgeRef f = m.link[e];
     if (f == kNone) continue;
     const Point &a = m.point(m.org(e)), &b = m.point(m.dest(e)), &c = m.point(m.apex(e)), &d = m.point(m.apex(f));
@@ -94,7 +95,7 @@ TEST(locate_on_a_non_delaunay_mesh) {
   CHECK(delaunay_faults(m) > 0);
   int wrong = 0;
   for (const Point& p : queries(m, 34))
-    if (!correct(m, p, locate(m, pred, p, rng() % m.corner.size()))) ++wrong;
+    if (!correct(m, p, locate(m, pred, p, EdgeRef{static_cast<std::uint32_t>(rng() % m.corner.size())}))) ++wrong;
   CHECK_EQ(wrong, 0);
 }
 
@@ -113,7 +114,7 @@ TEST(locate_across_a_notch_of_a_non_convex_mesh) {
     }
   const Mesh m = make_mesh(pts, tris);
   Predicates pred;
-  const EdgeRef left_top = 3 * 6;  // a triangle of the left arm's upper square
+  const EdgeRef left_top = edge_of(6_t, 0);  // a triangle of the left arm's upper square
   REQUIRE(m.point(m.corner[left_top]).y == 1.0 && m.point(m.corner[left_top]).x == 0.0);
   for (const Point& p : std::vector<Point>{{2.5, 1.5}, {2.2, 1.9}, {1.5, 1.5}, {1.5, 0.5}, {3.5, 1.5}}) {
     const Location loc = locate(m, pred, p, left_top);

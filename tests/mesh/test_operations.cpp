@@ -1,5 +1,6 @@
 // flip, split_triangle and split_edge on small hand-built meshes.
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "mesh/operations.h"
 #include "mesh_checks.h"
 
@@ -26,11 +27,11 @@ TEST(flip_inside_a_mesh_keeps_outer_links_and_subsegments) {
   // A hexagon fan around a centre vertex 6; flipping a spoke touches four outer neighbours.
   std::vector<Point> pts{{2, 0}, {1, 1.7}, {-1, 1.7}, {-2, 0}, {-1, -1.7}, {1, -1.7}, {0, 0.1}};
   std::vector<Triple> tris;
-  for (VertexId i = 0; i < 6; ++i) tris.push_back({i, (i + 1) % 6, 6});
+  for (VertexId i{0}; i < 6; ++i) tris.push_back({i, (i + 1) % 6, 6});
   Mesh m = make_mesh(pts, tris);
   m.enable_subsegments();
-  m.subsegments.push_back({1, 2, 4, 0});
-  m.set_subsegment(find_edge(m, 1, 2), 0);
+  m.subsegments.push_back({1_v, 2_v, 4, 0});
+  m.set_subsegment(find_edge(m, 1, 2), 0_s);
   const EdgeRef g = flip(m, find_edge(m, 6, 1));
   CHECK_EQ(m.org(g), 2u);
   CHECK_EQ(m.dest(g), 0u);
@@ -41,7 +42,7 @@ TEST(flip_inside_a_mesh_keeps_outer_links_and_subsegments) {
   CHECK_EQ(m.subseg[s], 0u);
   CHECK_EQ(m.link[s], kNone);
   int carrying = 0;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) carrying += m.subseg[e] != kNone;
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) carrying += m.subseg[e] != kNone;
   CHECK_EQ(carrying, 1);
 }
 
@@ -51,7 +52,7 @@ TEST(split_triangle_makes_three_and_copies_region_data) {
   m.triangle_attributes = {7.5, -1.0};
   m.area_bound = {0.25};
   const VertexId v = m.add_vertex({1, 1}, VertexKind::Free);
-  const EdgeRef out = split_triangle(m, 0, v);
+  const EdgeRef out = split_triangle(m, 0_e, v);
   CHECK_EQ(m.org(out), v);
   CHECK_EQ(m.live_triangles(), 3u);
   CHECK_EQ(all_faults(m), 0);
@@ -59,7 +60,7 @@ TEST(split_triangle_makes_three_and_copies_region_data) {
   CHECK(triangle_set(m) == (std::vector<Triple>{{0, 1, 3}, {0, 3, 2}, {1, 2, 3}}));
   REQUIRE(m.triangle_attributes.size() == 6u);
   REQUIRE(m.area_bound.size() == 3u);
-  for (TriangleId t = 0; t < 3; ++t) {
+  for (TriangleId t{0}; t < 3; ++t) {
     CHECK_EQ(m.triangle_attributes[2 * t], 7.5);
     CHECK_EQ(m.triangle_attributes[2 * t + 1], -1.0);
     CHECK_EQ(m.area_bound[t], 0.25);
@@ -68,9 +69,9 @@ TEST(split_triangle_makes_three_and_copies_region_data) {
 
 TEST(split_triangle_reuses_dead_slots) {
   Mesh m = make_mesh({{0, 0}, {4, 0}, {0, 4}, {5, 5}}, {{0, 1, 2}, {1, 3, 2}});
-  m.kill_triangle(1);
+  m.kill_triangle(1_t);
   const VertexId v = m.add_vertex({1, 1}, VertexKind::Free);
-  split_triangle(m, 0, v);
+  split_triangle(m, 0_e, v);
   CHECK_EQ(m.triangle_slots(), 3u);
   CHECK_EQ(m.live_triangles(), 3u);
   CHECK_EQ(all_faults(m), 0);
@@ -90,8 +91,8 @@ TEST(split_interior_edge_without_subsegment) {
 TEST(split_edge_splits_its_subsegment) {
   Mesh m = unit_square();
   m.enable_subsegments();
-  m.subsegments.push_back({2, 0, 9, 3});  // stored against the edge's direction on purpose
-  m.set_subsegment(find_edge(m, 0, 2), 0);
+  m.subsegments.push_back({2_v, 0_v, 9, 3});  // stored against the edge's direction on purpose
+  m.set_subsegment(find_edge(m, 0, 2), 0_s);
   const VertexId v = m.add_vertex({0.5, 0.5}, VertexKind::Segment);
   split_edge(m, find_edge(m, 0, 2), v);
   CHECK_EQ(all_faults(m), 0);
@@ -110,7 +111,7 @@ TEST(split_edge_splits_its_subsegment) {
   CHECK_EQ(m.subseg[find_edge(m, 0, v)], 1u);
   CHECK_EQ(m.subseg[find_edge(m, v, 0)], 1u);
   int carrying = 0;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) carrying += m.subseg[e] != kNone;
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) carrying += m.subseg[e] != kNone;
   CHECK_EQ(carrying, 4);
 }
 
@@ -140,10 +141,10 @@ TEST(part_with_copies_the_given_vertices_with_room_to_grow) {
   m.marker[3] = 7;
   m.points.reserve(1000);
   m.kind.reserve(1000);
-  for (SubsegmentId s = 0; s < 40; ++s) m.subsegments.push_back({s % 2 ? 1u : 3u, 3, 5, s});
+  for (SubsegmentId s{0}; s < 40; ++s) m.subsegments.push_back({s % 2 ? 1_v : 3_v, 3_v, 5, s});
   std::vector<SubsegmentId> records;
-  for (SubsegmentId s = 0; s < 40; s += 2) records.push_back(s);
-  Mesh part = m.part_with({1, 3}, records);
+  for (std::uint32_t s = 0; s < 40; s += 2) records.push_back(SubsegmentId{s});
+  Mesh part = m.part_with({1_v, 3_v}, records);
   CHECK_EQ(part.vertex_count(), 2u);
   CHECK(part.points[0] == m.points[1] && part.points[1] == m.points[3]);
   CHECK(part.kind[1] == m.kind[3]);
@@ -158,7 +159,7 @@ TEST(part_with_copies_the_given_vertices_with_room_to_grow) {
   const int* marker = part.marker.data();
   const Subsegment* records_data = part.subsegments.data();
   for (int i = 0; i < 900; ++i) part.add_vertex({0.5, 0.001 * i}, VertexKind::Free);
-  for (SubsegmentId s = 0; s < 5; ++s) part.subsegments.push_back({1, 2, 0, s});
+  for (SubsegmentId s{0}; s < 5; ++s) part.subsegments.push_back({1_v, 2_v, 0, s});
   CHECK(part.points.data() == points);
   CHECK(part.kind.data() == kind);
   CHECK(part.marker.data() == marker);

@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "harness/id_literals.h"
 #include "mesh/mesh.h"
 
 namespace quality_test {
@@ -27,18 +28,18 @@ inline Mesh diamond() { return mesh_of({{-2, 0}, {0, -1}, {2, 0}, {0, 1}}); }
 // Triangles (a,b,d) = edges 0 a->b, 1 b->d, 2 d->a and (b,c,d) = edges 3 b->c, 4 c->d, 5 d->b.
 inline Mesh diamond_short_diagonal() {
   Mesh m = diamond();
-  m.add_triangle(0, 1, 3);
-  m.add_triangle(1, 2, 3);
-  m.bond(1, 5);
+  m.add_triangle(0_v, 1_v, 3_v);
+  m.add_triangle(1_v, 2_v, 3_v);
+  m.bond(1_e, 5_e);
   return m;
 }
 
 // Triangles (a,b,c) = edges 0 a->b, 1 b->c, 2 c->a and (a,c,d) = edges 3 a->c, 4 c->d, 5 d->a.
 inline Mesh diamond_long_diagonal() {
   Mesh m = diamond();
-  m.add_triangle(0, 1, 2);
-  m.add_triangle(0, 2, 3);
-  m.bond(2, 3);
+  m.add_triangle(0_v, 1_v, 2_v);
+  m.add_triangle(0_v, 2_v, 3_v);
+  m.bond(2_e, 3_e);
   return m;
 }
 
@@ -46,7 +47,7 @@ inline Mesh diamond_long_diagonal() {
 inline void bond_all(Mesh& m) {
   const auto key = [](VertexId a, VertexId b) { return (std::uint64_t{a} << 32) | b; };
   std::unordered_map<std::uint64_t, EdgeRef> open;  // directed edge -> its unbonded slot
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (!m.is_live(triangle_of(e))) continue;
     const auto twin = open.find(key(m.dest(e), m.org(e)));
     if (twin == open.end()) {
@@ -64,8 +65,8 @@ inline void bond_all(Mesh& m) {
 // a unit square), which must count as Delaunay.
 inline Mesh square_fan() {
   Mesh m = mesh_of({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}});
-  for (VertexId i = 0; i < 8; ++i) m.add_triangle(0, 1 + i, 1 + (i + 1) % 8);
-  for (TriangleId i = 0; i < 8; ++i) m.bond(3 * i + 2, 3 * ((i + 1) % 8));
+  for (std::uint32_t i = 0; i < 8; ++i) m.add_triangle(0_v, VertexId{1 + i}, VertexId{1 + (i + 1) % 8});
+  for (TriangleId i{0}; i < 8; ++i) m.bond(edge_of(i, 2), edge_of(TriangleId{(i + 1) % 8}, 0));
   return m;
 }
 
@@ -77,7 +78,7 @@ inline Mesh grid(unsigned n) {
     for (unsigned x = 0; x <= n; ++x) m.add_vertex({double(x), double(y)}, VertexKind::Input);
   for (unsigned y = 0; y < n; ++y) {
     for (unsigned x = 0; x < n; ++x) {
-      const VertexId a = y * (n + 1) + x, b = a + 1, c = b + n + 1, d = a + n + 1;
+      const VertexId a{y * (n + 1) + x}, b{a + 1}, c{b + n + 1}, d{a + n + 1};
       if ((x + y) % 2 == 0) {
         m.add_triangle(a, b, c);
         m.add_triangle(a, c, d);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "quality/bound_misses.h"
 #include "quality/mesh_builders.h"
 
@@ -17,13 +18,13 @@ namespace {
 Mesh wedge(bool segments, VertexKind apex) {
   Mesh m = mesh_of({{0, 0}, {10, 0}, {10, 1}});
   m.kind[0] = apex;
-  m.add_triangle(0, 1, 2);
+  m.add_triangle(0_v, 1_v, 2_v);
   if (segments) {
     m.enable_subsegments();
-    m.subsegments.push_back({0, 1, 1, 0});
-    m.subsegments.push_back({2, 0, 1, 1});
-    m.set_subsegment(0, 0);  // edge 0: o -> a
-    m.set_subsegment(2, 1);  // edge 2: b -> o
+    m.subsegments.push_back({0_v, 1_v, 1, 0});
+    m.subsegments.push_back({2_v, 0_v, 1, 1});
+    m.set_subsegment(0_e, 0_s);  // edge 0: o -> a
+    m.set_subsegment(2_e, 1_s);  // edge 2: b -> o
   }
   return m;
 }
@@ -53,13 +54,13 @@ TEST(the_same_angle_at_a_crossing_deltri_made_is_a_repair_not_the_input) {
   // Beyond 60 degrees an angle explains nothing: the 5.71 degree triangle is not inside a small sector
   // when the segments at o meet at 90 degrees (o-a and o-(0,10)).
   Mesh m = mesh_of({{0, 0}, {10, 0}, {10, 1}, {0, 10}});
-  m.add_triangle(0, 1, 2);
-  m.add_triangle(0, 2, 3);
+  m.add_triangle(0_v, 1_v, 2_v);
+  m.add_triangle(0_v, 2_v, 3_v);
   m.enable_subsegments();
-  m.subsegments.push_back({0, 1, 1, 0});
-  m.subsegments.push_back({3, 0, 1, 1});
-  m.set_subsegment(0, 0);  // o -> a
-  m.set_subsegment(5, 1);  // (0,10) -> o
+  m.subsegments.push_back({0_v, 1_v, 1, 0});
+  m.subsegments.push_back({3_v, 0_v, 1, 1});
+  m.set_subsegment(0_e, 0_s);  // o -> a
+  m.set_subsegment(5_e, 1_s);  // (0,10) -> o
   const BoundMisses wide = count_bound_misses(m, angle(30));
   CHECK_EQ(wide.total, 1u);
   CHECK_EQ(wide.other, 1u);
@@ -78,7 +79,7 @@ TEST(without_segments_a_skinny_triangle_is_unexplained_or_at_the_limits) {
 TEST(a_triangle_a_few_ulps_across_is_at_the_limit_of_double_precision) {
   const double x = 1e6, ulp = std::nextafter(x, 2 * x) - x;
   Mesh m = mesh_of({{x, 0}, {x + 3 * ulp, 0}, {x, 1}});
-  m.add_triangle(0, 1, 2);
+  m.add_triangle(0_v, 1_v, 2_v);
   const BoundMisses b = count_bound_misses(m, angle(20));
   CHECK_EQ(b.total, 1u);
   CHECK_EQ(b.double_precision, 1u);
@@ -86,7 +87,7 @@ TEST(a_triangle_a_few_ulps_across_is_at_the_limit_of_double_precision) {
 
 TEST(size_bounds_count_separately_and_good_triangles_not_at_all) {
   Mesh m = mesh_of({{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2}});  // equilateral, area 0.433
-  m.add_triangle(0, 1, 2);
+  m.add_triangle(0_v, 1_v, 2_v);
   CHECK_EQ(count_bound_misses(m, angle(59.9)).total, 0u);
   BoundRequest r = angle(30);
   r.size.max_area = 0.4;

@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "mesh/overlap.h"
+#include "mesh/topology_writer.h"
 #include "quality/check_mesh.h"
 #include "quality/mesh_builders.h"
 
@@ -66,8 +68,8 @@ TEST(long_diagonal_is_not_locally_delaunay) {
 TEST(segment_on_long_diagonal_excuses_it_unless_conforming) {
   Mesh m = diamond_long_diagonal();
   m.enable_subsegments();
-  m.subsegments.push_back({0, 2, 1, 0});
-  m.set_subsegment(2, 0);
+  m.subsegments.push_back({0_v, 2_v, 1, 0});
+  m.set_subsegment(2_e, 0_s);
   CHECK(check_mesh(m, CheckOptions{}).ok());
   CheckOptions conforming;
   conforming.conforming = true;
@@ -85,7 +87,7 @@ TEST(fan_with_cocircular_spokes_is_a_convex_delaunay_mesh) {
 
 TEST(fan_with_a_missing_triangle_has_one_reflex_turn) {
   Mesh m = square_fan();
-  m.kill_triangle(7);  // (centre, (1,-1), (1,0)): the boundary now dents in at the centre
+  m.kill_triangle(7_t);  // (centre, (1,-1), (1,0)): the boundary now dents in at the centre
   CHECK(check_mesh(m, CheckOptions{}).ok());
   const CheckReport r = check_mesh(m, hull_mode());
   CHECK(has_exactly(r, {{FaultKind::ReflexBoundaryTurn, 1}}));
@@ -95,7 +97,7 @@ TEST(fan_with_a_missing_triangle_has_one_reflex_turn) {
 
 TEST(one_sided_link_breaks_involution_and_opens_the_boundary) {
   Mesh m = diamond_short_diagonal();
-  m.link[5] = kNone;  // edge 1 still points at 5
+  detail::link_slots(m)[5] = kNone;  // edge 1 still points at 5
   const CheckReport r = check_mesh(m, hull_mode());
   CHECK(has_exactly(r, {{FaultKind::LinkNotInvolution, 1}, {FaultKind::OpenBoundary, 2}}));
   CHECK_EQ(r.example(FaultKind::LinkNotInvolution), 1u);
@@ -109,7 +111,7 @@ TEST(one_sided_link_breaks_involution_and_opens_the_boundary) {
 
 TEST(link_to_wrong_edge_has_unswapped_endpoints) {
   Mesh m = diamond_short_diagonal();
-  m.bond(1, 3);  // b->d with b->c; edge 5 (d->b) still points at 1
+  m.bond(1_e, 3_e);  // b->d with b->c; edge 5 (d->b) still points at 1
   const CheckReport r = check_mesh(m, CheckOptions{});
   CHECK(has_exactly(r, {{FaultKind::LinkNotInvolution, 1},
                         {FaultKind::LinkEndpoints, 2},
@@ -120,8 +122,8 @@ TEST(link_to_wrong_edge_has_unswapped_endpoints) {
 
 TEST(link_into_a_dead_slot) {
   Mesh m = diamond_short_diagonal();
-  m.corner[3] = m.corner[4] = m.corner[5] = kNone;  // killed without unlinking
-  m.free_triangles.push_back(1);
+  detail::corner_slots(m)[3] = detail::corner_slots(m)[4] = detail::corner_slots(m)[5] = kNone;  // killed without unlinking
+  m.free_triangles.push_back(1_t);
   const CheckReport r = check_mesh(m, CheckOptions{});
   CHECK(has_exactly(r, {{FaultKind::LinkToDeadTriangle, 1}, {FaultKind::OpenBoundary, 2}}));
   CHECK_EQ(r.example(FaultKind::LinkToDeadTriangle), 1u);
@@ -129,7 +131,7 @@ TEST(link_into_a_dead_slot) {
 
 TEST(clockwise_triangle_is_the_only_fault) {
   Mesh m = mesh_of({{0, 0}, {0, 1}, {1, 0}});
-  m.add_triangle(0, 1, 2);
+  m.add_triangle(0_v, 1_v, 2_v);
   const CheckReport r = check_mesh(m, hull_mode());
   CHECK(has_exactly(r, {{FaultKind::ClockwiseTriangle, 1}}));
   CHECK_EQ(r.example(FaultKind::ClockwiseTriangle), 0u);
@@ -138,7 +140,7 @@ TEST(clockwise_triangle_is_the_only_fault) {
 
 TEST(flat_triangle) {
   Mesh m = mesh_of({{0, 0}, {1, 1}, {3, 3}});
-  m.add_triangle(0, 1, 2);
+  m.add_triangle(0_v, 1_v, 2_v);
   CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::FlatTriangle, 1}}));
 }
 
@@ -146,17 +148,17 @@ TEST(orientation_is_exact_near_collinear) {
   // (0.5+2^-52, 0.5) is a hair to the right of the line y = x: a clockwise sliver that a
   // tolerance or a sloppy determinant would call flat.
   Mesh m = mesh_of({{0, 0}, {0.5 + 0x1p-52, 0.5}, {1, 1}});
-  m.add_triangle(0, 2, 1);
+  m.add_triangle(0_v, 2_v, 1_v);
   CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::ClockwiseTriangle, 1}}));
   Mesh ccw = mesh_of({{0, 0}, {0.5 + 0x1p-52, 0.5}, {1, 1}});
-  ccw.add_triangle(0, 1, 2);
+  ccw.add_triangle(0_v, 1_v, 2_v);
   CHECK(check_mesh(ccw, CheckOptions{}).ok());
 }
 
 TEST(duplicate_vertex_used_by_a_triangle) {
   Mesh m = mesh_of({{0, 0}, {1, 0}, {0, 1}});
   const VertexId dup = m.add_vertex({0, 1}, VertexKind::Duplicate);
-  m.add_triangle(0, 1, dup);
+  m.add_triangle(0_v, 1_v, dup);
   const CheckReport r = check_mesh(m, hull_mode());
   CHECK(has_exactly(r, {{FaultKind::DeadVertexUsed, 1}}));
   CHECK_EQ(r.example(FaultKind::DeadVertexUsed), dup);
@@ -166,7 +168,7 @@ TEST(duplicate_vertex_used_by_a_triangle) {
 TEST(unused_duplicate_is_fine_but_unused_input_is_not_in_hull_mode) {
   Mesh m = mesh_of({{0, 0}, {4, 0}, {0, 4}});
   m.add_vertex({0, 4}, VertexKind::Duplicate);
-  m.add_triangle(0, 1, 2);
+  m.add_triangle(0_v, 1_v, 2_v);
   CHECK(check_mesh(m, hull_mode()).ok());
   const VertexId inner = m.add_vertex({1, 1}, VertexKind::Input);
   CHECK(check_mesh(m, CheckOptions{}).ok());
@@ -185,8 +187,8 @@ TEST(no_triangles_is_right_only_for_collinear_input) {
 
 TEST(two_separate_triangles_are_two_boundary_loops) {
   Mesh m = mesh_of({{0, 0}, {1, 0}, {0, 1}, {5, 0}, {6, 0}, {5, 1}});
-  m.add_triangle(0, 1, 2);
-  m.add_triangle(3, 4, 5);
+  m.add_triangle(0_v, 1_v, 2_v);
+  m.add_triangle(3_v, 4_v, 5_v);
   CHECK(check_mesh(m, CheckOptions{}).ok());
   const CheckReport r = check_mesh(m, hull_mode());
   CHECK(has_exactly(r, {{FaultKind::ExtraBoundaryLoop, 1}}));
@@ -197,7 +199,7 @@ TEST(two_separate_triangles_are_two_boundary_loops) {
 TEST(hole_in_a_point_set_mesh_shows_as_reflex_turns) {
   // Square ring around a triangular hole; the hole's loop runs clockwise and turns right 3 times.
   Mesh m = mesh_of({{0, 0}, {6, 0}, {6, 6}, {0, 6}, {2, 2}, {4, 2}, {3, 4}});
-  const VertexId a = 0, b = 1, c = 2, d = 3, p = 4, q = 5, r = 6;
+  const VertexId a{0}, b{1}, c{2}, d{3}, p{4}, q{5}, r{6};
   for (const auto& t : {std::array<VertexId, 3>{a, b, q}, {a, q, p}, {b, c, q}, {q, c, r},
                         {c, d, r}, {d, p, r}, {d, a, p}})
     m.add_triangle(t[0], t[1], t[2]);
@@ -212,8 +214,8 @@ TEST(hole_in_a_point_set_mesh_shows_as_reflex_turns) {
 
 TEST(repeated_directed_edge) {
   Mesh m = mesh_of({{0, 0}, {2, 0}, {1, 1}, {1, 2}});
-  m.add_triangle(0, 1, 2);
-  m.add_triangle(0, 1, 3);  // overlaps the first, both with a->b
+  m.add_triangle(0_v, 1_v, 2_v);
+  m.add_triangle(0_v, 1_v, 3_v);  // overlaps the first, both with a->b
   const CheckReport r = check_mesh(m, CheckOptions{});
   CHECK(has_exactly(r, {{FaultKind::DuplicateEdge, 1}}));
   CHECK_EQ(r.example(FaultKind::DuplicateEdge), 3u);
@@ -222,12 +224,12 @@ TEST(repeated_directed_edge) {
 TEST(subsegment_on_one_twin_only) {
   Mesh m = diamond_short_diagonal();
   m.enable_subsegments();
-  m.subsegments.push_back({1, 3, 1, 0});
-  m.subseg[1] = 0;
+  m.subsegments.push_back({1_v, 3_v, 1, 0});
+  detail::subseg_slots(m)[1] = 0_s;
   CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::SubsegmentMismatch, 1}}));
-  m.subseg[5] = 0;
+  detail::subseg_slots(m)[5] = 0_s;
   CHECK(check_mesh(m, CheckOptions{}).ok());
-  m.subsegments[0] = {0, 2, 1, 0};  // a-c, but lying on b-d
+  m.subsegments[0] = {0_v, 2_v, 1, 0};  // a-c, but lying on b-d
   const CheckReport r = check_mesh(m, CheckOptions{});
   CHECK(has_exactly(r, {{FaultKind::SubsegmentEndpoints, 1}}));
   CHECK_EQ(r.example(FaultKind::SubsegmentEndpoints), 1u);
@@ -235,7 +237,7 @@ TEST(subsegment_on_one_twin_only) {
 
 TEST(storage_faults_stop_the_later_layers) {
   Mesh m = diamond_long_diagonal();  // not Delaunay, but that must not be reached
-  m.corner[4] = 9;
+  detail::corner_slots(m)[4] = 9_v;
   const CheckReport r = check_mesh(m, hull_mode());
   CHECK(has_exactly(r, {{FaultKind::CornerOutOfRange, 1}}));
   CHECK_EQ(r.example(FaultKind::CornerOutOfRange), 1u);
@@ -245,19 +247,19 @@ TEST(storage_faults_stop_the_later_layers) {
 
 TEST(repeated_corner) {
   Mesh m = diamond_short_diagonal();
-  m.corner[4] = m.corner[3];
+  detail::corner_slots(m)[4] = m.corner[3];
   CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::RepeatedCorner, 1}}));
 }
 
 TEST(free_list_faults) {
   Mesh m = diamond_short_diagonal();
-  m.free_triangles.push_back(0);  // live
-  m.free_triangles.push_back(7);  // no such slot
+  m.free_triangles.push_back(0_t);  // live
+  m.free_triangles.push_back(7_t);  // no such slot
   CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::BadFreeListEntry, 2}}));
   Mesh n = diamond_short_diagonal();
-  n.kill_triangle(1);
+  n.kill_triangle(1_t);
   CHECK(check_mesh(n, CheckOptions{}).ok());
-  n.free_triangles.push_back(1);  // listed twice
+  n.free_triangles.push_back(1_t);  // listed twice
   CHECK(has_exactly(check_mesh(n, CheckOptions{}), {{FaultKind::BadFreeListEntry, 1}}));
   n.free_triangles.clear();
   const CheckReport r = check_mesh(n, CheckOptions{});
@@ -267,16 +269,16 @@ TEST(free_list_faults) {
 
 TEST(ids_out_of_range) {
   Mesh m = diamond_short_diagonal();
-  m.link[0] = 6;
+  detail::link_slots(m)[0] = 6_e;
   m.enable_subsegments();
-  m.subseg[2] = 0;  // there are no subsegments
+  detail::subseg_slots(m)[2] = 0_s;  // there are no subsegments
   CHECK(has_exactly(check_mesh(m, CheckOptions{}),
                     {{FaultKind::LinkOutOfRange, 1}, {FaultKind::SubsegmentOutOfRange, 1}}));
 }
 
 TEST(array_sizes) {
   Mesh m = diamond_short_diagonal();
-  m.link.pop_back();
+  detail::link_slots(m).pop_back();
   m.kind.push_back(VertexKind::Input);
   const CheckReport r = check_mesh(m, CheckOptions{});
   CHECK(has_exactly(r, {{FaultKind::ArraySize, 2}}));
@@ -318,8 +320,8 @@ TEST(fault_tables_are_complete) {
 // check (twins, orientation, closed boundaries); only the overlap test sees them.
 TEST(crossing_triangles_overlap) {
   Mesh m = mesh_of({{0, 0}, {1, 0}, {0, 1}, {0.2, 0.2}, {1.2, 0.2}, {0.2, 1.2}});
-  m.add_triangle(0, 1, 2);
-  m.add_triangle(3, 4, 5);
+  m.add_triangle(0_v, 1_v, 2_v);
+  m.add_triangle(3_v, 4_v, 5_v);
   const CheckReport r = check_mesh(m, CheckOptions{});
   CHECK(has_exactly(r, {{FaultKind::OverlappingTriangles, 1}}));
   CHECK_EQ(r.example(FaultKind::OverlappingTriangles), 1u);
@@ -329,8 +331,8 @@ TEST(crossing_triangles_overlap) {
 // though the interiors are disjoint.
 TEST(corner_on_an_edge_is_reported) {
   Mesh m = mesh_of({{0, 0}, {2, 0}, {1, 1}, {1, 0}, {2, -1}});
-  m.add_triangle(0, 1, 2);
-  m.add_triangle(3, 4, 1);
+  m.add_triangle(0_v, 1_v, 2_v);
+  m.add_triangle(3_v, 4_v, 1_v);
   const CheckReport r = check_mesh(m, CheckOptions{});
   CHECK(has_exactly(r, {{FaultKind::OverlappingTriangles, 1}}));
 }
@@ -350,7 +352,7 @@ Mesh arc_fan(std::uint32_t n) {
     points.push_back({std::cos(a), std::sin(a)});
   }
   Mesh m = mesh_of(points);
-  for (VertexId i = 1; i + 1 < n; ++i) m.add_triangle(0, i, i + 1);
+  for (VertexId i{1}; i + 1 < n; ++i) m.add_triangle(0_v, i, VertexId{i + 1});
   return m;
 }
 
@@ -361,16 +363,16 @@ Mesh arc_fan(std::uint32_t n) {
 TEST(overlap_in_a_crowded_fan_is_found_wherever_it_is) {
   Predicates pred;
   CHECK(!find_overlap(arc_fan(400), pred).has_value());
-  for (const TriangleId k : {0u, 1u, 57u, 199u, 311u, 397u}) {
+  for (const std::uint32_t k : {0u, 1u, 57u, 199u, 311u, 397u}) {
     Mesh m = arc_fan(400);
-    const Point a = m.point(0), b = m.point(k + 1), c = m.point(k + 2);
+    const Point a = m.point(0_v), b = m.point(VertexId{k + 1}), c = m.point(VertexId{k + 2});
     const auto inside = [&](double wa, double wb, double wc) {
       return Point{wa * a.x + wb * b.x + wc * c.x, wa * a.y + wb * b.y + wc * c.y};
     };
     const VertexId v = m.add_vertex(inside(0.6, 0.2, 0.2), VertexKind::Input);
     m.add_vertex(inside(0.2, 0.6, 0.2), VertexKind::Input);
     m.add_vertex(inside(0.2, 0.2, 0.6), VertexKind::Input);
-    const TriangleId extra = m.add_triangle(v, v + 1, v + 2);
+    const TriangleId extra = m.add_triangle(v, VertexId{v + 1}, VertexId{v + 2});
     const auto found = find_overlap(m, pred);
     CHECK(found.has_value());
     if (!found) continue;
@@ -391,16 +393,16 @@ TEST(crossing_slivers_among_many_triangles_are_found) {
       const VertexId v = m.add_vertex({x, y}, VertexKind::Input);
       m.add_vertex({x + 0.01, y}, VertexKind::Input);
       m.add_vertex({x, y + 0.01}, VertexKind::Input);
-      m.add_triangle(v, v + 1, v + 2);
+      m.add_triangle(v, VertexId{v + 1}, VertexId{v + 2});
     }
   const VertexId h = m.add_vertex({0.003, 0.5}, VertexKind::Input);
   m.add_vertex({0.997, 0.5}, VertexKind::Input);
   m.add_vertex({0.5, 0.5005}, VertexKind::Input);
-  const TriangleId horizontal = m.add_triangle(h, h + 1, h + 2);
+  const TriangleId horizontal = m.add_triangle(h, VertexId{h + 1}, VertexId{h + 2});
   const VertexId w = m.add_vertex({0.5003, 0.002}, VertexKind::Input);
   m.add_vertex({0.5004, 0.998}, VertexKind::Input);
   m.add_vertex({0.4996, 0.4}, VertexKind::Input);
-  const TriangleId vertical = m.add_triangle(w, w + 1, w + 2);
+  const TriangleId vertical = m.add_triangle(w, VertexId{w + 1}, VertexId{w + 2});
   Predicates pred;
   const auto found = find_overlap(m, pred);
   CHECK(found.has_value());

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "mesh/embedding.h"
 #include "mesh/overlap.h"
 #include "quality/mesh_builders.h"
@@ -25,37 +26,39 @@ Mesh fan_around(Point centre, std::uint32_t count, double step, Radius radius, b
   for (std::uint32_t i = 0; i < count; ++i)
     m.add_vertex({centre.x + radius(i) * std::cos(step * i), centre.y + radius(i) * std::sin(step * i)},
                  VertexKind::Input);
-  for (VertexId i = 1; i < count; ++i) m.add_triangle(0, i, i + 1);
-  if (closed) m.add_triangle(0, count, 1);
+  for (VertexId i{1}; i < count; ++i) m.add_triangle(0_v, i, VertexId{i + 1});
+  if (closed) m.add_triangle(0_v, VertexId{count}, 1_v);
   bond_all(m);
   return m;
 }
 
 // Appends `piece`'s vertices and triangles to m (its ids shifted), bonding nothing between them.
 void add_piece(Mesh& m, const Mesh& piece) {
-  const VertexId base = m.vertex_count();
-  for (VertexId v = 0; v < piece.vertex_count(); ++v) m.add_vertex(piece.point(v), VertexKind::Input);
-  const TriangleId first = m.triangle_slots();
-  for (TriangleId t = 0; t < piece.triangle_slots(); ++t) {
+  const std::uint32_t base = m.vertex_count();
+  for (VertexId v{0}; v < piece.vertex_count(); ++v) m.add_vertex(piece.point(v), VertexKind::Input);
+  const TriangleId first{m.triangle_slots()};
+  for (TriangleId t{0}; t < piece.triangle_slots(); ++t) {
     const auto c = piece.corners(t);
-    m.append_triangle(base + c[0], base + c[1], base + c[2]);
+    m.append_triangle(VertexId{base + c[0]}, VertexId{base + c[1]}, VertexId{base + c[2]});
   }
-  for (EdgeRef e = 0; e < piece.link.size(); ++e)
-    if (piece.link[e] != kNone) m.link[3 * first + e] = 3 * first + piece.link[e];
+  for (EdgeRef e{0}; e < piece.link.size(); ++e)
+    if (piece.link[e] != kNone)
+      m.bond(edge_of(TriangleId{first + e.triangle()}, e.side()),
+             edge_of(TriangleId{first + piece.link[e].triangle()}, piece.link[e].side()));
 }
 
 // A triangle with corners a + (0,0), a + (s,0), a + (0,s).
 Mesh small_triangle(Point a, double s) { return mesh_of({a, {a.x + s, a.y}, {a.x, a.y + s}}); }
 Mesh with_triangle(Mesh m) {
-  m.add_triangle(0, 1, 2);
+  m.add_triangle(0_v, 1_v, 2_v);
   return m;
 }
 
 // grid(5) without the two triangles of its middle square: an annulus with a 1 x 1 hole at [2, 3]^2.
 Mesh annulus() {
   Mesh m = grid(5);
-  m.kill_triangle(2 * (2 * 5 + 2));
-  m.kill_triangle(2 * (2 * 5 + 2) + 1);
+  m.kill_triangle(TriangleId{2 * (2 * 5 + 2)});
+  m.kill_triangle(TriangleId{2 * (2 * 5 + 2) + 1});
   return m;
 }
 
@@ -146,8 +149,8 @@ TEST(a_fan_over_itself_is_refused) {
 // follow each other back along one line (they share the centre, so only the turn test sees it).
 TEST(a_boundary_doubling_back_is_refused) {
   Mesh m = mesh_of({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}, {0.5, 0}});
-  for (VertexId i = 0; i < 7; ++i) m.add_triangle(0, 1 + i, 2 + i);
-  m.add_triangle(0, 8, 9);
+  for (std::uint32_t i = 0; i < 7; ++i) m.add_triangle(0_v, VertexId{1 + i}, VertexId{2 + i});
+  m.add_triangle(0_v, 8_v, 9_v);
   bond_all(m);
   CHECK(!certified(m));
   Predicates pred;
@@ -161,13 +164,13 @@ TEST(pieces_touching_at_a_vertex_are_left_to_the_search) {
   Mesh bow_tie = square_fan();  // ring vertex 2 is the corner (1, 1)
   const VertexId v = bow_tie.add_vertex({2, 1}, VertexKind::Input);
   bow_tie.add_vertex({1, 2}, VertexKind::Input);
-  bow_tie.add_triangle(2, v, v + 1);
+  bow_tie.add_triangle(2_v, v, VertexId{v + 1});
   CHECK(!certified(bow_tie));
   CHECK(!overlap_found(bow_tie));
   Mesh overlapping = square_fan();  // the same, turned into the square
   const VertexId w = overlapping.add_vertex({0.5, 0.8}, VertexKind::Input);
   overlapping.add_vertex({0.8, 0.5}, VertexKind::Input);
-  overlapping.add_triangle(2, w, w + 1);
+  overlapping.add_triangle(2_v, w, VertexId{w + 1});
   CHECK(!certified(overlapping));
   CHECK(overlap_found(overlapping));
   Mesh two_ids = square_fan();
@@ -186,7 +189,7 @@ TEST(pieces_touching_at_a_vertex_are_left_to_the_search) {
 TEST(certificate_agrees_with_the_pair_search) {
   std::mt19937 random(42);
   std::uniform_real_distribution<double> anywhere(-0.5, 5.5), near(-0.6, 0.6);
-  std::uniform_int_distribution<VertexId> vertex(0, 35);
+  std::uniform_int_distribution<std::uint32_t> vertex(0, 35);
   const auto moved = [&](Point p, bool lattice) {
     p = {p.x + near(random), p.y + near(random)};
     return lattice ? Point{std::round(4 * p.x) / 4, std::round(4 * p.y) / 4} : p;
@@ -195,13 +198,13 @@ TEST(certificate_agrees_with_the_pair_search) {
   int sound = 0, unsound = 0;
   for (int run = 0; run < 20000; ++run) {
     Mesh m = annulus();
-    const VertexId v = vertex(random);
+    const VertexId v{vertex(random)};
     m.points[v] = moved(m.points[v], run % 2);
     const Point o = moved({anywhere(random), anywhere(random)}, run % 4 < 2);
     const Point a = moved(o, run % 4 < 2), b = moved(o, run % 4 < 2), c = moved(o, run % 4 < 2);
     add_piece(m, with_triangle(pred.orient2d(a, b, c) > 0 ? mesh_of({a, b, c}) : mesh_of({a, c, b})));
     bool counter_clockwise = true;
-    for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+    for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
       if (!m.is_live(t)) continue;
       const auto [a, b, c] = m.corner_points(t);
       counter_clockwise = counter_clockwise && pred.orient2d(a, b, c) > 0;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "quality/mesh_builders.h"
 #include "quality/statistics.h"
 
@@ -25,7 +26,7 @@ bool contains(const std::string& text, const std::string& part) {
 
 TEST(right_isosceles_triangle) {
   Mesh m = mesh_of({{0, 0}, {1, 0}, {0, 1}});
-  m.add_triangle(0, 1, 2);
+  m.add_triangle(0_v, 1_v, 2_v);
   const MeshStatistics s = compute_statistics(m);
   CHECK_EQ(s.vertices, 3u);
   CHECK_EQ(s.vertices_in_triangles, 3u);
@@ -54,7 +55,7 @@ TEST(right_isosceles_triangle) {
 TEST(equilateral_triangle) {
   const double h = std::sqrt(3.0) / 2.0;
   Mesh m = mesh_of({{0, 0}, {1, 0}, {0.5, h}});
-  m.add_triangle(0, 1, 2);
+  m.add_triangle(0_v, 1_v, 2_v);
   const MeshStatistics s = compute_statistics(m);
   CHECK_NEAR(s.smallest_area, std::sqrt(3.0) / 4.0, 1e-15);
   CHECK_NEAR(s.largest_area, std::sqrt(3.0) / 4.0, 1e-15);
@@ -74,10 +75,10 @@ TEST(counts_on_a_segmented_square_with_a_dead_slot) {
   Mesh m = diamond_short_diagonal();
   m.add_vertex({0, 1}, VertexKind::Duplicate);
   m.enable_subsegments();
-  m.subsegments = {{1, 3, 1, 0}, {0, 1, 2, 1}};
-  m.set_subsegment(1, 0);
-  m.set_subsegment(0, 1);
-  const TriangleId extra = m.add_triangle(0, 1, 2);
+  m.subsegments = {{1_v, 3_v, 1, 0}, {0_v, 1_v, 2, 1}};
+  m.set_subsegment(1_e, 0_s);
+  m.set_subsegment(0_e, 1_s);
+  const TriangleId extra = m.add_triangle(0_v, 1_v, 2_v);
   m.kill_triangle(extra);
   const MeshStatistics s = compute_statistics(m);
   CHECK_EQ(s.vertices, 4u);
@@ -108,7 +109,7 @@ TEST(fan_counts_and_angles) {
 
 TEST(flat_triangle_has_infinite_aspect_ratio) {
   Mesh m = mesh_of({{0, 0}, {1, 0}, {2, 0}});
-  m.add_triangle(0, 1, 2);
+  m.add_triangle(0_v, 1_v, 2_v);
   const MeshStatistics s = compute_statistics(m);
   CHECK(std::isinf(s.largest_aspect_ratio));
   CHECK_EQ(s.aspect_histogram[kAspectBins - 1], 1u);
@@ -123,7 +124,7 @@ TEST(flat_triangle_has_infinite_aspect_ratio) {
 
 TEST(format_lists_counts_and_histograms) {
   Mesh m = mesh_of({{0, 0}, {1, 0}, {0, 1}});
-  m.add_triangle(0, 1, 2);
+  m.add_triangle(0_v, 1_v, 2_v);
   const std::string text = format_statistics(compute_statistics(m));
   CHECK(contains(text, "Mesh triangles: 1\n"));
   CHECK(contains(text, "Mesh edges: 3\n"));

@@ -12,6 +12,7 @@
 
 #include "delaunay/triangulate.h"
 #include "geometry/predicates.h"
+#include "harness/id_literals.h"
 #include "mesh/mesh.h"
 #include "refine/refine.h"
 
@@ -36,22 +37,22 @@ inline Mesh triangulated(const std::vector<Point>& points) {
 }
 
 // Puts a subsegment on the edge between vertices a and b (it must exist). Returns false if not.
-inline bool mark_segment(Mesh& m, VertexId a, VertexId b, int marker = 0) {
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+inline bool mark_segment(Mesh& m, std::uint32_t a, std::uint32_t b, int marker = 0) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (m.corner[e] == kNone || m.org(e) != a || m.dest(e) != b) continue;
     const SubsegmentId id = static_cast<SubsegmentId>(m.subsegments.size());
-    m.subsegments.push_back({a, b, marker, id});
+    m.subsegments.push_back({VertexId{a}, VertexId{b}, marker, id});
     m.set_subsegment(e, id);
     return true;
   }
-  for (EdgeRef e = 0; e < m.corner.size(); ++e)
+  for (EdgeRef e{0}; e < m.corner.size(); ++e)
     if (m.corner[e] != kNone && m.org(e) == b && m.dest(e) == a) return mark_segment(m, b, a, marker);
   return false;
 }
 
 // Every boundary edge becomes a subsegment (a convex domain bounded by its hull).
 inline void mark_boundary(Mesh& m, int marker = 1) {
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (m.corner[e] == kNone || m.link[e] != kNone || m.subseg[e] != kNone) continue;
     const SubsegmentId id = static_cast<SubsegmentId>(m.subsegments.size());
     m.subsegments.push_back({m.org(e), m.dest(e), marker, id});
@@ -66,9 +67,9 @@ inline Mesh unit_square() {
 }
 
 inline double area_of(const Mesh& m, TriangleId t) {
-  const Point& a = m.point(m.corner[3 * t]);
-  const Point& b = m.point(m.corner[3 * t + 1]);
-  const Point& c = m.point(m.corner[3 * t + 2]);
+  const Point& a = m.point(m.corner[edge_of(t, 0)]);
+  const Point& b = m.point(m.corner[edge_of(t, 1)]);
+  const Point& c = m.point(m.corner[edge_of(t, 2)]);
   return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
 }
 
@@ -83,7 +84,7 @@ inline double angle_deg(const Mesh& m, EdgeRef e) {
 }
 
 inline double min_angle_deg(const Mesh& m, TriangleId t) {
-  return std::min({angle_deg(m, 3 * t), angle_deg(m, 3 * t + 1), angle_deg(m, 3 * t + 2)});
+  return std::min({angle_deg(m, edge_of(t, 0)), angle_deg(m, edge_of(t, 1)), angle_deg(m, edge_of(t, 2))});
 }
 
 struct Facts {
@@ -102,19 +103,19 @@ struct Facts {
 inline Facts facts_of(const Mesh& m) {
   Predicates pred;
   Facts f;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
     ++f.triangles;
-    const Point& a = m.point(m.corner[3 * t]);
-    const Point& b = m.point(m.corner[3 * t + 1]);
-    const Point& c = m.point(m.corner[3 * t + 2]);
+    const Point& a = m.point(m.corner[edge_of(t, 0)]);
+    const Point& b = m.point(m.corner[edge_of(t, 1)]);
+    const Point& c = m.point(m.corner[edge_of(t, 2)]);
     if (!(pred.orient2d(a, b, c) > 0)) f.all_ccw = false;
     const double area = area_of(m, t);
     f.total_area += area;
     f.max_area = std::max(f.max_area, area);
     f.min_angle = std::min(f.min_angle, min_angle_deg(m, t));
     for (unsigned i = 0; i < 3; ++i) {
-      const EdgeRef e = 3 * t + i;
+      const EdgeRef e = edge_of(t, i);
       const EdgeRef twin = m.link[e];
       const bool segment = !m.subseg.empty() && m.subseg[e] != kNone;
       if (twin == kNone) {
@@ -134,7 +135,7 @@ inline Facts facts_of(const Mesh& m) {
 // The triangles whose smallest angle is below `theta`.
 inline std::vector<TriangleId> skinny_triangles(const Mesh& m, double theta) {
   std::vector<TriangleId> out;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t)
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t)
     if (m.is_live(t) && min_angle_deg(m, t) < theta) out.push_back(t);
   return out;
 }
@@ -147,7 +148,8 @@ struct Snapshot {
   BigVector<SubsegmentId> subseg;
   std::size_t subsegments = 0;
   explicit Snapshot(const Mesh& m)
-      : points(m.points), corner(m.corner), link(m.link), subseg(m.subseg),
+      : points(m.points), corner(m.corner.begin(), m.corner.end()), link(m.link.begin(), m.link.end()),
+        subseg(m.subseg.begin(), m.subseg.end()),
         subsegments(m.subsegments.size()) {}
   bool operator==(const Snapshot&) const = default;
 };

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "refine/halves.h"
 #include "refine/refine.h"
 #include "refine_fixtures.h"
@@ -36,7 +37,7 @@ Mesh scattered_square_with_chain() {
   Mesh m = triangulated(pts);
   m.marker.assign(m.vertex_count(), 0);
   mark_boundary(m, 1);
-  for (VertexId k = 0; k + 1 < kLinePoints; ++k) CHECK(mark_segment(m, 4 + k, 5 + k, 3));
+  for (VertexId k{0}; k + 1 < kLinePoints; ++k) CHECK(mark_segment(m, 4 + k, 5 + k, 3));
   m.num_triangle_attributes = 1;
   m.triangle_attributes.assign(m.triangle_slots(), 7.0);
   m.area_bound.assign(m.triangle_slots(), 0.0002);
@@ -57,7 +58,7 @@ RefineOptions bounds_with(int threads, bool in_halves = true, std::uint32_t part
 // The total length of interior subsegments (the chain; the boundary has no twins).
 double interior_segment_length(const Mesh& m) {
   double length = 0.0;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (m.corner[e] == kNone || m.subseg[e] == kNone || m.link[e] == kNone || m.link[e] < e) continue;
     const Point& a = m.point(m.org(e));
     const Point& b = m.point(m.dest(e));
@@ -76,7 +77,7 @@ double length_of(const Mesh& m, EdgeRef e) {
 
 std::uint32_t vertices_in_triangles(const Mesh& m) {
   std::vector<char> used(m.vertex_count(), 0);
-  for (EdgeRef e = 0; e < m.corner.size(); ++e)
+  for (EdgeRef e{0}; e < m.corner.size(); ++e)
     if (m.corner[e] != kNone) used[m.corner[e]] = 1;
   std::uint32_t n = 0;
   for (char u : used) n += u;
@@ -134,12 +135,12 @@ TEST(halves_meet_the_bounds_and_keep_what_triangles_carry) {
   // The Steiner counts of the halves and the seam add up to the vertices there are.
   CHECK_EQ(static_cast<std::uint64_t>(vertices_in_triangles(m)),
            input_vertices + r.interior_steiner + r.segment_steiner - r.vertices_deleted);
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
     CHECK_EQ(m.triangle_attributes[t], 7.0);
     CHECK_EQ(m.area_bound[t], 0.0002);
   }
-  for (VertexId v = input_vertices; v < m.vertex_count(); ++v) {
+  for (VertexId v{input_vertices}; v < m.vertex_count(); ++v) {
     if (m.kind[v] == VertexKind::Dead) continue;
     const bool on_chain = m.point(v).y == kLineY && m.point(v).x > 0.0 && m.point(v).x < 1.0;
     const int expected = m.kind[v] == VertexKind::Segment ? (on_chain ? 3 : 1) : 0;
@@ -227,7 +228,7 @@ TEST(halves_keep_random_segments_and_the_constrained_delaunay_property) {
     CHECK_NEAR(f.total_area, 1.0, 1e-12);
     CHECK_NEAR(f.boundary_length, 4.0, 1e-12);
     double after = 0.0;
-    for (EdgeRef e = 0; e < m.corner.size(); ++e)
+    for (EdgeRef e{0}; e < m.corner.size(); ++e)
       if (m.corner[e] != kNone && m.subseg[e] != kNone && m.link[e] != kNone && m.link[e] > e)
         after += length_of(m, e);
     CHECK_NEAR(after, segment_length, 1e-9 * segment_length);

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "refine/quality_queue.h"
 
 using namespace deltri;
@@ -33,9 +34,14 @@ unsigned check_rises_as_edges_shorten(Key key, double floor, double factor) {
   return last;
 }
 
+// A queue entry for triangle t with corners a, b, c (numbers, so that tests can use literals).
+QueuedTriangle entry(std::uint32_t t, std::uint32_t a = 0, std::uint32_t b = 0, std::uint32_t c = 0) {
+  return {TriangleId{t}, VertexId{a}, VertexId{b}, VertexId{c}};
+}
+
 // Pops one entry per id and checks that they come out in exactly that order.
-void expect_pops(QualityQueue& q, std::initializer_list<TriangleId> ids) {
-  for (TriangleId t : ids) {
+void expect_pops(QualityQueue& q, std::initializer_list<std::uint32_t> ids) {
+  for (std::uint32_t t : ids) {
     auto e = q.pop();
     REQUIRE(e.has_value());
     CHECK_EQ(e->triangle, t);
@@ -79,11 +85,11 @@ TEST(paper_bucket_is_monotone_in_the_ratio) {
 
 TEST(queue_serves_worst_bucket_first_and_fifo_within) {
   QualityQueue q;
-  q.push_to_bucket({1, 0, 0, 0}, 5);
-  q.push_to_bucket({2, 0, 0, 0}, 40);
-  q.push_to_bucket({3, 0, 0, 0}, 5);
-  q.push_to_bucket({4, 0, 0, 0}, 0);
-  q.push_to_bucket({5, 0, 0, 0}, 40);
+  q.push_to_bucket(entry(1), 5);
+  q.push_to_bucket(entry(2), 40);
+  q.push_to_bucket(entry(3), 5);
+  q.push_to_bucket(entry(4), 0);
+  q.push_to_bucket(entry(5), 40);
   CHECK_EQ(q.size(), 5u);
   expect_pops(q, {2, 5, 1, 3, 4});
   CHECK(q.empty());
@@ -93,15 +99,15 @@ TEST(queue_serves_worst_bucket_first_and_fifo_within) {
 
 TEST(queue_keeps_order_across_reclaiming) {
   QualityQueue q;
-  for (TriangleId t = 0; t < 20000; ++t) q.push_to_bucket({t, t, t + 1, t + 2}, 7);
-  for (TriangleId t = 0; t < 20000; ++t) {
+  for (TriangleId t{0}; t < 20000; ++t) q.push_to_bucket(entry(t, t, t + 1, t + 2), 7);
+  for (TriangleId t{0}; t < 20000; ++t) {
     auto e = q.pop();
     REQUIRE(e.has_value());
     CHECK_EQ(e->triangle, t);
     CHECK_EQ(e->b, t + 1);
-    if (t % 3 == 0) q.push_to_bucket({100000 + t, 0, 0, 0}, 7);  // interleaved pushes stay behind
+    if (t % 3 == 0) q.push_to_bucket(entry(100000 + t), 7);  // interleaved pushes stay behind
   }
-  TriangleId next = 100000;
+  std::uint32_t next = 100000;
   while (auto e = q.pop()) {
     CHECK_EQ(e->triangle, next);
     next += 3;
@@ -135,7 +141,7 @@ TEST(edge_bucket_ranks_shorter_edges_higher) {
 TEST(keyed_queue_serves_largest_key_first_and_oldest_among_equals) {
   QualityQueue q;
   const double keys[] = {3.0, 0.0, 7.5, 3.0, 1e300, 0.0, 7.5};
-  for (TriangleId t = 0; t < 7; ++t) q.push_keyed({t, 0, 0, 0}, 1, keys[t]);
+  for (TriangleId t{0}; t < 7; ++t) q.push_keyed(entry(t), 1, keys[t]);
   CHECK_EQ(q.size(), 7u);
   expect_pops(q, {4, 2, 6, 0, 3, 1, 5});
   CHECK(q.empty());
@@ -144,10 +150,10 @@ TEST(keyed_queue_serves_largest_key_first_and_oldest_among_equals) {
 
 TEST(keyed_queue_serves_higher_tiers_first_whatever_the_key) {
   QualityQueue q;
-  q.push_keyed({1, 0, 0, 0}, 0, 1e300);
-  q.push_keyed({2, 0, 0, 0}, 2, 1.0);
-  q.push_keyed({3, 0, 0, 0}, 1, 1e300);
-  q.push_keyed({4, 0, 0, 0}, 2, 5.0);
+  q.push_keyed(entry(1), 0, 1e300);
+  q.push_keyed(entry(2), 2, 1.0);
+  q.push_keyed(entry(3), 1, 1e300);
+  q.push_keyed(entry(4), 2, 5.0);
   expect_pops(q, {4, 2, 3, 1});
 }
 
@@ -156,11 +162,11 @@ TEST(keyed_queue_serves_higher_tiers_first_whatever_the_key) {
 // triangle with a tiny edge; triangles that are only too large come last.
 TEST(ratio_order_serves_slivers_by_their_shortest_edge_like_the_rest) {
   QualityQueue q(QueueOrder::Ratio, 1.0);
-  q.push({1, 0, 0, 0}, {true, 255.9, 1e-20});  // mildly skinny, tiny edge
-  q.push({2, 0, 0, 0}, {false, 0.5, 1e-30});   // too large only
-  q.push({3, 0, 0, 0}, {true, 256.0, 1.0});    // a sliver as long as the domain
-  q.push({4, 0, 0, 0}, {true, 1e6, 1e-4});     // a worse sliver, shorter edge
-  q.push({5, 0, 0, 0}, {true, 2.0, 1e-10});    // mildly skinny, longer edge than 1's
+  q.push(entry(1), {true, 255.9, 1e-20});  // mildly skinny, tiny edge
+  q.push(entry(2), {false, 0.5, 1e-30});   // too large only
+  q.push(entry(3), {true, 256.0, 1.0});    // a sliver as long as the domain
+  q.push(entry(4), {true, 1e6, 1e-4});     // a worse sliver, shorter edge
+  q.push(entry(5), {true, 2.0, 1e-10});    // mildly skinny, longer edge than 1's
   expect_pops(q, {1, 5, 4, 3, 2});
 }
 
@@ -218,14 +224,14 @@ void check_ratio_order_across_window_moves(unsigned bits) {
   QualityQueue q(QueueOrder::Ratio, 1.0, bits);
   struct Model { unsigned level; TriangleId id; };
   std::vector<Model> model;
-  for (TriangleId t = 0; t < 20000; ++t) {
+  for (TriangleId t{0}; t < 20000; ++t) {
     const double l2 = std::exp2(-u(rng));
-    q.push({t, 0, 0, 0}, {true, 2.0, l2});
+    q.push(entry(t), {true, 2.0, l2});
     model.push_back({edge_level(l2, 1.0, bits), t});
   }
-  q.push({100000, 0, 0, 0}, {false, 0.5, 1e-300});  // too large only
-  q.push({100001, 0, 0, 0}, {true, 300.0, 1.0});    // a sliver with a long edge: by its edge too
-  model.push_back({edge_level(1.0, 1.0, bits), 100001});
+  q.push(entry(100000), {false, 0.5, 1e-300});  // too large only
+  q.push(entry(100001), {true, 300.0, 1.0});    // a sliver with a long edge: by its edge too
+  model.push_back({edge_level(1.0, 1.0, bits), TriangleId{100001}});
   std::stable_sort(model.begin(), model.end(), [](const Model& a, const Model& b) { return a.level > b.level; });
   for (const Model& m : model) {
     auto e = q.pop();
@@ -253,9 +259,9 @@ void check_ratio_order_while_pushing_shorter_edges(unsigned bits) {
   QualityQueue q(QueueOrder::Ratio, 1.0, bits);
   const unsigned per_octave = 1u << bits;  // levels per octave of the squared length ratio
   std::vector<std::pair<unsigned, TriangleId>> live;  // the model: levels of the queued triangles
-  TriangleId next = 0;
+  TriangleId next{0};
   const auto push_level = [&](double l2) {
-    q.push({next, 0, 0, 0}, {true, 3.0, l2});
+    q.push(entry(next), {true, 3.0, l2});
     live.push_back({edge_level(l2, 1.0, bits), next++});
   };
   for (int i = 0; i < 2000; ++i) push_level(std::exp2(-start(rng)));
@@ -286,8 +292,8 @@ TEST(ratio_order_stays_exact_while_refinement_pushes_shorter_edges) {
 
 TEST(paper_order_serves_worst_ratio_first_whatever_the_edge) {
   QualityQueue q(QueueOrder::Paper, 1.0);
-  q.push({1, 0, 0, 0}, {true, 2.0, 1e-30});
-  q.push({2, 0, 0, 0}, {true, 100.0, 1.0});
-  q.push({3, 0, 0, 0}, {false, 0.0, 1e-30});
+  q.push(entry(1), {true, 2.0, 1e-30});
+  q.push(entry(2), {true, 100.0, 1.0});
+  q.push(entry(3), {false, 0.0, 1e-30});
   expect_pops(q, {2, 1, 3});
 }

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "refine/bad_triangles.h"
 #include "refine/refine.h"
 #include "refine_fixtures.h"
@@ -87,7 +88,7 @@ TEST(unit_square_circles_conforming) {
   check_valid(m, 1.0, 4.0);
   CHECK(facts_of(m).min_angle >= 25.0 - 1e-9);
   // Conforming Delaunay: no boundary subsegment has a vertex inside its diametral circle.
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (m.corner[e] == kNone || m.subseg[e] == kNone) continue;
     const Point& a = m.point(m.org(e));
     const Point& b = m.point(m.dest(e));
@@ -109,7 +110,7 @@ Mesh spiked_square() {
 bool smallest_angle_between_subsegments(const Mesh& m, TriangleId t) {
   const double smallest = min_angle_deg(m, t);
   for (unsigned i = 0; i < 3; ++i) {
-    const EdgeRef e = 3 * t + i;  // the angle at org(e) lies between e and lprev(e)
+    const EdgeRef e = edge_of(t, i);  // the angle at org(e) lies between e and lprev(e)
     if (angle_deg(m, e) == smallest && m.subseg[e] != kNone && m.subseg[lprev(e)] != kNone) return true;
   }
   return false;
@@ -120,7 +121,7 @@ bool smallest_angle_between_subsegments(const Mesh& m, TriangleId t) {
 bool shortest_edge_is_isosceles_base(const Mesh& m, TriangleId t, const Point& o) {
   double shortest = HUGE_VAL, da = 0.0, db = 0.0;
   for (unsigned i = 0; i < 3; ++i) {
-    const Point& p = m.point(m.corner[3 * t + i]);
+    const Point& p = m.point(m.corner[edge_of(t, i)]);
     const Point& q = m.point(m.corner[3 * t + (i + 1) % 3]);
     const double length = std::hypot(q.x - p.x, q.y - p.y);
     if (length >= shortest) continue;
@@ -148,7 +149,7 @@ TEST(five_degree_spike_terminates) {
   for (TriangleId t : skinny_triangles(m, 30.0 - 1e-9)) {
     if (smallest_angle_between_subsegments(m, t)) continue;  // the input angle itself
     CHECK(min_angle_deg(m, t) >= bound - 1e-9);
-    const Point& p = m.point(m.corner[3 * t]);
+    const Point& p = m.point(m.corner[edge_of(t, 0)]);
     CHECK(std::hypot(p.x, p.y) < 0.75 || shortest_edge_is_isosceles_base(m, t, {0, 0}));
   }
   // What is left is reported: at most the triangles an independent count finds under 30 degrees
@@ -163,7 +164,7 @@ TEST(five_degree_spike_terminates) {
     return std::fabs(p.y - p.x * slope) < 1e-12 && p.x >= 0.0 && p.x <= 1.0;
   };
   int spike_pieces = 0;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (m.corner[e] == kNone || m.subseg[e] == kNone) continue;
     const bool spike = on_spike(m.org(e)) && on_spike(m.dest(e));
     CHECK_EQ(m.subsegments[m.subseg[e]].marker, spike ? 7 : 1);
@@ -180,7 +181,7 @@ Mesh fan() {
     pts.push_back({std::cos(d * std::numbers::pi / 180.0), std::sin(d * std::numbers::pi / 180.0)});
   Mesh m = triangulated(pts);
   mark_boundary(m);
-  for (VertexId v = 2; v + 1 < pts.size(); ++v) mark_segment(m, 0, v, 3);
+  for (VertexId v{2}; v + 1 < pts.size(); ++v) mark_segment(m, 0, v, 3);
   return m;
 }
 
@@ -214,7 +215,7 @@ TEST(fan_q34_and_q40_terminate_and_report) {
     // includes). The guard may stop before the area bound is met everywhere.
     std::vector<char> bad(m.triangle_slots(), 0);
     for (TriangleId t : skinny_triangles(m, theta - 1e-9)) bad[t] = !smallest_angle_between_subsegments(m, t);
-    for (TriangleId t = 0; t < m.triangle_slots(); ++t)
+    for (TriangleId t{0}; t < m.triangle_slots(); ++t)
       if (m.is_live(t) && area_of(m, t) > opt.size.max_area) bad[t] = 1;
     const auto left = static_cast<std::uint64_t>(std::count(bad.begin(), bad.end(), 1));
     CHECK(r.bad_triangles_left <= left);
@@ -252,14 +253,14 @@ TEST(no_steiner_on_boundary) {
     const RefineReport r = refine_mesh(m, pred, opt);
     print("square -Yq20a", m, r);
     check_valid(m, 1.0, 4.0);
-    for (VertexId v = 0; v < m.vertex_count(); ++v) CHECK(m.kind[v] != VertexKind::Segment);
+    for (VertexId v{0}; v < m.vertex_count(); ++v) CHECK(m.kind[v] != VertexKind::Segment);
     CHECK(facts_of(m).min_angle >= 20.0 - 1e-9);
     CHECK(r.oversized_left > 0);
     std::uint64_t oversized = 0;
-    for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+    for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
       if (!m.is_live(t) || measure_triangle(m, t, 0.0).area <= area) continue;
       ++oversized;
-      const bool on_boundary = m.link[3 * t] == kNone || m.link[3 * t + 1] == kNone || m.link[3 * t + 2] == kNone;
+      const bool on_boundary = m.link[edge_of(t, 0)] == kNone || m.link[edge_of(t, 1)] == kNone || m.link[edge_of(t, 2)] == kNone;
       CHECK(on_boundary);
     }
     CHECK_EQ(r.oversized_left, oversized);
@@ -279,9 +280,9 @@ TEST(varying_area_bounds_are_kept_through_every_split) {
     double bound;
   };
   std::vector<Initial> initial;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (t % 3 == 0) m.area_bound[t] = 0.002 * (t + 1);
-    initial.push_back({m.point(m.corner[3 * t]), m.point(m.corner[3 * t + 1]), m.point(m.corner[3 * t + 2]),
+    initial.push_back({m.point(m.corner[edge_of(t, 0)]), m.point(m.corner[edge_of(t, 1)]), m.point(m.corner[edge_of(t, 2)]),
                        m.area_bound[t]});
   }
   Predicates pred;
@@ -292,11 +293,11 @@ TEST(varying_area_bounds_are_kept_through_every_split) {
   check_valid(m, 9.0, 12.0);
   CHECK_EQ(r.bad_triangles_left, std::uint64_t{0});
   std::size_t bounded = 0;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
-    const Point& a = m.point(m.corner[3 * t]);
-    const Point& b = m.point(m.corner[3 * t + 1]);
-    const Point& c = m.point(m.corner[3 * t + 2]);
+    const Point& a = m.point(m.corner[edge_of(t, 0)]);
+    const Point& b = m.point(m.corner[edge_of(t, 1)]);
+    const Point& c = m.point(m.corner[edge_of(t, 2)]);
     const Point g{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
     for (const Initial& i : initial) {
       if (pred.orient2d(i.a, i.b, g) <= 0 || pred.orient2d(i.b, i.c, g) <= 0 || pred.orient2d(i.c, i.a, g) <= 0) continue;
@@ -320,12 +321,12 @@ TEST(attributes_area_bounds_and_markers_are_inherited) {
   refine_mesh(m, pred, opt);
   check_valid(m, 1.0, 4.0);
   CHECK(facts_of(m).max_area <= 0.005);
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
     CHECK_EQ(m.triangle_attributes[t], 5.0);
     CHECK_EQ(m.area_bound[t], 0.005);
   }
-  for (VertexId v = 4; v < m.vertex_count(); ++v)
+  for (VertexId v{4}; v < m.vertex_count(); ++v)
     CHECK_EQ(m.marker[v], m.kind[v] == VertexKind::Segment ? 1 : 0);
 }
 
@@ -347,7 +348,7 @@ TEST(chews_deletion_with_lenses_only) {
     else CHECK_EQ(r.vertices_deleted, std::uint64_t{0});
     // Deleted vertices are Dead and in no triangle; every corner is alive.
     std::size_t dead = 0;
-    for (VertexId v = 0; v < m.vertex_count(); ++v) dead += m.kind[v] == VertexKind::Dead;
+    for (VertexId v{0}; v < m.vertex_count(); ++v) dead += m.kind[v] == VertexKind::Dead;
     CHECK_EQ(dead, static_cast<std::size_t>(r.vertices_deleted));
     for (VertexId v : m.corner) CHECK(v == kNone || m.kind[v] != VertexKind::Dead);
   }

@@ -6,9 +6,11 @@
 
 #include "geometry/constructions.h"
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "mesh/internal.h"
 #include "mesh/mesh_checks.h"
 #include "mesh/operations.h"
+#include "mesh/topology_writer.h"
 #include "refine/bad_triangles.h"
 #include "refine/candidate_probe.h"
 #include "refine/clusters.h"
@@ -37,7 +39,7 @@ TEST(subsegment_encroached_by_either_apex) {
   mark_boundary(m);
   Predicates pred;
   int encroached = 0;
-  for (EdgeRef e = 0; e < m.corner.size(); ++e)
+  for (EdgeRef e{0}; e < m.corner.size(); ++e)
     if (m.subseg[e] != kNone && is_encroached(m, pred, e, EncroachRule::circle())) {
       ++encroached;
       CHECK_EQ(m.point(m.org(e)).y + m.point(m.dest(e)).y, 0.0);  // the bottom side only
@@ -50,17 +52,17 @@ TEST(subsegment_encroached_by_either_apex) {
 TEST(queue_entries_go_stale_when_their_slot_changes) {
   Mesh m = triangulated({{0, 0}, {3, 0}, {3.2, 2}, {0.1, 2.1}, {1.5, 0.9}});
   std::vector<QueuedTriangle> entries;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t)
-    if (m.is_live(t)) entries.push_back({t, m.corner[3 * t], m.corner[3 * t + 1], m.corner[3 * t + 2]});
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t)
+    if (m.is_live(t)) entries.push_back({t, m.corner[edge_of(t, 0)], m.corner[edge_of(t, 1)], m.corner[edge_of(t, 2)]});
   for (const QueuedTriangle& e : entries) {
     CHECK(is_current(m, e));
     CHECK(is_current(m, {e.triangle, e.b, e.c, e.a}));   // the same triangle, another rotation
-    CHECK(!is_current(m, {e.triangle, e.a, e.b, 9999}));  // another third vertex
+    CHECK(!is_current(m, {e.triangle, e.a, e.b, VertexId{9999}}));  // another third vertex
   }
   // Flip one interior edge whose quadrilateral is convex; exactly its two slots go stale.
   Predicates pred;
   EdgeRef flipped = kNone;
-  for (EdgeRef e = 0; e < m.corner.size() && flipped == kNone; ++e) {
+  for (EdgeRef e{0}; e < m.corner.size() && flipped == kNone; ++e) {
     const EdgeRef twin = m.link[e];
     if (m.corner[e] == kNone || twin == kNone) continue;
     const Point &a = m.point(m.org(e)), &b = m.point(m.dest(e));
@@ -75,7 +77,7 @@ TEST(queue_entries_go_stale_when_their_slot_changes) {
   REQUIRE(is_current(m, survivor));
   m.kill_triangle(survivor.triangle);
   CHECK(!is_current(m, survivor));
-  CHECK(!is_current(m, {m.triangle_slots() + 5, survivor.a, survivor.b, survivor.c}));  // beyond the mesh
+  CHECK(!is_current(m, {TriangleId{m.triangle_slots() + 5}, survivor.a, survivor.b, survivor.c}));  // beyond the mesh
 }
 
 TEST(bad_triangle_test) {
@@ -84,26 +86,26 @@ TEST(bad_triangle_test) {
   Mesh m = triangulated({{-1, 0}, {1, 0}, {0, h}});
   const QualityRules q30 = rules_of(AngleBound(30), {0, false, 0});
   const QualityRules q19 = rules_of(AngleBound(19), {0, false, 0});
-  CHECK(assess_triangle(m, 0, q30).skinny);
-  CHECK(!assess_triangle(m, 0, q19).skinny);
+  CHECK(assess_triangle(m, 0_t, q30).skinny);
+  CHECK(!assess_triangle(m, 0_t, q19).skinny);
   // (r / B)^2: r / l = 1 / (2 sin 20deg), B = 1 / (2 sin 30deg).
   const double expected = std::pow(std::sin(rad(30)) / std::sin(rad(20)), 2);
-  CHECK_NEAR(assess_triangle(m, 0, q30).shape.ratio2_over_bound2, expected, 1e-12);
+  CHECK_NEAR(assess_triangle(m, 0_t, q30).shape.ratio2_over_bound2, expected, 1e-12);
   // Size tests.
-  CHECK(assess_triangle(m, 0, rules_of(AngleBound(), {h - 0.01, false, 0})).too_large);
-  CHECK(!assess_triangle(m, 0, rules_of(AngleBound(), {h + 0.01, false, 0})).too_large);
-  CHECK(assess_triangle(m, 0, rules_of(AngleBound(), {0, false, 5.0})).too_large);
+  CHECK(assess_triangle(m, 0_t, rules_of(AngleBound(), {h - 0.01, false, 0})).too_large);
+  CHECK(!assess_triangle(m, 0_t, rules_of(AngleBound(), {h + 0.01, false, 0})).too_large);
+  CHECK(assess_triangle(m, 0_t, rules_of(AngleBound(), {0, false, 5.0})).too_large);
   m.area_bound.assign(1, 1.0);
-  CHECK(assess_triangle(m, 0, rules_of(AngleBound(), {0, true, 0})).too_large);
+  CHECK(assess_triangle(m, 0_t, rules_of(AngleBound(), {0, true, 0})).too_large);
   // How far over: the area h against bounds of h / 4 and 2h, the legs' squared length 1 + h^2
   // against an edge bound of 2; the smallest area bound that applies counts.
-  const TriangleShape shape = measure_triangle(m, 0, 0.0);
-  CHECK_NEAR(size_excess(m, 0, shape, rules_of(AngleBound(), {h / 4, false, 0})), 4.0, 1e-12);
-  CHECK_NEAR(size_excess(m, 0, shape, rules_of(AngleBound(), {2 * h, false, 0})), 0.5, 1e-12);
+  const TriangleShape shape = measure_triangle(m, 0_t, 0.0);
+  CHECK_NEAR(size_excess(m, 0_t, shape, rules_of(AngleBound(), {h / 4, false, 0})), 4.0, 1e-12);
+  CHECK_NEAR(size_excess(m, 0_t, shape, rules_of(AngleBound(), {2 * h, false, 0})), 0.5, 1e-12);
   m.area_bound.assign(1, h / 8);
-  CHECK_NEAR(size_excess(m, 0, shape, rules_of(AngleBound(), {h / 4, true, 0})), 8.0, 1e-12);
-  CHECK_NEAR(size_excess(m, 0, shape, rules_of(AngleBound(), {0, false, 2.0})), (1 + h * h) / 4, 1e-12);
-  CHECK(!assess_triangle(m, 0, rules_of(AngleBound(), {0, false, 0})).too_large);
+  CHECK_NEAR(size_excess(m, 0_t, shape, rules_of(AngleBound(), {h / 4, true, 0})), 8.0, 1e-12);
+  CHECK_NEAR(size_excess(m, 0_t, shape, rules_of(AngleBound(), {0, false, 2.0})), (1 + h * h) / 4, 1e-12);
+  CHECK(!assess_triangle(m, 0_t, rules_of(AngleBound(), {0, false, 0})).too_large);
 }
 
 TEST(small_angle_between_two_subsegments_is_not_split) {
@@ -112,16 +114,16 @@ TEST(small_angle_between_two_subsegments_is_not_split) {
   mark_boundary(m);
   CHECK(mark_segment(m, 0, 2));
   const QualityRules q = rules_of(AngleBound(20), {0, false, 0});
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     const Assessment a = assess_triangle(m, t, q);
     if (min_angle_deg(m, t) < 10) {
       CHECK(a.shape.ratio2_over_bound2 > 1.0);
       CHECK(!a.skinny);
     }
   }
-  m.subseg.assign(m.subseg.size(), kNone);  // without the subsegments it is skinny
+  detail::subseg_slots(m).assign(m.subseg.size(), kNone);  // without the subsegments it is skinny
   bool found = false;
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) found = found || assess_triangle(m, t, q).skinny;
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) found = found || assess_triangle(m, t, q).skinny;
   CHECK(found);
 }
 
@@ -150,8 +152,8 @@ Mesh cluster_mesh() {
   return m;
 }
 
-EdgeRef edge_between(const Mesh& m, VertexId a, VertexId b) {
-  for (EdgeRef e = 0; e < m.corner.size(); ++e)
+EdgeRef edge_between(const Mesh& m, std::uint32_t a, std::uint32_t b) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e)
     if (m.corner[e] != kNone && m.org(e) == a && m.dest(e) == b) return e;
   return kNone;
 }
@@ -171,18 +173,18 @@ TEST(shells_only_at_acute_apices) {
   for (int k = 0; k < 3; ++k) equilateral.push_back({std::cos(rad(120.0 * k)), std::sin(rad(120.0 * k))});
   const SegmentApices hex(boundary_of(hexagon));
   const SegmentApices tri(boundary_of(equilateral));
-  for (VertexId v = 0; v < 4; ++v) CHECK(square.is_apex(v) && !square.uses_shells(v));
-  for (VertexId v = 0; v < 6; ++v) CHECK(hex.is_apex(v) && !hex.uses_shells(v));
-  for (VertexId v = 0; v < 3; ++v) CHECK(tri.uses_shells(v));
+  for (VertexId v{0}; v < 4; ++v) CHECK(square.is_apex(v) && !square.uses_shells(v));
+  for (VertexId v{0}; v < 6; ++v) CHECK(hex.is_apex(v) && !hex.uses_shells(v));
+  for (VertexId v{0}; v < 3; ++v) CHECK(tri.uses_shells(v));
   const SegmentApices fan(cluster_mesh());
-  CHECK(fan.uses_shells(0));
+  CHECK(fan.uses_shells(0_v));
 }
 
 TEST(clusters_gather_subsegments_within_sixty_degrees) {
   Mesh m = cluster_mesh();
   const SegmentApices apices(m);
-  CHECK(apices.is_apex(0));
-  CHECK(apices.is_apex(1));  // end of the boundary and of nothing else, but two boundary sides
+  CHECK(apices.is_apex(0_v));
+  CHECK(apices.is_apex(1_v));  // end of the boundary and of nothing else, but two boundary sides
   const EdgeRef spoke = edge_between(m, 0, 2);
   REQUIRE(spoke != kNone);
   const Cluster c = subsegment_cluster(m, spoke);
@@ -199,25 +201,25 @@ TEST(mirrored_split_lines_up_with_the_vertex_across_the_wedge) {
   REQUIRE(s != kNone);
   REQUIRE(m.apex(s) == 3 || (m.link[s] != kNone && m.apex(m.link[s]) == 3));
   SegmentPieces pieces;
-  pieces.splits = {{3, {0, 2}}};
+  pieces.splits = {{3_v, {0_v, 2_v}}};
   Point p{-1, -1};
-  CHECK(mirrored_split_point(m, s, {0, 1}, pieces, p));
+  CHECK(mirrored_split_point(m, s, {0_v, 1_v}, pieces, p));
   CHECK_NEAR(p.x, 0.45, 1e-15);
   CHECK_EQ(p.y, 0.0);
   // Not across the wedge: a vertex of the same piece, or one that is on no piece.
-  pieces.splits = {{3, {1, 0}}};
-  CHECK(!mirrored_split_point(m, s, {0, 1}, pieces, p));
+  pieces.splits = {{3_v, {1_v, 0_v}}};
+  CHECK(!mirrored_split_point(m, s, {0_v, 1_v}, pieces, p));
   pieces.splits.clear();
-  CHECK(!mirrored_split_point(m, s, {0, 1}, pieces, p));
+  CHECK(!mirrored_split_point(m, s, {0_v, 1_v}, pieces, p));
   // Vertex 3 as the far end of an initial piece 0-3: the same point.
-  pieces.set_initial({SegmentPieces::piece_key(0, 1), SegmentPieces::piece_key(3, 0)});
+  pieces.set_initial({SegmentPieces::piece_key(0_v, 1_v), SegmentPieces::piece_key(3_v, 0_v)});
   p = {-1, -1};
-  CHECK(mirrored_split_point(m, s, {0, 1}, pieces, p));
+  CHECK(mirrored_split_point(m, s, {0_v, 1_v}, pieces, p));
   CHECK_NEAR(p.x, 0.45, 1e-15);
   // Outside the middle third of s (at 0.2 of it): the shells or the midpoint decide instead.
-  pieces.splits = {{3, {0, 2}}};
+  pieces.splits = {{3_v, {0_v, 2_v}}};
   m.points[3] = {0.2 * dir.x, 0.2 * dir.y};
-  CHECK(!mirrored_split_point(m, s, {0, 1}, pieces, p));
+  CHECK(!mirrored_split_point(m, s, {0_v, 1_v}, pieces, p));
 }
 
 TEST(split_permitted_follows_figure_38) {
@@ -238,8 +240,8 @@ TEST(split_permitted_follows_figure_38) {
 TEST(off_center_is_nearer_than_circumcenter_on_the_bisector) {
   const double h = 1.0 / std::tan(rad(5));  // 10 degree apex: circumcentre at y ~ 5.67
   Mesh m = triangulated({{-1, 0}, {1, 0}, {0, h}});
-  const TriangleShape s = measure_triangle(m, 0, 0.25);
-  const Point centre = off_center(m.point(0), m.point(1), m.point(2), 0.0);
+  const TriangleShape s = measure_triangle(m, 0_t, 0.25);
+  const Point centre = off_center(m.point(0_v), m.point(1_v), m.point(2_v), 0.0);
   const Point off = steiner_point(m, s.shortest, AngleBound(30).off_center_factor());
   CHECK_NEAR(off.x, 0.0, 1e-12);
   CHECK_NEAR(off.y, 0.475 / std::tan(rad(15)) * 2.0, 1e-12);  // from the midpoint of the base
@@ -247,14 +249,14 @@ TEST(off_center_is_nearer_than_circumcenter_on_the_bisector) {
   CHECK(steiner_point(m, s.shortest, 0.0) == centre);
   // At a 20 degree apex the off-centre (y ~ 3.55) would lie beyond the circumcentre (y ~ 2.75).
   Mesh wide = triangulated({{-1, 0}, {1, 0}, {0, 1.0 / std::tan(rad(10))}});
-  const TriangleShape w = measure_triangle(wide, 0, 0.25);
+  const TriangleShape w = measure_triangle(wide, 0_t, 0.25);
   CHECK(steiner_point(wide, w.shortest, AngleBound(30).off_center_factor()) ==
-        off_center(wide.point(0), wide.point(1), wide.point(2), 0.0));
+        off_center(wide.point(0_v), wide.point(1_v), wide.point(2_v), 0.0));
   // A triangle near the bound keeps its circumcentre.
   Mesh fine = triangulated({{0, 0}, {1, 0}, {0.5, 0.8}});
-  const TriangleShape f = measure_triangle(fine, 0, 0.25);
+  const TriangleShape f = measure_triangle(fine, 0_t, 0.25);
   CHECK(steiner_point(fine, f.shortest, AngleBound(30).off_center_factor()) ==
-        off_center(fine.point(0), fine.point(1), fine.point(2), 0.0));
+        off_center(fine.point(0_v), fine.point(1_v), fine.point(2_v), 0.0));
 }
 
 TEST(probe_leaves_the_mesh_untouched_and_finds_encroachment) {
@@ -265,9 +267,9 @@ TEST(probe_leaves_the_mesh_untouched_and_finds_encroachment) {
   CavityMarks marks;
   const Snapshot before(m);
   const auto all = [](EdgeRef) { return true; };
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) {
-    const Point c = off_center(m.point(m.corner[3 * t]), m.point(m.corner[3 * t + 1]),
-                               m.point(m.corner[3 * t + 2]), 0.0);
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
+    const Point c = off_center(m.point(m.corner[edge_of(t, 0)]), m.point(m.corner[edge_of(t, 1)]),
+                               m.point(m.corner[edge_of(t, 2)]), 0.0);
     const Probe p = probe_candidate(m, pred, t, c, EncroachRule::lens(30), marks, all);
     if (c.y < 0) {
       CHECK(p.status == ProbeStatus::Encroaches);
@@ -279,15 +281,15 @@ TEST(probe_leaves_the_mesh_untouched_and_finds_encroachment) {
   CHECK(Snapshot(m) == before);
   // A point in the middle is clear; its insertion radius is its distance to the nearest vertex
   // of its cavity.
-  const Probe p = probe_candidate(m, pred, 0, {2, 2}, EncroachRule::lens(30), marks, all);
+  const Probe p = probe_candidate(m, pred, 0_t, {2, 2}, EncroachRule::lens(30), marks, all);
   CHECK(p.status == ProbeStatus::Clear);
   CHECK_NEAR(p.insertion_radius, 1.8, 1e-12);
 }
 
 TEST(encroached_queue_is_fifo) {
   EncroachedQueue q;
-  q.push({3, 1, 2});
-  q.push({6, 4, 5});
+  q.push({3_e, 1_v, 2_v});
+  q.push({6_e, 4_v, 5_v});
   CHECK_EQ(q.size(), std::size_t{2});
   CHECK_EQ(q.pop().edge, 3u);
   CHECK_EQ(q.pop().edge, 6u);
@@ -298,7 +300,7 @@ TEST(edge_finder_survives_flips) {
   Mesh m = triangulated({{0, 0}, {2, 0}, {2, 1}, {0, 1}, {1, 0.5}});
   EdgeFinder finder(m);
   // Flip every flippable interior edge once; the finder must still find each remaining edge.
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     const EdgeRef f = m.link[e];
     if (f == kNone || f < e) continue;
     Predicates pred;
@@ -311,13 +313,13 @@ TEST(edge_finder_survives_flips) {
       break;
     }
   }
-  for (EdgeRef e = 0; e < m.corner.size(); ++e) {
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     const EdgeRef found = finder.find(m, m.org(e), m.dest(e));
     REQUIRE(found != kNone);
     CHECK((m.org(found) == m.org(e) && m.dest(found) == m.dest(e)) ||
           (m.org(found) == m.dest(e) && m.dest(found) == m.org(e)));
   }
-  CHECK_EQ(finder.find(m, 0, 2) == kNone, edge_between(m, 0, 2) == kNone && edge_between(m, 2, 0) == kNone);
+  CHECK_EQ(finder.find(m, 0_v, 2_v) == kNone, edge_between(m, 0, 2) == kNone && edge_between(m, 2, 0) == kNone);
 }
 
 TEST(guard_features_and_floor) {
@@ -404,16 +406,16 @@ TEST(known_cavity_fan_matches_lawson_flips) {
   for (int i = 0; i < 300; ++i) pts.push_back({u(rng), u(rng)});
   Mesh m = triangulated(pts);
   mark_boundary(m);
-  for (EdgeRef e = 0; e < m.corner.size(); e += 37)
+  for (EdgeRef e{0}; e < m.corner.size(); e = EdgeRef{e + 37})
     if (m.corner[e] != kNone && m.link[e] != kNone && m.subseg[e] == kNone) mark_segment(m, m.org(e), m.dest(e));
   m.area_bound.resize(m.triangle_slots());
-  for (TriangleId t = 0; t < m.triangle_slots(); ++t) m.area_bound[t] = 1.0 + t;
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) m.area_bound[t] = 1.0 + t;
   Predicates pred;
   CavityMarks marks;
   int filled = 0, tried = 0;
   for (int k = 0; k < 400; ++k) {
     const Point c{u(rng), u(rng)};
-    const Location at = locate(m, pred, c, 0);
+    const Location at = locate(m, pred, c, 0_e);
     if (at.status != LocateStatus::InTriangle) continue;
     const TriangleId seed = triangle_of(at.edge);
     const double nearest2 = detail::cavity_of(m, pred, {&seed, 1}, c, marks);
@@ -424,7 +426,7 @@ TEST(known_cavity_fan_matches_lawson_flips) {
     REQUIRE(insert_vertex(flips, pred, v, at.edge, false).status == InsertStatus::Inserted);
     // The search's nearest cavity vertex is the nearest vertex that the insertion joins to c.
     double joined2 = HUGE_VAL;
-    for (EdgeRef e = 0; e < flips.corner.size(); ++e)
+    for (EdgeRef e{0}; e < flips.corner.size(); ++e)
       if (flips.corner[e] == v) joined2 = std::min(joined2, squared_distance(c, flips.point(flips.dest(e))));
     CHECK_EQ(nearest2, joined2);
     const EdgeRef out = detail::fill_star(fan, pred, v, marks.marked());
@@ -437,7 +439,7 @@ TEST(known_cavity_fan_matches_lawson_flips) {
     CHECK(meshcheck::triangle_set(fan) == meshcheck::triangle_set(flips));
     const Facts facts = facts_of(fan);
     CHECK(facts.all_ccw && facts.links_ok && facts.subsegments_symmetric);
-    for (EdgeRef e = 0; e < fan.corner.size(); ++e) {
+    for (EdgeRef e{0}; e < fan.corner.size(); ++e) {
       if (fan.corner[e] == kNone || fan.corner[lprev(e)] != v) continue;
       CHECK_EQ(fan.area_bound[triangle_of(e)], bound_on_edge(m, fan.org(e), fan.dest(e)));
       if (fan.link[e] != kNone) CHECK_EQ(fan.subseg[e], m.subseg[edge_between(m, fan.org(e), fan.dest(e))]);
@@ -457,7 +459,7 @@ TEST(known_cavity_fan_refuses_a_subsegment_seen_from_outside) {
   const EdgeRef base = edge_between(m, 0, 1);
   REQUIRE(base != kNone && m.apex(base) == 2);
   const TriangleId t = triangle_of(base);
-  const EdgeRef boundary[3] = {3 * t, 3 * t + 1, 3 * t + 2};
+  const EdgeRef boundary[3] = {edge_of(t, 0), edge_of(t, 1), edge_of(t, 2)};
   KnownCavity cavity;
   cavity.list = &t, cavity.count = 1, cavity.triangles = 1, cavity.boundary = boundary;
   Predicates pred;

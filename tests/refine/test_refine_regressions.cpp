@@ -6,6 +6,7 @@
 #include "cdt/holes_and_regions.h"
 #include "cdt/insert_segments.h"
 #include "harness/check.h"
+#include "harness/id_literals.h"
 #include "refine/refine.h"
 #include "refine_fixtures.h"
 
@@ -56,11 +57,11 @@ TEST(cluster_far_from_apex_meets_the_bound) {
   const Point& apex = pts[1];
   for (TriangleId t : skinny_triangles(m, 30.0)) {
     bool at_apex = false;
-    for (unsigned i = 0; i < 3; ++i) at_apex = at_apex || m.corner[3 * t + i] == 1;
+    for (unsigned i = 0; i < 3; ++i) at_apex = at_apex || m.corner[edge_of(t, i)] == 1;
     double shortest = HUGE_VAL;
     Point a, b;
     for (unsigned i = 0; i < 3; ++i) {
-      const Point& p = m.point(m.corner[3 * t + i]);
+      const Point& p = m.point(m.corner[edge_of(t, i)]);
       const Point& q = m.point(m.corner[3 * t + (i + 1) % 3]);
       if (distance(p, q) < shortest) shortest = distance(p, q), a = p, b = q;
     }
@@ -81,7 +82,7 @@ TEST(thin_wedge_split_points_pair_up) {
   refine_mesh(m, pred, quality(30));
   check_valid(m);
   std::vector<double> on_x, on_other;  // distances from the apex of the split points of 0-1, 0-2
-  for (VertexId v = 3; v < m.vertex_count(); ++v) {
+  for (VertexId v{3}; v < m.vertex_count(); ++v) {
     if (m.kind[v] != VertexKind::Segment) continue;
     const Point& p = m.point(v);
     if (p.y == 0.0) on_x.push_back(distance(p, {0, 0}));
