@@ -85,10 +85,20 @@ class BoxPairs {
     std::vector<Box> some;
     some.reserve(corner_here_.size());
     for (const std::uint32_t p : corner_here_) some.push_back(boxes_[p]);
-    return BoxPairs(std::move(some)).any([&](std::uint32_t i, std::uint32_t j) {
-      return visit(item_[corner_here_[i]], item_[corner_here_[j]]);
-    });
+    auto mapped = [&](std::uint32_t i, std::uint32_t j) { return visit(item_[corner_here_[i]], item_[corner_here_[j]]); };
+    return BoxPairs(std::move(some)).any(PairVisitor::of(mapped));
   }
+  // One visitor type for every nested level, so that the nesting does not instantiate the
+  // templates anew for each level's lambda (without end).
+  struct PairVisitor {
+    void* context;
+    bool (*call)(void*, std::uint32_t, std::uint32_t);
+    bool operator()(std::uint32_t i, std::uint32_t j) const { return call(context, i, j); }
+    template <class F>
+    static PairVisitor of(F& f) {
+      return {&f, [](void* c, std::uint32_t i, std::uint32_t j) { return (*static_cast<F*>(c))(i, j); }};
+    }
+  };
 
   // Sorted by home cell (so that a cell's boxes sit together in memory); item_ maps back.
   std::vector<Box> boxes_;
