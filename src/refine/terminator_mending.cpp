@@ -113,7 +113,7 @@ Terminator::MendTally Terminator::tally_made(const Point& q, double tightest_are
     const double sine2 = smallest_angle_sine2(a, b, q);
     tally.worst_sine2 = std::min(tally.worst_sine2, sine2);
     tally.below_angle += sine2 < kept_bound_sin2_;
-    const double area = std::abs((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x)) / 2;
+    const double area = std::abs(triangle_area(a, b, q));
     const double longest2 = std::max({squared_distance(a, b), squared_distance(b, q), squared_distance(q, a)});
     tally.over_size += area > tightest_area ||
                        (size.max_edge_length > 0.0 && longest2 > size.max_edge_length * size.max_edge_length);
