@@ -45,6 +45,14 @@ inline unsigned shortest_side(const double len2[3]) {
   return s;
 }
 
+// The side with the greatest squared length, the first of tied ones.
+inline unsigned longest_side(const double len2[3]) {
+  unsigned s = 0;
+  if (len2[1] > len2[s]) s = 1;
+  if (len2[2] > len2[s]) s = 2;
+  return s;
+}
+
 struct Assessment {
   bool skinny = false;     // smallest angle below theta and not between two subsegments
   bool too_large = false;  // delta(t)

@@ -39,16 +39,13 @@ void Terminator::mend_kept_boundary() {
 // and offsets h of its length: h = 0 is on the edge, the others in the neighbour's side of t's
 // circumcircle when t is a cap.
 bool Terminator::mend(TriangleId t) {
+  const Assessment assessed = assess(t);
   const auto c = mesh_.corners(t);
-  const auto len2 = [&](int i) { return squared_distance(mesh_.point(c[i]), mesh_.point(c[(i + 1) % 3])); };
-  int i = 0;
-  if (len2(1) > len2(i)) i = 1;
-  if (len2(2) > len2(i)) i = 2;
+  const unsigned i = longest_side(assessed.shape.length2);
   const Point& a = mesh_.point(c[i]);
   const Point& b = mesh_.point(c[(i + 1) % 3]);
   // t is counter-clockwise, so o lies left of a->b, and (dy, -dx) points right, away from it.
   const double dx = b.x - a.x, dy = b.y - a.y;
-  const Assessment assessed = assess(t);
   std::optional<Point> best;
   double best_made = 0.0;
   for (double f : {0.5, 0.25, 0.75, -0.25, 1.25})
@@ -58,6 +55,7 @@ bool Terminator::mend(TriangleId t) {
       if (made > best_made) best_made = made, best = q;
     }
   if (!best) return false;
+  // Probed again: marks_ hold the cavity of the last candidate scored, which need not be the best.
   const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
   const Probe probe = probe_candidate(mesh_, pred_, t, *best, rule_, marks_, splittable);
   return insert_free_vertex(*best, probe) == Outcome::Inserted;
