@@ -183,9 +183,11 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
     std::fprintf(out_, "  Steiner points: %llu interior, %llu on segments; %llu subsegment splits; %llu free vertices deleted\n",
                 static_cast<unsigned long long>(q->interior_steiner), static_cast<unsigned long long>(q->segment_steiner),
                 static_cast<unsigned long long>(q->encroached_splits), static_cast<unsigned long long>(q->vertices_deleted));
-    std::fprintf(out_, "  rejected Steiner points: %llu; declined splits: %llu; guard refusals: %llu (edge floor %.6g)\n",
+    std::fprintf(out_, "  rejected Steiner points: %llu; declined splits: %llu; guard refusals: %llu ",
                 static_cast<unsigned long long>(q->rejected_candidates), static_cast<unsigned long long>(q->declined_splits),
-                static_cast<unsigned long long>(q->guard_refusals), q->guard_length);
+                static_cast<unsigned long long>(q->guard_refusals));
+    if (q->proven_range) std::fprintf(out_, "(no guard: input angles and bound in the proven range)\n");
+    else std::fprintf(out_, "(edge floor %.6g)\n", q->guard_length);
     std::fprintf(out_, "  peak bad-triangle queue: %zu; triangles still bad: %llu\n", q->peak_queue,
                 static_cast<unsigned long long>(q->bad_triangles_left));
     if (q->in_halves)

@@ -111,7 +111,7 @@ std::vector<char> vertices_needed(const Mesh& mesh, const std::vector<std::uint8
 // The start of the part cut off, in its ids (cut_off): the pieces, splits, apices and locks of what
 // it holds, and the whole mesh's extent.
 TerminatorStart start_of_part(const TerminatorStart& from, const Mesh& mesh, const CutOff& cut) {
-  TerminatorStart start{from.guard_floor, from.steiner_cap, from.cap_kind, {}, {}, {}, from.hopeless_edges,
+  TerminatorStart start{from.guard_floor, from.proven_range, from.steiner_cap, from.cap_kind, {}, {}, {}, from.hopeless_edges,
                         from.small_pages, from.extent};
   const std::vector<VertexId> local = cut.vertex_map(mesh.vertex_count());
   const auto local_ends = [&](const PieceEnds& p) {

@@ -135,7 +135,8 @@ struct RefineReport : RefineWork {
   bool in_two_stages = false;
   std::uint64_t first_stage_steiner = 0;
   std::uint64_t cascade_steiner_taken_back = 0;
-  double guard_length = 0.0;              // the edge-length floor used
+  double guard_length = 0.0;              // the edge-length floor used (0: none)
+  bool proven_range = false;              // the guard was off: the paper's theorems cover the run
   // Triangles still bad afterwards (angle below theta, not between two subsegments, or too large).
   std::uint64_t bad_triangles_left = 0;
   std::uint64_t skinny_left = 0;          // of those, the ones with an angle below theta

@@ -71,6 +71,18 @@ double angle_scale(double angle) {
   return std::max(2.0 * std::sin(0.5 * angle), 0.0);
 }
 
+double proven_angle_deg(SplitRule rule) {
+  const double ratio = rule == SplitRule::DiametralCircles ? std::sqrt(2.0)
+                       : rule == SplitRule::DiametralLenses ? 2.0 / std::sqrt(3.0)
+                                                            : std::sqrt(5.0) / 2.0;  // B
+  return std::asin(1.0 / (2.0 * ratio)) * 180.0 / std::numbers::pi;
+}
+
+bool within_proven_range(double smallest_input_angle, double angle_bound_deg, SplitRule rule) {
+  const double sixty = std::numbers::pi / 3.0 * (1.0 - 1e-9);
+  return smallest_input_angle >= sixty && angle_bound_deg <= proven_angle_deg(rule);
+}
+
 double precision_floor_at(const Point& p) {
   return std::ldexp(magnitude(p), -kPrecisionOctaves);
 }

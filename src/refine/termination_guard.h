@@ -42,6 +42,24 @@ std::vector<double> initial_feature_sizes(const Mesh& mesh);
 double smallest_input_angle(const Mesh& mesh);
 double angle_scale(double angle);
 
+// The paper's proven range, where the guard takes no decision: every angle between two input
+// segments 60 degrees or more (smallest_input_angle; within a relative 1e-9, since an equilateral
+// corner written in doubles measures 60 degrees give or take 1e-15) and an angle bound at most
+// the one the paper proves for the way subsegments are split: arcsin(1 / (2B)) for the smallest
+// ratio bound B whose flow graph has no cycle below one. Diametral circles (Ruppert, Sec. 3.3,
+// Fig. 14): B = sqrt 2, 20.70 degrees. Diametral lenses (the Ruppert-Chew hybrid of Sec. 6.4,
+// r_v >= (sqrt 3 / 2) r_p): B = 2 / sqrt 3, 25.65 degrees. Chew's second algorithm (Sec. 4.2,
+// Lemma 5, Fig. 17): B = sqrt 5 / 2, 26.56 degrees. There refinement ends with no edge shorter
+// than a constant fraction of lfs_min, the number of vertices within a constant of the integral
+// of 1 / lfs^2 (Sec. 4.3), so neither the feature floor nor the Steiner cap can stop refinement
+// that the theorems say ends at the bound, and the guard is off; only the memory budget and the
+// precision of doubles remain (docs/refinement.md, "What is proven"). -Y/-YY, Sec. 7.2's interior
+// bound, Sec. 7.3's range-restricted splitting and corner-lopping are outside it (their callers
+// keep the guard).
+enum class SplitRule : std::uint8_t { DiametralCircles, DiametralLenses, Chew };
+double proven_angle_deg(SplitRule rule);
+bool within_proven_range(double smallest_input_angle, double angle_bound_deg, SplitRule rule);
+
 // No edge shorter than a quarter of an ulp of the coordinates where it lies: 2^-kPrecisionOctaves
 // of the larger coordinate, between an eighth and a quarter of its ulp, a positive length wherever
 // a coordinate is not zero. Below kBottomScaleUlps (refine/bottom_scale.h) Steiner points and

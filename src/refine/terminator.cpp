@@ -37,13 +37,14 @@ double size_floor_of(const Mesh& mesh, const RefineOptions& opt) {
 // vertices (halfway along a strip 1000 wide and 200000 long it reads 50000), so a floor taken from
 // it refused ordinary insertions that real lfs allows. Any positive floor keeps termination
 // certain; the global one never bites where the Terminator would have stopped anyway.
-double guard_floor_of(const Mesh& mesh, const RefineOptions& opt) {
+double guard_floor_of(const Mesh& mesh, const RefineOptions& opt, double input_angle) {
   const std::vector<double> features = initial_feature_sizes(mesh);
   const double smallest = features.empty() ? 0.0 : *std::min_element(features.begin(), features.end());
   // Beyond the practical range the floor is what stops cascades, so it stays unscaled there.
-  const double scale = opt.angle.cascades() ? 1.0 : angle_scale(smallest_input_angle(mesh));
+  const double scale = opt.angle.cascades() ? 1.0 : angle_scale(input_angle);
   return guard_floor(smallest * scale, size_floor_of(mesh, opt));
 }
+
 
 // sin^2 of the smallest angle of the live triangles, 1 for none.
 double smallest_sine2(const Mesh& mesh) {
@@ -148,6 +149,17 @@ EncroachRule rule_for(const RefineOptions& opt) {
   return EncroachRule::lens(std::max(opt.angle.degrees(), kLeastLensDeg));
 }
 
+// Whether the paper's theorems cover this run (termination_guard.h, within_proven_range): its
+// algorithm as the paper analyses it, the segments split wherever they are encroached upon.
+bool proven_for(const RefineOptions& opt, double input_angle) {
+  if (opt.no_steiner_on_segments != 0 || opt.interior_bound != 0 || opt.range_restricted || opt.lopped_apices)
+    return false;
+  const SplitRule rule = opt.algorithm == RefinementAlgorithm::Chew ? SplitRule::Chew
+                         : rule_for(opt).min_apex_angle_deg == 90.0 ? SplitRule::DiametralCircles
+                                                                    : SplitRule::DiametralLenses;
+  return within_proven_range(input_angle, opt.angle.degrees(), rule);
+}
+
 }  // namespace
 
 Box extent_of(const Mesh& mesh) {
@@ -161,14 +173,14 @@ Box extent_of(const Mesh& mesh) {
 // with a second thread and a large mesh they are computed at once.
 TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) {
   TerminatorStart start;
-  const auto floor = [&] { start.guard_floor = guard_floor_of(mesh, opt); };
+  const auto floor = [&] {
+    const double input_angle = smallest_input_angle(mesh);
+    start.guard_floor = guard_floor_of(mesh, opt, input_angle);
+    start.proven_range = proven_for(opt, input_angle);
+  };
   const auto rest = [&] {
-    start.steiner_cap = deltri::steiner_cap(mesh, opt.size);
-    if (opt.size_test) start.steiner_cap = UINT64_MAX;  // what it asks for is unknown: memory alone caps it
-    if (const std::uint64_t memory = memory_cap(mesh, opt.memory_budget); memory < start.steiner_cap) {
-      start.steiner_cap = memory;
-      start.cap_kind = CapKind::Memory;
-    }
+    // A caller's size test asks for what is unknown in advance: memory alone caps it.
+    start.steiner_cap = opt.size_test ? UINT64_MAX : deltri::steiner_cap(mesh, opt.size);
     start.pieces = SegmentPieces(mesh);
     start.apices = SegmentApices(mesh);
   };
@@ -177,6 +189,11 @@ TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) 
   } else {
     floor();
     rest();
+  }
+  if (start.proven_range) start.steiner_cap = UINT64_MAX;  // the theorems bound the work there
+  if (const std::uint64_t memory = memory_cap(mesh, opt.memory_budget); memory < start.steiner_cap) {
+    start.steiner_cap = memory;
+    start.cap_kind = CapKind::Memory;
   }
   return start;
 }
@@ -196,6 +213,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       off_center_factor_(opt.off_centers && opt.algorithm == RefinementAlgorithm::Terminator ? opt.angle.off_center_factor() : 0.0),
       kept_bound_sin2_(std::pow(std::sin(std::max(opt.angle.degrees(), kLeastLensDeg) * std::numbers::pi / 180.0), 2)),
       guard_floor_(start.guard_floor),
+      proven_range_(start.proven_range),
       steiner_cap_(start.steiner_cap),
       cap_kind_(start.cap_kind),
       pieces_(std::move(start.pieces)),
@@ -206,7 +224,8 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       locked_(std::move(start.locked)),
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
-  report_.guard_length = guard_floor_;
+  report_.guard_length = proven_range_ ? 0.0 : guard_floor_;
+  report_.proven_range = proven_range_;
   const bool size_bounds = opt.size.any() || opt.size_test;
   if (keeps_every_subsegment(mesh, opt.no_steiner_on_segments))
     floor_sin2_ = kept_floor_sine2(mesh, kept_bound_sin2_, size_bounds);
@@ -301,6 +320,7 @@ std::vector<TriangleId> Terminator::unsplit_triangles() && { return std::move(un
 
 TerminatorStart Terminator::hand_over() && {
   return {guard_floor_,
+          proven_range_,
           steiner_cap_,
           cap_kind_,
           std::move(pieces_),

@@ -41,7 +41,10 @@ inline constexpr SubsegmentId kSeamEdge{0xFFFFFFFEu};  // just below kNone
 // them once on the whole mesh, hands them to the Terminators of its two halves, and hands theirs
 // on to the one that refines the seam.
 struct TerminatorStart {
+  // The guard's edge floor from the input's features; within the proven range it refuses nothing
+  // and only tells whether the bottom of double precision is within reach.
   double guard_floor = 0.0;
+  bool proven_range = false;  // within_proven_range (termination_guard.h): no floor, no Steiner cap
   std::uint64_t steiner_cap = 0;
   CapKind cap_kind = CapKind::Work;
   SegmentPieces pieces;
@@ -225,6 +228,7 @@ class Terminator {
   double floor_sin2_ = 0.0;         // sin^2 of min(that angle, the initial mesh's smallest), of half that
                                     // angle without a size bound, where -Y/-YY keep every subsegment, else 0
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
+  bool proven_range_ = false;          // the paper's theorems cover the run: the floor is not applied
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;
   SegmentPieces pieces_;  // the piece of each subsegment and refinement split

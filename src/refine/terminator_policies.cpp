@@ -353,7 +353,9 @@ double Terminator::smallest_replaced_sine2() {
 // on the hot path.
 double Terminator::precision_floor(const Point& p) const { return precision_floor_at(p) * precision_scale_; }
 
-double Terminator::floor_at(const Point& p) const { return std::max(guard_floor_, precision_floor(p)); }
+double Terminator::floor_at(const Point& p) const {
+  return proven_range_ ? precision_floor(p) : std::max(guard_floor_, precision_floor(p));
+}
 
 // The feature floor is there to stop cascades of quality splits. A triangle over its size bound
 // is split whatever the shapes around it: its circumcentre is at least 0.87 sqrt(area) from

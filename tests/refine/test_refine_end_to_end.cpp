@@ -8,6 +8,7 @@
 #include "harness/id_literals.h"
 #include "refine/bad_triangles.h"
 #include "refine/refine.h"
+#include "refine/termination_guard.h"
 #include "refine_fixtures.h"
 
 using namespace deltri;
@@ -352,4 +353,47 @@ TEST(chews_deletion_with_lenses_only) {
     CHECK_EQ(dead, static_cast<std::size_t>(r.vertices_deleted));
     for (VertexId v : m.corner) CHECK(v == kNone || m.kind[v] != VertexKind::Dead);
   }
+}
+
+// The guard is off exactly where the paper's theorems cover the run: every input angle 60 degrees
+// or more, and a bound no higher than the paper's for the way subsegments are split (20.7 degrees
+// with diametral circles, Sec. 3.3; 25.65 with diametral lenses, Sec. 6.4; 26.56 for Chew's
+// algorithm, Sec. 4.2: the figures printed in the paper). There nothing but the memory budget may
+// stop refinement, and the run ends at the bound.
+TEST(guard_off_only_within_the_proven_range) {
+  CHECK_NEAR(proven_angle_deg(SplitRule::DiametralCircles), 20.70, 0.01);
+  CHECK_NEAR(proven_angle_deg(SplitRule::DiametralLenses), 25.65, 0.01);
+  CHECK_NEAR(proven_angle_deg(SplitRule::Chew), 26.56, 0.01);
+  const auto run = [](Mesh m, RefineOptions opt) {
+    Predicates pred;
+    const RefineReport r = refine_mesh(m, pred, opt);
+    if (r.proven_range) {  // no floor, no cap, and the bound is met
+      CHECK_EQ(r.guard_length, 0.0);
+      CHECK_EQ(r.steiner_cap, UINT64_MAX);
+      CHECK(facts_of(m).min_angle >= opt.angle.degrees() - 1e-9);
+    } else {
+      CHECK(r.guard_length > 0.0);
+      CHECK(r.steiner_cap < UINT64_MAX);
+    }
+    return r.proven_range;
+  };
+  RefineOptions opt = quality(25.6);  // lenses: in range up to 25.65
+  CHECK(run(unit_square(), opt));
+  opt = quality(26.0);
+  CHECK(!run(unit_square(), opt));
+  opt.algorithm = RefinementAlgorithm::Chew;  // 26.56
+  CHECK(run(unit_square(), opt));
+  opt = quality(20.7);
+  opt.lenses = false;  // -D's circles: in range up to 20.70
+  CHECK(run(unit_square(), opt));
+  opt = quality(21.0);
+  opt.lenses = false;
+  CHECK(!run(unit_square(), opt));
+  opt = quality(20.0);
+  CHECK(!run(spiked_square(), opt));  // a 5 degree input angle
+  opt.no_steiner_on_segments = 1;  // -Y: boundary segments kept whole, outside the theorems
+  CHECK(!run(unit_square(), opt));
+  opt = quality(20.0);
+  opt.range_restricted = true;
+  CHECK(!run(unit_square(), opt));
 }
