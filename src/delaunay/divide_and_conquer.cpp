@@ -174,9 +174,9 @@ void radix_sort(BigVector<KeyedVertex>& items, int threads) {
 // --- the triangulation builder ---
 
 // The builder keeps raw arrays (issue 20 allows this one file to): it fills slots 3t..3t+2 of
-// its triangles by hand, so inside it the ids are plain integers and lnext, lprev and triangle_of
-// are its own. The mesh's arrays of Id<...> are read through std::uint32_t pointers, which
-// raw() checks is the same layout.
+// its triangles by hand, so inside it the ids are plain integers and lnext, lprev, triangle_of and
+// edge_of (3t + i) are its own. The mesh's arrays of Id<...> are read through std::uint32_t
+// pointers, which raw() checks is the same layout.
 class Builder {
   using VertexId = std::uint32_t;
   using TriangleId = std::uint32_t;
@@ -184,6 +184,7 @@ class Builder {
   static constexpr EdgeRef lnext(EdgeRef e) { return e % 3 == 2 ? e - 2 : e + 1; }
   static constexpr EdgeRef lprev(EdgeRef e) { return e % 3 == 0 ? e + 2 : e - 1; }
   static constexpr TriangleId triangle_of(EdgeRef e) { return e / 3; }
+  static constexpr EdgeRef edge_of(TriangleId t, unsigned side) { return 3 * t + side; }
 
  public:
   // `key` null: vertical cuts at the median of points in x order (-l).
@@ -273,24 +274,24 @@ class Builder {
     link_[b] = a;
   }
   void set_corners(TriangleId t, VertexId a, VertexId b, VertexId c) {
-    corner_[3 * t] = a;
-    corner_[3 * t + 1] = b;
-    corner_[3 * t + 2] = c;
+    corner_[edge_of(t, 0)] = a;
+    corner_[edge_of(t, 1)] = b;
+    corner_[edge_of(t, 2)] = c;
   }
   // Ghost over hull edge a->b.
   void make_ghost(TriangleId g, VertexId a, VertexId b) { set_corners(g, b, a, kGhostVertex); }
-  TriangleId next_ghost(TriangleId g) const { return triangle_of(link_[3 * g + 2]); }
-  TriangleId prev_ghost(TriangleId g) const { return triangle_of(link_[3 * g + 1]); }
+  TriangleId next_ghost(TriangleId g) const { return triangle_of(link_[edge_of(g, 2)]); }
+  TriangleId prev_ghost(TriangleId g) const { return triangle_of(link_[edge_of(g, 1)]); }
   // Links ghosts g[0..k) into a ring in hull order.
   void close_ring(const TriangleId* g, unsigned k) {
-    for (unsigned i = 0; i < k; ++i) bond(3 * g[i] + 2, 3 * g[(i + 1) % k] + 1);
+    for (unsigned i = 0; i < k; ++i) bond(edge_of(g[i], 2), edge_of(g[(i + 1) % k], 1));
   }
 
   TriangleId base_two(VertexId a, TriangleId slot) {
     const TriangleId g[2] = {slot, slot + 1};
     make_ghost(g[0], a, a + 1);
     make_ghost(g[1], a + 1, a);
-    bond(3 * g[0], 3 * g[1]);
+    bond(edge_of(g[0], 0), edge_of(g[1], 0));
     close_ring(g, 2);
     return g[0];
   }
@@ -307,8 +308,8 @@ class Builder {
       make_ghost(g[1], b, c);
       make_ghost(g[2], c, b);
       make_ghost(g[3], b, a);
-      bond(3 * g[0], 3 * g[3]);
-      bond(3 * g[1], 3 * g[2]);
+      bond(edge_of(g[0], 0), edge_of(g[3], 0));
+      bond(edge_of(g[1], 0), edge_of(g[2], 0));
       close_ring(g, 4);
       return g[0];
     }
@@ -318,7 +319,7 @@ class Builder {
     const TriangleId g[3] = {slot + 1, slot + 2, slot + 3};
     for (unsigned i = 0; i < 3; ++i) {
       make_ghost(g[i], h[i], h[(i + 1) % 3]);
-      bond(3 * g[i], 3 * t + i);
+      bond(edge_of(g[i], 0), edge_of(t, i));
     }
     close_ring(g, 3);
     return g[0];
@@ -330,7 +331,7 @@ class Builder {
   // once, so walking from `start` in the direction that improves finds the extreme without going
   // round: with long hulls (grids) the full round cost a twentieth of the triangulation.
   TriangleId extreme_ghost(TriangleId start, int axis, bool largest, bool entering) const {
-    const auto vertex = [&](TriangleId g) { return entering ? corner_[3 * g] : corner_[3 * g + 1]; };
+    const auto vertex = [&](TriangleId g) { return entering ? corner_[edge_of(g, 0)] : corner_[edge_of(g, 1)]; };
     const auto better = [&](TriangleId g, TriangleId than) {
       const Point &p = p_[vertex(g)], &q = p_[vertex(than)];
       return largest ? less_on(axis, q, p) : less_on(axis, p, q);
@@ -347,7 +348,7 @@ class Builder {
   // return value is the ghost that now carries the base's candidate edge. g's side towards the base
   // (side 1 on the left, side 2 on the right) is detached during the merge and stays so.
   TriangleId delete_by_flip(TriangleId g, bool left) {
-    const EdgeRef e = 3 * g, f = link_[e];
+    const EdgeRef e = edge_of(g, 0), f = link_[e];
     const TriangleId t = triangle_of(f);
     const EdgeRef f1 = lnext(f), f2 = lprev(f);
     const VertexId far = corner_[f2];
@@ -359,9 +360,9 @@ class Builder {
       set_corners(g, far, l, kGhostVertex);
       set_corners(t, x, far, kGhostVertex);
       bond(e, out_f2);
-      bond(e + 2, 3 * t + 1);
-      bond(3 * t, out_f1);
-      bond(3 * t + 2, out_g2);
+      bond(e + 2, edge_of(t, 1));
+      bond(edge_of(t, 0), out_f1);
+      bond(edge_of(t, 2), out_g2);
       return g;
     }
     // g = (r, y, G), t = (y, r, y2)  ->  g = (r, y2, G), t = (y2, y, G)
@@ -370,9 +371,9 @@ class Builder {
     set_corners(g, r, far, kGhostVertex);
     set_corners(t, far, y, kGhostVertex);
     bond(e, out_f1);
-    bond(e + 1, 3 * t + 2);
-    bond(3 * t, out_f2);
-    bond(3 * t + 1, out_g1);
+    bond(e + 1, edge_of(t, 2));
+    bond(edge_of(t, 0), out_f2);
+    bond(edge_of(t, 1), out_g1);
     return g;
   }
 
@@ -388,8 +389,8 @@ Builder::TriangleId Builder::merge(TriangleId left_ring, TriangleId right_ring, 
   TriangleId in_l = extreme_ghost(left_ring, axis, true, true);      // ghost over w->l
   TriangleId out_r = extreme_ghost(right_ring, axis, false, false);  // ghost over r->s
   while (true) {
-    const VertexId l = corner_[3 * in_l], w = corner_[3 * in_l + 1];
-    const VertexId r = corner_[3 * out_r + 1], s = corner_[3 * out_r];
+    const VertexId l = corner_[edge_of(in_l, 0)], w = corner_[edge_of(in_l, 1)];
+    const VertexId r = corner_[edge_of(out_r, 1)], s = corner_[edge_of(out_r, 0)];
     if (pred.orient2d(p_[l], p_[w], p_[r]) > 0.0) {
       in_l = prev_ghost(in_l);
     } else if (pred.orient2d(p_[r], p_[s], p_[l]) < 0.0) {
@@ -400,32 +401,32 @@ Builder::TriangleId Builder::merge(TriangleId left_ring, TriangleId right_ring, 
   }
   TriangleId gl = next_ghost(in_l);   // (x, l, G): its side 0 x->l is the left candidate edge
   TriangleId gr = prev_ghost(out_r);  // (r, y, G): its side 0 r->y is the right candidate edge
-  VertexId l = corner_[3 * in_l], r = corner_[3 * out_r + 1];
+  VertexId l = corner_[edge_of(in_l, 0)], r = corner_[edge_of(out_r, 1)];
 
   const TriangleId bottom = slot;
   make_ghost(bottom, l, r);
-  link_[3 * gl + 1] = kNone;
-  link_[3 * gr + 2] = kNone;
-  bond(3 * bottom + 1, 3 * in_l + 2);
-  bond(3 * bottom + 2, 3 * out_r + 1);
-  EdgeRef pending = 3 * bottom;  // the edge r->l below the base, waiting for the triangle above
+  link_[edge_of(gl, 1)] = kNone;
+  link_[edge_of(gr, 2)] = kNone;
+  bond(edge_of(bottom, 1), edge_of(in_l, 2));
+  bond(edge_of(bottom, 2), edge_of(out_r, 1));
+  EdgeRef pending = edge_of(bottom, 0);  // the edge r->l below the base, waiting for the triangle above
 
   while (true) {
-    VertexId x = corner_[3 * gl];
+    VertexId x = corner_[edge_of(gl, 0)];
     const bool left_ok = pred.orient2d(p_[l], p_[r], p_[x]) > 0.0;
     if (left_ok) {
       while (true) {
-        const VertexId x2 = corner_[lprev(link_[3 * gl])];
+        const VertexId x2 = corner_[lprev(link_[edge_of(gl, 0)])];
         if (x2 == kGhostVertex || pred.incircle_perturbed(p_[l], p_[r], p_[x], p_[x2]) <= 0.0) break;
         gl = delete_by_flip(gl, true);
         x = x2;
       }
     }
-    VertexId y = corner_[3 * gr + 1];
+    VertexId y = corner_[edge_of(gr, 1)];
     const bool right_ok = pred.orient2d(p_[l], p_[r], p_[y]) > 0.0;
     if (right_ok) {
       while (true) {
-        const VertexId y2 = corner_[lprev(link_[3 * gr])];
+        const VertexId y2 = corner_[lprev(link_[edge_of(gr, 0)])];
         if (y2 == kGhostVertex || pred.incircle_perturbed(p_[l], p_[r], p_[y], p_[y2]) <= 0.0) break;
         gr = delete_by_flip(gr, false);
         y = y2;
@@ -434,20 +435,20 @@ Builder::TriangleId Builder::merge(TriangleId left_ring, TriangleId right_ring, 
     if (!left_ok && !right_ok) break;
     if (!left_ok || (right_ok && pred.incircle_perturbed(p_[l], p_[r], p_[x], p_[y]) > 0.0)) {
       // Cross triangle (r, y, l) from the right ghost; the new base is l->y.
-      const EdgeRef ring = link_[3 * gr + 1];
-      corner_[3 * gr + 2] = l;
-      bond(3 * gr + 2, pending);
-      pending = 3 * gr + 1;
+      const EdgeRef ring = link_[edge_of(gr, 1)];
+      corner_[edge_of(gr, 2)] = l;
+      bond(edge_of(gr, 2), pending);
+      pending = edge_of(gr, 1);
       link_[pending] = kNone;
       gr = triangle_of(ring);
       link_[ring] = kNone;
       r = y;
     } else {
       // Cross triangle (x, l, r) from the left ghost; the new base is x->r.
-      const EdgeRef ring = link_[3 * gl + 2];
-      corner_[3 * gl + 2] = r;
-      bond(3 * gl + 1, pending);
-      pending = 3 * gl + 2;
+      const EdgeRef ring = link_[edge_of(gl, 2)];
+      corner_[edge_of(gl, 2)] = r;
+      bond(edge_of(gl, 1), pending);
+      pending = edge_of(gl, 2);
       link_[pending] = kNone;
       gl = triangle_of(ring);
       link_[ring] = kNone;
@@ -456,9 +457,9 @@ Builder::TriangleId Builder::merge(TriangleId left_ring, TriangleId right_ring, 
   }
   const TriangleId top = slot + 1;
   make_ghost(top, r, l);
-  bond(3 * top, pending);
-  bond(3 * top + 1, 3 * gr + 2);
-  bond(3 * top + 2, 3 * gl + 1);
+  bond(edge_of(top, 0), pending);
+  bond(edge_of(top, 1), edge_of(gr, 2));
+  bond(edge_of(top, 2), edge_of(gl, 1));
   return bottom;
 }
 

@@ -183,7 +183,9 @@ struct Mesh {
 
 // The per-triangle arrays besides the topology (corner, link, subseg), each holding the same
 // number of values for every slot (or none at all): a new one is listed here, and the operations
-// that move triangles between meshes (mesh/parts.h) carry it.
+// that move triangles between meshes (mesh/parts.h) carry it. The kernel's slot-by-slot storage
+// code names each array itself and must learn the new one too: append_triangle (which grows it)
+// and compact_triangles (mesh.cpp), copy_triangle_data (internal.h), clear_triangles (assemble.cpp).
 inline constexpr std::vector<double> Mesh::*kTriangleData[] = {&Mesh::triangle_attributes, &Mesh::area_bound};
 
 }  // namespace deltri

@@ -3,6 +3,7 @@
 #include "mesh/internal.h"
 #include "mesh/operations.h"
 #include "mesh/topology_writer.h"
+#include "util/invariant.h"
 
 namespace deltri {
 namespace {
@@ -30,6 +31,10 @@ EdgeRef place(Mesh& m, EdgeRef at, VertexId x0, VertexId x1, VertexId x2, detail
 template <FlipLayout layout>
 EdgeRef flip(Mesh& mesh, EdgeRef e) {
   const EdgeRef f = mesh.link[e];
+  // The precondition every caller's test promises (lawson's may_flip, Sloan's crossed edges, the
+  // ears of a deleted vertex): an interior edge, and no subsegment, which the flip would lose.
+  DELTRI_ASSERT(f != kNone && mesh.link[f] == e);
+  DELTRI_ASSERT(!detail::carries_subsegment(mesh, e));
   const EdgeRef e1 = lnext(e), e2 = lprev(e), f1 = lnext(f), f2 = lprev(f);
   const VertexId a = mesh.corner[e], b = mesh.corner[e1], c = mesh.corner[e2], d = mesh.corner[f2];
   const detail::EdgeSurround bc = detail::surround_of(mesh, e1), ca = detail::surround_of(mesh, e2);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <new>
-#include <numbers>
 #include <utility>
 
 #include "geometry/box.h"
@@ -211,7 +210,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       rule_(rule_for(opt)),
       // Ruppert and Chew insert circumcentres (Sec. 3.1, 4.1).
       off_center_factor_(opt.off_centers && opt.algorithm == RefinementAlgorithm::Terminator ? opt.angle.off_center_factor() : 0.0),
-      kept_bound_sin2_(std::pow(std::sin(std::max(opt.angle.degrees(), kLeastLensDeg) * std::numbers::pi / 180.0), 2)),
+      kept_bound_sin2_(AngleBound(std::max(opt.angle.degrees(), kLeastLensDeg)).sin2()),
       guard_floor_(start.guard_floor),
       proven_range_(start.proven_range),
       steiner_cap_(start.steiner_cap),
