@@ -8,7 +8,9 @@ REFERENCE.md is a Markdown table with rows `| dir/file.poly | A | -pq30 | -pq33 
 Rows whose reference is not a number, and files that are missing, are skipped. Prints one line per
 file and a total per mode; used for docs/refinement.md (not a test: nothing is asserted).
 """
-import argparse, os, re, shutil, subprocess, tempfile
+import argparse, os, re, shutil, subprocess
+
+from scratch_input import scratch_copy
 
 ap = argparse.ArgumentParser()
 ap.add_argument('deltri'); ap.add_argument('corpus'); ap.add_argument('reference')
@@ -29,11 +31,8 @@ for f, area, c30, c33, c30a in rows:
     for k in modes:
         if not ref[k].isdigit(): continue
         sw = '-p' + {'q30': 'q30', 'q33': 'q33', 'q30a': 'q30a' + area}[k] + 'Q'
-        d = tempfile.mkdtemp()
+        d = scratch_copy(path)
         try:
-            shutil.copy(path, d)
-            node = path[:-5] + '.node'
-            if os.path.exists(node): shutil.copy(node, d)
             b = os.path.basename(f)
             cmd = [args.deltri, sw] + args.extra.split() + [b]
             r = subprocess.run(cmd, cwd=d, capture_output=True, text=True, timeout=600)

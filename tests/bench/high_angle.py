@@ -9,7 +9,9 @@ run warned, then the multiples of the higher-angle runs over the first angle's (
 docs/refinement.md "Two stages above 34 degrees": at most about three times the vertices at the peak
 and the second stage's time). A benchmark for docs, not a test: nothing is asserted.
 """
-import argparse, glob, os, re, shutil, subprocess, tempfile, time
+import argparse, glob, os, re, shutil, subprocess
+
+from scratch_input import scratch_copy
 
 ap = argparse.ArgumentParser()
 ap.add_argument('deltri'); ap.add_argument('corpus')
@@ -23,11 +25,8 @@ if args.files:
 
 
 def run(path, angle):
-    d = tempfile.mkdtemp()
+    d = scratch_copy(path)
     try:
-        shutil.copy(path, d)
-        node = path[:-5] + '.node'
-        if os.path.exists(node): shutil.copy(node, d)
         b = os.path.basename(path)
         cmd = ['/usr/bin/time', '-f', 'TIME %e %M', args.deltri, f'-pq{angle}V', b]
         try:

@@ -13,7 +13,9 @@ warning's number of triangles missing the bounds), next to the other program's c
 docs/refinement.md ("-Y, -YY"); not a test: nothing is asserted, and the other program is not part
 of the repository.
 """
-import argparse, collections, concurrent.futures, glob, os, re, shutil, subprocess, tempfile
+import argparse, collections, concurrent.futures, glob, os, re, shutil, subprocess
+
+from scratch_input import scratch_copy
 import numpy as np
 
 ap = argparse.ArgumentParser()
@@ -52,10 +54,8 @@ def smallest_angle(directory, base):
 
 
 def run(program, path, switches):
-    d = tempfile.mkdtemp()
+    d = scratch_copy(path)
     try:
-        shutil.copy(path, d)
-        if os.path.exists(path[:-5] + '.node'): shutil.copy(path[:-5] + '.node', d)
         name = os.path.basename(path)
         r = subprocess.run(['timeout', '300', program, switches, name], cwd=d, capture_output=True, text=True)
         miss = re.search(r'(\d+) triangles miss', r.stderr)
