@@ -136,7 +136,8 @@ def one(args, mode, f):
             rec['deterministic'] = again[0] == status and again[2] == data
         except subprocess.TimeoutExpired:
             rec['deterministic'] = False
-        warned = re.search(r'(\d+) triangles miss the requested bounds[^\n]*', err)
+        # "1 triangle misses" as well as "N triangles miss"
+        warned = re.search(r'(\d+) triangles? miss(?:es)? the requested bounds[^\n]*', err)
         rec['warning'] = warned.group(0) if warned else ''
         cmd = ['/usr/bin/python3', args.meshcheck, '--input', os.path.join(work, name),
                '--mesh', os.path.join(work, output_base(name)), '--min-angle', str(q), '--json']
