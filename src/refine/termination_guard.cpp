@@ -79,7 +79,7 @@ double proven_angle_deg(SplitRule rule) {
 }
 
 bool within_proven_range(double smallest_input_angle, double angle_bound_deg, SplitRule rule) {
-  const double sixty = std::numbers::pi / 3.0 * (1.0 - 1e-9);
+  const double sixty = std::numbers::pi / 3.0 * (1.0 - kSixtySlack);
   return smallest_input_angle >= sixty && angle_bound_deg <= proven_angle_deg(rule);
 }
 

@@ -56,6 +56,9 @@ double angle_scale(double angle);
 // precision of doubles remain (docs/refinement.md, "What is proven"). -Y/-YY, Sec. 7.2's interior
 // bound, Sec. 7.3's range-restricted splitting and corner-lopping are outside it (their callers
 // keep the guard).
+// The relative slack of "60 degrees or more" here and in the sure-fire rule's test
+// (Terminator::meets_at_small_angle).
+inline constexpr double kSixtySlack = 1e-9;
 enum class SplitRule : std::uint8_t { DiametralCircles, DiametralLenses, Chew };
 double proven_angle_deg(SplitRule rule);
 bool within_proven_range(double smallest_input_angle, double angle_bound_deg, SplitRule rule);

@@ -44,7 +44,6 @@ double guard_floor_of(const Mesh& mesh, const RefineOptions& opt, double input_a
   return guard_floor(smallest * scale, size_floor_of(mesh, opt));
 }
 
-
 // sin^2 of the smallest angle of the live triangles, 1 for none.
 double smallest_sine2(const Mesh& mesh) {
   double smallest = 1.0;
@@ -172,14 +171,14 @@ Box extent_of(const Mesh& mesh) {
 // with a second thread and a large mesh they are computed at once.
 TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) {
   TerminatorStart start;
-  const auto floor = [&] {
-    const double input_angle = smallest_input_angle(mesh);
-    start.guard_floor = guard_floor_of(mesh, opt, input_angle);
-    start.proven_range = proven_for(opt, input_angle);
-  };
+  const double input_angle = smallest_input_angle(mesh);
+  start.proven_range = proven_for(opt, input_angle);
+  const auto floor = [&] { start.guard_floor = guard_floor_of(mesh, opt, input_angle); };
   const auto rest = [&] {
-    // A caller's size test asks for what is unknown in advance: memory alone caps it.
-    start.steiner_cap = opt.size_test ? UINT64_MAX : deltri::steiner_cap(mesh, opt.size);
+    // Within the proven range the theorems bound the work, and a caller's size test asks for
+    // what is unknown in advance: memory alone caps both.
+    const bool uncapped = start.proven_range || opt.size_test != nullptr;
+    start.steiner_cap = uncapped ? UINT64_MAX : deltri::steiner_cap(mesh, opt.size);
     start.pieces = SegmentPieces(mesh);
     start.apices = SegmentApices(mesh);
   };
@@ -189,7 +188,6 @@ TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) 
     floor();
     rest();
   }
-  if (start.proven_range) start.steiner_cap = UINT64_MAX;  // the theorems bound the work there
   if (const std::uint64_t memory = memory_cap(mesh, opt.memory_budget); memory < start.steiner_cap) {
     start.steiner_cap = memory;
     start.cap_kind = CapKind::Memory;
@@ -213,6 +211,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       kept_bound_sin2_(AngleBound(std::max(opt.angle.degrees(), kLeastLensDeg)).sin2()),
       guard_floor_(start.guard_floor),
       proven_range_(start.proven_range),
+      edge_floor_(start.proven_range ? 0.0 : start.guard_floor),
       steiner_cap_(start.steiner_cap),
       cap_kind_(start.cap_kind),
       pieces_(std::move(start.pieces)),
@@ -223,7 +222,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       locked_(std::move(start.locked)),
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
-  report_.guard_length = proven_range_ ? 0.0 : guard_floor_;
+  report_.guard_length = edge_floor_;
   report_.proven_range = proven_range_;
   const bool size_bounds = opt.size.any() || opt.size_test;
   if (keeps_every_subsegment(mesh, opt.no_steiner_on_segments))

@@ -228,7 +228,8 @@ class Terminator {
   double floor_sin2_ = 0.0;         // sin^2 of min(that angle, the initial mesh's smallest), of half that
                                     // angle without a size bound, where -Y/-YY keep every subsegment, else 0
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
-  bool proven_range_ = false;          // the paper's theorems cover the run: the floor is not applied
+  bool proven_range_ = false;          // the paper's theorems cover the run
+  double edge_floor_ = 0.0;            // the floor applied: guard_floor_, or 0 within the proven range
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;
   SegmentPieces pieces_;  // the piece of each subsegment and refinement split

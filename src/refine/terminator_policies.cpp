@@ -174,7 +174,7 @@ bool Terminator::meets_at_small_angle(const PieceEnds& piece, VertexId w) const 
   const Point& q = mesh_.point((*other)[0] == j ? (*other)[1] : (*other)[0]);
   const double ux = p.x - o.x, uy = p.y - o.y, vx = q.x - o.x, vy = q.y - o.y;
   const double dot = ux * vx + uy * vy;
-  constexpr double kHalfSquared = 0.25 * (1.0 + 2e-9);  // (1/2 (1 + 1e-9))^2
+  constexpr double kHalfSquared = 0.25 * (1.0 + 2.0 * kSixtySlack);  // (1/2 (1 + slack))^2
   return dot > 0.0 && dot * dot > kHalfSquared * (ux * ux + uy * uy) * (vx * vx + vy * vy);
 }
 
@@ -353,9 +353,7 @@ double Terminator::smallest_replaced_sine2() {
 // on the hot path.
 double Terminator::precision_floor(const Point& p) const { return precision_floor_at(p) * precision_scale_; }
 
-double Terminator::floor_at(const Point& p) const {
-  return proven_range_ ? precision_floor(p) : std::max(guard_floor_, precision_floor(p));
-}
+double Terminator::floor_at(const Point& p) const { return std::max(edge_floor_, precision_floor(p)); }
 
 // The feature floor is there to stop cascades of quality splits. A triangle over its size bound
 // is split whatever the shapes around it: its circumcentre is at least 0.87 sqrt(area) from
