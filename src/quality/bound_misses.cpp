@@ -24,10 +24,36 @@ double angle_at(const Point& a, const Point& b, const Point& c) {
   return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * (180.0 / std::numbers::pi);
 }
 
-bool misses_angle(const Mesh& m, TriangleId t, double bound) {
-  if (bound <= 0.0) return false;
+// The angle test without atan2 where the answer is clear: the corner's angle is atan2(cross, dot),
+// so with dot > 0 it is below `limit` degrees exactly when cross < tan(limit) dot. A relative gap
+// of 1e-9, far beyond the rounding of either form, leaves only the near ties to atan2, so every
+// answer is the one atan2 gives (most triangles of a refined mesh are clear of the bound).
+struct AngleTest {
+  static constexpr double kTiny = 1e-250;
+  double limit = 0.0;  // degrees; 0: no angle bound
+  double tangent = 0.0;
+  explicit AngleTest(double bound)
+      : limit(bound * (1.0 - kMargin)), tangent(std::tan(limit * (std::numbers::pi / 180.0))) {}
+  // -1 below the limit, +1 not below, 0 a near tie.
+  int clear_side(const Point& a, const Point& b, const Point& c) const {
+    const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
+    const double cross = std::fabs(ux * vy - uy * vx), dot = ux * vx + uy * vy;
+    if (limit >= 89.0) return 0;
+    if (!(dot > kTiny)) return dot < -kTiny ? 1 : 0;  // obtuse; or tiny, where products lose bits
+    if (cross > tangent * dot * (1.0 + 1e-9)) return 1;
+    if (cross < tangent * dot * (1.0 - 1e-9)) return -1;
+    return 0;
+  }
+  bool below(const Point& a, const Point& b, const Point& c) const {
+    const int side = clear_side(a, b, c);
+    return side != 0 ? side < 0 : angle_at(a, b, c) < limit;
+  }
+};
+
+bool misses_angle(const Mesh& m, TriangleId t, const AngleTest& test) {
+  if (test.limit <= 0.0) return false;
   const auto [a, b, c] = m.corner_points(t);
-  return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)}) < bound * (1.0 - kMargin);
+  return test.below(a, b, c) || test.below(b, c, a) || test.below(c, a, b);
 }
 
 bool misses_size(const Mesh& m, TriangleId t, const BoundRequest& r) {
@@ -37,8 +63,9 @@ bool misses_size(const Mesh& m, TriangleId t, const BoundRequest& r) {
   if (r.size.triangle_bounds && m.area_bound.size() == m.triangle_slots() && m.area_bound[t] > 0.0 &&
       area > m.area_bound[t] * (1.0 + kMargin))
     return true;
+  if (r.size.max_edge_length <= 0.0) return false;
   const double longest = std::max({length(a, b), length(b, c), length(c, a)});
-  return r.size.max_edge_length > 0.0 && longest > r.size.max_edge_length * (1.0 + kMargin);
+  return longest > r.size.max_edge_length * (1.0 + kMargin);
 }
 
 bool at_precision_limit(const Mesh& m, TriangleId t) {
@@ -177,10 +204,11 @@ VertexId explaining_junction(const Mesh& m, const SegmentVertices& s, TriangleId
 
 BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
   BoundMisses out;
+  const AngleTest angle_test(r.angle.degrees());
   std::vector<char> missing(m.triangle_slots(), 0);
   for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
-    const bool angle = misses_angle(m, t, r.angle.degrees()), size = misses_size(m, t, r);
+    const bool angle = misses_angle(m, t, angle_test), size = misses_size(m, t, r);
     out.below_angle += angle;
     out.above_size += size;
     missing[t] = angle || size;
@@ -190,7 +218,7 @@ BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
   const SegmentVertices s = collect_spokes(m);
   for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t) || !missing[t]) continue;
-    const VertexId j = misses_angle(m, t, r.angle.degrees()) ? explaining_junction(m, s, t) : kNone;
+    const VertexId j = misses_angle(m, t, angle_test) ? explaining_junction(m, s, t) : kNone;
     bool touches_repair = false, touches_segment = false;
     for (int i = 0; i < 3; ++i) {
       const VertexId v = m.corner[edge_of(t, i)];
