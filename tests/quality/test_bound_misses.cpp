@@ -1,5 +1,6 @@
 // The quality account of a final mesh (quality/bound_misses.h) on meshes drawn by hand: which
 // triangles miss the bounds, and the cause each is given, known from the drawing.
+#include <algorithm>
 #include <cmath>
 
 #include "harness/check.h"
@@ -100,4 +101,34 @@ TEST(size_bounds_count_separately_and_good_triangles_not_at_all) {
   CHECK_EQ(count_bound_misses(m, r).above_size, 1u);
   r.size.max_edge_length = 1.01;
   CHECK_EQ(count_bound_misses(m, r).total, 0u);
+}
+
+// The angle test decides most triangles without atan2 (by tan(bound) against cross / dot) and
+// near ties with it: either way a triangle misses exactly when its smallest angle, computed in
+// long double here, is below the bound less the relative margin of 1e-12. Bounds 1e-11 and 1e-6
+// (relative) either side of the angle take both paths, at scales whose products stay normal.
+TEST(the_angle_test_agrees_with_a_long_double_reference_at_and_away_from_ties) {
+  int checked = 0;
+  for (double scale : {1.0, 1e-150, 1e150})
+    for (int n = 1; n <= 12; ++n)
+      for (int k = 1; k <= 12; ++k) {
+        // (0,0), (n,0), (n,k) scaled: right angle at (n,0); the smallest angle is at the origin
+        // when k < n, else at (n,k).
+        Mesh m = mesh_of({{0, 0}, {n * scale, 0}, {n * scale, k * scale}});
+        m.add_triangle(0_v, 1_v, 2_v);
+        const long double at_o = std::atan2((long double)k, (long double)n) * 180.0L / 3.14159265358979323846264338327950288L;
+        const long double smallest = std::min(at_o, 90.0L - at_o);
+        for (double rel : {-1e-6, -1e-11, 0.0, 1e-11, 1e-6}) {
+          const double bound = static_cast<double>(smallest * (1.0L + rel));
+          const bool expected = smallest < (long double)bound * (1.0L - 1e-12L);
+          CHECK_EQ(count_bound_misses(m, angle(bound)).below_angle, expected ? 1u : 0u);
+          ++checked;
+        }
+      }
+  CHECK_EQ(checked, 3 * 12 * 12 * 5);
+  // An obtuse triangle (120 degrees at the apex, 30 at the others) against 29.9 and 30.1.
+  Mesh obtuse = mesh_of({{0, 0}, {std::sqrt(3.0), 0}, {std::sqrt(3.0) / 2, 0.5}});
+  obtuse.add_triangle(0_v, 1_v, 2_v);
+  CHECK_EQ(count_bound_misses(obtuse, angle(29.9)).below_angle, 0u);
+  CHECK_EQ(count_bound_misses(obtuse, angle(30.1)).below_angle, 1u);
 }
