@@ -58,7 +58,8 @@ class Certificate {
       boundary_.push_back(e);
     }
     next_.assign(boundary_.size(), kNone);
-    return !boundary_.empty() && boundary_.size() <= kLastIndex;  // triangles without a boundary cannot all be counter-clockwise
+    // Triangles without a boundary cannot all be counter-clockwise.
+    return !boundary_.empty() && boundary_.size() <= kLastIndex;
   }
 
   // At each bow tie v, its boundary edges (leaving and reaching it) in counter-clockwise order
@@ -94,6 +95,7 @@ class Certificate {
   // The far end of a tie edge as seen from its tie vertex.
   const Point& far_end(std::uint32_t end) const { return end <= kLastIndex ? dest(end) : org(~end); }
 
+  // The edges tie_edges_[first, last) at v, sorted round it, checked and paired.
   bool pair_round(VertexId v, std::uint32_t first, std::uint32_t last) {
     const Point& c = mesh_.point(v);
     const auto begin = tie_edges_.begin() + first, end = tie_edges_.begin() + last;
@@ -252,9 +254,7 @@ class Certificate {
   // each leaving q, -1 for each reaching it.
   int turned_past(std::uint32_t k) {
     const Point &q = dest(k), &w = dest(next_[k]);
-    const auto passed = [&](const Point& a) {
-      return !(a.y == q.y && a.x > q.x) && (half(q, a) != half(q, w) ? half(q, a) < half(q, w) : pred_.orient2d(q, a, w) >= 0);
-    };
+    const auto passed = [&](const Point& a) { return !(a.y == q.y && a.x > q.x) && !turns_before(q, w, a); };
     const VertexId v = mesh_.dest(boundary_[k]);
     if (leaving_[v] != kTie) return passed(w) - passed(org(k));
     int sum = 0;

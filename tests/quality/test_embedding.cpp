@@ -219,9 +219,10 @@ TEST(pieces_touching_at_a_vertex) {
   CHECK(found.has_value() && !found->interiors_overlap);
 }
 
-// Fans of slivers touching at their centre, one to four of them round it in separate sectors
-// (the last two apart by 0.001 radians, and one sector ending on the direction +x, where the
-// winding test's ray starts), each a bow tie of all the fans, are certified; so is a lone fan.
+// Fans of slivers touching at their centre, two to four of them round it in separate sectors, a
+// bow tie of all the fans, are certified (so is a lone fan): sectors starting or ending on the
+// direction +x, where the winding test's ray starts, or on -x; two sectors 0.001 radians apart.
+// The pair search agrees on the four fans made of 8,000 slivers.
 TEST(fans_touching_at_a_vertex_are_certified) {
   CHECK(certified(fans_at_origin({0}, {1}, {1}, 500)));
   CHECK(certified(fans_at_origin({0, 3}, {1, 4}, {1, 2}, 500)));
@@ -232,19 +233,19 @@ TEST(fans_touching_at_a_vertex_are_certified) {
   CHECK(!overlap_found(m));
 }
 
-// Fans at one centre whose sectors overlap: one fan starting inside another, one fan inside
-// another, and boundary loops that would cross at the centre (one fan over the upper half, one over
-// the left half); two edges leaving the centre in one direction (fans sharing a spoke's
-// direction without a twin). Each is refused and found by the pair search.
+// Fans at one centre whose sectors overlap, each refused and found by the pair search: one fan
+// starting inside another; one inside another; loops that would cross at the centre (one fan over
+// the upper half, one over the left half); two fans meeting along a spoke without twins (an edge
+// reaching the centre and one leaving it in one direction); one fan over the ends of two others.
 TEST(fans_overlapping_at_a_vertex_are_refused) {
-  for (const Mesh& m : {fans_at_origin({0, 0.5}, {1, 1.5}, {1, 2}, 50), fans_at_origin({0, 0.25}, {1, 0.75}, {1, 2}, 50),
+  for (const Mesh& m : {fans_at_origin({0, 0.5}, {1, 1.5}, {1, 2}, 50),  //
+                        fans_at_origin({0, 0.25}, {1, 0.75}, {1, 2}, 50),
                         fans_at_origin({0, kPi / 2}, {kPi, 3 * kPi / 2}, {1, 1}, 2),
                         fans_at_origin({0, 1, 3}, {1, 2, 4}, {1, 2, 1}, 10),
                         fans_at_origin({0, 1.5, 0.8}, {1, 2.5, 1.7}, {1, 2, 1}, 10)}) {
     CHECK(!certified(m));
     CHECK(overlap_found(m));
   }
-  // The third and fifth above: loops crossing at the centre, and one fan overlapping two others.
 }
 
 // A bow tie of two fans lying over a grid, inside it, touching nothing: its edges at the centre
