@@ -14,22 +14,31 @@ namespace {
 // Lower: least x, then least y (the lowest vertex of a polygon is a convex corner of it).
 bool lower(const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
+// Half-turns round c from the direction +x: 0 for directions in [0, pi), 1 for [pi, 2 pi).
+int half(const Point& c, const Point& a) { return a.y > c.y || (a.y == c.y && a.x > c.x) ? 0 : 1; }
+
 // For a, v, w on one line with a and w apart from v: w lies on a's side of v.
 bool same_side(const Point& v, const Point& a, const Point& w) {
   return (a.x < v.x) == (w.x < v.x) && (a.x > v.x) == (w.x > v.x) && (a.y < v.y) == (w.y < v.y) &&
          (a.y > v.y) == (w.y > v.y);
 }
 
+// A boundary edge at a bow tie: k for edge k leaving it, ~k for edge k reaching it.
+constexpr std::uint32_t kLastIndex = 0x7FFFFFFFu;
+// leaving_ of a vertex left by several boundary edges.
+constexpr std::uint32_t kTie = 0xFFFFFFFEu;
+
 class Certificate {
  public:
   Certificate(const Mesh& mesh, Predicates& pred) : mesh_(mesh), pred_(pred) {}
 
-  bool run() { return collect_boundary() && trace_loops() && corners_turn() && no_edges_meet() && loops_nest(); }
+  bool run() {
+    return collect_boundary() && pair_at_ties() && trace_loops() && corners_turn() && no_edges_meet() && loops_nest();
+  }
 
  private:
   struct Loop {
     std::uint32_t lowest;  // the boundary edge ending at the loop's lowest vertex
-    bool counter_clockwise = false;
   };
 
   const Point& org(std::uint32_t k) const { return mesh_.point(mesh_.org(boundary_[k])); }
@@ -38,23 +47,81 @@ class Certificate {
   // gives up (it is meant to cost little next to the pair search, which then decides).
   std::size_t budget() const { return 16 * boundary_.size() + 4096; }
 
-  // The edges without a twin, each vertex leaving at most one (two: a "bow tie", refused).
+  // The edges without a twin. A vertex left by more than one (a "bow tie") is listed in ties_.
   bool collect_boundary() {
     leaving_.assign(mesh_.vertex_count(), kNone);
     for (EdgeRef e{0}; e < mesh_.corner.size(); ++e) {
       if (!mesh_.is_live(triangle_of(e)) || mesh_.link[e] != kNone) continue;
-      if (leaving_[mesh_.org(e)] != kNone) return false;
-      leaving_[mesh_.org(e)] = static_cast<std::uint32_t>(boundary_.size());
+      std::uint32_t& out = leaving_[mesh_.org(e)];
+      if (out != kNone && out != kTie) ties_.push_back(mesh_.org(e));
+      out = out == kNone ? static_cast<std::uint32_t>(boundary_.size()) : kTie;
       boundary_.push_back(e);
     }
-    return !boundary_.empty();  // triangles without a boundary cannot all be counter-clockwise
+    next_.assign(boundary_.size(), kNone);
+    // Triangles without a boundary cannot all be counter-clockwise.
+    return !boundary_.empty() && boundary_.size() <= kLastIndex;
+  }
+
+  // At each bow tie v, its boundary edges (leaving and reaching it) in counter-clockwise order
+  // round v must alternate, leaving and reaching, in pairwise different directions; each edge
+  // reaching v is then followed by the one leaving v just clockwise of it, with which it bounds a
+  // sector round v that holds no other boundary edge and lies on the left of both.
+  bool pair_at_ties() {
+    if (ties_.empty()) return true;
+    gather_tie_edges();
+    for (std::uint32_t i = 0; i < ties_.size(); ++i)
+      if (!pair_round(ties_[i], tie_start_[i], tie_start_[i + 1])) return false;
+    return true;
+  }
+
+  // tie_edges_[tie_start_[i] ..] : the boundary edges at ties_[i], as k (leaving) or ~k (reaching).
+  void gather_tie_edges() {
+    tie_of_.assign(mesh_.vertex_count(), kNone);
+    for (std::uint32_t i = 0; i < ties_.size(); ++i) tie_of_[ties_[i]] = i;
+    tie_start_.assign(ties_.size() + 1, 0);
+    const auto each_end = [&](auto&& visit) {
+      for (std::uint32_t k = 0; k < boundary_.size(); ++k) {
+        if (const std::uint32_t i = tie_of_[mesh_.org(boundary_[k])]; i != kNone) visit(i, k);
+        if (const std::uint32_t i = tie_of_[mesh_.dest(boundary_[k])]; i != kNone) visit(i, ~k);
+      }
+    };
+    each_end([&](std::uint32_t i, std::uint32_t) { ++tie_start_[i + 1]; });
+    for (std::uint32_t i = 0; i < ties_.size(); ++i) tie_start_[i + 1] += tie_start_[i];
+    tie_edges_.resize(tie_start_.back());
+    std::vector<std::uint32_t> fill(tie_start_.begin(), tie_start_.end() - 1);
+    each_end([&](std::uint32_t i, std::uint32_t end) { tie_edges_[fill[i]++] = end; });
+  }
+
+  // The far end of a tie edge as seen from its tie vertex.
+  const Point& far_end(std::uint32_t end) const { return end <= kLastIndex ? dest(end) : org(~end); }
+
+  // The edges tie_edges_[first, last) at v, sorted round it, checked and paired.
+  bool pair_round(VertexId v, std::uint32_t first, std::uint32_t last) {
+    const Point& c = mesh_.point(v);
+    const auto begin = tie_edges_.begin() + first, end = tie_edges_.begin() + last;
+    std::sort(begin, end, [&](std::uint32_t a, std::uint32_t b) { return turns_before(c, far_end(a), far_end(b)); });
+    const std::uint32_t n = last - first;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const std::uint32_t a = begin[i], b = begin[(i + 1) % n];
+      if ((a <= kLastIndex) == (b <= kLastIndex)) return false;                 // not alternating
+      if (i + 1 < n && !turns_before(c, far_end(a), far_end(b))) return false;  // one direction
+      if (b > kLastIndex) next_[~b] = a;
+    }
+    return true;
+  }
+
+  // Exact angular order round c, from the direction +x counter-clockwise (a strict weak order;
+  // two ends in one direction from c are equivalent).
+  bool turns_before(const Point& c, const Point& a, const Point& b) {
+    const int ha = half(c, a), hb = half(c, b);
+    return ha != hb ? ha < hb : pred_.orient2d(c, a, b) > 0;
   }
 
   // next_[k]: the boundary edge after k; loop_[k]: k's loop. Twins pair each arrival at a vertex
   // with a departure, so a vertex left by one boundary edge is reached by one, and the loops close.
   bool trace_loops() {
-    next_.resize(boundary_.size());
-    for (std::uint32_t k = 0; k < boundary_.size(); ++k) next_[k] = leaving_[mesh_.dest(boundary_[k])];
+    for (std::uint32_t k = 0; k < boundary_.size(); ++k)
+      if (const std::uint32_t out = leaving_[mesh_.dest(boundary_[k])]; out != kTie) next_[k] = out;
     loop_.assign(boundary_.size(), kNone);
     for (std::uint32_t k = 0; k < boundary_.size(); ++k) {
       if (loop_[k] != kNone) continue;
@@ -70,7 +137,8 @@ class Certificate {
     return true;
   }
 
-  // Consecutive boundary edges a->v, v->w meet only at v unless w lies along v->a.
+  // Consecutive boundary edges a->v, v->w meet only at v unless w lies along v->a (at a bow tie
+  // pair_round has seen to it already).
   bool corners_turn() {
     for (std::uint32_t k = 0; k < boundary_.size(); ++k) {
       const Point &a = org(k), &v = dest(k), &w = dest(next_[k]);
@@ -79,8 +147,8 @@ class Certificate {
     return true;
   }
 
-  // Boundary edges with no endpoint in common are disjoint (with one in common they follow each
-  // other at it, as no vertex has two boundary edges leaving or reaching it).
+  // Boundary edges with no endpoint in common are disjoint (two with one in common leave it in
+  // different directions: corners_turn, pair_round; so they meet only there).
   bool no_edges_meet() {
     std::vector<Box> boxes(boundary_.size());
     for (std::uint32_t k = 0; k < boundary_.size(); ++k) boxes[k].add(org(k)), boxes[k].add(dest(k));
@@ -112,15 +180,13 @@ class Certificate {
            std::max(std::min(a.y, b.y), std::min(c.y, d.y)) <= std::min(std::max(a.y, b.y), std::max(c.y, d.y));
   }
 
-  // (W) of embedding.h: each loop's orientation at its lowest vertex, a convex corner that
-  // corners_turn keeps from being flat; then the other loops' winding there.
+  // (W) of embedding.h. One loop without bow ties is a simple polygon: it must run
+  // counter-clockwise, as its lowest vertex (a convex corner, not flat by corners_turn) tells.
   bool loops_nest() {
-    for (Loop& l : loops_) {
-      const double o = pred_.orient2d(org(l.lowest), dest(l.lowest), dest(next_[l.lowest]));
-      if (o == 0) return false;
-      l.counter_clockwise = o > 0;
+    if (loops_.size() == 1 && ties_.empty()) {
+      const Loop& l = loops_[0];
+      return pred_.orient2d(org(l.lowest), dest(l.lowest), dest(next_[l.lowest])) > 0;
     }
-    if (loops_.size() == 1) return loops_[0].counter_clockwise;
     return make_strips() && windings_fit();
   }
 
@@ -167,23 +233,44 @@ class Certificate {
   }
   std::uint32_t strip(double y) const { return grid_index(y, y0_, strip_h_, strips_); }
 
+  // W just left of each loop, at its lowest vertex q where its edge k arrives and next_[k]
+  // leaves, must be 1: W on the sector just counter-clockwise of the direction +x at q (the ray
+  // crossings of all boundary edges, those at q counting 0), then one up for each boundary edge
+  // leaving q and one down for each reaching q, met turning from there to next_[k].
   bool windings_fit() {
     std::size_t scanned = 0;
-    for (std::uint32_t id = 0; id < loops_.size(); ++id) {
-      const Point& q = dest(loops_[id].lowest);
+    for (const Loop& l : loops_) {
+      const Point& q = dest(l.lowest);
       const std::uint32_t r = strip(q.y);
       if ((scanned += strip_start_[r + 1] - strip_start_[r]) > budget()) return false;
       int winding = 0;
-      for (std::size_t i = strip_start_[r]; i < strip_start_[r + 1]; ++i)
-        if (loop_[in_strip_[i]] != id) winding += crossing(in_strip_[i], q);
-      if (winding != (loops_[id].counter_clockwise ? 0 : 1)) return false;
+      for (std::size_t i = strip_start_[r]; i < strip_start_[r + 1]; ++i) winding += crossing(in_strip_[i], q);
+      if (winding + turned_past(l.lowest) != 1) return false;
     }
     return true;
   }
 
-  // Edge k's signed crossing of the ray from q towards +x, which meets no boundary edge at q
-  // itself (no_edges_meet): +1 upwards with q on its left, -1 downwards with q on its right;
+  // The boundary edges at q = dest(k) in directions in (0, angle of next_[k]] from +x: +1 for
+  // each leaving q, -1 for each reaching it.
+  int turned_past(std::uint32_t k) {
+    const Point &q = dest(k), &w = dest(next_[k]);
+    const auto passed = [&](const Point& a) { return !(a.y == q.y && a.x > q.x) && !turns_before(q, w, a); };
+    const VertexId v = mesh_.dest(boundary_[k]);
+    if (leaving_[v] != kTie) return passed(w) - passed(org(k));
+    int sum = 0;
+    const std::uint32_t i = tie_of_[v];
+    for (std::uint32_t j = tie_start_[i]; j < tie_start_[i + 1]; ++j) {
+      const std::uint32_t end = tie_edges_[j];
+      if (passed(far_end(end))) sum += end <= kLastIndex ? 1 : -1;
+    }
+    return sum;
+  }
+
+  // Edge k's signed crossing of the ray towards +x from q, which no boundary edge but those at q
+  // meets (no_edges_meet): +1 upwards with q on its left, -1 downwards with q on its right;
   // counting an edge's lower end and not its upper one makes a ray through a vertex count once.
+  // That is the crossing of the ray from q + (e, e d) for 0 < d << e small: the ray from a point
+  // just counter-clockwise of +x at q, which crosses no edge at q (those give orient2d 0 here).
   int crossing(std::uint32_t k, const Point& q) {
     const Point &a = org(k), &b = dest(k);
     if (a.y <= q.y && q.y < b.y) return pred_.orient2d(a, b, q) > 0 ? 1 : 0;
@@ -194,7 +281,9 @@ class Certificate {
   const Mesh& mesh_;
   Predicates& pred_;
   std::vector<EdgeRef> boundary_;     // the boundary edges, in slot order
-  std::vector<std::uint32_t> leaving_;  // per vertex: its boundary edge's index in boundary_, or kNone
+  std::vector<std::uint32_t> leaving_;  // per vertex: its boundary edge's index in boundary_, kNone or kTie
+  std::vector<VertexId> ties_;          // the vertices left by several boundary edges
+  std::vector<std::uint32_t> tie_of_, tie_start_, tie_edges_;
   std::vector<std::uint32_t> next_, loop_;
   std::vector<Loop> loops_;
   std::uint32_t strips_ = 1;
