@@ -130,6 +130,7 @@ class Terminator {
   // Ruppert, Chew: Sec. 6.2's sure-fire rule on the split of s planned as `plan`.
   bool refused_by_sure_fire_rule(EdgeRef s, const SplitPlan& plan) const;
   bool meets_at_small_angle(const PieceEnds& piece, VertexId w) const;
+  std::array<VertexId, 2> sure_fire_ancestors(EdgeRef shortest) const;
   bool tracks_split_radii() const { return opt_.algorithm != RefinementAlgorithm::Terminator || opt_.range_restricted; }
   // -Y / -YY: whether c, for bad triangle t, is refused: it would lower the smallest angle below
   // floor_sin2_, make a bad triangle nothing can split, or spoil one next to a subsegment kept
@@ -245,9 +246,9 @@ class Terminator {
   // Ruppert, Chew: by vertex id, the insertion radius of each refinement split this Terminator
   // made, 0 for every other vertex (refused_by_sure_fire_rule).
   std::vector<double> split_radius_;
-  // While the subsegments a rejected circumcentre encroaches upon are split: the newer end of its
-  // triangle's shortest edge, else kNone.
-  VertexId sure_fire_parent_ = kNone;
+  // While the subsegments a rejected circumcentre encroaches upon are split: the ends of its
+  // triangle's shortest edge that count as the splits' ancestors (sure_fire_ancestors), else kNone.
+  std::array<VertexId, 2> sure_fire_parents_{kNone, kNone};
   std::vector<Point> lattice_scratch_;    // bottom_scale_point's candidates
   std::vector<TriangleId> mend_scratch_;  // tally_replaced's list
   // Whether any split can come within kBottomScaleUlps of the coordinates: false when the feature

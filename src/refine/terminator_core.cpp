@@ -71,9 +71,9 @@ Outcome Terminator::split_encroached_instead(const QueuedTriangle& entry, const 
   // l.24-25, in the other order: t goes back only if something was split, so that a guard refusal
   // cannot repeat the same attempt forever. Splits owed to a size bound meet only the precision
   // floor, as t itself does (floor_for).
-  if (tracks_split_radii()) sure_fire_parent_ = std::max(mesh_.org(a.shape.shortest), mesh_.dest(a.shape.shortest));
+  if (tracks_split_radii()) sure_fire_parents_ = sure_fire_ancestors(a.shape.shortest);
   const std::uint64_t splits = split_encroached_subsegments(true, a.too_large);
-  sure_fire_parent_ = kNone;
+  sure_fire_parents_ = {kNone, kNone};
   if (splits > 0 && is_current(mesh_, entry)) enqueue_if_bad(entry.triangle);
   return Outcome::Deferred;
 }

@@ -134,9 +134,9 @@ bool Terminator::split_allowed(EdgeRef s, const Assessment& a, double d) const {
 // 7.3): a subsegment s is not split where the new vertex's insertion radius would be smaller than
 // that of its most recently inserted ancestor, a refinement split w on a piece that meets s's piece
 // at a common end at under 60 degrees. w is an ancestor when it encroaches upon s (Ruppert's
-// mutual encroachment, Fig. 24) or is the newer end of the shortest edge of the skinny triangle
-// whose rejected circumcentre asked for the split (the figure-eight cycle of Fig. 26, through a
-// free vertex). Two pieces at an angle phi are coupled: each split of one leads to a split of the
+// mutual encroachment, Fig. 24) or an end of the shortest edge of the skinny triangle whose
+// rejected circumcentre asked for the split (the figure-eight cycle of Fig. 26, through a free
+// vertex; the newer end, or with Chew's algorithm either: sure_fire_ancestors). Two pieces at an angle phi are coupled: each split of one leads to a split of the
 // other, until the subsegments are as short as the gap between the pieces, phi times the distance
 // to the apex: about ln(R / r) / phi splits (VVingerfly's test.poly, phi = 2e-6: tens of millions,
 // until the memory ran out). With the rule no split is the child of a wider one through the angle,
@@ -152,12 +152,32 @@ bool Terminator::refused_by_sure_fire_rule(EdgeRef s, const SplitPlan& plan) con
   const auto ancestor = [&](VertexId w) {
     return w < split_radius_.size() && radius < split_radius_[w] && meets_at_small_angle(piece, w);
   };
-  if (sure_fire_parent_ != kNone && ancestor(sure_fire_parent_)) return true;
+  for (const VertexId w : sure_fire_parents_)
+    if (w != kNone && ancestor(w)) return true;
   const Point& a = mesh_.point(mesh_.org(s));
   const Point& b = mesh_.point(mesh_.dest(s));
   for (EdgeRef e : {s, mesh_.link[s]})
     if (e != kNone && ancestor(mesh_.apex(e)) && encroaches(pred_, a, b, mesh_.point(mesh_.apex(e)), rule_)) return true;
   return false;
+}
+
+// The vertices of a skinny triangle's shortest edge that count as ancestors of the splits its
+// rejected circumcentre asks for. The paper's parent is the newer end (Sec. 6.2, Fig. 26), and
+// Ruppert's algorithm (and range-restricted splitting) look only at it here: their mutual
+// encroachment (an apex of s in its circle or lens, whatever its age) already covers the vertices
+// across a thin wedge. Chew's algorithm splits a subsegment only for a circumcentre across it
+// (Sec. 4.1), never because a vertex encroaches, so the triangle is its only link across the
+// wedge, and both ends count: in a strip between two pieces meeting at a small angle the shortest
+// edge spans the strip, and when its newer end lies on the same piece as s (which the rule
+// exempts) the older one, across the strip, is the split that the cycle of Fig. 26 runs through.
+// Looking only at the newer end, Chew on debug2.poly (0.078-degree spikes) at -pq20 split
+// segments 1.96 million times down the spikes (docs/refinement.md, "Chew in thin wedges").
+// Where every input angle is 60 degrees or more neither end meets s's piece at a small angle, so
+// the paper's proven range is untouched.
+std::array<VertexId, 2> Terminator::sure_fire_ancestors(EdgeRef shortest) const {
+  const VertexId a = mesh_.org(shortest), b = mesh_.dest(shortest);
+  if (opt_.algorithm != RefinementAlgorithm::Chew) return {std::max(a, b), kNone};
+  return {std::max(a, b), std::min(a, b)};
 }
 
 // Does refinement split w lie on a piece that meets `piece` at a common end at under 60 degrees?

@@ -12,6 +12,8 @@ deltri's output files with nothing deltri reports about quality.
                                                           are warned of, counted exactly, and --strict fails
     paper_algorithms.py sure_fire DELTRI DEG SWITCHES...  two segments from one vertex DEG degrees apart in a
                                                           box: the guard stops the ping-pong (issue 16)
+    paper_algorithms.py chew_wedge DELTRI DEG Q           the same box: Chew at -pqQ makes at most 4 times
+                                                          Ruppert's triangles, no edge under 1/4 of Ruppert's
 
 Every mode first checks that the input has no two segments meeting at an angle under 60 degrees and
 no segments that cross or touch inside (the paper's condition), from the input file itself; each run
@@ -37,6 +39,15 @@ is made twice and must give the same bytes; the run must exit 0.
   --json report must name the sure-fire rule among the reasons and count its refusals, and not the
   Steiner cap; the mesh must be constrained Delaunay with counter-clockwise triangles (exact) and
   cover the box exactly (the triangles' areas, exact, sum to 6).
+- chew_wedge (issue 22): the sure_fire box, Chew's and Ruppert's algorithms at -pqQ. Away from the wedge
+  both grade the mesh to the local feature size (Sec. 3.2, 4.2: each within a constant of lfs), and in the
+  wedge the sure-fire rule must stop both at the scale where a split would be narrower than its ancestor
+  across the wedge; so their meshes differ by a constant factor, whatever the angle. Chew's must have at
+  most 4 times Ruppert's triangles and no edge shorter than a quarter of Ruppert's shortest. When the
+  rule looked only at the newer end of the requesting triangle's shortest edge, Chew refined the wedge
+  down to the floor, about ln(R / r) / phi splits: at 1 degree 1,058 triangles against Ruppert's 53, at
+  0.01 degrees 162,343 against 115 (shortest edge 8.6e-10 against 1.8e-4). Both meshes are checked as
+  in sure_fire (constrained Delaunay, exactly; the box covered).
 Angles are computed in doubles with a tolerance of 1e-9 degrees.
 """
 import json
@@ -374,6 +385,28 @@ def check_sure_fire(deltri, degrees, switches, work):
            % (degrees, ' '.join(switches), len(tris), q.get('sure_fire_refusals', 0)))
 
 
+def check_chew_wedge(deltri, degrees, q, work):
+    inp = os.path.join(work, 'wedge.poly')
+    wedge_poly(inp, float(degrees))
+    counts, shortest, faults = {}, {}, []
+    for algorithm in ('ruppert', 'chew'):
+        base = run(deltri, inp, ['-pq' + q, '--algorithm=' + algorithm], os.path.join(work, algorithm))
+        pts, tris, segs = read_mesh(base)
+        counts[algorithm] = len(tris)
+        shortest[algorithm] = min(math.dist(pts[t[i]], pts[t[(i + 1) % 3]]) for t in tris for i in range(3))
+        faults += ['%s: %s' % (algorithm, f) for f in delaunay_faults(pts, tris, {frozenset(s) for s in segs})[:5]]
+        exact = {k: (Fraction(x), Fraction(y)) for k, (x, y) in pts.items()}
+        if sum(orient(exact[a], exact[b], exact[c]) for a, b, c in tris) != 12:  # twice the box's 6
+            faults.append('%s: the triangles do not cover the box' % algorithm)
+    if counts['chew'] > 4 * counts['ruppert']:
+        faults.append('Chew made %d triangles, more than 4 times Ruppert\'s %d' % (counts['chew'], counts['ruppert']))
+    if shortest['chew'] < shortest['ruppert'] / 4:
+        faults.append('Chew\'s shortest edge %.3g is under a quarter of Ruppert\'s %.3g' % (shortest['chew'], shortest['ruppert']))
+    report(faults, '%s degrees -pq%s: Chew %d triangles, Ruppert %d (ratio %.2f); shortest edges %.3g and %.3g'
+           % (degrees, q, counts['chew'], counts['ruppert'], counts['chew'] / counts['ruppert'], shortest['chew'],
+              shortest['ruppert']))
+
+
 def report(faults, summary):
     for f in faults[:10]:
         print('FAIL:', f)
@@ -405,6 +438,8 @@ def main(argv):
             check_refusals(argv[2], argv[3], work)
         elif mode == 'conformity':
             check_conformity(argv[2], argv[3], work)
+        elif mode == 'chew_wedge':
+            check_chew_wedge(argv[2], argv[3], argv[4], work)
         elif mode == 'sure_fire':
             check_sure_fire(argv[2], argv[3], argv[4:], work)
         else:
