@@ -16,7 +16,7 @@ std::size_t enclose_convex_hull(Mesh& mesh) { return constrain_boundary(mesh, 1)
 namespace {
 
 bool is_hull_edge(const Mesh& mesh, EdgeRef e) {
-  if (mesh.corner[e] == kNone || mesh.link[e] != kNone || mesh.subseg[e] == kNone) return false;
+  if (mesh.corner[e] == kNone || mesh.link[e] != kNone || !mesh.subseg.has(e)) return false;
   return mesh.subsegments[mesh.subseg[e]].segment == kNone;
 }
 

@@ -23,7 +23,7 @@ std::vector<TriangleId> flood(const Mesh& mesh, std::vector<TriangleId> seeds,
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
       const EdgeRef f = mesh.link[e];
-      if (f == kNone || (constrained && mesh.subseg[e] != kNone)) continue;
+      if (f == kNone || (constrained && mesh.subseg.has(e))) continue;
       const TriangleId n = triangle_of(f);
       if (marks[n] == mark) continue;
       marks[n] = mark;

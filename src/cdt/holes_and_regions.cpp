@@ -10,7 +10,7 @@ namespace deltri {
 namespace {
 
 bool constrained(const Mesh& mesh, EdgeRef e) {
-  return mesh.has_subsegments() && mesh.subseg[e] != kNone;
+  return mesh.has_subsegments() && mesh.subseg.has(e);
 }
 
 // Whether any edge around org(from) carries a subsegment: then the vertex sits on a segment and

@@ -90,7 +90,7 @@ void SegmentInserter::process(const Piece& piece) {
         return;
       }
     }
-    if (mesh.subseg[g] != kNone) return split_crossing(piece, g);
+    if (mesh.subseg.has(g)) return split_crossing(piece, g);
     crossed_.push_back(g);
     const RayStep step = next_step(mesh, pred, g, pu, pv);
     if (step.kind == RayStep::Kind::Boundary) {
@@ -130,7 +130,7 @@ bool SegmentInserter::split_at_midpoint(const Piece& piece, VertexId w) {
     ed_.insert_in_triangle(at.edge, x);
   } else {
     // Rounding put the midpoint on an edge, perhaps a subsegment: that one is split there too.
-    if (mesh.subseg[at.edge] != kNone) release(at.edge, x);
+    if (mesh.subseg.has(at.edge)) release(at.edge, x);
     ed_.insert_on_edge(at.edge, x);
   }
   ++counts_.midpoints;
@@ -189,7 +189,7 @@ VertexId SegmentInserter::place_crossing(const Piece& piece, const Subsegment& o
       const VertexId w = mesh.add_vertex(p, VertexKind::Segment);
       mesh.interpolate_attributes(w, old.a, old.b);
       // A third segment through the very same point: it is split there too.
-      if (mesh.subseg[at.edge] != kNone) release(at.edge, w);
+      if (mesh.subseg.has(at.edge)) release(at.edge, w);
       ed_.insert_on_edge(at.edge, w);
       return w;
     }

@@ -22,7 +22,7 @@ std::vector<VertexId> add_edge_midpoints(Mesh& mesh) {
       const VertexId a = mesh.org(e), b = mesh.dest(e);
       const Point pa = mesh.points[a], pb = mesh.points[b];
       const VertexId m = mesh.add_vertex({0.5 * (pa.x + pb.x), 0.5 * (pa.y + pb.y)},
-                                         mesh.link[e] == kNone || (mesh.has_subsegments() && mesh.subseg[e] != kNone)
+                                         mesh.link[e] == kNone || (mesh.has_subsegments() && mesh.subseg.has(e))
                                              ? VertexKind::Segment
                                              : VertexKind::Free);
       for (std::size_t k = 0; k < na; ++k)

@@ -17,14 +17,14 @@ std::vector<EdgeRef> boundary_and_segment_edges(const Mesh& mesh) {
   for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     for (EdgeRef e : edges_of(t))
-      if (edge_written_here(mesh, e) && (mesh.link[e] == kNone || (mesh.has_subsegments() && mesh.subseg[e] != kNone)))
+      if (edge_written_here(mesh, e) && (mesh.link[e] == kNone || (mesh.has_subsegments() && mesh.subseg.has(e))))
         edges.push_back(e);
   }
   return edges;
 }
 
 int edge_marker(const Mesh& mesh, EdgeRef e) {
-  if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
+  if (mesh.has_subsegments() && mesh.subseg.has(e)) {
     const int marker = mesh.subsegments[mesh.subseg[e]].marker;
     if (marker != 0) return marker;
   }

@@ -140,18 +140,14 @@ LiveSubsegments find_live_subsegments(const Mesh& mesh) {
   if (!mesh.has_subsegments()) return live;
   live.edge.assign(mesh.subsegments.size(), kNone);
   live.boundary.assign(mesh.subsegments.size(), false);
-  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
-    if (!mesh.is_live(t)) continue;
-    for (EdgeRef e : edges_of(t)) {
-      const SubsegmentId s = mesh.subseg[e];
-      if (s == kNone || s >= live.edge.size()) continue;
-      if (live.edge[s] == kNone) {
-        live.edge[s] = e;
-        ++live.count;
-      }
-      if (mesh.link[e] == kNone) live.boundary[s] = true;
+  mesh.subseg.for_each([&](EdgeRef e, SubsegmentId s) {  // slot order
+    if (!mesh.is_live(triangle_of(e)) || s >= live.edge.size()) return;
+    if (live.edge[s] == kNone) {
+      live.edge[s] = e;
+      ++live.count;
     }
-  }
+    if (mesh.link[e] == kNone) live.boundary[s] = true;
+  });
   return live;
 }
 

@@ -100,7 +100,7 @@ void write_svg_file(ByteSink& sink, const Mesh& mesh, const SvgOptions& options)
     for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
       if (!mesh.is_live(t)) continue;
       for (EdgeRef e : edges_of(t)) {
-        if (mesh.subseg[e] == kNone || !(mesh.link[e] == kNone || mesh.link[e] > e)) continue;
+        if (!mesh.subseg.has(e) || !(mesh.link[e] == kNone || mesh.link[e] > e)) continue;
         out.text("M");
         out.integer(canvas.x(mesh.points[mesh.org(e)]));
         out.next_integer(canvas.y(mesh.points[mesh.org(e)]));

@@ -26,7 +26,7 @@ bool ConstrainedEditor::violates_delaunay(EdgeRef e) {
 }
 
 bool ConstrainedEditor::may_flip(EdgeRef e) {
-  return mesh.link[e] != kNone && mesh.subseg[e] == kNone && violates_delaunay(e);
+  return mesh.link[e] != kNone && !mesh.subseg.has(e) && violates_delaunay(e);
 }
 
 void ConstrainedEditor::insert_in_triangle(EdgeRef e, VertexId v) {

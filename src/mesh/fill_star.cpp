@@ -64,6 +64,7 @@ EdgeRef fill_star(Mesh& m, Predicates& pred, VertexId v, const KnownCavity& cavi
   // The search lists a triangle's boundary edges together.
   TriangleId slot[kMaxFan];
   std::size_t spare = 0;
+  const bool segments = m.has_subsegments();
   for (std::size_t j = 0; j < n; ++j) {
     const TriangleId owner = triangle_of(boundary[j]);
     const bool first = j == 0 || triangle_of(boundary[j - 1]) != owner;
@@ -74,10 +75,13 @@ EdgeRef fill_star(Mesh& m, Predicates& pred, VertexId v, const KnownCavity& cavi
     detail::corner_slots(m)[e] = org[j];
     detail::corner_slots(m)[e + 1] = dest[j];
     detail::corner_slots(m)[e + 2] = v;
-    attach(m, e, {outside_link[j], outside_seg[j]});
+    // The outside's subsegment on edge 0, none on the inner edges 1 and 2, in one write.
+    detail::link_slots(m)[e] = outside_link[j];
+    if (outside_link[j] != kNone) detail::link_slots(m)[outside_link[j]] = e;
+    if (segments) detail::subseg_slots(m).set_triangle(e, outside_seg[j]);
     if (!first) copy_triangle_data(m, owner, slot[j]);
   }
-  for (std::size_t j = 0; j < n; ++j) bond_inner(m, edge_of(slot[j], 1), edge_of(slot[next[j]], 2));
+  for (std::size_t j = 0; j < n; ++j) m.bond(edge_of(slot[j], 1), edge_of(slot[next[j]], 2));
   return edge_of(slot[0], 2);
 }
 

@@ -18,7 +18,7 @@ inline bool is_ghost(const Mesh& m, TriangleId t) {
 }
 
 inline bool carries_subsegment(const Mesh& m, EdgeRef e) {
-  return !m.subseg.empty() && m.subseg[e] != kNone;
+  return !m.subseg.empty() && m.subseg.has(e);
 }
 
 // What lies across an edge: the twin and the subsegment. Saved before corners are rewritten so the
@@ -35,13 +35,16 @@ inline EdgeSurround surround_of(const Mesh& m, EdgeRef e) {
 inline void attach(Mesh& m, EdgeRef e, EdgeSurround s) {
   detail::link_slots(m)[e] = s.link;
   if (s.link != kNone) detail::link_slots(m)[s.link] = e;
-  if (!m.subseg.empty()) detail::subseg_slots(m)[e] = s.seg;
+  if (!m.subseg.empty()) detail::subseg_slots(m).set(e, s.seg);
 }
 
 // Bonds two edges that are new to each other and therefore interior to the change: no subsegment.
 inline void bond_inner(Mesh& m, EdgeRef e, EdgeRef f) {
   m.bond(e, f);
-  if (!m.subseg.empty()) detail::subseg_slots(m)[e] = detail::subseg_slots(m)[f] = kNone;
+  if (!m.subseg.empty()) {
+    detail::subseg_slots(m).set(e, kNone);
+    detail::subseg_slots(m).set(f, kNone);
+  }
 }
 
 // Children of a split triangle inherit its region attributes and area bound.

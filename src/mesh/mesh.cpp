@@ -7,7 +7,6 @@ namespace deltri {
 TriangleId Mesh::add_triangle(VertexId a, VertexId b, VertexId c) {
   auto& corner = this->corner.slots_;
   auto& link = this->link.slots_;
-  auto& subseg = this->subseg.slots_;
   if (free_triangles.empty()) return append_triangle(a, b, c);
   const TriangleId t = free_triangles.back();
   free_triangles.pop_back();
@@ -16,7 +15,7 @@ TriangleId Mesh::add_triangle(VertexId a, VertexId b, VertexId c) {
   corner[e + 1] = b;
   corner[e + 2] = c;
   link[e] = link[e + 1] = link[e + 2] = kNone;
-  if (!subseg.empty()) subseg[e] = subseg[e + 1] = subseg[e + 2] = kNone;
+  if (!subseg.empty()) subseg.set_triangle(e, kNone);
   return t;
 }
 
@@ -25,12 +24,10 @@ TriangleId Mesh::add_triangle(VertexId a, VertexId b, VertexId c) {
 TriangleId Mesh::append_triangle(VertexId a, VertexId b, VertexId c) {
   auto& corner = this->corner.slots_;
   auto& link = this->link.slots_;
-  auto& subseg = this->subseg.slots_;
   const TriangleId t{triangle_slots()};
   for (VertexId v : {a, b, c}) corner.push_back(v);
   for (int i = 0; i < 3; ++i) link.push_back(kNone);
-  if (!subseg.empty())
-    for (int i = 0; i < 3; ++i) subseg.push_back(kNone);
+  if (!subseg.empty()) subseg.grow_triangle();
   if (num_triangle_attributes > 0)
     triangle_attributes.resize(triangle_attributes.size() + num_triangle_attributes);
   if (!area_bound.empty()) area_bound.push_back(0.0);
@@ -75,14 +72,12 @@ void Mesh::interpolate_attributes(VertexId v, VertexId a, VertexId b) {
 
 void Mesh::enable_subsegments() {
   auto& corner = this->corner.slots_;
-  auto& subseg = this->subseg.slots_;
-  if (subseg.size() != corner.size()) subseg.assign(corner.size(), kNone);
+  if (subseg.size() != corner.size()) subseg.assign(corner.size());
 }
 
 void Mesh::compact_triangles() {
   auto& corner = this->corner.slots_;
   auto& link = this->link.slots_;
-  auto& subseg = this->subseg.slots_;
   if (free_triangles.empty()) return;
   TriangleId last{triangle_slots()};
   const int na = num_triangle_attributes;
@@ -98,7 +93,7 @@ void Mesh::compact_triangles() {
       corner[dst] = corner[src];
       link[dst] = link[src];
       if (link[dst] != kNone) link[link[dst]] = dst;
-      if (!subseg.empty()) subseg[dst] = subseg[src];
+      if (!subseg.empty()) subseg.set(dst, subseg[src]);
       corner[src] = kNone;
     }
     for (int k = 0; k < na; ++k) triangle_attributes[write * na + k] = triangle_attributes[from * na + k];

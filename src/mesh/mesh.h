@@ -19,7 +19,9 @@
 //   corner[e]  the vertex at the origin of edge e (so corner[3t..3t+2] are t's vertices)
 //   link[e]    the oriented edge of the neighbouring triangle that shares edge e, running the other
 //              way, or kNone where e is on the boundary of the mesh
-//   subseg[e]  the subsegment lying on edge e, or kNone (the array is empty until segments exist)
+//   subseg[e]  the subsegment lying on edge e, or kNone (empty until segments exist); sparse
+//              (mesh/subsegment_slots.h): a bit per slot, subseg.has(e), and a hash table of the
+//              ids of the few slots that carry one
 //
 // Guibas-Stolfi navigation follows from these two arrays alone:
 //   org(e) = corner[e], dest(e) = corner[lnext(e)], apex(e) = corner[lprev(e)], sym(e) = link[e],
@@ -40,6 +42,7 @@
 
 #include "geometry/point.h"
 #include "mesh/ids.h"
+#include "mesh/subsegment_slots.h"
 #include "util/big_allocator.h"
 
 namespace deltri {
@@ -63,8 +66,8 @@ namespace detail {
 struct TopologyWriter;  // mesh/topology_writer.h: the kernel's write access
 }
 
-// One of the three topology arrays (corner, link, subseg): anyone reads it like a vector (m.corner[e],
-// m.corner.size()); only Mesh's own members and the kernel's operations, through
+// One of the dense topology arrays (corner, link; subseg is sparse, mesh/subsegment_slots.h): anyone
+// reads it like a vector (m.corner[e], m.corner.size()); only Mesh's own members and the kernel's operations, through
 // detail::TopologyWriter, write it. Everything is inline: reads cost what a vector's do.
 template <class T>
 class TopologyArray {
@@ -98,7 +101,7 @@ struct Mesh {
   // Triangles: the topology, read by all, written by src/mesh/ only.
   TopologyArray<VertexId> corner;
   TopologyArray<EdgeRef> link;
-  TopologyArray<SubsegmentId> subseg;
+  SubsegmentSlots subseg;
   std::vector<TriangleId> free_triangles;
   int num_triangle_attributes = 0;
   std::vector<double> triangle_attributes;  // num_triangle_attributes per triangle
@@ -158,14 +161,14 @@ struct Mesh {
   void enable_subsegments();
   // Attaches subsegment s to edge e and its twin.
   void set_subsegment(EdgeRef e, SubsegmentId s) {
-    subseg.slots_[e] = s;
-    if (link[e] != kNone) subseg.slots_[link[e]] = s;
+    subseg.set(e, s);
+    if (link[e] != kNone) subseg.set(link[e], s);
   }
   // Room for `triangles` triangles in the triangle arrays without a reallocation.
   void reserve_triangles(std::size_t triangles) {
     corner.slots_.reserve(3 * triangles);
     link.slots_.reserve(3 * triangles);
-    if (has_subsegments()) subseg.slots_.reserve(3 * triangles);
+    if (has_subsegments()) subseg.reserve(3 * triangles);
   }
   // Moves live triangles over dead slots so that every slot is live (ids change).
   void compact_triangles();

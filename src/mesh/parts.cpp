@@ -40,19 +40,24 @@ std::vector<Id> marked_ids(const std::vector<char>& marked) {
 
 // Lists what the part holds: the vertices its triangles use and those marked in keep, and the
 // records on their edges.
-void list_part_ids(const Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, std::vector<char> keep) {
+// Returns how many of their slots carry a subsegment.
+std::size_t list_part_ids(const Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, std::vector<char> keep) {
   keep.resize(mesh.vertex_count(), 0);
   std::vector<char> records(mesh.subsegments.size(), 0);
+  std::size_t carried = 0;
   for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!moves[t] || !mesh.is_live(t)) continue;
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
       keep[mesh.corner[e]] = 1;
+      if (!mesh.subseg.has(e)) continue;
+      ++carried;
       if (mesh.subseg[e] < records.size()) records[mesh.subseg[e]] = 1;
     }
   }
   cut.vertices = marked_ids<VertexId>(keep);
   cut.records = marked_ids<SubsegmentId>(records);
+  return carried;
 }
 
 // Copies the part's slots: corners and subsegments in the part's ids, links inside the part,
@@ -81,8 +86,11 @@ void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, 
       SubsegmentId s = mesh.subseg[e];
       if (on_cut) cut.cut_keys.push_back(edge_key(mesh.corner[twin], mesh.corner[lnext(twin)]));
       if (record(s)) (on_cut ? cut.cut_records : cut.part_records)[s] = 1;
-      if (on_cut && s == kNone) detail::subseg_slots(mesh)[twin] = s = mark;
-      detail::subseg_slots(r)[f] = record(s) ? record_of[s] : s;
+      if (on_cut && s == kNone) {
+        s = mark;
+        detail::subseg_slots(mesh).set(twin, mark);
+      }
+      detail::subseg_slots(r).set(f, record(s) ? record_of[s] : s);
     }
     for (std::size_t k = 0; k < std::size(kTriangleData); ++k) {
       const auto& from = mesh.*kTriangleData[k];
@@ -98,7 +106,7 @@ std::vector<VertexId> CutOff::vertex_map(std::size_t count) const { return local
 
 CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId mark, std::vector<char> keep) {
   CutOff cut;
-  list_part_ids(mesh, cut, moves, std::move(keep));
+  const std::size_t carried = list_part_ids(mesh, cut, moves, std::move(keep));
   cut.part = mesh.part_with(cut.vertices, cut.records);
   cut.part_records.assign(mesh.subsegments.size(), 0);
   cut.cut_records.assign(mesh.subsegments.size(), 0);
@@ -110,10 +118,17 @@ CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId 
   detail::corner_slots(r).resize(3 * static_cast<std::size_t>(n));
   detail::link_slots(r).resize(r.corner.size());
   detail::subseg_slots(r).resize(r.corner.size());
+  detail::subseg_slots(r).reserve_entries(carried);  // and the cut's marks, a few more
   copy_part(mesh, cut, moves, slot, mark);
   std::sort(cut.cut_keys.begin(), cut.cut_keys.end());
-  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
-    if (moves[t] && mesh.is_live(t)) mesh.kill_triangle(t);  // unlinks the other side's cut edges
+  // The moved triangles' slots die here: kill_triangle unlinks the other side's cut edges, and
+  // their subsegments, which the part holds now, leave the mesh's table.
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
+    if (!moves[t] || !mesh.is_live(t)) continue;
+    mesh.kill_triangle(t);
+    for (EdgeRef e : edges_of(t)) detail::subseg_slots(mesh).set(e, kNone);
+  }
+  detail::subseg_slots(mesh).fit();
   return cut;
 }
 
@@ -142,7 +157,11 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark) {
   };
   const auto corners_and_subsegments = [&] {
     move_appending(detail::corner_slots(r), detail::corner_slots(mesh), [&](VertexId v) { return ids.vertex(v); });
-    move_appending(detail::subseg_slots(r), detail::subseg_slots(mesh), [&](SubsegmentId s) { return ids.record(s, mark); });
+    const std::size_t base = edge_of(ids.triangle_base, 0);
+    detail::subseg_slots(mesh).resize(base + r.subseg.size());
+    detail::subseg_slots(mesh).reserve_entries(r.subseg.count());
+    r.subseg.for_each([&](EdgeRef f, SubsegmentId s) { detail::subseg_slots(mesh).set(base + f, ids.record(s, mark)); });
+    detail::subseg_slots(r).clear();
   };
   run_both(links_and_vertices, corners_and_subsegments);
   for (std::vector<double> Mesh::*array : kTriangleData) {
@@ -173,7 +192,10 @@ std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, 
     const EdgeRef e = stayed[k], f = moved[k];
     if (e == kNone || f == kNone) throw std::logic_error("the parts' cut edges do not match");
     mesh.bond(e, f);
-    if (mesh.subseg[e] == mark) detail::subseg_slots(mesh)[e] = detail::subseg_slots(mesh)[f] = kNone;
+    if (mesh.subseg[e] == mark) {
+      detail::subseg_slots(mesh).set(e, kNone);
+      detail::subseg_slots(mesh).set(f, kNone);
+    }
   }
   return stayed;
 }
@@ -184,7 +206,7 @@ std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, 
 void flip_delaunay_from(Mesh& mesh, Predicates& pred, std::vector<EdgeRef> stack, std::vector<TriangleId>& touched) {
   const auto may_flip = [&](EdgeRef e) {
     const EdgeRef twin = mesh.link[e];
-    return twin != kNone && mesh.subseg[e] == kNone &&
+    return twin != kNone && !mesh.subseg.has(e) &&
            pred.incircle(mesh.point(mesh.org(e)), mesh.point(mesh.dest(e)), mesh.point(mesh.apex(e)),
                          mesh.point(mesh.apex(twin))) > 0;
   };

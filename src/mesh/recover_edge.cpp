@@ -42,7 +42,7 @@ void EdgeRecovery::restore_delaunay() {
   // Flips reuse the cavity's slots, so the stamps still say which triangles are in it.
   ed_.legalize(stack_, [&](EdgeRef e) {
     const EdgeRef f = mesh.link[e];
-    if (f == kNone || mesh.subseg[e] != kNone || !in_cavity(triangle_of(f))) return false;
+    if (f == kNone || mesh.subseg.has(e) || !in_cavity(triangle_of(f))) return false;
     return in_cavity(triangle_of(e)) && ed_.violates_delaunay(e);
   });
 }

@@ -24,7 +24,7 @@ std::size_t constrain_boundary(Mesh& mesh, int marker) {
   mesh.enable_subsegments();
   std::size_t added = 0;
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
-    if (mesh.corner[e] == kNone || mesh.link[e] != kNone || mesh.subseg[e] != kNone) continue;
+    if (mesh.corner[e] == kNone || mesh.link[e] != kNone || mesh.subseg.has(e)) continue;
     constrain(mesh, e, {mesh.org(e), mesh.dest(e), marker, kNone});
     ++added;
   }
@@ -41,24 +41,27 @@ void drop_dead_subsegments(Mesh& mesh) {
   }
   if (next == mesh.subsegments.size()) return;
   mesh.subsegments.resize(next);
-  for (SubsegmentId& s : detail::subseg_slots(mesh))
-    if (s != kNone) s = renumber[s];
+  detail::subseg_slots(mesh).remap([&](SubsegmentId s) { return renumber[s]; });
 }
 
 std::size_t drop_unused_subsegments(Mesh& mesh) {
   if (!mesh.has_subsegments()) return 0;
   std::vector<char> used(mesh.subsegments.size(), 0);
-  for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
-    if (mesh.corner[e] != kNone && mesh.subseg[e] != kNone) used[mesh.subseg[e]] = 1;
+  std::vector<EdgeRef> dead;  // kill_triangle leaves subseg entries in dead slots
+  mesh.subseg.for_each([&](EdgeRef e, SubsegmentId s) {
+    if (mesh.corner[e] != kNone)
+      used[s] = 1;
+    else
+      dead.push_back(e);
+  });
   std::size_t dropped = 0;
   for (SubsegmentId s{0}; s < used.size(); ++s)
     if (!used[s] && mesh.subsegments[s].a != kNone) {
       mesh.subsegments[s].a = kNone;
       ++dropped;
     }
-  // kill_triangle leaves subseg entries in dead slots; clear them before renumbering.
-  for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
-    if (mesh.corner[e] == kNone) detail::subseg_slots(mesh)[e] = kNone;
+  // Cleared before renumbering.
+  for (EdgeRef e : dead) detail::subseg_slots(mesh).set(e, kNone);
   drop_dead_subsegments(mesh);
   return dropped;
 }
@@ -70,7 +73,7 @@ PeeledEdges peel_boundary_triangle(Mesh& mesh, EdgeRef e) {
   const Subsegment old = mesh.subsegments[id];
   const TriangleId t = triangle_of(e);
   mesh.kill_triangle(t);
-  for (unsigned i = 0; i < 3; ++i) detail::subseg_slots(mesh)[edge_of(t, i)] = kNone;
+  for (unsigned i = 0; i < 3; ++i) detail::subseg_slots(mesh).set(edge_of(t, i), kNone);
   mesh.subsegments[id] = {a, v, old.marker, old.segment};
   mesh.set_subsegment(out.av, id);
   constrain(mesh, out.vb, {v, b, old.marker, old.segment});

@@ -11,12 +11,12 @@ namespace deltri::detail {
 struct TopologyWriter {
   static BigVector<VertexId>& corner(Mesh& m) { return m.corner.slots_; }
   static BigVector<EdgeRef>& link(Mesh& m) { return m.link.slots_; }
-  static BigVector<SubsegmentId>& subseg(Mesh& m) { return m.subseg.slots_; }
+  static SubsegmentSlots::Editor subseg(Mesh& m) { return SubsegmentSlots::Editor(m.subseg); }
 };
 
-// The writable arrays of m: corner_slots(m)[e] = v.
+// The writable arrays of m: corner_slots(m)[e] = v, subseg_slots(m).set(e, s).
 inline BigVector<VertexId>& corner_slots(Mesh& m) { return TopologyWriter::corner(m); }
 inline BigVector<EdgeRef>& link_slots(Mesh& m) { return TopologyWriter::link(m); }
-inline BigVector<SubsegmentId>& subseg_slots(Mesh& m) { return TopologyWriter::subseg(m); }
+inline SubsegmentSlots::Editor subseg_slots(Mesh& m) { return TopologyWriter::subseg(m); }
 
 }  // namespace deltri::detail

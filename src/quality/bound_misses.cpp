@@ -101,7 +101,7 @@ SegmentVertices collect_spokes(const Mesh& m) {
   for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
     for (EdgeRef e : edges_of(t)) {
-      if (m.subseg[e] == kNone || (m.link[e] != kNone && m.link[e] < e)) continue;
+      if (!m.subseg.has(e) || (m.link[e] != kNone && m.link[e] < e)) continue;
       const VertexId a = m.org(e), b = m.dest(e);
       const std::uint32_t seg = m.subsegments[m.subseg[e]].segment;
       const Point &p = m.points[a], &q = m.points[b];
@@ -193,7 +193,7 @@ VertexId explaining_junction(const Mesh& m, const SegmentVertices& s, TriangleId
   for (int i = 0; i < 3; ++i) {
     const VertexId p = c[i], q = c[(i + 1) % 3];
     if (length(m.points[p], m.points[q]) > shortest) continue;
-    const bool on_segment = m.has_subsegments() && m.subseg[edge_of(t, i)] != kNone;
+    const bool on_segment = m.has_subsegments() && m.subseg.has(edge_of(t, i));
     const VertexId j = junction_of_edge(m, s, p, q, on_segment);
     if (j != kNone) return j;
   }

@@ -89,7 +89,7 @@ class Checker {
   std::uint32_t slots() const { return mesh_.triangle_slots(); }
   std::uint32_t vertices() const { return mesh_.vertex_count(); }
   bool live(TriangleId t) const { return mesh_.is_live(t); }
-  bool has_subsegment(EdgeRef e) const { return mesh_.has_subsegments() && mesh_.subseg[e] != kNone; }
+  bool has_subsegment(EdgeRef e) const { return mesh_.has_subsegments() && mesh_.subseg.has(e); }
   const Point& at(VertexId v) const { return mesh_.points[v]; }
 
   // --- storage ---

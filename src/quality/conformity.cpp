@@ -36,7 +36,7 @@ ConformityMisses count_conformity_misses(const Mesh& mesh) {
   if (!mesh.has_subsegments()) return misses;
   Predicates pred;
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
-    if (!mesh.is_live(triangle_of(e)) || mesh.subseg[e] == kNone) continue;
+    if (!mesh.is_live(triangle_of(e)) || !mesh.subseg.has(e)) continue;
     const EdgeRef f = mesh.link[e];
     if (f == kNone || f < e) continue;
     const Point& a = mesh.point(mesh.org(e));

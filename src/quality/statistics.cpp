@@ -106,7 +106,7 @@ void count_edges(const Mesh& mesh, MeshStatistics& stats) {
     if (!mesh.is_live(triangle_of(e))) continue;
     const EdgeRef f = mesh.link[e];
     if (f != kNone && f < e) continue;
-    const bool constrained = mesh.has_subsegments() && mesh.subseg[e] != kNone;
+    const bool constrained = mesh.has_subsegments() && mesh.subseg.has(e);
     ++stats.edges;
     stats.subsegments += constrained;
     if (f == kNone)

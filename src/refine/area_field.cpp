@@ -10,7 +10,7 @@ bool bounds_vary(const Mesh& mesh) {
   if (mesh.area_bound.empty()) return false;
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.corner[e] == kNone || mesh.link[e] == kNone) continue;
-    if (mesh.has_subsegments() && mesh.subseg[e] != kNone) continue;
+    if (mesh.has_subsegments() && mesh.subseg.has(e)) continue;
     if (mesh.area_bound[triangle_of(e)] != mesh.area_bound[triangle_of(mesh.link[e])]) return true;
   }
   return false;

@@ -10,7 +10,7 @@ namespace deltri {
 namespace {
 
 bool has_subsegment(const Mesh& mesh, EdgeRef e) {
-  return mesh.has_subsegments() && mesh.subseg[e] != kNone;
+  return mesh.has_subsegments() && mesh.subseg.has(e);
 }
 
 }  // namespace

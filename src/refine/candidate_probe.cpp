@@ -129,7 +129,7 @@ WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const 
       return result;
     }
     const EdgeRef exit = exit_side(mesh, pred, t, q, c, o);
-    if (mesh.link[exit] == kNone || (mesh.has_subsegments() && mesh.subseg[exit] != kNone)) {
+    if (mesh.link[exit] == kNone || (mesh.has_subsegments() && mesh.subseg.has(exit))) {
       result.blocker = exit;
       return result;
     }
@@ -143,7 +143,7 @@ WalkResult walk_towards(const Mesh& mesh, Predicates& pred, TriangleId t, const 
 // contains c; otherwise, or across a subsegment or the mesh's boundary, e is on the cavity's
 // boundary. Returns whether it is.
 inline bool cross_or_bound(const Mesh& mesh, Predicates& pred, EdgeRef e, const Point& c, CavityMarks& marks) {
-  if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
+  if (mesh.has_subsegments() && mesh.subseg.has(e)) {
     marks.boundary_subsegments().push_back(e);
     marks.boundary().push_back(e);
     return true;
@@ -156,7 +156,7 @@ inline bool cross_or_bound(const Mesh& mesh, Predicates& pred, EdgeRef e, const 
   const TriangleId n = triangle_of(twin);
   if (marks.contains(n)) return false;  // an edge inside the cavity, seen from its other side
   prefetch(&mesh.link[edge_of(n, 0)]);  // needed when n joins the cavity
-  if (mesh.has_subsegments()) prefetch(&mesh.subseg[edge_of(n, 0)]);
+  if (mesh.has_subsegments()) prefetch(mesh.subseg.bits_at(edge_of(n, 0)));
   const auto [x, y, z] = mesh.corner_points(n);
   if (pred.incircle(x, y, z, c) > 0) {
     marks.add(n);

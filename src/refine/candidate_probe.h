@@ -115,7 +115,7 @@ Probe probe_candidate(const Mesh& mesh, Predicates& pred, TriangleId t, const Po
   if (walk.on_vertex) return probe;
   if (walk.blocker != kNone) {
     probe.blocked = true;
-    if (!mesh.has_subsegments() || mesh.subseg[walk.blocker] == kNone || !splittable(walk.blocker))
+    if (!mesh.has_subsegments() || !mesh.subseg.has(walk.blocker) || !splittable(walk.blocker))
       return probe;
     probe.status = ProbeStatus::Encroaches;
     probe.encroached.push_back(walk.blocker);

@@ -75,7 +75,7 @@ std::vector<VertexId> Terminator::free_vertices_seen_from(EdgeRef s, const Point
           too_close_to_split(w, p))
         doomed.push_back(w);
       const EdgeRef twin = mesh_.link[e];
-      if (twin == kNone || mesh_.subseg[e] != kNone) continue;
+      if (twin == kNone || mesh_.subseg.has(e)) continue;
       if ((w_inside || inside(mesh_.dest(e))) && marks_.mark(triangle_of(twin))) todo.push_back(triangle_of(twin));
     }
   }

@@ -10,7 +10,7 @@ constexpr double kSixtyDegrees = std::numbers::pi / 3.0 * (1.0 + 1e-12);
 // Right angles computed with rounding count as right, not acute.
 constexpr double kAcute = std::numbers::pi / 2.0 * (1.0 - 1e-12);
 
-bool has_subsegment(const Mesh& mesh, EdgeRef e) { return mesh.subseg[e] != kNone; }
+bool has_subsegment(const Mesh& mesh, EdgeRef e) { return mesh.subseg.has(e); }
 
 // The angle at org(e) of triangle_of(e), between e and the reverse of lprev(e).
 double angle_at_origin(const Mesh& mesh, EdgeRef e) {
@@ -64,7 +64,7 @@ SegmentApices::SegmentApices(const Mesh& mesh) : apex_(mesh.vertex_count(), fals
   std::vector<unsigned char> degree(mesh.vertex_count(), 0);
   if (!mesh.has_subsegments()) return;
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
-    if (mesh.corner[e] == kNone || mesh.subseg[e] == kNone) continue;
+    if (mesh.corner[e] == kNone || !mesh.subseg.has(e)) continue;
     // Count each subsegment once: from the edge whose twin is missing or has a larger id.
     const EdgeRef twin = mesh.link[e];
     if (twin != kNone && twin < e) continue;

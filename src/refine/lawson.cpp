@@ -11,7 +11,7 @@ namespace {
 // Edge e has v as its apex; flip it when the triangle beyond has v strictly in its circumcircle.
 bool must_flip(const Mesh& mesh, Predicates& pred, EdgeRef e) {
   const EdgeRef twin = mesh.link[e];
-  if (twin == kNone || (mesh.has_subsegments() && mesh.subseg[e] != kNone)) return false;
+  if (twin == kNone || (mesh.has_subsegments() && mesh.subseg.has(e))) return false;
   return pred.incircle(mesh.point(mesh.org(twin)), mesh.point(mesh.dest(twin)),
                        mesh.point(mesh.apex(twin)), mesh.point(mesh.apex(e))) > 0;
 }

@@ -32,7 +32,7 @@ std::vector<double> initial_feature_sizes(const Mesh& mesh) {
     const double length = distance(mesh.point(a), mesh.point(b));
     f[a] = std::min(f[a], length);
     f[b] = std::min(f[b], length);
-    if (mesh.has_subsegments() && mesh.subseg[e] != kNone) {
+    if (mesh.has_subsegments() && mesh.subseg.has(e)) {
       const VertexId c = mesh.apex(e);
       f[c] = std::min(f[c], apex_height(mesh, e));
     }
@@ -44,13 +44,13 @@ double smallest_input_angle(const Mesh& mesh) {
   double smallest = HUGE_VAL;
   if (!mesh.has_subsegments()) return smallest;
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
-    if (mesh.corner[e] == kNone || mesh.subseg[e] == kNone) continue;
+    if (mesh.corner[e] == kNone || !mesh.subseg.has(e)) continue;
     const Point& v = mesh.point(mesh.org(e));
     const Point& to = mesh.point(mesh.dest(e));
     // Turn counter-clockwise around v, through the triangles, to the next subsegment.
     for (EdgeRef g = e;;) {
       const EdgeRef in = lprev(g);  // apex(g) -> v
-      if (mesh.subseg[in] != kNone) {
+      if (mesh.subseg.has(in)) {
         if (mesh.org(in) == mesh.dest(e)) break;  // e itself from its other side: v is a free end
         const Point& x = mesh.point(mesh.org(in));
         const double ux = to.x - v.x, uy = to.y - v.y, wx = x.x - v.x, wy = x.y - v.y;

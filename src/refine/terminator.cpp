@@ -72,7 +72,7 @@ bool keeps_every_subsegment(const Mesh& mesh, int no_steiner_on_segments) {
   if (no_steiner_on_segments != 1) return no_steiner_on_segments >= 2;
   if (!mesh.has_subsegments()) return true;
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
-    if (mesh.corner[e] != kNone && mesh.subseg[e] != kNone && mesh.link[e] != kNone) return false;
+    if (mesh.corner[e] != kNone && mesh.subseg.has(e) && mesh.link[e] != kNone) return false;
   return true;
 }
 
@@ -248,7 +248,6 @@ void Terminator::split_initial_encroachments() {
   if (small_pages_) {
     prefer_small_pages(mesh_.corner.data(), mesh_.corner.capacity() * sizeof(VertexId));
     prefer_small_pages(mesh_.link.data(), mesh_.link.capacity() * sizeof(EdgeRef));
-    prefer_small_pages(mesh_.subseg.data(), mesh_.subseg.capacity() * sizeof(SubsegmentId));
     prefer_small_pages(mesh_.points.data(), mesh_.points.capacity() * sizeof(Point));
   }
   if (!mesh_.has_subsegments()) return;
@@ -261,7 +260,7 @@ void Terminator::split_initial_encroachments() {
 std::vector<EdgeRef> Terminator::initially_encroached() {
   const auto scan = [this](EdgeRef from, EdgeRef to, Predicates& pred, std::vector<EdgeRef>& out) {
     for (EdgeRef e = from; e < to; ++e) {
-      if (mesh_.corner[e] == kNone || mesh_.subseg[e] == kNone) continue;
+      if (mesh_.corner[e] == kNone || !mesh_.subseg.has(e)) continue;
       if (mesh_.link[e] != kNone && mesh_.link[e] < e) continue;
       if (is_splittable(e) && is_encroached(mesh_, pred, e, rule_)) out.push_back(e);
     }
@@ -286,7 +285,7 @@ void Terminator::refine_around(std::span<const TriangleId> triangles) {
   for (TriangleId t : triangles) {
     if (t >= mesh_.triangle_slots() || !mesh_.is_live(t)) continue;
     for (EdgeRef e : edges_of(t))
-      if (mesh_.subseg[e] != kNone && is_splittable(e) && is_encroached(mesh_, pred_, e, rule_))
+      if (mesh_.subseg.has(e) && is_splittable(e) && is_encroached(mesh_, pred_, e, rule_))
         enqueue_subsegment(e);
   }
   split_encroached_subsegments(true);
@@ -332,8 +331,7 @@ TerminatorStart Terminator::hand_over() && {
 void Terminator::warm_pages() {
   note_array(warmer_, 0, mesh_.corner);
   note_array(warmer_, 1, mesh_.link);
-  note_array(warmer_, 2, mesh_.subseg);
-  note_array(warmer_, 3, mesh_.points);
+  note_array(warmer_, 2, mesh_.points);
 }
 
 // The queue serves triangles in size order across the whole domain, so nearly every popped
@@ -346,7 +344,7 @@ void Terminator::prefetch_queued() const {
   if (e >= mesh_.corner.size()) return;
   prefetch(&mesh_.corner[e]);
   prefetch(&mesh_.link[e]);
-  if (mesh_.has_subsegments()) prefetch(&mesh_.subseg[e]);
+  if (mesh_.has_subsegments()) prefetch(mesh_.subseg.bits_at(e));
   for (VertexId v : {next->a, next->b, next->c})
     if (v < mesh_.vertex_count()) prefetch(&mesh_.points[v]);
   // Half as far ahead the entry's links have arrived, and its neighbours are what the cavity
@@ -401,14 +399,14 @@ void Terminator::drop_last_vertex() {
 }
 
 void Terminator::enqueue_subsegment(EdgeRef e) {
-  DELTRI_ASSERT(mesh_.subseg[e] != kNone);
+  DELTRI_ASSERT(mesh_.subseg.has(e));
   encroached_.push({e, mesh_.org(e), mesh_.dest(e)});
 }
 
 EdgeRef Terminator::current_edge(const EncroachedSubsegment& entry) {
   const auto is_it = [&](EdgeRef e) {
     if (e == kNone || e >= mesh_.corner.size() || !mesh_.is_live(triangle_of(e))) return false;
-    if (mesh_.subseg[e] == kNone) return false;
+    if (!mesh_.subseg.has(e)) return false;
     const VertexId o = mesh_.org(e), d = mesh_.dest(e);
     return (o == entry.a && d == entry.b) || (o == entry.b && d == entry.a);
   };
@@ -456,7 +454,7 @@ void Terminator::retry_locked_encroachments() {
   for (int round = 0; round < kLockRetryRounds; ++round) {
     bool any = false;
     for (EdgeRef e{0}; e < mesh_.corner.size(); ++e) {
-      if (!mesh_.is_live(triangle_of(e)) || mesh_.subseg[e] == kNone) continue;
+      if (!mesh_.is_live(triangle_of(e)) || !mesh_.subseg.has(e)) continue;
       if (mesh_.link[e] != kNone && mesh_.link[e] < e) continue;
       const SubsegmentId id = mesh_.subseg[e];
       if (id >= locked_.size() || !locked_[id] || !is_encroached(mesh_, pred_, e, rule_)) continue;

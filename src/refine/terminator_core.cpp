@@ -120,7 +120,7 @@ Outcome Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_
   new_vertex(out, queue_triangles);     // l.45
   for_each_around(mesh_, out, [&](EdgeRef e) {  // l.46-49: the halves s1 and s2
     for (EdgeRef half : {e, lprev(e)})
-      if (mesh_.subseg[half] != kNone && is_splittable(half) && is_encroached(mesh_, pred_, half, rule_))
+      if (mesh_.subseg.has(half) && is_splittable(half) && is_encroached(mesh_, pred_, half, rule_))
         enqueue_subsegment(half);
   });
   return Outcome::Split;
@@ -132,7 +132,7 @@ void Terminator::new_vertex(EdgeRef out, bool queue_triangles) {
   finder_.note_star(mesh_, out);
   for_each_around(mesh_, out, [&](EdgeRef e) {  // l.50
     const EdgeRef opposite = lnext(e);           // l.51
-    const bool segment = mesh_.has_subsegments() && mesh_.subseg[opposite] != kNone;
+    const bool segment = mesh_.has_subsegments() && mesh_.subseg.has(opposite);
     if (segment && is_splittable(opposite) &&
         encroaches(pred_, mesh_.point(mesh_.org(opposite)), mesh_.point(mesh_.dest(opposite)),
                    mesh_.point(v), rule_))

@@ -25,7 +25,7 @@ void check_facets(const SurfaceMesh& m, SurfaceCheck& c) {
     const CheckReport r = check_mesh(mesh, CheckOptions{});
     if (!r.ok()) fault(c, "facet " + std::to_string(f + 1) + ": " + r.summary());
     for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
-      if (mesh.is_live(triangle_of(e)) && mesh.link[e] == kNone && (!mesh.has_subsegments() || mesh.subseg[e] == kNone))
+      if (mesh.is_live(triangle_of(e)) && mesh.link[e] == kNone && (!mesh.has_subsegments() || !mesh.subseg.has(e)))
         fault(c, "facet " + std::to_string(f + 1) + ": a boundary edge of its mesh lies on no input segment");
   }
 }
@@ -38,7 +38,7 @@ void check_conforming(const SurfaceMesh& m, SurfaceCheck& c) {
     const Mesh& mesh = m.facet_meshes[f];
     const std::vector<std::uint32_t>& global = m.facet_vertex[f];
     for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
-      if (!mesh.is_live(triangle_of(e)) || !mesh.has_subsegments() || mesh.subseg[e] == kNone) continue;
+      if (!mesh.is_live(triangle_of(e)) || !mesh.has_subsegments() || !mesh.subseg.has(e)) continue;
       const std::uint32_t a = global[mesh.org(e)], b = global[mesh.dest(e)];
       facet_edges[f].insert({std::min(a, b), std::max(a, b)});
     }

@@ -167,7 +167,7 @@ std::vector<std::pair<std::uint32_t, double>> SurfaceBuilder::new_cuts(std::uint
   const std::uint32_t n_local = static_cast<std::uint32_t>(state.local.size());
   std::vector<std::pair<std::uint32_t, double>> cuts;
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
-    if (!mesh.has_subsegments() || mesh.subseg[e] == kNone || mesh.corner[e] < n_local) continue;
+    if (!mesh.has_subsegments() || !mesh.subseg.has(e) || mesh.corner[e] < n_local) continue;
     const Subsegment& rec = mesh.subsegments[mesh.subseg[e]];
     if (rec.segment >= state.pieces.size()) continue;
     const Piece& piece = state.pieces[rec.segment];
@@ -304,7 +304,7 @@ SurfaceMesh SurfaceBuilder::lift() {
       out.triangle_facet.push_back(f);
     }
     for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
-      if (!mesh.has_subsegments() || mesh.subseg[e] == kNone) continue;
+      if (!mesh.has_subsegments() || !mesh.subseg.has(e)) continue;
       const std::uint32_t a = global[mesh.org(e)], b = global[mesh.dest(e)];
       const std::uint64_t key = (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
       const Subsegment& rec = mesh.subsegments[mesh.subseg[e]];

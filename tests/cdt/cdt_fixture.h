@@ -47,7 +47,7 @@ inline bool mesh_valid(const Mesh& m) {
         if (m.link[b] != a || m.org(b) != m.dest(a) || m.dest(b) != m.org(a)) return false;
         if (m.has_subsegments() && m.subseg[a] != m.subseg[b]) return false;
       }
-      if (m.has_subsegments() && m.subseg[a] != kNone) {
+      if (m.has_subsegments() && m.subseg.has(a)) {
         if (m.subseg[a] >= m.subsegments.size()) return false;
         const Subsegment& s = m.subsegments[m.subseg[a]];
         const bool same = (s.a == m.org(a) && s.b == m.dest(a)) || (s.b == m.org(a) && s.a == m.dest(a));
@@ -63,7 +63,7 @@ inline bool constrained_delaunay(const Mesh& m) {
   Predicates p;
   for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (m.corner[e] == kNone || m.link[e] == kNone) continue;
-    if (m.has_subsegments() && m.subseg[e] != kNone) continue;
+    if (m.has_subsegments() && m.subseg.has(e)) continue;
     if (p.incircle(m.point(m.org(e)), m.point(m.dest(e)), m.point(m.apex(e)),
                    m.point(m.apex(m.link[e]))) > 0)
       return false;
@@ -87,7 +87,7 @@ inline std::map<VertexId, std::set<VertexId>> subsegment_graph(
     const Mesh& m, const std::function<bool(const Subsegment&)>& keep) {
   std::map<VertexId, std::set<VertexId>> g;
   for (EdgeRef e{0}; e < m.corner.size(); ++e) {
-    if (m.corner[e] == kNone || m.subseg[e] == kNone) continue;
+    if (m.corner[e] == kNone || !m.subseg.has(e)) continue;
     if (!keep(m.subsegments[m.subseg[e]])) continue;
     g[m.org(e)].insert(m.dest(e));
     g[m.dest(e)].insert(m.org(e));
@@ -133,7 +133,7 @@ inline bool chain_of_segment(const Mesh& m, std::uint32_t index, std::uint32_t a
 inline std::size_t live_edges_with_subsegment(const Mesh& m) {
   std::size_t n = 0;
   for (EdgeRef e{0}; e < m.corner.size(); ++e)
-    if (m.corner[e] != kNone && m.subseg[e] != kNone && (m.link[e] == kNone || m.link[e] > e)) ++n;
+    if (m.corner[e] != kNone && m.subseg.has(e) && (m.link[e] == kNone || m.link[e] > e)) ++n;
   return n;
 }
 

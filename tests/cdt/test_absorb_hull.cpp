@@ -15,7 +15,7 @@ namespace {
 // Does some boundary edge (no twin) carrying a subsegment leave v?
 bool on_hull_chain(const Mesh& m, std::uint32_t v) {
   for (EdgeRef e{0}; e < m.corner.size(); ++e)
-    if (m.corner[e] != kNone && m.link[e] == kNone && m.subseg[e] != kNone && m.org(e) == v) return true;
+    if (m.corner[e] != kNone && m.link[e] == kNone && m.subseg.has(e) && m.org(e) == v) return true;
   return false;
 }
 

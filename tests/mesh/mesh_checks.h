@@ -96,7 +96,7 @@ inline int delaunay_faults(const Mesh& m) {
   int bad = 0;
   for (EdgeRef e{0}; e < m.corner.size(); ++e) {
     if (!m.is_live(triangle_of(e)) || m.link[e] == kNone) continue;
-    if (!m.subseg.empty() && m.subseg[e] != kNone) continue;
+    if (!m.subseg.empty() && m.subseg.has(e)) continue;
     const Point& a = m.point(m.org(e));
     const Point& b = m.point(m.dest(e));
     const Point& c = m.point(m.apex(e));

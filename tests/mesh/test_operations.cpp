@@ -71,7 +71,7 @@ TEST(flip_inside_a_mesh_keeps_outer_links_and_subsegments) {
   CHECK_EQ(m.subseg[s], 0u);
   CHECK_EQ(m.link[s], kNone);
   int carrying = 0;
-  for (EdgeRef e{0}; e < m.corner.size(); ++e) carrying += m.subseg[e] != kNone;
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) carrying += m.subseg.has(e);
   CHECK_EQ(carrying, 1);
 }
 
@@ -140,7 +140,7 @@ TEST(split_edge_splits_its_subsegment) {
   CHECK_EQ(m.subseg[find_edge(m, 0, v)], 1u);
   CHECK_EQ(m.subseg[find_edge(m, v, 0)], 1u);
   int carrying = 0;
-  for (EdgeRef e{0}; e < m.corner.size(); ++e) carrying += m.subseg[e] != kNone;
+  for (EdgeRef e{0}; e < m.corner.size(); ++e) carrying += m.subseg.has(e);
   CHECK_EQ(carrying, 4);
 }
 

@@ -225,9 +225,9 @@ TEST(subsegment_on_one_twin_only) {
   Mesh m = diamond_short_diagonal();
   m.enable_subsegments();
   m.subsegments.push_back({1_v, 3_v, 1, 0});
-  detail::subseg_slots(m)[1] = 0_s;
+  detail::subseg_slots(m).set(1, 0_s);
   CHECK(has_exactly(check_mesh(m, CheckOptions{}), {{FaultKind::SubsegmentMismatch, 1}}));
-  detail::subseg_slots(m)[5] = 0_s;
+  detail::subseg_slots(m).set(5, 0_s);
   CHECK(check_mesh(m, CheckOptions{}).ok());
   m.subsegments[0] = {0_v, 2_v, 1, 0};  // a-c, but lying on b-d
   const CheckReport r = check_mesh(m, CheckOptions{});
@@ -271,7 +271,7 @@ TEST(ids_out_of_range) {
   Mesh m = diamond_short_diagonal();
   detail::link_slots(m)[0] = 6_e;
   m.enable_subsegments();
-  detail::subseg_slots(m)[2] = 0_s;  // there are no subsegments
+  detail::subseg_slots(m).set(2, 0_s);  // there are no subsegments
   CHECK(has_exactly(check_mesh(m, CheckOptions{}),
                     {{FaultKind::LinkOutOfRange, 1}, {FaultKind::SubsegmentOutOfRange, 1}}));
 }

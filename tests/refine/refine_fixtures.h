@@ -53,7 +53,7 @@ inline bool mark_segment(Mesh& m, std::uint32_t a, std::uint32_t b, int marker =
 // Every boundary edge becomes a subsegment (a convex domain bounded by its hull).
 inline void mark_boundary(Mesh& m, int marker = 1) {
   for (EdgeRef e{0}; e < m.corner.size(); ++e) {
-    if (m.corner[e] == kNone || m.link[e] != kNone || m.subseg[e] != kNone) continue;
+    if (m.corner[e] == kNone || m.link[e] != kNone || m.subseg.has(e)) continue;
     const SubsegmentId id = static_cast<SubsegmentId>(m.subsegments.size());
     m.subsegments.push_back({m.org(e), m.dest(e), marker, id});
     m.set_subsegment(e, id);
@@ -117,7 +117,7 @@ inline Facts facts_of(const Mesh& m) {
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
       const EdgeRef twin = m.link[e];
-      const bool segment = !m.subseg.empty() && m.subseg[e] != kNone;
+      const bool segment = !m.subseg.empty() && m.subseg.has(e);
       if (twin == kNone) {
         if (!segment) f.boundary_protected = false;
         else f.boundary_length += std::hypot(m.point(m.dest(e)).x - m.point(m.org(e)).x,
@@ -145,11 +145,11 @@ struct Snapshot {
   BigVector<Point> points;
   BigVector<VertexId> corner;
   BigVector<EdgeRef> link;
-  BigVector<SubsegmentId> subseg;
+  std::vector<SubsegmentId> subseg;
   std::size_t subsegments = 0;
   explicit Snapshot(const Mesh& m)
       : points(m.points), corner(m.corner.begin(), m.corner.end()), link(m.link.begin(), m.link.end()),
-        subseg(m.subseg.begin(), m.subseg.end()),
+        subseg(m.subseg.dense()),
         subsegments(m.subsegments.size()) {}
   bool operator==(const Snapshot&) const = default;
 };

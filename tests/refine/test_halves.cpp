@@ -59,7 +59,7 @@ RefineOptions bounds_with(int threads, bool in_halves = true, std::uint32_t part
 double interior_segment_length(const Mesh& m) {
   double length = 0.0;
   for (EdgeRef e{0}; e < m.corner.size(); ++e) {
-    if (m.corner[e] == kNone || m.subseg[e] == kNone || m.link[e] == kNone || m.link[e] < e) continue;
+    if (m.corner[e] == kNone || !m.subseg.has(e) || m.link[e] == kNone || m.link[e] < e) continue;
     const Point& a = m.point(m.org(e));
     const Point& b = m.point(m.dest(e));
     CHECK_EQ(a.y, kLineY);
@@ -203,7 +203,7 @@ TEST(halves_keep_random_segments_and_the_constrained_delaunay_property) {
     double segment_length = 0.0;
     for (int k = 0; k < 1500; ++k) {
       const EdgeRef e = static_cast<EdgeRef>(next() % m.corner.size());
-      if (m.corner[e] == kNone || m.link[e] == kNone || m.subseg[e] != kNone) continue;
+      if (m.corner[e] == kNone || m.link[e] == kNone || m.subseg.has(e)) continue;
       const SubsegmentId id = static_cast<SubsegmentId>(m.subsegments.size());
       m.subsegments.push_back({m.org(e), m.dest(e), 5, id});
       m.set_subsegment(e, id);
@@ -229,7 +229,7 @@ TEST(halves_keep_random_segments_and_the_constrained_delaunay_property) {
     CHECK_NEAR(f.boundary_length, 4.0, 1e-12);
     double after = 0.0;
     for (EdgeRef e{0}; e < m.corner.size(); ++e)
-      if (m.corner[e] != kNone && m.subseg[e] != kNone && m.link[e] != kNone && m.link[e] > e)
+      if (m.corner[e] != kNone && m.subseg.has(e) && m.link[e] != kNone && m.link[e] > e)
         after += length_of(m, e);
     CHECK_NEAR(after, segment_length, 1e-9 * segment_length);
   }

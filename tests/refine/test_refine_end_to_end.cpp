@@ -90,7 +90,7 @@ TEST(unit_square_circles_conforming) {
   CHECK(facts_of(m).min_angle >= 25.0 - 1e-9);
   // Conforming Delaunay: no boundary subsegment has a vertex inside its diametral circle.
   for (EdgeRef e{0}; e < m.corner.size(); ++e) {
-    if (m.corner[e] == kNone || m.subseg[e] == kNone) continue;
+    if (m.corner[e] == kNone || !m.subseg.has(e)) continue;
     const Point& a = m.point(m.org(e));
     const Point& b = m.point(m.dest(e));
     const Point& w = m.point(m.apex(e));
@@ -112,7 +112,7 @@ bool smallest_angle_between_subsegments(const Mesh& m, TriangleId t) {
   const double smallest = min_angle_deg(m, t);
   for (unsigned i = 0; i < 3; ++i) {
     const EdgeRef e = edge_of(t, i);  // the angle at org(e) lies between e and lprev(e)
-    if (angle_deg(m, e) == smallest && m.subseg[e] != kNone && m.subseg[lprev(e)] != kNone) return true;
+    if (angle_deg(m, e) == smallest && m.subseg.has(e) && m.subseg.has(lprev(e))) return true;
   }
   return false;
 }
@@ -166,7 +166,7 @@ TEST(five_degree_spike_terminates) {
   };
   int spike_pieces = 0;
   for (EdgeRef e{0}; e < m.corner.size(); ++e) {
-    if (m.corner[e] == kNone || m.subseg[e] == kNone) continue;
+    if (m.corner[e] == kNone || !m.subseg.has(e)) continue;
     const bool spike = on_spike(m.org(e)) && on_spike(m.dest(e));
     CHECK_EQ(m.subsegments[m.subseg[e]].marker, spike ? 7 : 1);
     spike_pieces += spike;

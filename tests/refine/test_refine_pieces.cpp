@@ -40,7 +40,7 @@ TEST(subsegment_encroached_by_either_apex) {
   Predicates pred;
   int encroached = 0;
   for (EdgeRef e{0}; e < m.corner.size(); ++e)
-    if (m.subseg[e] != kNone && is_encroached(m, pred, e, EncroachRule::circle())) {
+    if (m.subseg.has(e) && is_encroached(m, pred, e, EncroachRule::circle())) {
       ++encroached;
       CHECK_EQ(m.point(m.org(e)).y + m.point(m.dest(e)).y, 0.0);  // the bottom side only
     }
@@ -121,7 +121,7 @@ TEST(small_angle_between_two_subsegments_is_not_split) {
       CHECK(!a.skinny);
     }
   }
-  detail::subseg_slots(m).assign(m.subseg.size(), kNone);  // without the subsegments it is skinny
+  detail::subseg_slots(m).assign(m.subseg.size());  // without the subsegments it is skinny
   bool found = false;
   for (TriangleId t{0}; t < m.triangle_slots(); ++t) found = found || assess_triangle(m, t, q).skinny;
   CHECK(found);
@@ -407,7 +407,7 @@ TEST(known_cavity_fan_matches_lawson_flips) {
   Mesh m = triangulated(pts);
   mark_boundary(m);
   for (EdgeRef e{0}; e < m.corner.size(); e = EdgeRef{e + 37})
-    if (m.corner[e] != kNone && m.link[e] != kNone && m.subseg[e] == kNone) mark_segment(m, m.org(e), m.dest(e));
+    if (m.corner[e] != kNone && m.link[e] != kNone && !m.subseg.has(e)) mark_segment(m, m.org(e), m.dest(e));
   m.area_bound.resize(m.triangle_slots());
   for (TriangleId t{0}; t < m.triangle_slots(); ++t) m.area_bound[t] = 1.0 + t;
   Predicates pred;

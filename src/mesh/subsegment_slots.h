@@ -1,0 +1,165 @@
+// Mesh::subseg, the subsegment on each edge slot, kept sparse: almost every edge of a refined mesh
+// is unconstrained (about one slot in six carries a subsegment on the holes benchmarks, fewer on
+// larger meshes), and a dense 4-byte id per slot was the largest single array of the refinement's
+// peak. Two parts:
+//   * one bit per slot, set where the slot carries a value, so "is edge e constrained?" (asked
+//     in every flip test and cavity step) stays one load: has(e);
+//   * an open-addressing hash table (linear probing, keyed by the slot) holding the values of the
+//     set slots, read only when the bit is set: operator[].
+// Readers use it like the array it replaces: subseg[e] (kNone where nothing lies), size(),
+// empty(); writes go through Editor, which only Mesh and mesh/topology_writer.h hand out, so that
+// only src/mesh/ writes topology. A value is any id but kNone: the halves' cuts store a mark above
+// every record id. The table's layout depends on the order of the writes only, never on anything
+// else, and no reader walks it in table order, so outputs do not depend on it.
+#pragma once
+
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "mesh/ids.h"
+
+namespace deltri {
+
+struct Mesh;
+namespace detail {
+struct TopologyWriter;
+}
+
+class SubsegmentSlots {
+ public:
+  using value_type = SubsegmentId;
+
+  // The subsegment on slot e, or kNone.
+  SubsegmentId operator[](std::size_t e) const { return has(e) ? find(e) : SubsegmentId{kNone}; }
+  // Whether slot e carries a subsegment (or a mark): subseg[e] != kNone, in one load.
+  bool has(std::size_t e) const { return (bits_[e >> 6] >> (e & 63)) & 1; }
+  // The word of bits holding slot e's, to prefetch.
+  const std::uint64_t* bits_at(std::size_t e) const { return &bits_[e >> 6]; }
+
+  std::size_t size() const { return size_; }  // slots, 0 while the mesh has no segments
+  bool empty() const { return size_ == 0; }
+  std::size_t count() const { return count_; }  // slots that carry a value
+  // Bytes held (bits and table), for the memory accounting in tests and docs.
+  std::size_t bytes() const { return bits_.capacity() * sizeof(std::uint64_t) + table_.capacity() * sizeof(Entry); }
+
+  // f(e, id) for every slot e that carries a value, e increasing.
+  template <class F>
+  void for_each(F&& f) const {
+    for (std::size_t w = 0; w < bits_.size(); ++w)
+      for (std::uint64_t b = bits_[w]; b != 0; b &= b - 1) {
+        const std::size_t e = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
+        f(EdgeRef{static_cast<std::uint32_t>(e)}, find(e));
+      }
+  }
+
+  // Equal contents slot by slot (tests compare meshes and snapshots).
+  friend bool operator==(const SubsegmentSlots& a, const SubsegmentSlots& b);
+  // The dense array, for tests and snapshots.
+  std::vector<SubsegmentId> dense() const;
+
+  class Editor;
+
+ private:
+  friend struct Mesh;
+  friend struct detail::TopologyWriter;
+
+  struct Entry {
+    std::uint32_t slot;  // kNone: empty
+    SubsegmentId id;
+  };
+
+  std::size_t home(std::uint32_t slot) const {
+    // Fibonacci hashing: consecutive slots land far apart.
+    return static_cast<std::size_t>((slot * 0x9E3779B9u) >> shift_);
+  }
+  std::size_t index_of(std::size_t e) const {
+    const Entry* table = table_.data();
+    std::size_t i = home(static_cast<std::uint32_t>(e));
+    while (table[i].slot != e) i = (i + 1) & mask_;
+    return i;
+  }
+  SubsegmentId find(std::size_t e) const { return table_[index_of(e)].id; }
+
+  void set(std::size_t e, SubsegmentId s) {
+    if (s == kNone) {
+      if (has(e)) erase(e);
+    } else if (has(e)) {
+      table_[index_of(e)].id = s;
+    } else {
+      insert(e, s);
+    }
+  }
+  // Slots e, e + 1, e + 2 (one triangle's) get s, kNone, kNone: the common case, no value before
+  // and none after, costs one test.
+  void set_triangle(std::size_t e, SubsegmentId s) {
+    const unsigned at = e & 63;
+    if (s == kNone && at <= 61 && (bits_[e >> 6] & (std::uint64_t{7} << at)) == 0) return;
+    set_triangle_slowly(e, s);
+  }
+  void set_triangle_slowly(std::size_t e, SubsegmentId s);
+  // Room in the table for `more` entries beyond those held, without a rehash on the way.
+  void reserve_entries(std::size_t more);
+  void insert(std::size_t e, SubsegmentId s);
+  void erase(std::size_t e);
+  void rehash(std::size_t capacity);
+  // Slot count n, every slot empty.
+  void assign(std::size_t n);
+  // Slot count n: new slots empty, slots from n on dropped.
+  void resize(std::size_t n);
+  // Three more empty slots (a triangle appended).
+  void grow_triangle() {
+    size_ += 3;
+    if (size_ > bits_.size() * 64) bits_.push_back(0);
+  }
+  void reserve(std::size_t n) { bits_.reserve((n + 63) / 64); }
+  // The table at the least size that holds its entries (after many were cleared).
+  void fit();
+  // Replaces every value s by f(s); a kNone result clears the slot.
+  template <class F>
+  void remap(F&& f);
+  void clear() { *this = SubsegmentSlots{}; }
+
+  std::vector<std::uint64_t> bits_;
+  std::vector<Entry> table_;  // a power of two in size, or empty
+  unsigned shift_ = 32;       // 32 - log2(table_.size())
+  std::size_t mask_ = 0;      // table_.size() - 1
+  std::size_t size_ = 0;
+  std::size_t count_ = 0;
+};
+
+// Write access for the kernel (Mesh's members and mesh/topology_writer.h's subseg_slots).
+class SubsegmentSlots::Editor {
+ public:
+  void set(std::size_t e, SubsegmentId s) { slots_->set(e, s); }
+  void set_triangle(std::size_t e, SubsegmentId s) { slots_->set_triangle(e, s); }
+  void reserve_entries(std::size_t more) { slots_->reserve_entries(more); }
+  void assign(std::size_t n) { slots_->assign(n); }
+  void resize(std::size_t n) { slots_->resize(n); }
+  void clear() { slots_->clear(); }
+  void fit() { slots_->fit(); }
+  template <class F>
+  void remap(F&& f) {
+    slots_->remap(f);
+  }
+
+ private:
+  friend struct Mesh;
+  friend struct detail::TopologyWriter;
+  explicit Editor(SubsegmentSlots& s) : slots_(&s) {}
+  SubsegmentSlots* slots_;
+};
+
+template <class F>
+void SubsegmentSlots::remap(F&& f) {
+  std::vector<std::uint32_t> cleared;
+  for (Entry& x : table_) {
+    if (x.slot == kNone) continue;
+    x.id = f(x.id);
+    if (x.id == kNone) cleared.push_back(x.slot);
+  }
+  for (std::uint32_t e : cleared) erase(e);
+}
+
+}  // namespace deltri
