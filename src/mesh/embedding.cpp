@@ -117,19 +117,18 @@ class Certificate {
     return ha != hb ? ha < hb : pred_.orient2d(c, a, b) > 0;
   }
 
-  // next_[k]: the boundary edge after k; loop_[k]: k's loop. Twins pair each arrival at a vertex
+  // next_[k]: the boundary edge after k; loops_: one entry per loop. Twins pair each arrival at a vertex
   // with a departure, so a vertex left by one boundary edge is reached by one, and the loops close.
   bool trace_loops() {
     for (std::uint32_t k = 0; k < boundary_.size(); ++k)
       if (const std::uint32_t out = leaving_[mesh_.dest(boundary_[k])]; out != kTie) next_[k] = out;
-    loop_.assign(boundary_.size(), kNone);
+    std::vector<char> seen(boundary_.size(), 0);
     for (std::uint32_t k = 0; k < boundary_.size(); ++k) {
-      if (loop_[k] != kNone) continue;
-      const auto id = static_cast<std::uint32_t>(loops_.size());
+      if (seen[k]) continue;
       loops_.push_back({k});
       std::uint32_t j = k;
-      for (; j != kNone && loop_[j] == kNone; j = next_[j]) {
-        loop_[j] = id;
+      for (; j != kNone && !seen[j]; j = next_[j]) {
+        seen[j] = 1;
         if (lower(dest(j), dest(loops_.back().lowest))) loops_.back().lowest = j;
       }
       if (j != k) return false;  // not a permutation: the twins were not as promised
@@ -284,7 +283,7 @@ class Certificate {
   std::vector<std::uint32_t> leaving_;  // per vertex: its boundary edge's index in boundary_, kNone or kTie
   std::vector<VertexId> ties_;          // the vertices left by several boundary edges
   std::vector<std::uint32_t> tie_of_, tie_start_, tie_edges_;
-  std::vector<std::uint32_t> next_, loop_;
+  std::vector<std::uint32_t> next_;
   std::vector<Loop> loops_;
   std::uint32_t strips_ = 1;
   long double y0_ = 0, strip_h_ = 1;

@@ -76,8 +76,7 @@ EdgeRef fill_star(Mesh& m, Predicates& pred, VertexId v, const KnownCavity& cavi
     detail::corner_slots(m)[e + 1] = dest[j];
     detail::corner_slots(m)[e + 2] = v;
     // The outside's subsegment on edge 0, none on the inner edges 1 and 2, in one write.
-    detail::link_slots(m)[e] = outside_link[j];
-    if (outside_link[j] != kNone) detail::link_slots(m)[outside_link[j]] = e;
+    link_to(m, e, outside_link[j]);
     if (segments) detail::subseg_slots(m).set_triangle(e, outside_seg[j]);
     if (!first) copy_triangle_data(m, owner, slot[j]);
   }

@@ -32,10 +32,22 @@ inline EdgeSurround surround_of(const Mesh& m, EdgeRef e) {
   return {m.link[e], m.subseg.empty() ? kNone : m.subseg[e]};
 }
 
+// Makes `link` (kNone: none) e's twin.
+inline void link_to(Mesh& m, EdgeRef e, EdgeRef link) {
+  detail::link_slots(m)[e] = link;
+  if (link != kNone) detail::link_slots(m)[link] = e;
+}
+
 inline void attach(Mesh& m, EdgeRef e, EdgeSurround s) {
-  detail::link_slots(m)[e] = s.link;
-  if (s.link != kNone) detail::link_slots(m)[s.link] = e;
+  link_to(m, e, s.link);
   if (!m.subseg.empty()) detail::subseg_slots(m).set(e, s.seg);
+}
+
+// Kills t and clears its slots' subsegments (kill_triangle leaves them for
+// drop_unused_subsegments), for a triangle whose subsegments now live elsewhere.
+inline void kill_with_subsegments(Mesh& m, TriangleId t) {
+  m.kill_triangle(t);
+  detail::subseg_slots(m).set_triangle(edge_of(t, 0), kNone);
 }
 
 // Bonds two edges that are new to each other and therefore interior to the change: no subsegment.

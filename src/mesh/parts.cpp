@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "mesh/internal.h"
 #include "mesh/lawson.h"
 #include "mesh/operations.h"
 #include "util/run_both.h"
@@ -125,8 +126,7 @@ CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId 
   // their subsegments, which the part holds now, leave the mesh's table.
   for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!moves[t] || !mesh.is_live(t)) continue;
-    mesh.kill_triangle(t);
-    for (EdgeRef e : edges_of(t)) detail::subseg_slots(mesh).set(e, kNone);
+    detail::kill_with_subsegments(mesh, t);
   }
   detail::subseg_slots(mesh).fit();
   return cut;

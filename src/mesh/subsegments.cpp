@@ -1,4 +1,5 @@
 #include "mesh/subsegments.h"
+#include "mesh/internal.h"
 #include "mesh/topology_writer.h"
 
 #include <vector>
@@ -72,8 +73,7 @@ PeeledEdges peel_boundary_triangle(Mesh& mesh, EdgeRef e) {
   const SubsegmentId id = mesh.subseg[e];
   const Subsegment old = mesh.subsegments[id];
   const TriangleId t = triangle_of(e);
-  mesh.kill_triangle(t);
-  for (unsigned i = 0; i < 3; ++i) detail::subseg_slots(mesh).set(edge_of(t, i), kNone);
+  detail::kill_with_subsegments(mesh, t);
   mesh.subsegments[id] = {a, v, old.marker, old.segment};
   mesh.set_subsegment(out.av, id);
   constrain(mesh, out.vb, {v, b, old.marker, old.segment});
