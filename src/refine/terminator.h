@@ -112,6 +112,7 @@ class Terminator {
   std::optional<Outcome> guard_insertion(const Assessment& a, const Candidate& c, double radius) const;
   struct SplitRadius {
     double now, after_chew;  // the shortest edge a split at p would make, before and after Chew's step
+    VertexId nearest = kNone;  // the vertex after_chew is measured to, when Chew's step is planned
   };
   struct SplitPlan {
     Point point;
