@@ -177,16 +177,17 @@ bool Terminator::refused_by_sure_fire_rule(EdgeRef s, const SplitPlan& plan) con
 // The paper's exception to its rule: the split's parent (here the newer end of the requesting
 // triangle's shortest edge) is an input vertex or a split on a piece that shares no end with s's.
 // A real feature then bounds refinement by lfs. It matters for the nearest vertex across a wedge,
-// which would otherwise refuse the split an input vertex flush with s asks for (an input vertex
-// 0.2 degrees off a nonincident segment, next to a 4.4-degree wedge, left a triangle of 0.047
-// degrees on issue-142-double-hanging-edge.poly).
+// which would otherwise refuse the split an input vertex close to s asks for (an input vertex
+// 0.001 off a nonincident segment, next to a 4.4-degree wedge, left a triangle of 0.047 degrees
+// on issue-142-double-hanging-edge.poly).
 bool Terminator::parent_is_input_feature(const PieceEnds& piece) const {
   const VertexId w = sure_fire_parents_[0];
   if (w == kNone) return false;
   if (mesh_.kind[w] == VertexKind::Input) return true;
   const PieceEnds* other = pieces_.piece_of(w);
   if (other == nullptr || shared_end(piece, *other) != kNone) return false;
-  const bool same = (piece[0] == (*other)[0] && piece[1] == (*other)[1]) || (piece[0] == (*other)[1] && piece[1] == (*other)[0]);
+  const bool same = (piece[0] == (*other)[0] && piece[1] == (*other)[1]) ||
+                    (piece[0] == (*other)[1] && piece[1] == (*other)[0]);
   return !same;
 }
 
