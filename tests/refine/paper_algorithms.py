@@ -349,15 +349,19 @@ def check_conformity(deltri, inp, work):
            % (inp, len(tris), bad, r.returncode))
 
 
+def write_poly(path, pts, segs):
+    with open(path, 'w') as f:
+        f.write('%d 2 0 0\n' % len(pts) + ''.join('%d %r %r\n' % (i + 1, x, y) for i, (x, y) in enumerate(pts)))
+        f.write('%d 0\n' % len(segs) + ''.join('%d %d %d\n' % (i + 1, a, b) for i, (a, b) in enumerate(segs)))
+        f.write('0\n')
+
+
 def wedge_poly(path, degrees, second=0.9):
     a = math.radians(degrees)
     pts = [(-1.0, -1.0), (2.0, -1.0), (2.0, 1.0), (-1.0, 1.0), (0.0, 0.0), (1.0, 0.0),
            (second * math.cos(a), second * math.sin(a))]
     segs = [(1, 2), (2, 3), (3, 4), (4, 1), (5, 6), (5, 7)]
-    with open(path, 'w') as f:
-        f.write('%d 2 0 0\n' % len(pts) + ''.join('%d %r %r\n' % (i + 1, x, y) for i, (x, y) in enumerate(pts)))
-        f.write('%d 0\n' % len(segs) + ''.join('%d %d %d\n' % (i + 1, a, b) for i, (a, b) in enumerate(segs)))
-        f.write('0\n')
+    write_poly(path, pts, segs)
 
 
 def limit_memory():
@@ -401,10 +405,7 @@ def crossing_poly(path, degrees):
     h = 0.5 * math.tan(math.radians(degrees) / 2)
     pts = [(-1.0, -1.0), (2.0, -1.0), (2.0, 1.0), (-1.0, 1.0), (0.0, -h), (1.0, h), (0.0, h), (1.0, -h)]
     segs = [(1, 2), (2, 3), (3, 4), (4, 1), (5, 6), (7, 8)]
-    with open(path, 'w') as f:
-        f.write('%d 2 0 0\n' % len(pts) + ''.join('%d %r %r\n' % (i + 1, x, y) for i, (x, y) in enumerate(pts)))
-        f.write('%d 0\n' % len(segs) + ''.join('%d %d %d\n' % (i + 1, a, b) for i, (a, b) in enumerate(segs)))
-        f.write('0\n')
+    write_poly(path, pts, segs)
 
 
 def check_chew_wedge(deltri, degrees, q, second, work):
