@@ -112,6 +112,7 @@ class Terminator {
   std::optional<Outcome> guard_insertion(const Assessment& a, const Candidate& c, double radius) const;
   struct SplitRadius {
     double now, after_chew;  // the shortest edge a split at p would make, before and after Chew's step
+    VertexId nearest = kNone;  // the vertex after_chew is measured to, when Chew's step is planned
   };
   struct SplitPlan {
     Point point;
@@ -130,6 +131,7 @@ class Terminator {
   // Ruppert, Chew: Sec. 6.2's sure-fire rule on the split of s planned as `plan`.
   bool refused_by_sure_fire_rule(EdgeRef s, const SplitPlan& plan) const;
   bool meets_at_small_angle(const PieceEnds& piece, VertexId w) const;
+  bool parent_is_input_feature(const PieceEnds& piece) const;
   std::array<VertexId, 2> sure_fire_ancestors(EdgeRef shortest) const;
   bool tracks_split_radii() const { return opt_.algorithm != RefinementAlgorithm::Terminator || opt_.range_restricted; }
   // -Y / -YY: whether c, for bad triangle t, is refused: it would lower the smallest angle below

@@ -134,9 +134,18 @@ bool Terminator::split_allowed(EdgeRef s, const Assessment& a, double d) const {
 // 7.3): a subsegment s is not split where the new vertex's insertion radius would be smaller than
 // that of its most recently inserted ancestor, a refinement split w on a piece that meets s's piece
 // at a common end at under 60 degrees. w is an ancestor when it encroaches upon s (Ruppert's
-// mutual encroachment, Fig. 24) or an end of the shortest edge of the skinny triangle whose
+// mutual encroachment, Fig. 24), or an end of the shortest edge of the skinny triangle whose
 // rejected circumcentre asked for the split (the figure-eight cycle of Fig. 26, through a free
-// vertex; the newer end, or with Chew's algorithm either: sure_fire_ancestors). Two pieces at an angle phi are coupled: each split of one leads to a split of the
+// vertex; the newer end, or with Chew's algorithm either: sure_fire_ancestors), or, in Chew's
+// algorithm, the vertex the split's insertion radius is measured to once the free vertices in s's
+// diametral circle are deleted, when it lies in that circle. Chew splits for no encroaching
+// vertex, but that one plays its part: it is what makes the radius small (a split across the
+// wedge), and Sec. 3.2 makes the encroaching vertex a split's parent. Without it the cycle ran
+// through a free vertex inside a narrow strip between the pieces (the circumcentre of the strip's
+// end triangle, across no subsegment): a split asked for by its triangles has only that vertex
+// and s's own piece at the shortest edge, and Chew filled such strips down to the edge floor at a
+// tiny crossing or between two pieces of equal length (docs/refinement.md, "Chew in thin
+// wedges"). Two pieces at an angle phi are coupled: each split of one leads to a split of the
 // other, until the subsegments are as short as the gap between the pieces, phi times the distance
 // to the apex: about ln(R / r) / phi splits (VVingerfly's test.poly, phi = 2e-6: tens of millions,
 // until the memory ran out). With the rule no split is the child of a wider one through the angle,
@@ -156,9 +165,30 @@ bool Terminator::refused_by_sure_fire_rule(EdgeRef s, const SplitPlan& plan) con
     if (w != kNone && ancestor(w)) return true;
   const Point& a = mesh_.point(mesh_.org(s));
   const Point& b = mesh_.point(mesh_.dest(s));
+  const VertexId n = plan.radius.nearest;
+  if (opt_.algorithm == RefinementAlgorithm::Chew && n != kNone && ancestor(n) &&
+      strictly_inside_diametral_circle(a, b, mesh_.point(n)) && !parent_is_input_feature(piece))
+    return true;
   for (EdgeRef e : {s, mesh_.link[s]})
     if (e != kNone && ancestor(mesh_.apex(e)) && encroaches(pred_, a, b, mesh_.point(mesh_.apex(e)), rule_)) return true;
   return false;
+}
+
+// The paper's exception to its rule: the split's parent (here the newer end of the requesting
+// triangle's shortest edge) is an input vertex or a split on a piece that shares no end with s's.
+// A real feature then bounds refinement by lfs. It matters for the nearest vertex across a wedge,
+// which would otherwise refuse the split an input vertex close to s asks for (an input vertex
+// 0.001 off a nonincident segment, next to a 4.4-degree wedge, left a triangle of 0.047 degrees
+// on issue-142-double-hanging-edge.poly).
+bool Terminator::parent_is_input_feature(const PieceEnds& piece) const {
+  const VertexId w = sure_fire_parents_[0];
+  if (w == kNone) return false;
+  if (mesh_.kind[w] == VertexKind::Input) return true;
+  const PieceEnds* other = pieces_.piece_of(w);
+  if (other == nullptr || shared_end(piece, *other) != kNone) return false;
+  const bool same = (piece[0] == (*other)[0] && piece[1] == (*other)[1]) ||
+                    (piece[0] == (*other)[1] && piece[1] == (*other)[0]);
+  return !same;
 }
 
 // The vertices of a skinny triangle's shortest edge that count as ancestors of the splits its
@@ -231,14 +261,16 @@ Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
   const Point& pa = mesh_.point(mesh_.org(s));
   const Point& pb = mesh_.point(mesh_.dest(s));
   double nearest2 = HUGE_VAL;
+  VertexId nearest = kNone;
   for (EdgeRef e : marks_.boundary()) {  // the cavity's vertices are its boundary's
     const VertexId w = mesh_.org(e);
     const Point& q = mesh_.point(w);
     if (mesh_.kind[w] == VertexKind::Free && strictly_inside_diametral_circle(pa, pb, q) && too_close_to_split(w, p))
       continue;
-    nearest2 = std::min(nearest2, squared_distance(q, p));
+    const double d2 = squared_distance(q, p);
+    if (d2 < nearest2) nearest2 = d2, nearest = w;
   }
-  return {now, std::sqrt(nearest2)};
+  return {now, std::sqrt(nearest2), nearest};
 }
 
 // split_edge joins p to the apices on both sides of s. p is rounded, so it is rarely exactly on s;

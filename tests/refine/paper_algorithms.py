@@ -12,8 +12,10 @@ deltri's output files with nothing deltri reports about quality.
                                                           are warned of, counted exactly, and --strict fails
     paper_algorithms.py sure_fire DELTRI DEG SWITCHES...  two segments from one vertex DEG degrees apart in a
                                                           box: the guard stops the ping-pong (issue 16)
-    paper_algorithms.py chew_wedge DELTRI DEG Q           the same box: Chew at -pqQ makes at most 4 times
+    paper_algorithms.py chew_wedge DELTRI DEG Q [LEN]     the same box: Chew at -pqQ makes at most 4 times
                                                           Ruppert's triangles, no edge under 1/4 of Ruppert's
+                                                          (the second segment LEN long, 0.9 by default)
+    paper_algorithms.py chew_crossing DELTRI DEG Q        the same for two segments crossing at DEG degrees
 
 Every mode first checks that the input has no two segments meeting at an angle under 60 degrees and
 no segments that cross or touch inside (the paper's condition), from the input file itself; each run
@@ -47,7 +49,14 @@ is made twice and must give the same bytes; the run must exit 0.
   rule looked only at the newer end of the requesting triangle's shortest edge, Chew refined the wedge
   down to the floor, about ln(R / r) / phi splits: at 1 degree 1,058 triangles against Ruppert's 53, at
   0.01 degrees 162,343 against 115 (shortest edge 8.6e-10 against 1.8e-4). Both meshes are checked as
-  in sure_fire (constrained Delaunay, exactly; the box covered).
+  in sure_fire (constrained Delaunay, exactly; the box covered). With LEN 1 the wedge's far end is closed
+  by two input vertices phi apart; Chew then filled the strip between the pieces down to the floor through
+  a free vertex inside it, which the rule did not see (199,368 triangles against Ruppert's 121 at 0.01
+  degrees, -pq20), until the vertex a split's insertion radius is measured to counted as its ancestor.
+- chew_crossing (issue 22): the same box and comparison with two segments of length about 1 crossing at
+  (0.5, 0) at DEG degrees, their ends paired at x = 0 and 1 (as in tests/e2e/inputs/tiny_crossing.poly):
+  each thin wedge at the crossing is such a strip; Chew made 2,686 and 356,966 triangles at 1 and 0.01
+  degrees, -pq20 (Ruppert 120 and 246).
 Angles are computed in doubles with a tolerance of 1e-9 degrees.
 """
 import json
@@ -340,15 +349,19 @@ def check_conformity(deltri, inp, work):
            % (inp, len(tris), bad, r.returncode))
 
 
-def wedge_poly(path, degrees):
-    a = math.radians(degrees)
-    pts = [(-1.0, -1.0), (2.0, -1.0), (2.0, 1.0), (-1.0, 1.0), (0.0, 0.0), (1.0, 0.0),
-           (0.9 * math.cos(a), 0.9 * math.sin(a))]
-    segs = [(1, 2), (2, 3), (3, 4), (4, 1), (5, 6), (5, 7)]
+def write_poly(path, pts, segs):
     with open(path, 'w') as f:
         f.write('%d 2 0 0\n' % len(pts) + ''.join('%d %r %r\n' % (i + 1, x, y) for i, (x, y) in enumerate(pts)))
         f.write('%d 0\n' % len(segs) + ''.join('%d %d %d\n' % (i + 1, a, b) for i, (a, b) in enumerate(segs)))
         f.write('0\n')
+
+
+def wedge_poly(path, degrees, second=0.9):
+    a = math.radians(degrees)
+    pts = [(-1.0, -1.0), (2.0, -1.0), (2.0, 1.0), (-1.0, 1.0), (0.0, 0.0), (1.0, 0.0),
+           (second * math.cos(a), second * math.sin(a))]
+    segs = [(1, 2), (2, 3), (3, 4), (4, 1), (5, 6), (5, 7)]
+    write_poly(path, pts, segs)
 
 
 def limit_memory():
@@ -385,25 +398,52 @@ def check_sure_fire(deltri, degrees, switches, work):
            % (degrees, ' '.join(switches), len(tris), q.get('sure_fire_refusals', 0)))
 
 
-def check_chew_wedge(deltri, degrees, q, work):
+def crossing_poly(path, degrees):
+    """The sure_fire box with two segments of length about 1 that cross at (0.5, 0) at DEG degrees, their
+    ends paired at x = 0 and x = 1: each thin wedge at the crossing is closed at its far end by two input
+    vertices, a gap of tan(DEG / 2) apart."""
+    h = 0.5 * math.tan(math.radians(degrees) / 2)
+    pts = [(-1.0, -1.0), (2.0, -1.0), (2.0, 1.0), (-1.0, 1.0), (0.0, -h), (1.0, h), (0.0, h), (1.0, -h)]
+    segs = [(1, 2), (2, 3), (3, 4), (4, 1), (5, 6), (7, 8)]
+    write_poly(path, pts, segs)
+
+
+def check_chew_wedge(deltri, degrees, q, second, work):
     inp = os.path.join(work, 'wedge.poly')
-    wedge_poly(inp, float(degrees))
-    counts, shortest, faults = {}, {}, []
+    wedge_poly(inp, float(degrees), float(second))
+    compare_chew_ruppert(deltri, inp, '%s degrees, lengths 1 and %s, -pq%s' % (degrees, second, q), q, work)
+
+
+def check_chew_crossing(deltri, degrees, q, work):
+    inp = os.path.join(work, 'crossing.poly')
+    crossing_poly(inp, float(degrees))
+    compare_chew_ruppert(deltri, inp, 'crossing at %s degrees -pq%s' % (degrees, q), q, work)
+
+
+def compare_chew_ruppert(deltri, inp, label, q, work):
+    """Chew at -pqQ within 4 times Ruppert's triangles and no edge under 1/4 of Ruppert's shortest; both
+    meshes constrained Delaunay (exact) and covering the box. A run past the first bound is not checked
+    exactly (the runaway meshes have up to 700,000 triangles)."""
+    meshes, counts, shortest, faults = {}, {}, {}, []
     for algorithm in ('ruppert', 'chew'):
         base = run(deltri, inp, ['-pq' + q, '--algorithm=' + algorithm], os.path.join(work, algorithm))
         pts, tris, segs = read_mesh(base)
+        meshes[algorithm] = (pts, tris, segs)
         counts[algorithm] = len(tris)
         shortest[algorithm] = min(math.dist(pts[t[i]], pts[t[(i + 1) % 3]]) for t in tris for i in range(3))
-        faults += ['%s: %s' % (algorithm, f) for f in delaunay_faults(pts, tris, {frozenset(s) for s in segs})[:5]]
-        exact = {k: (Fraction(x), Fraction(y)) for k, (x, y) in pts.items()}
-        if sum(orient(exact[a], exact[b], exact[c]) for a, b, c in tris) != 12:  # twice the box's 6
-            faults.append('%s: the triangles do not cover the box' % algorithm)
     if counts['chew'] > 4 * counts['ruppert']:
         faults.append('Chew made %d triangles, more than 4 times Ruppert\'s %d' % (counts['chew'], counts['ruppert']))
     if shortest['chew'] < shortest['ruppert'] / 4:
         faults.append('Chew\'s shortest edge %.3g is under a quarter of Ruppert\'s %.3g' % (shortest['chew'], shortest['ruppert']))
-    report(faults, '%s degrees -pq%s: Chew %d triangles, Ruppert %d (ratio %.2f); shortest edges %.3g and %.3g'
-           % (degrees, q, counts['chew'], counts['ruppert'], counts['chew'] / counts['ruppert'], shortest['chew'],
+    for algorithm, (pts, tris, segs) in meshes.items():
+        if faults:
+            break
+        faults += ['%s: %s' % (algorithm, f) for f in delaunay_faults(pts, tris, {frozenset(s) for s in segs})[:5]]
+        exact = {k: (Fraction(x), Fraction(y)) for k, (x, y) in pts.items()}
+        if sum(orient(exact[a], exact[b], exact[c]) for a, b, c in tris) != 12:  # twice the box's 6
+            faults.append('%s: the triangles do not cover the box' % algorithm)
+    report(faults, '%s: Chew %d triangles, Ruppert %d (ratio %.2f); shortest edges %.3g and %.3g'
+           % (label, counts['chew'], counts['ruppert'], counts['chew'] / counts['ruppert'], shortest['chew'],
               shortest['ruppert']))
 
 
@@ -439,7 +479,9 @@ def main(argv):
         elif mode == 'conformity':
             check_conformity(argv[2], argv[3], work)
         elif mode == 'chew_wedge':
-            check_chew_wedge(argv[2], argv[3], argv[4], work)
+            check_chew_wedge(argv[2], argv[3], argv[4], argv[5] if len(argv) > 5 else '0.9', work)
+        elif mode == 'chew_crossing':
+            check_chew_crossing(argv[2], argv[3], argv[4], work)
         elif mode == 'sure_fire':
             check_sure_fire(argv[2], argv[3], argv[4:], work)
         else:
