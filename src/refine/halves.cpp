@@ -1,6 +1,7 @@
 #include "refine/halves.h"
 
 #include <algorithm>
+#include <iterator>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -147,11 +148,52 @@ TerminatorStart start_of_part(const TerminatorStart& from, std::size_t count, co
 // neither side holds.
 struct WholeStart {
   std::vector<SegmentPieces::Split> splits;
-  std::shared_ptr<const std::vector<std::uint64_t>> initial;
   SegmentApices apices;
   std::vector<char> locked;
   std::vector<PieceEnds> rest_pieces;  // by Held::rest_records
+  // The initial pieces' keys that neither side holds both ends of, sorted; the sides' own lists
+  // give the rest back at the join, so that the mesh's whole list is not kept while they refine.
+  std::vector<std::uint64_t> rest_keys;
 };
+
+// The initial pieces' keys of the mesh at the cut (sorted), whose ends are held by neither side
+// alone.
+std::vector<std::uint64_t> keys_of_neither(const SegmentPieces& pieces, std::size_t count, const Held& held,
+                                           const CutOff& cut) {
+  std::vector<std::uint64_t> rest;
+  if (!pieces.initial) return rest;
+  std::vector<char> side(count, 0);  // bit 0: the side that stays holds it, bit 1: the part
+  for (VertexId v : held.vertices) side[v] |= 1;
+  for (VertexId v : cut.vertices) side[v] |= 2;
+  for (std::uint64_t key : *pieces.initial)
+    if ((side[key >> 32] & side[key & 0xffffffffu]) == 0) rest.push_back(key);
+  return rest;
+}
+
+// The mesh's initial pieces' keys again: each side's in the mesh's ids (ids keep their order, so
+// each list stays sorted) merged with those neither held.
+std::shared_ptr<const std::vector<std::uint64_t>> whole_keys(const SegmentPieces& mine, const SegmentPieces& right,
+                                                             const Held& held, const CutOff& cut,
+                                                             std::vector<std::uint64_t> rest) {
+  const auto mapped = [](const SegmentPieces& pieces, const auto& to_whole) {
+    std::vector<std::uint64_t> keys;
+    if (!pieces.initial) return keys;
+    keys.reserve(pieces.initial->size());
+    for (std::uint64_t key : *pieces.initial)
+      keys.push_back(static_cast<std::uint64_t>(to_whole(VertexId{static_cast<std::uint32_t>(key >> 32)})) << 32 |
+                     to_whole(VertexId{static_cast<std::uint32_t>(key & 0xffffffffu)}));
+    return keys;
+  };
+  const std::vector<std::uint64_t> left_keys = mapped(mine, [&](VertexId v) { return held.whole_vertex(v); });
+  const std::vector<std::uint64_t> right_keys = mapped(right, [&](VertexId v) { return cut.vertices[v]; });
+  std::vector<std::uint64_t> sides;
+  sides.reserve(left_keys.size() + right_keys.size());
+  std::set_union(left_keys.begin(), left_keys.end(), right_keys.begin(), right_keys.end(), std::back_inserter(sides));
+  std::vector<std::uint64_t> keys;
+  keys.reserve(sides.size() + rest.size());
+  std::merge(sides.begin(), sides.end(), rest.begin(), rest.end(), std::back_inserter(keys));
+  return std::make_shared<const std::vector<std::uint64_t>>(std::move(keys));
+}
 
 // The end of the side that stayed in the mesh's ids (hold_all), as it would be had the side been
 // refined with them: the pieces and locks of what it holds mapped back, those of the records only
@@ -175,7 +217,7 @@ TerminatorStart whole_end(TerminatorStart local, WholeStart& whole, const Held& 
   for (const SegmentPieces::Split& split : end.pieces.splits)
     if (split.vertex >= n) splits.push_back({held.whole_vertex(split.vertex), whole_ends(split.piece)});
   end.pieces.splits = std::move(splits);
-  end.pieces.initial = std::move(whole.initial);
+  end.pieces.initial = whole_keys(end.pieces, right.pieces, held, cut, std::move(whole.rest_keys));
   end.apices = std::move(whole.apices);
   std::vector<char> locked = std::move(whole.locked);
   for (SubsegmentId s{0}; s < end.locked.size(); ++s) {
@@ -256,8 +298,8 @@ void refine_sides(Mesh& mesh, CutOff& cut, const Held& held, Predicates& pred, c
   start.small_pages = true;
   TerminatorStart right_start = start_of_part(start, held.whole_vertices, cut.vertices, cut.records);
   TerminatorStart left_start = start_of_part(start, held.whole_vertices, held.vertices, held.records);
-  WholeStart whole{std::move(start.pieces.splits), std::move(start.pieces.initial), std::move(start.apices),
-                   std::move(start.locked), {}};
+  WholeStart whole{std::move(start.pieces.splits), std::move(start.apices), std::move(start.locked), {},
+                   keys_of_neither(start.pieces, held.whole_vertices, held, cut)};
   for (SubsegmentId s : held.rest_records) whole.rest_pieces.push_back(start.pieces.of_subsegment[s]);
   start = TerminatorStart{};  // its whole-size arrays are not needed while the sides are refined
   PartPlan left_plan{plan.depth - 1, plan.threads - plan.threads / 2, plan.parts, plan.parts, 0, false};
@@ -321,6 +363,7 @@ PartResult refine_part(Mesh& mesh, Predicates& pred, const PartPlan& plan, Termi
   PartResult left, right;
   refine_sides(mesh, cut, held, pred, plan, std::move(start), left, right);
   hold_all(mesh, held, cut);
+  release_free_heap();
   return join_sides(mesh, pred, plan, cut, left, right, before);
 }
 
