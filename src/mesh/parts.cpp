@@ -182,9 +182,13 @@ namespace {
 template <class Values, class Id>
 void compact(Values& values, const std::vector<Id>& ids, std::size_t width) {
   if (values.empty()) return;
-  for (std::size_t i = 0; i < ids.size(); ++i)
-    std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(ids[i] * width), width,
-                values.begin() + static_cast<std::ptrdiff_t>(i * width));
+  if (width == 1) {
+    for (std::size_t i = 0; i < ids.size(); ++i) values[i] = values[ids[i]];
+  } else {
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(ids[i] * width), width,
+                  values.begin() + static_cast<std::ptrdiff_t>(i * width));
+  }
   const std::size_t kept = ids.size() * width;
   release_pages(values.data() + kept, (values.size() - kept) * sizeof(values[0]));
   values.resize(kept);
@@ -203,6 +207,13 @@ void expand(Values& values, const std::vector<Id>& ids, std::size_t base, std::s
       std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(from * width), width,
                   values.begin() + static_cast<std::ptrdiff_t>(to * width));
   };
+  if (width == 1) {
+    std::copy_backward(values.begin() + static_cast<std::ptrdiff_t>(n),
+                       values.begin() + static_cast<std::ptrdiff_t>(n + added),
+                       values.begin() + static_cast<std::ptrdiff_t>(base + added));
+    for (std::size_t i = n; i-- > 0;) values[ids[i]] = values[i];
+    return;
+  }
   for (std::size_t j = added; j-- > 0;) move(n + j, base + j);
   for (std::size_t i = n; i-- > 0;) move(i, ids[i]);
 }

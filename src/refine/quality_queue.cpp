@@ -52,7 +52,9 @@ void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
       if (!why.skinny) return push_to_bucket(entry, 0);
       const unsigned level = edge_level(why.shortest2, reference2_, level_bits_);
       if (static_cast<int>(level) > window_base_ + static_cast<int>(kWindowBuckets - 1)) raise_window(level);
-      append(entry, window_bucket(level), level);
+      const unsigned bucket = window_bucket(level);
+      append(entry, bucket);
+      if (bucket == 1) keep_level(level);
       return note_push();
     }
     case QueueOrder::Paper:
@@ -98,7 +100,10 @@ void QualityQueue::raise_window(unsigned level) {
     const Fifo old = buckets_[b];
     buckets_[b] = Fifo{};
     const unsigned level = static_cast<unsigned>(window_base_) + b - 1;  // bucket b's
-    for_each_entry(old, [&](const QueuedTriangle& e, std::uint32_t, std::uint32_t) { append(e, 1, level); },
+    for_each_entry(old, [&](const QueuedTriangle& e, std::uint32_t, std::uint32_t) {
+      append(e, 1);
+      keep_level(level);
+    },
                    [&](std::uint32_t block) { give_back(block); });
   }
   for (unsigned b = merged + 1; b <= last; ++b) {
@@ -126,7 +131,9 @@ void QualityQueue::move_window() {
   nonempty_ &= ~(std::uint64_t{1} << 1);
   for_each_entry(old, [&](const QueuedTriangle& e, std::uint32_t block, std::uint32_t i) {
     const unsigned level = level_at(block, i);
-    append(e, window_bucket(level), level);
+    const unsigned bucket = window_bucket(level);
+    append(e, bucket);
+    if (bucket == 1) keep_level(level);
   }, [&](std::uint32_t block) { give_back(block); });
 }
 
@@ -161,7 +168,14 @@ void QualityQueue::give_back(std::uint32_t block) {
   released_blocks_.push_back(block);
 }
 
-void QualityQueue::append(const QueuedTriangle& entry, unsigned bucket, unsigned level) {
+void QualityQueue::keep_level(unsigned level) {
+  const Fifo& fifo = buckets_[1];
+  std::unique_ptr<Levels>& levels = levels_[fifo.last];
+  if (!levels) levels = std::make_unique<Levels>();
+  (*levels)[fifo.tail - 1] = static_cast<std::uint16_t>(level);
+}
+
+void QualityQueue::append(const QueuedTriangle& entry, unsigned bucket) {
   Fifo& fifo = buckets_[bucket];
   if (fifo.last == kNoBlock) {
     fifo.first = fifo.last = take_block();
@@ -171,11 +185,6 @@ void QualityQueue::append(const QueuedTriangle& entry, unsigned bucket, unsigned
     blocks_[fifo.last]->next = block;
     fifo.last = block;
     fifo.tail = 0;
-  }
-  if (bucket == 1 && order_ == QueueOrder::Ratio) {
-    std::unique_ptr<Levels>& levels = levels_[fifo.last];
-    if (!levels) levels = std::make_unique<Levels>();
-    (*levels)[fifo.tail] = static_cast<std::uint16_t>(level);
   }
   blocks_[fifo.last]->items[fifo.tail++] = entry;
   nonempty_ |= std::uint64_t{1} << bucket;

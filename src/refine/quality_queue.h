@@ -160,8 +160,9 @@ class QualityQueue {
   void note_push();
   // The most urgent non-empty bucket (nonempty_ must not be 0): the mask's highest set bit.
   unsigned top_bucket() const { return 63u - static_cast<unsigned>(std::countl_zero(nonempty_)); }
-  // push_to_bucket, not counted; bucket 1 keeps the entry's edge level (Ratio order).
-  void append(const QueuedTriangle& entry, unsigned bucket, unsigned level = 0);
+  void append(const QueuedTriangle& entry, unsigned bucket);  // push_to_bucket, not counted
+  // The Ratio order: the edge level of the entry just appended to bucket 1.
+  void keep_level(unsigned level);
   std::uint16_t level_at(std::uint32_t block, std::uint32_t i) const { return (*levels_[block])[i]; }
   QueuedTriangle take_front(unsigned bucket);                 // the oldest entry of a non-empty bucket
   // The Ratio order's bucket for a skinny triangle of edge level `level` in the current window.
