@@ -184,7 +184,8 @@ class QualityQueue {
   std::vector<std::unique_ptr<Levels>> levels_;  // by block: null until it serves in bucket 1
   std::vector<std::uint32_t> free_blocks_;      // given back, pages resident
   std::vector<std::uint32_t> released_blocks_;  // given back, pages returned (give_back)
-  static constexpr std::size_t kSpareBlocks = 32;
+  // Spare blocks kept with their pages: 32 had kept 0.5 MiB resident per refining part (benchmarks.md).
+  static constexpr std::size_t kSpareBlocks = 8;
   std::vector<Keyed> heap_;
   std::uint64_t next_age_ = ~std::uint64_t{0};
   std::uint64_t nonempty_ = 0;
