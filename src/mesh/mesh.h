@@ -91,7 +91,8 @@ class TopologyArray {
 };
 
 struct Mesh {
-  // Vertices. A new per-vertex array must also be carried by part_with and take_vertices.
+  // Vertices. A new per-vertex array must also be carried by part_with, take_vertices and
+  // hold_only / hold_all (mesh/parts.cpp).
   BigVector<Point> points;
   std::vector<VertexKind> kind;
   std::vector<int> marker;          // empty when nothing carries markers

@@ -174,6 +174,157 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark) {
   return ids;
 }
 
+namespace {
+
+// Moves entries ids[i] to i (width values each; ids increasing, so ids[i] >= i and nothing is
+// overwritten before it is moved) and drops the rest, giving their pages back; the capacity
+// stays for what the side adds.
+template <class Values, class Id>
+void compact(Values& values, const std::vector<Id>& ids, std::size_t width) {
+  if (values.empty()) return;
+  if (width == 1) {
+    for (std::size_t i = 0; i < ids.size(); ++i) values[i] = values[ids[i]];
+  } else {
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(ids[i] * width), width,
+                  values.begin() + static_cast<std::ptrdiff_t>(i * width));
+  }
+  const std::size_t kept = ids.size() * width;
+  release_pages(values.data() + kept, (values.size() - kept) * sizeof(values[0]));
+  values.resize(kept);
+}
+
+// compact's inverse: entry i to ids[i], and the entries added after them (from ids.size() on) to
+// `base` on, from the last one down so that nothing is overwritten before it is moved. The other
+// entries below base are the caller's to fill. An empty array stays empty.
+template <class Values, class Id>
+void expand(Values& values, const std::vector<Id>& ids, std::size_t base, std::size_t width) {
+  if (width == 0 || values.empty()) return;  // an array the mesh does not use (markers) stays empty
+  const std::size_t n = ids.size(), added = values.size() / width - n;
+  values.resize((base + added) * width);
+  const auto move = [&](std::size_t from, std::size_t to) {
+    if (from != to)
+      std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(from * width), width,
+                  values.begin() + static_cast<std::ptrdiff_t>(to * width));
+  };
+  if (width == 1) {
+    std::copy_backward(values.begin() + static_cast<std::ptrdiff_t>(n),
+                       values.begin() + static_cast<std::ptrdiff_t>(n + added),
+                       values.begin() + static_cast<std::ptrdiff_t>(base + added));
+    for (std::size_t i = n; i-- > 0;) values[ids[i]] = values[i];
+    return;
+  }
+  for (std::size_t j = added; j-- > 0;) move(n + j, base + j);
+  for (std::size_t i = n; i-- > 0;) move(i, ids[i]);
+}
+
+// Calls f(j, list[j]) for the entries of `list` not in `held` (both increasing).
+template <class Id, class F>
+void for_each_not_held(const std::vector<Id>& list, const std::vector<Id>& held, F&& f) {
+  std::size_t k = 0;
+  for (std::size_t j = 0; j < list.size(); ++j) {
+    while (k < held.size() && held[k] < list[j]) ++k;
+    if (k == held.size() || held[k] != list[j]) f(j, list[j]);
+  }
+}
+
+// Vertex j of `from`, with all its per-vertex data, as vertex v of `to` (which has room for it).
+void copy_vertex(const Mesh& from, std::size_t j, Mesh& to, VertexId v) {
+  const std::size_t na = static_cast<std::size_t>(to.num_attributes);
+  to.points[v] = from.points[j];
+  to.kind[v] = from.kind[j];
+  if (!to.marker.empty()) to.marker[v] = from.marker[j];
+  std::copy_n(from.attributes.begin() + static_cast<std::ptrdiff_t>(j * na), na,
+              to.attributes.begin() + static_cast<std::ptrdiff_t>(v * na));
+}
+
+// Appends vertex v of `from`, with all its per-vertex data, to `to`.
+void push_vertex(const Mesh& from, VertexId v, Mesh& to) {
+  const std::size_t na = static_cast<std::size_t>(from.num_attributes);
+  to.points.push_back(from.points[v]);
+  to.kind.push_back(from.kind[v]);
+  if (!from.marker.empty()) to.marker.push_back(from.marker[v]);
+  to.attributes.insert(to.attributes.end(), from.attributes.begin() + static_cast<std::ptrdiff_t>(v * na),
+                       from.attributes.begin() + static_cast<std::ptrdiff_t>((v + 1) * na));
+}
+
+// The ids i below marked.size() with marked[i] == 0, increasing.
+template <class Id>
+std::vector<Id> unmarked_ids(const std::vector<char>& marked) {
+  std::vector<Id> ids;
+  for (std::size_t i = 0; i < marked.size(); ++i)
+    if (!marked[i]) ids.push_back(static_cast<Id>(i));
+  return ids;
+}
+
+// Every per-vertex and per-record array of the mesh through compact.
+void compact_ids(Mesh& mesh, const Held& held) {
+  const std::size_t na = static_cast<std::size_t>(mesh.num_attributes);
+  compact(mesh.points, held.vertices, 1);
+  compact(mesh.kind, held.vertices, 1);
+  compact(mesh.marker, held.vertices, 1);
+  compact(mesh.attributes, held.vertices, na);
+  compact(mesh.subsegments, held.records, 1);
+}
+
+}  // namespace
+
+Held hold_only(Mesh& mesh, const CutOff& cut, std::vector<char> keep) {
+  Held held;
+  held.whole_vertices = VertexId{mesh.vertex_count()};
+  held.whole_records = static_cast<SubsegmentId>(mesh.subsegments.size());
+  keep.resize(mesh.vertex_count(), 0);
+  std::vector<char> records(mesh.subsegments.size(), 0);
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    for (unsigned i = 0; i < 3; ++i) {
+      const EdgeRef e = edge_of(t, i);
+      keep[mesh.corner[e]] = 1;
+      if (mesh.subseg.has(e) && mesh.subseg[e] < records.size()) records[mesh.subseg[e]] = 1;
+    }
+  }
+  held.vertices = marked_ids<VertexId>(keep);
+  held.records = marked_ids<SubsegmentId>(records);
+  for (VertexId v : cut.vertices) keep[v] = 1;
+  for (SubsegmentId s : cut.records) records[s] = 1;
+  held.rest_vertices = unmarked_ids<VertexId>(keep);
+  held.rest_records = unmarked_ids<SubsegmentId>(records);
+  held.rest.num_attributes = mesh.num_attributes;
+  for (VertexId v : held.rest_vertices) push_vertex(mesh, v, held.rest);
+  for (SubsegmentId s : held.rest_records) held.rest.subsegments.push_back(mesh.subsegments[s]);
+
+  const std::vector<VertexId> local = local_ids(held.vertices, mesh.vertex_count());
+  const std::vector<SubsegmentId> local_record = local_ids(held.records, mesh.subsegments.size());
+  const auto to_local = [&](VertexId v) { return v == kNone ? v : local[v]; };
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) detail::corner_slots(mesh)[e] = to_local(mesh.corner[e]);
+  // A dead slot's left-over subsegment of a record this side does not hold is dropped.
+  detail::subseg_slots(mesh).remap([&](SubsegmentId s) { return s < local_record.size() ? local_record[s] : s; });
+  compact_ids(mesh, held);
+  for (Subsegment& r : mesh.subsegments) r.a = to_local(r.a), r.b = to_local(r.b);
+  return held;
+}
+
+void hold_all(Mesh& mesh, Held& held, const CutOff& cut) {
+  const std::size_t records = mesh.subsegments.size();
+  const auto to_whole = [&](VertexId v) { return held.whole_vertex(v); };
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) detail::corner_slots(mesh)[e] = to_whole(mesh.corner[e]);
+  detail::subseg_slots(mesh).remap([&](SubsegmentId s) { return s < records ? held.whole_record(s) : s; });
+  for (Subsegment& r : mesh.subsegments) r.a = to_whole(r.a), r.b = to_whole(r.b);
+
+  const std::size_t na = static_cast<std::size_t>(mesh.num_attributes);
+  expand(mesh.points, held.vertices, held.whole_vertices, 1);
+  expand(mesh.kind, held.vertices, held.whole_vertices, 1);
+  expand(mesh.marker, held.vertices, held.whole_vertices, 1);
+  expand(mesh.attributes, held.vertices, held.whole_vertices, na);
+  for_each_not_held(cut.vertices, held.vertices, [&](std::size_t j, VertexId v) { copy_vertex(cut.part, j, mesh, v); });
+  for (std::size_t j = 0; j < held.rest_vertices.size(); ++j) copy_vertex(held.rest, j, mesh, held.rest_vertices[j]);
+
+  expand(mesh.subsegments, held.records, held.whole_records, 1);
+  for_each_not_held(cut.records, held.records, [&](std::size_t, SubsegmentId s) { mesh.subsegments[s] = Subsegment{}; });
+  for (std::size_t j = 0; j < held.rest_records.size(); ++j) mesh.subsegments[held.rest_records[j]] = held.rest.subsegments[j];
+  held.rest = Mesh{};
+}
+
 std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, SubsegmentId mark) {
   const std::vector<std::uint64_t>& keys = cut.cut_keys;
   std::vector<EdgeRef> stayed(keys.size(), kNone), moved(keys.size(), kNone);

@@ -39,6 +39,40 @@ struct CutOff {
 // already carrying `mark` (an earlier cut's) stay as they are. The moved triangles' slots are freed.
 CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId mark, std::vector<char> keep);
 
+// What the side that stays holds while the part cut off is refined apart (hold_only): like the
+// part, only the vertices of its triangles (and any others the caller names) and the records on
+// their edges, renumbered in their order, so that it is refined exactly as with the mesh's ids;
+// its triangle slots stay where they are. What neither side holds waits here, in the mesh's ids,
+// until hold_all gives the mesh back its ids.
+struct Held {
+  std::vector<VertexId> vertices;     // the mesh's id of each vertex the side holds, increasing
+  std::vector<SubsegmentId> records;  // the mesh's id of each record the side holds, increasing
+  VertexId whole_vertices{0};         // the mesh's counts at the cut
+  SubsegmentId whole_records{0};
+  std::vector<VertexId> rest_vertices;     // held by neither side, increasing
+  std::vector<SubsegmentId> rest_records;  // held by neither side, increasing
+  Mesh rest;  // their vertex data and records (endpoints in the mesh's ids), in that order
+  // The mesh's id of the side's vertex v or record s (those it added come after the mesh's).
+  VertexId whole_vertex(VertexId v) const {
+    return v == kNone ? v : v < vertices.size() ? vertices[v] : VertexId{whole_vertices + (v - static_cast<std::uint32_t>(vertices.size()))};
+  }
+  SubsegmentId whole_record(SubsegmentId s) const {
+    return s < records.size() ? records[s] : SubsegmentId{whole_records + (s - static_cast<std::uint32_t>(records.size()))};
+  }
+};
+
+// Renumbers the mesh left by cut_off to what its triangles use (and the vertices with keep[v] != 0),
+// in place: the per-vertex and per-record arrays shrink and give the pages of their tails back,
+// corners and subsegments take the new ids (a mark above every record id stays), and what
+// neither this side nor cut.part holds is kept in Held::rest.
+Held hold_only(Mesh& mesh, const CutOff& cut, std::vector<char> keep);
+
+// Gives the mesh its ids of before hold_only back, in place, with what it added since numbered
+// after them (vertices from Held::whole_vertices on, records from Held::whole_records on): the
+// vertices only cut.part holds come from it, unchanged since the cut; the records only it holds
+// are left to append_part, which writes every record the part owns.
+void hold_all(Mesh& mesh, Held& held, const CutOff& cut);
+
 // Where a part's ids land when it is appended: the vertices and records it was cut with (below v0,
 // s0) where they were in the mesh; its own vertices (from v0 on) after the mesh's, from vertex_base
 // on; its own records (from s0 on) from record_base on; its slots after the mesh's.

@@ -1,6 +1,7 @@
 #include "refine/halves.h"
 
 #include <algorithm>
+#include <iterator>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -85,17 +86,19 @@ TerminatorStart split_initial_encroachments(Mesh& mesh, Predicates& pred, const 
 
 std::uint64_t steiner_of(const RefineReport& r) { return r.interior_steiner + r.segment_steiner; }
 
-// The vertices a part needs besides those of its triangles: the ends of the segment pieces of its
-// subsegments and of its refinement splits (shells and mirrored splits are measured from them),
-// and the corners of its triangles, which cut_off would add anyway.
-std::vector<char> vertices_needed(const Mesh& mesh, const std::vector<std::uint8_t>& moves, const SegmentPieces& pieces) {
+// The vertices a side of the cut needs besides those of its triangles (side 1: those that move,
+// 0: those that stay): the ends of the segment pieces of its subsegments and of its refinement
+// splits (shells and mirrored splits are measured from them), and the corners of its triangles,
+// which cut_off and hold_only would add anyway.
+std::vector<char> vertices_needed(const Mesh& mesh, const std::vector<std::uint8_t>& moves, const SegmentPieces& pieces,
+                                  std::uint8_t side) {
   std::vector<char> keep(mesh.vertex_count(), 0);
   const auto keep_ends = [&](const PieceEnds& ends) {
     for (VertexId v : ends)
       if (v != kNone) keep[v] = 1;
   };
   for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
-    if (!moves[t] || !mesh.is_live(t)) continue;
+    if (moves[t] != side || !mesh.is_live(t)) continue;
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
       keep[mesh.corner[e]] = 1;
@@ -108,18 +111,21 @@ std::vector<char> vertices_needed(const Mesh& mesh, const std::vector<std::uint8
   return keep;
 }
 
-// The start of the part cut off, in its ids (cut_off): the pieces, splits, apices and locks of what
-// it holds, and the whole mesh's extent.
-TerminatorStart start_of_part(const TerminatorStart& from, const Mesh& mesh, const CutOff& cut) {
+// The start of a side of the cut in its ids (cut_off, hold_only: it holds `vertices` and `records`
+// of the mesh's `count` vertices): the pieces, splits, apices and locks of what it holds, and the
+// whole mesh's extent.
+TerminatorStart start_of_part(const TerminatorStart& from, std::size_t count, const std::vector<VertexId>& vertices,
+                              const std::vector<SubsegmentId>& records) {
   TerminatorStart start{from.guard_floor, from.proven_range, from.steiner_cap, from.cap_kind, {}, {}, {}, from.hopeless_edges,
                         from.small_pages, from.extent};
-  const std::vector<VertexId> local = cut.vertex_map(mesh.vertex_count());
+  std::vector<VertexId> local(count, kNone);
+  for (VertexId i{0}; i < vertices.size(); ++i) local[vertices[i]] = i;
   const auto local_ends = [&](const PieceEnds& p) {
     return PieceEnds{p[0] == kNone ? kNone : local[p[0]], p[1] == kNone ? kNone : local[p[1]]};
   };
   SegmentPieces& pieces = start.pieces;
-  pieces.of_subsegment.reserve(cut.records.size());
-  for (SubsegmentId s : cut.records) pieces.of_subsegment.push_back(local_ends(from.pieces.of_subsegment[s]));
+  pieces.of_subsegment.reserve(records.size());
+  for (SubsegmentId s : records) pieces.of_subsegment.push_back(local_ends(from.pieces.of_subsegment[s]));
   for (const SegmentPieces::Split& split : from.pieces.splits)
     if (local[split.vertex] != kNone) pieces.splits.push_back({local[split.vertex], local_ends(split.piece)});
   std::vector<std::uint64_t> keys;
@@ -130,10 +136,97 @@ TerminatorStart start_of_part(const TerminatorStart& from, const Mesh& mesh, con
     }
   // Sorted already: the part's ids keep the order of the mesh's.
   pieces.initial = std::make_shared<const std::vector<std::uint64_t>>(std::move(keys));
-  start.apices = from.apices.of_vertices(cut.vertices);
-  start.locked.reserve(cut.records.size());
-  for (SubsegmentId s : cut.records) start.locked.push_back(s < from.locked.size() && from.locked[s]);
+  start.apices = from.apices.of_vertices(vertices);
+  start.locked.reserve(records.size());
+  for (SubsegmentId s : records) start.locked.push_back(s < from.locked.size() && from.locked[s]);
   return start;
+}
+
+// What the side that stays goes on from at the join, besides its own end: the parts of the mesh's
+// start that are the same in the mesh's ids whatever the side did (the splits before the cut, the
+// initial pieces, the apices, the locks of what it does not hold) and the pieces of the records
+// neither side holds.
+struct WholeStart {
+  std::vector<SegmentPieces::Split> splits;
+  SegmentApices apices;
+  std::vector<char> locked;
+  std::vector<PieceEnds> rest_pieces;  // by Held::rest_records
+  // The initial pieces' keys that neither side holds both ends of, sorted; the sides' own lists
+  // give the rest back at the join, so that the mesh's whole list is not kept while they refine.
+  std::vector<std::uint64_t> rest_keys;
+};
+
+// The initial pieces' keys of the mesh at the cut (sorted), whose ends are held by neither side
+// alone.
+std::vector<std::uint64_t> keys_of_neither(const SegmentPieces& pieces, std::size_t count, const Held& held,
+                                           const CutOff& cut) {
+  std::vector<std::uint64_t> rest;
+  if (!pieces.initial) return rest;
+  std::vector<char> side(count, 0);  // bit 0: the side that stays holds it, bit 1: the part
+  for (VertexId v : held.vertices) side[v] |= 1;
+  for (VertexId v : cut.vertices) side[v] |= 2;
+  for (std::uint64_t key : *pieces.initial)
+    if ((side[key >> 32] & side[key & 0xffffffffu]) == 0) rest.push_back(key);
+  return rest;
+}
+
+// The mesh's initial pieces' keys again: each side's in the mesh's ids (ids keep their order, so
+// each list stays sorted) merged with those neither held.
+std::shared_ptr<const std::vector<std::uint64_t>> whole_keys(const SegmentPieces& mine, const SegmentPieces& right,
+                                                             const Held& held, const CutOff& cut,
+                                                             std::vector<std::uint64_t> rest) {
+  const auto mapped = [](const SegmentPieces& pieces, const auto& to_whole) {
+    std::vector<std::uint64_t> keys;
+    if (!pieces.initial) return keys;
+    keys.reserve(pieces.initial->size());
+    for (std::uint64_t key : *pieces.initial)
+      keys.push_back(static_cast<std::uint64_t>(to_whole(VertexId{static_cast<std::uint32_t>(key >> 32)})) << 32 |
+                     to_whole(VertexId{static_cast<std::uint32_t>(key & 0xffffffffu)}));
+    return keys;
+  };
+  const std::vector<std::uint64_t> left_keys = mapped(mine, [&](VertexId v) { return held.whole_vertex(v); });
+  const std::vector<std::uint64_t> right_keys = mapped(right, [&](VertexId v) { return cut.vertices[v]; });
+  std::vector<std::uint64_t> sides;
+  sides.reserve(left_keys.size() + right_keys.size());
+  std::set_union(left_keys.begin(), left_keys.end(), right_keys.begin(), right_keys.end(), std::back_inserter(sides));
+  std::vector<std::uint64_t> keys;
+  keys.reserve(sides.size() + rest.size());
+  std::merge(sides.begin(), sides.end(), rest.begin(), rest.end(), std::back_inserter(keys));
+  return std::make_shared<const std::vector<std::uint64_t>>(std::move(keys));
+}
+
+// The end of the side that stayed in the mesh's ids (hold_all), as it would be had the side been
+// refined with them: the pieces and locks of what it holds mapped back, those of the records only
+// the part cut off holds from its end (a record's piece never changes), the rest from `whole`.
+TerminatorStart whole_end(TerminatorStart local, WholeStart& whole, const Held& held, const CutOff& cut,
+                          const TerminatorStart& right) {
+  TerminatorStart end = std::move(local);
+  const std::size_t n = held.vertices.size(), nr = held.records.size();
+  const auto whole_ends = [&](const PieceEnds& p) { return PieceEnds{held.whole_vertex(p[0]), held.whole_vertex(p[1])}; };
+  const auto cut_ends = [&](const PieceEnds& p) {
+    return PieceEnds{p[0] == kNone ? kNone : cut.vertices[p[0]], p[1] == kNone ? kNone : cut.vertices[p[1]]};
+  };
+  std::vector<PieceEnds>& mine = end.pieces.of_subsegment;
+  std::vector<PieceEnds> pieces(held.whole_records + (mine.size() > nr ? mine.size() - nr : 0), PieceEnds{kNone, kNone});
+  for (std::size_t j = 0; j < cut.records.size() && j < right.pieces.of_subsegment.size(); ++j)
+    pieces[cut.records[j]] = cut_ends(right.pieces.of_subsegment[j]);
+  for (std::size_t j = 0; j < held.rest_records.size(); ++j) pieces[held.rest_records[j]] = whole.rest_pieces[j];
+  for (SubsegmentId s{0}; s < mine.size(); ++s) pieces[held.whole_record(s)] = whole_ends(mine[s]);
+  mine = std::move(pieces);
+  std::vector<SegmentPieces::Split> splits = std::move(whole.splits);
+  for (const SegmentPieces::Split& split : end.pieces.splits)
+    if (split.vertex >= n) splits.push_back({held.whole_vertex(split.vertex), whole_ends(split.piece)});
+  end.pieces.splits = std::move(splits);
+  end.pieces.initial = whole_keys(end.pieces, right.pieces, held, cut, std::move(whole.rest_keys));
+  end.apices = std::move(whole.apices);
+  std::vector<char> locked = std::move(whole.locked);
+  for (SubsegmentId s{0}; s < end.locked.size(); ++s) {
+    const SubsegmentId w = held.whole_record(s);
+    if (w >= locked.size()) locked.resize(w + 1, 0);
+    locked[w] = end.locked[s];
+  }
+  end.locked = std::move(locked);
+  return end;
 }
 
 // The seam's Terminator goes on from both sides' segment pieces and locks, in the joined ids;
@@ -197,14 +290,18 @@ PartResult refine_part(Mesh& mesh, Predicates& pred, const PartPlan& plan, Termi
 // the 45x45 holes, and no time that could be measured). With two threads or more the right side
 // runs on a thread of its own and the threads are shared out; with one, the right side first:
 // either way each side is refined exactly as it would be alone.
-void refine_sides(Mesh& mesh, CutOff& cut, Predicates& pred, const PartPlan& plan, TerminatorStart start,
-                  PartResult& left, PartResult& right) {
+void refine_sides(Mesh& mesh, CutOff& cut, const Held& held, Predicates& pred, const PartPlan& plan,
+                  TerminatorStart start, PartResult& left, PartResult& right) {
   start.steiner_cap /= 2;
   start.locked.resize(cut.cut_records.size(), 0);
   for (SubsegmentId s{0}; s < cut.cut_records.size(); ++s) start.locked[s] |= cut.cut_records[s];
   start.small_pages = true;
-  TerminatorStart right_start = start_of_part(start, mesh, cut);
-  TerminatorStart left_start = std::move(start);
+  TerminatorStart right_start = start_of_part(start, held.whole_vertices, cut.vertices, cut.records);
+  TerminatorStart left_start = start_of_part(start, held.whole_vertices, held.vertices, held.records);
+  WholeStart whole{std::move(start.pieces.splits), std::move(start.apices), std::move(start.locked), {},
+                   keys_of_neither(start.pieces, held.whole_vertices, held, cut)};
+  for (SubsegmentId s : held.rest_records) whole.rest_pieces.push_back(start.pieces.of_subsegment[s]);
+  start = TerminatorStart{};  // its whole-size arrays are not needed while the sides are refined
   PartPlan left_plan{plan.depth - 1, plan.threads - plan.threads / 2, plan.parts, plan.parts, 0, false};
   PartPlan right_plan = left_plan;
   right_plan.threads = std::max(1, plan.threads / 2);
@@ -218,6 +315,7 @@ void refine_sides(Mesh& mesh, CutOff& cut, Predicates& pred, const PartPlan& pla
     refine_left();
   }
   pred.counters.add(right_pred.counters);
+  left.end = whole_end(std::move(left.end), whole, held, cut, right.end);
 }
 
 // Joins the sides, flips the seam Delaunay and refines around it; the part's counts are the seam
@@ -259,9 +357,13 @@ PartResult refine_part(Mesh& mesh, Predicates& pred, const PartPlan& plan, Termi
   before.steiner_cap = start.steiner_cap;
   before.cap_kind = start.cap_kind;
   before.locked = start.locked;
-  CutOff cut = cut_off(mesh, moves, kSeamEdge, vertices_needed(mesh, moves, start.pieces));
+  std::vector<char> keep = vertices_needed(mesh, moves, start.pieces, 0);
+  CutOff cut = cut_off(mesh, moves, kSeamEdge, vertices_needed(mesh, moves, start.pieces, 1));
+  Held held = hold_only(mesh, cut, std::move(keep));
   PartResult left, right;
-  refine_sides(mesh, cut, pred, plan, std::move(start), left, right);
+  refine_sides(mesh, cut, held, pred, plan, std::move(start), left, right);
+  hold_all(mesh, held, cut);
+  release_free_heap();
   return join_sides(mesh, pred, plan, cut, left, right, before);
 }
 

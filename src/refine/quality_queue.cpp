@@ -50,11 +50,12 @@ void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
   switch (order_) {
     case QueueOrder::Ratio: {
       if (!why.skinny) return push_to_bucket(entry, 0);
-      QueuedTriangle leveled = entry;
-      leveled.level = static_cast<std::uint16_t>(edge_level(why.shortest2, reference2_, level_bits_));
-      if (static_cast<int>(leveled.level) > window_base_ + static_cast<int>(kWindowBuckets - 1))
-        raise_window(leveled.level);
-      return push_to_bucket(leveled, window_bucket(leveled.level));
+      const unsigned level = edge_level(why.shortest2, reference2_, level_bits_);
+      if (static_cast<int>(level) > window_base_ + static_cast<int>(kWindowBuckets - 1)) raise_window(level);
+      const unsigned bucket = window_bucket(level);
+      append(entry, bucket);
+      if (bucket == 1) keep_level(level);
+      return note_push();
     }
     case QueueOrder::Paper:
       return push_to_bucket(entry, why.skinny ? paper_bucket(why.ratio2_over_bound2) : 0u);
@@ -77,7 +78,7 @@ void QualityQueue::for_each_entry(const Fifo& fifo, Visit&& visit, Done&& done) 
   for (std::uint32_t block = fifo.first; block != kNoBlock;) {
     const std::uint32_t from = block == fifo.first ? fifo.head : 0;
     const std::uint32_t to = block == fifo.last ? fifo.tail : kBlock;
-    for (std::uint32_t i = from; i < to; ++i) visit(blocks_[block]->items[i]);
+    for (std::uint32_t i = from; i < to; ++i) visit(blocks_[block]->items[i], block, i);
     const std::uint32_t next = block == fifo.last ? kNoBlock : blocks_[block]->next;
     done(block);
     block = next;
@@ -98,7 +99,12 @@ void QualityQueue::raise_window(unsigned level) {
   for (unsigned b = 2; b <= merged; ++b) {
     const Fifo old = buckets_[b];
     buckets_[b] = Fifo{};
-    for_each_entry(old, [&](const QueuedTriangle& e) { append(e, 1); }, [&](std::uint32_t block) { give_back(block); });
+    const unsigned level = static_cast<unsigned>(window_base_) + b - 1;  // bucket b's
+    for_each_entry(old, [&](const QueuedTriangle& e, std::uint32_t, std::uint32_t) {
+      append(e, 1);
+      keep_level(level);
+    },
+                   [&](std::uint32_t block) { give_back(block); });
   }
   for (unsigned b = merged + 1; b <= last; ++b) {
     buckets_[b - static_cast<unsigned>(shift)] = buckets_[b];
@@ -117,13 +123,18 @@ void QualityQueue::raise_window(unsigned level) {
 void QualityQueue::move_window() {
   const Fifo old = buckets_[1];
   unsigned highest = 0;
-  for_each_entry(old, [&](const QueuedTriangle& e) { highest = std::max<unsigned>(highest, e.level); },
-                 [](std::uint32_t) {});
+  for_each_entry(old, [&](const QueuedTriangle&, std::uint32_t block, std::uint32_t i) {
+    highest = std::max<unsigned>(highest, level_at(block, i));
+  }, [](std::uint32_t) {});
   window_base_ = static_cast<int>(highest + kWindowHeadroom) - static_cast<int>(kWindowBuckets - 1);
   buckets_[1] = Fifo{};
   nonempty_ &= ~(std::uint64_t{1} << 1);
-  for_each_entry(old, [&](const QueuedTriangle& e) { append(e, window_bucket(e.level)); },
-                 [&](std::uint32_t block) { give_back(block); });
+  for_each_entry(old, [&](const QueuedTriangle& e, std::uint32_t block, std::uint32_t i) {
+    const unsigned level = level_at(block, i);
+    const unsigned bucket = window_bucket(level);
+    append(e, bucket);
+    if (bucket == 1) keep_level(level);
+  }, [&](std::uint32_t block) { give_back(block); });
 }
 
 void QualityQueue::note_push() {
@@ -140,6 +151,7 @@ std::uint32_t QualityQueue::take_block() {
     return block;
   }
   blocks_.push_back(std::make_unique<Block>());
+  levels_.emplace_back();
   return static_cast<std::uint32_t>(blocks_.size() - 1);
 }
 
@@ -152,7 +164,15 @@ void QualityQueue::give_back(std::uint32_t block) {
     return;
   }
   release_pages(blocks_[block].get(), sizeof(Block));
+  levels_[block].reset();
   released_blocks_.push_back(block);
+}
+
+void QualityQueue::keep_level(unsigned level) {
+  const Fifo& fifo = buckets_[1];
+  std::unique_ptr<Levels>& levels = levels_[fifo.last];
+  if (!levels) levels = std::make_unique<Levels>();
+  (*levels)[fifo.tail - 1] = static_cast<std::uint16_t>(level);
 }
 
 void QualityQueue::append(const QueuedTriangle& entry, unsigned bucket) {

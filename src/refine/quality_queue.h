@@ -29,7 +29,9 @@
 // buckets 2..63 one level each above it. When bucket 1 is the worst non-empty bucket left, the
 // window is moved down so that the highest level in bucket 1 lands kWindowHeadroom levels below
 // the top (room for the slightly shorter edges that splitting makes), and bucket 1's entries are
-// dealt out again, in their FIFO order; entries keep their level for that. The first pop places
+// dealt out again, in their FIFO order. An entry in buckets 2..63 has the level its bucket names
+// (the window's base plus the bucket less one), so only bucket 1's entries keep their levels, in
+// an array of 16-bit levels beside each block that has served in bucket 1. The first pop places
 // the window the same way. A push above the top raises the window instead: the buckets that stay
 // inside move as a whole, the ones that fall below join bucket 1. So the order is exact by level
 // (FIFO within a level), and each entry moves once per window move that passes it.
@@ -51,11 +53,13 @@
 
 namespace deltri {
 
+// 16 bytes: the Ratio order's edge level is not kept in the entry (the bucket implies it, and
+// bucket 1's entries keep theirs beside their block), which took the entries from 20 bytes to 16.
 struct QueuedTriangle {
   TriangleId triangle;
-  VertexId a, b, c;          // the corners when queued
-  std::uint16_t level = 0;   // Ratio order: its edge level, kept for window moves
+  VertexId a, b, c;  // the corners when queued
 };
+static_assert(sizeof(QueuedTriangle) == 16);
 
 enum class QueueOrder { Ratio, Paper, Edge, Fifo, RatioHeap, PaperHeap };
 
@@ -135,6 +139,7 @@ class QualityQueue {
     std::array<QueuedTriangle, kBlock> items;
     std::uint32_t next = kNoBlock;
   };
+  using Levels = std::array<std::uint16_t, kBlock>;  // a bucket-1 block's entries' edge levels
   // A FIFO of blocks: entries [head, ...) of block `first` up to [..., tail) of block `last`.
   struct Fifo {
     std::uint32_t first = kNoBlock, last = kNoBlock;
@@ -156,13 +161,16 @@ class QualityQueue {
   // The most urgent non-empty bucket (nonempty_ must not be 0): the mask's highest set bit.
   unsigned top_bucket() const { return 63u - static_cast<unsigned>(std::countl_zero(nonempty_)); }
   void append(const QueuedTriangle& entry, unsigned bucket);  // push_to_bucket, not counted
+  // The Ratio order: the edge level of the entry just appended to bucket 1.
+  void keep_level(unsigned level);
+  std::uint16_t level_at(std::uint32_t block, std::uint32_t i) const { return (*levels_[block])[i]; }
   QueuedTriangle take_front(unsigned bucket);                 // the oldest entry of a non-empty bucket
   // The Ratio order's bucket for a skinny triangle of edge level `level` in the current window.
   unsigned window_bucket(unsigned level) const;
   void move_window();
   void raise_window(unsigned level);
-  // Calls visit(entry) for the entries of `fifo` in FIFO order, then done(block) for each of its
-  // blocks once its entries have been visited.
+  // Calls visit(entry, block, index) for the entries of `fifo` in FIFO order, then done(block) for
+  // each of its blocks once its entries have been visited.
   template <class Visit, class Done>
   void for_each_entry(const Fifo& fifo, Visit&& visit, Done&& done);
   QueueOrder order_;
@@ -173,9 +181,11 @@ class QualityQueue {
   int window_base_ = static_cast<int>(kTopLevel) + 1;
   std::array<Fifo, kBuckets> buckets_;
   std::vector<std::unique_ptr<Block>> blocks_;
+  std::vector<std::unique_ptr<Levels>> levels_;  // by block: null until it serves in bucket 1
   std::vector<std::uint32_t> free_blocks_;      // given back, pages resident
   std::vector<std::uint32_t> released_blocks_;  // given back, pages returned (give_back)
-  static constexpr std::size_t kSpareBlocks = 32;
+  // Spare blocks kept with their pages: 32 had kept 0.5 MiB resident per refining part (benchmarks.md).
+  static constexpr std::size_t kSpareBlocks = 8;
   std::vector<Keyed> heap_;
   std::uint64_t next_age_ = ~std::uint64_t{0};
   std::uint64_t nonempty_ = 0;
