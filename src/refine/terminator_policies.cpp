@@ -268,7 +268,10 @@ Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
     if (mesh_.kind[w] == VertexKind::Free && strictly_inside_diametral_circle(pa, pb, q) && too_close_to_split(w, p))
       continue;
     const double d2 = squared_distance(q, p);
-    if (d2 < nearest2) nearest2 = d2, nearest = w;
+    if (d2 < nearest2) {
+      nearest2 = d2;
+      nearest = w;
+    }
   }
   return {now, std::sqrt(nearest2), nearest};
 }
