@@ -130,8 +130,12 @@ bool SegmentInserter::split_at_midpoint(const Piece& piece, VertexId w) {
     ed_.insert_in_triangle(at.edge, x);
   } else {
     // Rounding put the midpoint on an edge, perhaps a subsegment: that one is split there too.
-    if (mesh.subseg.has(at.edge)) release(at.edge, x);
+    const bool released = mesh.subseg.has(at.edge);
+    if (released) release(at.edge, x);
     ed_.insert_on_edge(at.edge, x);
+    // The mesh was constrained Delaunay with that subsegment only: its halves (which a snap may
+    // leave unconstrained) and the other edges at x are legalized too.
+    if (released) ed_.legalize_star(x);
   }
   ++counts_.midpoints;
   pending_.push_back({x, w, piece.marker, piece.segment});
@@ -189,8 +193,12 @@ VertexId SegmentInserter::place_crossing(const Piece& piece, const Subsegment& o
       const VertexId w = mesh.add_vertex(p, VertexKind::Segment);
       mesh.interpolate_attributes(w, old.a, old.b);
       // A third segment through the very same point: it is split there too.
-      if (mesh.subseg.has(at.edge)) release(at.edge, w);
+      const bool released = mesh.subseg.has(at.edge);
+      if (released) release(at.edge, w);
       ed_.insert_on_edge(at.edge, w);
+      // The mesh was constrained Delaunay with that subsegment only: its halves (which a snap may
+      // leave unconstrained) and the other edges at w are legalized too.
+      if (released) ed_.legalize_star(w);
       return w;
     }
     case PointLocation::Kind::Outside:

@@ -68,6 +68,23 @@ void ConstrainedEditor::legalize_from(EdgeRef e) {
   legalize(stack, [this](EdgeRef g) { return may_flip(g); });
 }
 
+void ConstrainedEditor::legalize_star(VertexId v) {
+  const EdgeRef out = leaving(v);
+  if (out == kNone) return;
+  std::vector<EdgeRef> stack;
+  EdgeRef e = out;
+  do {  // counter-clockwise from out
+    stack.push_back(e);
+    e = mesh.link[lprev(e)];
+  } while (e != kNone && e != out);
+  if (e != out)  // an open fan (v on the boundary): then clockwise from out
+    for (EdgeRef s = mesh.link[out]; s != kNone; s = mesh.link[e]) {
+      e = lnext(s);
+      stack.push_back(e);
+    }
+  legalize(stack, [this](EdgeRef g) { return may_flip(g); });
+}
+
 void ConstrainedEditor::legalize_link(std::vector<EdgeRef>& stack, VertexId v) {
   lawson<FlipLayout::KeepOrigins, LawsonScope::Link>(mesh, stack, v, [this](EdgeRef g) { return may_flip(g); },
                                                     [this](EdgeRef g, EdgeRef f) { flipped(g, f); });

@@ -53,6 +53,11 @@ class ConstrainedEditor {
   // Lawson flips starting from edge e, which may have stopped being locally Delaunay (its
   // subsegment was just removed); afterwards the triangulation is constrained Delaunay again.
   void legalize_from(EdgeRef e);
+  // Lawson flips from every edge leaving v, spreading to every edge a flip touches: after an
+  // insertion on an edge whose subsegment was just removed (the mesh was constrained Delaunay only
+  // with it, so the insertion's own flips, confined to v's link, do not suffice: the halves and
+  // the other edges at v need not be locally Delaunay); afterwards it is constrained Delaunay again.
+  void legalize_star(VertexId v);
   // Lawson flips from `stack`, spreading to every edge a flip touches, of the edges that pass
   // the caller's test (which must imply may_flip; segment recovery confines it to its cavity).
   template <class MayFlip>
