@@ -1,6 +1,7 @@
 #include "mesh/constrained_editor.h"
 
 #include "mesh/operations.h"
+#include "mesh/vertex_edges.h"
 
 namespace deltri {
 
@@ -72,16 +73,7 @@ void ConstrainedEditor::legalize_star(VertexId v) {
   const EdgeRef out = leaving(v);
   if (out == kNone) return;
   std::vector<EdgeRef> stack;
-  EdgeRef e = out;
-  do {  // counter-clockwise from out
-    stack.push_back(e);
-    e = mesh.link[lprev(e)];
-  } while (e != kNone && e != out);
-  if (e != out)  // an open fan (v on the boundary): then clockwise from out
-    for (EdgeRef s = mesh.link[out]; s != kNone; s = mesh.link[e]) {
-      e = lnext(s);
-      stack.push_back(e);
-    }
+  for_each_around(mesh, out, [&](EdgeRef e) { stack.push_back(e); });
   legalize(stack, [this](EdgeRef g) { return may_flip(g); });
 }
 

@@ -52,9 +52,7 @@ void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
       if (!why.skinny) return push_to_bucket(entry, 0);
       const unsigned level = edge_level(why.shortest2, reference2_, level_bits_);
       if (static_cast<int>(level) > window_base_ + static_cast<int>(kWindowBuckets - 1)) raise_window(level);
-      const unsigned bucket = window_bucket(level);
-      append(entry, bucket);
-      if (bucket == 1) keep_level(level);
+      append_leveled(entry, level, window_bucket(level));
       return note_push();
     }
     case QueueOrder::Paper:
@@ -100,10 +98,7 @@ void QualityQueue::raise_window(unsigned level) {
     const Fifo old = buckets_[b];
     buckets_[b] = Fifo{};
     const unsigned level = static_cast<unsigned>(window_base_) + b - 1;  // bucket b's
-    for_each_entry(old, [&](const QueuedTriangle& e, std::uint32_t, std::uint32_t) {
-      append(e, 1);
-      keep_level(level);
-    },
+    for_each_entry(old, [&](const QueuedTriangle& e, std::uint32_t, std::uint32_t) { append_leveled(e, level, 1); },
                    [&](std::uint32_t block) { give_back(block); });
   }
   for (unsigned b = merged + 1; b <= last; ++b) {
@@ -131,9 +126,7 @@ void QualityQueue::move_window() {
   nonempty_ &= ~(std::uint64_t{1} << 1);
   for_each_entry(old, [&](const QueuedTriangle& e, std::uint32_t block, std::uint32_t i) {
     const unsigned level = level_at(block, i);
-    const unsigned bucket = window_bucket(level);
-    append(e, bucket);
-    if (bucket == 1) keep_level(level);
+    append_leveled(e, level, window_bucket(level));
   }, [&](std::uint32_t block) { give_back(block); });
 }
 
@@ -168,7 +161,9 @@ void QualityQueue::give_back(std::uint32_t block) {
   released_blocks_.push_back(block);
 }
 
-void QualityQueue::keep_level(unsigned level) {
+void QualityQueue::append_leveled(const QueuedTriangle& entry, unsigned level, unsigned bucket) {
+  append(entry, bucket);
+  if (bucket != 1) return;  // buckets 2..63 imply the level
   const Fifo& fifo = buckets_[1];
   std::unique_ptr<Levels>& levels = levels_[fifo.last];
   if (!levels) levels = std::make_unique<Levels>();

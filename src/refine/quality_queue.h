@@ -161,8 +161,9 @@ class QualityQueue {
   // The most urgent non-empty bucket (nonempty_ must not be 0): the mask's highest set bit.
   unsigned top_bucket() const { return 63u - static_cast<unsigned>(std::countl_zero(nonempty_)); }
   void append(const QueuedTriangle& entry, unsigned bucket);  // push_to_bucket, not counted
-  // The Ratio order: the edge level of the entry just appended to bucket 1.
-  void keep_level(unsigned level);
+  // The Ratio order: appends an entry of edge level `level` to `bucket`, keeping the level beside
+  // its block when that is bucket 1.
+  void append_leveled(const QueuedTriangle& entry, unsigned level, unsigned bucket);
   std::uint16_t level_at(std::uint32_t block, std::uint32_t i) const { return (*levels_[block])[i]; }
   QueuedTriangle take_front(unsigned bucket);                 // the oldest entry of a non-empty bucket
   // The Ratio order's bucket for a skinny triangle of edge level `level` in the current window.
