@@ -29,13 +29,13 @@ std::vector<Id> local_ids(const std::vector<Id>& ids, std::size_t count) {
   return local;
 }
 
-// The ids i with marked[i] != 0, increasing.
+// The ids i whose mark is set (want) or clear (!want), increasing.
 template <class Id>
-std::vector<Id> marked_ids(const std::vector<char>& marked) {
+std::vector<Id> marked_ids(const std::vector<char>& marked, bool want = true) {
   std::vector<Id> ids;
-  ids.reserve(static_cast<std::size_t>(std::count_if(marked.begin(), marked.end(), [](char m) { return m != 0; })));
+  ids.reserve(static_cast<std::size_t>(std::count_if(marked.begin(), marked.end(), [&](char m) { return (m != 0) == want; })));
   for (std::size_t i = 0; i < marked.size(); ++i)
-    if (marked[i]) ids.push_back(static_cast<Id>(i));
+    if ((marked[i] != 0) == want) ids.push_back(static_cast<Id>(i));
   return ids;
 }
 
@@ -248,15 +248,6 @@ void push_vertex(const Mesh& from, VertexId v, Mesh& to) {
                        from.attributes.begin() + static_cast<std::ptrdiff_t>((v + 1) * na));
 }
 
-// The ids i below marked.size() with marked[i] == 0, increasing.
-template <class Id>
-std::vector<Id> unmarked_ids(const std::vector<char>& marked) {
-  std::vector<Id> ids;
-  for (std::size_t i = 0; i < marked.size(); ++i)
-    if (!marked[i]) ids.push_back(static_cast<Id>(i));
-  return ids;
-}
-
 // Every per-vertex and per-record array of the mesh through compact.
 void compact_ids(Mesh& mesh, const Held& held) {
   const std::size_t na = static_cast<std::size_t>(mesh.num_attributes);
@@ -287,8 +278,8 @@ Held hold_only(Mesh& mesh, const CutOff& cut, std::vector<char> keep) {
   held.records = marked_ids<SubsegmentId>(records);
   for (VertexId v : cut.vertices) keep[v] = 1;
   for (SubsegmentId s : cut.records) records[s] = 1;
-  held.rest_vertices = unmarked_ids<VertexId>(keep);
-  held.rest_records = unmarked_ids<SubsegmentId>(records);
+  held.rest_vertices = marked_ids<VertexId>(keep, false);
+  held.rest_records = marked_ids<SubsegmentId>(records, false);
   held.rest.num_attributes = mesh.num_attributes;
   for (VertexId v : held.rest_vertices) push_vertex(mesh, v, held.rest);
   for (SubsegmentId s : held.rest_records) held.rest.subsegments.push_back(mesh.subsegments[s]);
