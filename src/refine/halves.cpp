@@ -306,8 +306,17 @@ void refine_sides(Mesh& mesh, CutOff& cut, const Held& held, Predicates& pred, c
   PartPlan right_plan = left_plan;
   right_plan.threads = std::max(1, plan.threads / 2);
   Predicates right_pred;
-  const auto refine_right = [&] { right = refine_part(cut.part, right_pred, right_plan, std::move(right_start)); };
-  const auto refine_left = [&] { left = refine_part(mesh, pred, left_plan, std::move(left_start)); };
+  // A side's Terminator (its queue, its indices) is freed into the malloc arena of the thread that
+  // ran it, which keeps it: the side refined next, or the other thread's, would hold it on top
+  // (50x50 holes, two threads: 3 MiB of the peak, which sits in the last parts' refinement).
+  const auto refine_right = [&] {
+    right = refine_part(cut.part, right_pred, right_plan, std::move(right_start));
+    release_free_heap();
+  };
+  const auto refine_left = [&] {
+    left = refine_part(mesh, pred, left_plan, std::move(left_start));
+    release_free_heap();
+  };
   if (plan.threads >= 2) {
     run_both(refine_right, refine_left);
   } else {
