@@ -44,7 +44,11 @@ EdgeRef search_near(const Mesh& mesh, TriangleId start, VertexId v) {
 
 }  // namespace
 
-VertexEdges::VertexEdges(const Mesh& mesh) : out_(mesh.vertex_count(), kNone) {
+// Room for every vertex the mesh has room for from the start (see grow_to): an exact-size index
+// was abandoned at the first new vertex, and stayed resident in the malloc arena.
+VertexEdges::VertexEdges(const Mesh& mesh) {
+  out_.reserve(std::max<std::size_t>(mesh.vertex_count(), mesh.points.capacity()));
+  out_.assign(mesh.vertex_count(), kNone);
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
     if (mesh.corner[e] != kNone) out_[mesh.corner[e]] = e;
 }
