@@ -7,6 +7,7 @@ namespace deltri {
 namespace {
 
 constexpr int kLocalSearchLimit = 64;
+constexpr std::size_t kGrowthStep = 1024;
 
 bool leaves(const Mesh& mesh, EdgeRef e, VertexId v) {
   return e != kNone && e < mesh.corner.size() && mesh.is_live(triangle_of(e)) && mesh.org(e) == v;
@@ -59,7 +60,9 @@ VertexEdges::VertexEdges(const Mesh& mesh) {
 void VertexEdges::grow_to(const Mesh& mesh, VertexId v) {
   if (v >= out_.capacity())
     out_.reserve(std::max<std::size_t>({std::size_t{v} + 1, 2 * out_.capacity(), mesh.points.capacity()}));
-  out_.resize(v + 1, kNone);
+  // Sized a step ahead, so that vertices appended one at a time do not each call resize (about 1%
+  // of the unit square's refinement); entries past the last vertex are kNone either way.
+  out_.resize(std::min(out_.capacity(), std::size_t{v} + kGrowthStep), kNone);
 }
 
 void VertexEdges::note(const Mesh& mesh, EdgeRef e) {
