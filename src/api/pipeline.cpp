@@ -179,6 +179,7 @@ BoundRequest bound_request(const Switches& sw, const PipelineSource& source, con
   r.size = size_bounds(sw, area_bounds_read(source));
   r.steiner_limited = report.refine && report.refine->stopped_by_max_steiner;
   r.segments_kept_whole = sw.no_boundary_steiner > 0;
+  r.threads = threads_to_use(sw);
   return r;
 }
 

@@ -52,6 +52,7 @@ SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Ps
   const std::vector<std::uint32_t> repeat_of = find_repeats(ends, mesh.vertex_count());
 
   mesh.subsegments.reserve(mesh.subsegments.size() + segments.size());
+  mesh.reserve_constrained_edges(2 * segments.size());  // both sides of each, split or not
   SegmentInserter inserter(mesh, pred, snap_to_segments, split_to_conform);
   std::vector<std::pair<std::uint32_t, int>> repeated_markers;
   for (std::uint32_t i = 0; i < segments.size(); ++i) {

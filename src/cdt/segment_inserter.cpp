@@ -51,7 +51,7 @@ void SegmentInserter::process(const Piece& piece) {
   }
   const Point& pu = mesh.point(piece.u);
   const Point& pv = mesh.point(piece.v);
-  const RayStart start = first_step(mesh, pred, from_u, pv);
+  const RayStart start = first_step_to_vertex(mesh, pred, from_u, piece.v);
   if (start.kind == RayStart::Kind::Blocked) {
     ++counts_.unrecovered;  // impossible in a valid triangulation of the convex hull
     return;

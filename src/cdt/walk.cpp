@@ -60,6 +60,28 @@ RayStart first_step(const Mesh& mesh, Predicates& pred, EdgeRef from_u, const Po
   return out;
 }
 
+// In a valid triangulation the edges at u have distinct directions and no triangle at u holds the
+// direction of an edge u-v strictly inside its angle, so first_step's rotation (counter-clockwise,
+// then clockwise past a boundary) stops at the edge u-v and nowhere earlier: its Vertex answer is
+// this one.
+RayStart first_step_to_vertex(const Mesh& mesh, Predicates& pred, EdgeRef from_u, VertexId v) {
+  EdgeRef e = from_u;
+  while (true) {
+    if (mesh.dest(e) == v) return {RayStart::Kind::Vertex, e, v, lnext(e)};
+    const EdgeRef n = mesh.onext(e);
+    if (n == from_u) break;
+    if (n == kNone) {
+      for (e = from_u; mesh.link[e] != kNone;) {
+        e = lnext(mesh.link[e]);
+        if (mesh.dest(e) == v) return {RayStart::Kind::Vertex, e, v, lnext(e)};
+      }
+      break;
+    }
+    e = n;
+  }
+  return first_step(mesh, pred, from_u, mesh.point(v));
+}
+
 RayStep next_step(const Mesh& mesh, Predicates& pred, EdgeRef g, const Point& u, const Point& q) {
   const EdgeRef h = mesh.link[g];
   if (h == kNone) return {};

@@ -27,6 +27,10 @@ struct RayStart {
 // Examines the triangles around org(from_u) for the one the ray toward q enters.
 RayStart first_step(const Mesh& mesh, Predicates& pred, EdgeRef from_u, const Point& q);
 
+// first_step toward vertex v's point, with the same answer, found without predicates when an edge
+// u-v is already there: most input segments are edges of the Delaunay triangulation.
+RayStart first_step_to_vertex(const Mesh& mesh, Predicates& pred, EdgeRef from_u, VertexId v);
+
 // One step across a crossed edge g (oriented so that the ray's origin side is on its left, its
 // origin strictly right of the ray line and its destination strictly left) into the next triangle.
 struct RayStep {

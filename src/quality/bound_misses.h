@@ -38,6 +38,7 @@ struct BoundRequest {
   SizeBounds size;                  // triangle_bounds: also mesh.area_bound[t] where positive
   bool steiner_limited = false;     // -S was reached
   bool segments_kept_whole = false; // -Y or -YY
+  unsigned threads = 1;             // from 2, the first pass over the triangles in two halves at once
 };
 
 struct BoundMisses {

@@ -132,3 +132,62 @@ TEST(the_angle_test_agrees_with_a_long_double_reference_at_and_away_from_ties) {
   CHECK_EQ(count_bound_misses(obtuse, angle(29.9)).below_angle, 0u);
   CHECK_EQ(count_bound_misses(obtuse, angle(30.1)).below_angle, 1u);
 }
+
+// The first pass takes two threads from 100,000 slots: its counts must be those of one pass, on a
+// mesh whose misses of every kind lie in both halves. 120,000 separate triangles, each one of
+// eight shapes picked by a hash of its number: good (three of the eight), skinny (5.71 degrees),
+// too large, both, a slot left dead, and skinny at the limit of double precision. The expected
+// counts come from the shapes' own measures here (long double angles and areas), not from the code
+// under test.
+TEST(the_first_pass_in_two_halves_counts_what_one_pass_counts) {
+  constexpr std::uint32_t kTriangles = 120000;
+  constexpr double kMaxArea = 1.0;
+  Mesh m;
+  std::uint64_t below = 0, above = 0, total = 0, precision = 0;
+  for (std::uint32_t i = 0; i < kTriangles; ++i) {
+    const unsigned shape = (i * 2654435761u) >> 29;  // 0..7
+    const double x = 10.0 * (i % 1000) + (shape == 7 ? 1e6 : 0.0), y = 10.0 * (i / 1000);
+    const double ulp = std::nextafter(x, 2 * x + 1) - x;
+    std::vector<Point> p;
+    switch (shape) {
+      case 3: p = {{x, y}, {x + 1, y}, {x + 1, y + 0.1}}; break;      // skinny, small
+      case 4: p = {{x, y}, {x + 2, y}, {x + 1, y + std::sqrt(3.0)}}; break;  // equilateral, area 1.73
+      case 5: p = {{x, y}, {x + 10, y}, {x + 10, y + 1}}; break;      // skinny, area 5
+      case 7: p = {{x, y}, {x + 3 * ulp, y}, {x, y + 1}}; break;      // a few ulps across
+      default: p = {{x, y}, {x + 1, y}, {x + 0.5, y + std::sqrt(3.0) / 2}};  // equilateral, area 0.43
+    }
+    const VertexId a{m.vertex_count()};
+    for (const Point& q : p) m.add_vertex(q, VertexKind::Input);
+    const TriangleId t = m.append_triangle(a, VertexId{a + 1}, VertexId{a + 2});  // no dead slot reused
+    if (shape == 6) {
+      m.kill_triangle(t);
+      continue;
+    }
+    long double smallest = 180, area = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Point &o = p[k], &u = p[(k + 1) % 3], &v = p[(k + 2) % 3];
+      const long double ux = (long double)u.x - o.x, uy = (long double)u.y - o.y;
+      const long double vx = (long double)v.x - o.x, vy = (long double)v.y - o.y;
+      const long double cross = ux * vy - uy * vx;
+      area = std::fabs(cross) / 2;
+      smallest = std::min(smallest, std::atan2(std::fabs(cross), ux * vx + uy * vy) * 180 / 3.14159265358979323846264338327950288L);
+    }
+    const bool skinny = smallest < 30, large = area > kMaxArea;
+    below += skinny;
+    above += large;
+    total += skinny || large;
+    precision += shape == 7;
+  }
+  CHECK(below > 20000 && above > 20000 && precision > 10000);  // every kind, in quantity
+  for (unsigned threads : {1u, 2u, 3u}) {
+    BoundRequest r = angle(30);
+    r.size.max_area = kMaxArea;
+    r.threads = threads;
+    const BoundMisses b = count_bound_misses(m, r);
+    CHECK_EQ(b.below_angle, below);
+    CHECK_EQ(b.above_size, above);
+    CHECK_EQ(b.total, total);
+    CHECK_EQ(b.double_precision, precision);
+    CHECK_EQ(b.other, total - precision);
+  }
+}
