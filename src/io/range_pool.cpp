@@ -10,9 +10,10 @@
 namespace deltri {
 
 namespace {
-// Ranges of one file formatted but not yet written: enough that no thread waits for the writer,
-// few enough that the buffers stay small beside the mesh.
-constexpr std::size_t kInFlight = 3;
+// Ranges of one file claimed but not yet written: one per writing thread, so the two threads of
+// the target machine rarely wait, and the buffers (about 100 KB each) leave the peak memory as
+// it was (docs/benchmarks.md).
+constexpr std::size_t kInFlight = 2;
 }  // namespace
 
 // One file's ranges. Ranges are claimed in order and never more than kInFlight ahead of the

@@ -2,7 +2,7 @@
 // a file whose body comes as LineRanges formats ranges itself while the threads whose own files
 // are done format the next ranges into buffers of their own; the buffers are written to the file
 // strictly in order, with at most a few in flight, so the bytes are those of one thread writing
-// the ranges one after another and the memory stays a few megabytes.
+// the ranges one after another and the memory stays well under a megabyte.
 #pragma once
 
 #include <condition_variable>

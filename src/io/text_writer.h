@@ -93,8 +93,9 @@ class TextWriter {
   void finish();
 
   // Items per range of write_lines: large enough that handing a range between threads costs
-  // nothing next to formatting it, small enough that a few ranges in flight take little memory.
-  static constexpr std::size_t kItemsPerRange = 8192;
+  // little next to formatting it (about 100 KB of text), small enough that the ranges in flight
+  // do not raise the peak memory.
+  static constexpr std::size_t kItemsPerRange = 2048;
   // Writes the lines of `items` items, kItemsPerRange at a time, through the sink's
   // write_ranges: what is buffered is handed on first, so the bytes come out in order.
   void write_lines(std::size_t items, std::function<void(TextWriter&, std::size_t begin, std::size_t end)> format);
