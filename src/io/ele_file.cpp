@@ -67,6 +67,24 @@ EleData read_ele_file(const std::string& path, int first_index, std::uint32_t ve
   return ele;
 }
 
+namespace {
+
+// The output index of the first live triangle of each range of TextWriter::kItemsPerRange slots,
+// so that every range can be formatted on its own.
+std::vector<long long> first_index_of_ranges(const Mesh& mesh, long long first_index) {
+  const std::size_t per = TextWriter::kItemsPerRange;
+  std::vector<long long> first((mesh.triangle_slots() + per - 1) / per);
+  long long index = first_index;
+  for (std::size_t r = 0; r < first.size(); ++r) {
+    first[r] = index;
+    const std::size_t end = std::min<std::size_t>(mesh.triangle_slots(), (r + 1) * per);
+    for (TriangleId t{static_cast<std::uint32_t>(r * per)}; t < end; ++t) index += mesh.is_live(t);
+  }
+  return first;
+}
+
+}  // namespace
+
 void write_ele_file(ByteSink& sink, const Mesh& mesh, const EleWriteOptions& options) {
   const VertexNumbering number{options.numbering, options.first_index};
   const int na = mesh.num_triangle_attributes;
@@ -77,17 +95,20 @@ void write_ele_file(ByteSink& sink, const Mesh& mesh, const EleWriteOptions& opt
   out.next_integer(mid ? 6 : 3);
   out.next_integer(na);
   out.end_line();
-  long long index = options.first_index;
+  const std::vector<long long> first = first_index_of_ranges(mesh, options.first_index);
   const std::size_t fields = (mid ? 7 : 4) + static_cast<std::size_t>(na);
-  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
-    if (!mesh.is_live(t)) continue;
-    if (fields <= TextWriter::kMaxLineFields) {
-      TextWriter::Line line = out.line(fields);
-      write_triangle_line(line, mesh, number, mid, t, index++);
-    } else {
-      write_triangle_line(out, mesh, number, mid, t, index++);
+  out.write_lines(mesh.triangle_slots(), [&](TextWriter& part, std::size_t begin, std::size_t end) {
+    long long index = first[begin / TextWriter::kItemsPerRange];
+    for (TriangleId t{static_cast<std::uint32_t>(begin)}; t < end; ++t) {
+      if (!mesh.is_live(t)) continue;
+      if (fields <= TextWriter::kMaxLineFields) {
+        TextWriter::Line line = part.line(fields);
+        write_triangle_line(line, mesh, number, mid, t, index++);
+      } else {
+        write_triangle_line(part, mesh, number, mid, t, index++);
+      }
     }
-  }
+  });
   out.finish();
 }
 

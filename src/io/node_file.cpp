@@ -314,10 +314,13 @@ void write_vertex_line(Out& out, const Mesh& mesh, const NodeWriteOptions& optio
   out.end_line();
 }
 
-void write_vertex_lines(TextWriter& out, const Mesh& mesh, const NodeWriteOptions& options) {
+// Vertices [begin, end): each line's number comes from the vertex alone, so any range can be
+// formatted on its own.
+void write_vertex_range(TextWriter& out, const Mesh& mesh, const NodeWriteOptions& options, std::size_t begin,
+                        std::size_t end) {
   const VertexNumbering number{options.numbering, options.first_index};
   const std::size_t fields = 4 + static_cast<std::size_t>(mesh.num_attributes);
-  for (VertexId v{0}; v < mesh.vertex_count(); ++v) {
+  for (VertexId v{static_cast<std::uint32_t>(begin)}; v < end; ++v) {
     if (!number.written(v)) continue;
     if (fields <= TextWriter::kMaxLineFields) {
       TextWriter::Line line = out.line(fields);
@@ -326,6 +329,12 @@ void write_vertex_lines(TextWriter& out, const Mesh& mesh, const NodeWriteOption
       write_vertex_line(out, mesh, options, v, number(v));
     }
   }
+}
+
+void write_vertex_lines(TextWriter& out, const Mesh& mesh, const NodeWriteOptions& options) {
+  out.write_lines(mesh.vertex_count(), [&mesh, &options](TextWriter& part, std::size_t begin, std::size_t end) {
+    write_vertex_range(part, mesh, options, begin, end);
+  });
 }
 
 std::uint32_t written_vertex_count(const Mesh& mesh, const NodeWriteOptions& options) {

@@ -12,6 +12,7 @@
 #include <system_error>
 #include <thread>
 
+#include "io/range_pool.h"
 #include "pslg/errors.h"
 
 #if __has_include(<sys/file.h>) && __has_include(<unistd.h>)
@@ -135,7 +136,8 @@ std::string file_identity(const std::string& path) {
 // Writes to a temporary file, reporting failures under the final name the user knows.
 class FileSink final : public ByteSink {
  public:
-  FileSink(const std::string& temp_path, const std::string& final_path) : final_path_(final_path) {
+  FileSink(const std::string& temp_path, const std::string& final_path, RangePool* pool)
+      : final_path_(final_path), pool_(pool) {
     errno = 0;
     file_ = std::fopen(temp_path.c_str(), "wb");
     if (!file_) fail(final_path_, "cannot be created: " + errno_text(errno));
@@ -146,6 +148,10 @@ class FileSink final : public ByteSink {
   void write(const char* data, std::size_t size) override {
     errno = 0;
     if (std::fwrite(data, 1, size, file_) != size) fail(final_path_, errno_text(errno));
+  }
+  void write_ranges(const LineRanges& ranges) override {
+    if (pool_) pool_->write(*this, ranges);
+    else ByteSink::write_ranges(ranges);
   }
   void close() {
     errno = 0;
@@ -159,6 +165,7 @@ class FileSink final : public ByteSink {
 
  private:
   std::string final_path_;
+  RangePool* pool_;
   std::FILE* file_ = nullptr;
 };
 
@@ -180,15 +187,13 @@ void OutputSet::add_stream(std::string final_path, std::function<void(ByteSink&)
 
 namespace {
 
-// At most this many files are handled at once: the target machine has two cores, and the large
-// outputs (.node, .ele) are each bound by one core formatting numbers.
-constexpr std::size_t kMaxWorkers = 2;
-
-// Runs task(k) for k = 0, 1, ..., count - 1 on up to kMaxWorkers threads, starting them in order
+// Runs task(k) for k = 0, 1, ..., count - 1 on up to `workers` threads, starting them in order
 // of k; once a task has thrown, no further task starts. Returns the exception of the lowest k that
 // threw, if any. Every task skipped after a failure comes after the failed one, so that is the
-// exception a plain loop over k would have stopped at.
-std::exception_ptr run_in_order(std::size_t count, const std::function<void(std::size_t)>& task) {
+// exception a plain loop over k would have stopped at. With `pool`, a thread out of tasks helps
+// format the ranges of files the others are still writing.
+std::exception_ptr run_in_order(std::size_t count, std::size_t workers, const std::function<void(std::size_t)>& task,
+                                RangePool* pool = nullptr) {
   std::vector<std::exception_ptr> errors(count);
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
@@ -201,14 +206,17 @@ std::exception_ptr run_in_order(std::size_t count, const std::function<void(std:
         failed = true;
       }
     }
+    if (pool) pool->help();
   };
   {
     std::vector<std::jthread> helpers;
-    for (std::size_t w = 1; w < std::min(kMaxWorkers, count); ++w) {
+    for (std::size_t w = 1; w < workers; ++w) {
       try {
         helpers.emplace_back(work);
       } catch (const std::system_error&) {
-        break;  // no thread to be had: fewer workers do the same work
+        for (; w < workers; ++w)
+          if (pool) pool->absent();  // no thread to be had: fewer workers do the same work
+        break;
       }
     }
     work();
@@ -228,9 +236,9 @@ void OutputSet::write_standard_output(File& f) {
   }
 }
 
-void OutputSet::write_temporary(File& f, const std::string& temp_path) {
+void OutputSet::write_temporary(File& f, const std::string& temp_path, RangePool* pool) {
   if (f.final_path == kStandardOutput) return write_standard_output(f);
-  FileSink sink(temp_path, f.final_path);
+  FileSink sink(temp_path, f.final_path, pool);
   if (f.produce) f.produce(sink);
   else sink.write(f.contents.data(), f.contents.size());
   sink.close();
@@ -282,11 +290,14 @@ CommitNotes OutputSet::commit(const TemporaryListener& listener) {
       if (l) l({});
     }
   } unlisten{listener};
-  std::exception_ptr error = run_in_order(files_.size(), [&](std::size_t k) { write_temporary(files_[k], temps[k]); });
+  const std::size_t workers = std::max<std::size_t>(1, std::min(workers_, files_.size()));
+  RangePool pool(workers);
+  std::exception_ptr error =
+      run_in_order(files_.size(), workers, [&](std::size_t k) { write_temporary(files_[k], temps[k], &pool); }, &pool);
   // A rename can still fail when something that is not a file stands in the way; find that before
   // the first rename, so that a failed run leaves every old output as it was.
   if (!error)
-    error = run_in_order(files_.size(), [&](std::size_t k) {
+    error = run_in_order(files_.size(), workers, [&](std::size_t k) {
       if (!temps[k].empty()) check_replaceable(files_[k].final_path);
     });
   // Renaming over an existing file frees the old one's blocks and cached pages, which for a large
@@ -302,7 +313,7 @@ CommitNotes OutputSet::commit(const TemporaryListener& listener) {
       if (!temps[k].empty() && file_identity(files_[k].final_path) != before[k]) ++notes.replaced_meanwhile;
   }
   if (!error) {
-    error = run_in_order(files_.size(), [&](std::size_t k) {
+    error = run_in_order(files_.size(), workers, [&](std::size_t k) {
       if (temps[k].empty()) return;
       std::error_code ec;
       std::filesystem::rename(temps[k], files_[k].final_path, ec);

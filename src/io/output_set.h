@@ -26,8 +26,16 @@ struct CommitNotes {
 // keeps them where a signal handler can remove them (the library itself keeps no global state).
 using TemporaryListener = std::function<void(const std::vector<std::string>&)>;
 
+class RangePool;
+
 class OutputSet {
  public:
+  // At most this many threads write at once: the target machine has two cores. A large file's
+  // body (LineRanges) is formatted by whichever of them is free, so the writing takes about the
+  // total work divided by the threads rather than as long as the largest file.
+  static constexpr std::size_t kDefaultWorkers = 2;
+  explicit OutputSet(std::size_t workers = kDefaultWorkers) : workers_(workers) {}
+
   // A file whose text is already in memory.
   void add(std::string final_path, std::string contents);
   // A file produced during commit(): `produce` writes into a sink that goes straight to the
@@ -38,8 +46,9 @@ class OutputSet {
   // and written out only after every real file is in place, so a failed run prints nothing.
   static constexpr const char* kStandardOutput = "-";
 
-  // Writes every file, then renames them into place. Up to two temporaries are written at once
-  // (the producers must not modify shared state). Throws OutputError("path: reason") if any
+  // Writes every file, then renames them into place. Up to `workers` temporaries are written at
+  // once, and ranges of a large file by several threads (the producers must not modify shared
+  // state). Throws OutputError("path: reason") if any
   // write, flush or close fails (with several failures: the one of the earliest-added file);
   // then every temporary is removed and existing files are untouched. (Should a rename itself
   // fail after others succeeded, those stay renamed: the remaining renames are within the same
@@ -59,9 +68,10 @@ class OutputSet {
     std::string contents;
     std::function<void(ByteSink&)> produce;  // empty: use contents
   };
-  static void write_temporary(File& f, const std::string& temp_path);
+  static void write_temporary(File& f, const std::string& temp_path, RangePool* pool);
   std::size_t remove_stale_temporaries() const;
   static void write_standard_output(File& f);
+  std::size_t workers_;
   std::vector<File> files_;
 };
 

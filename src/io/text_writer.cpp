@@ -107,4 +107,15 @@ void TextWriter::flush() {
 
 void TextWriter::finish() { flush(); }
 
+void TextWriter::write_lines(std::size_t items, std::function<void(TextWriter&, std::size_t, std::size_t)> format) {
+  flush();
+  sink_.write_ranges({items, kItemsPerRange, std::move(format)});
+}
+
+void ByteSink::write_ranges(const LineRanges& ranges) {
+  TextWriter out(*this);
+  for (std::size_t r = 0; r < ranges.count(); ++r) ranges.format(out, ranges.begin(r), ranges.end(r));
+  out.finish();
+}
+
 }  // namespace deltri

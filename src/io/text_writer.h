@@ -6,10 +6,25 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 
 namespace deltri {
+
+class TextWriter;
+
+// The body of a file as ranges of items (vertices, triangle slots), each range formatted on its
+// own: then free threads can format different ranges of one large file at once. `format` writes
+// the lines of items [begin, end) and must not modify shared state.
+struct LineRanges {
+  std::size_t items = 0;
+  std::size_t per_range = 1;
+  std::function<void(TextWriter&, std::size_t begin, std::size_t end)> format;
+  std::size_t count() const { return (items + per_range - 1) / per_range; }
+  std::size_t begin(std::size_t r) const { return r * per_range; }
+  std::size_t end(std::size_t r) const { return r + 1 < count() ? (r + 1) * per_range : items; }
+};
 
 // Where formatted bytes go: a string in memory, or a file being written.
 class ByteSink {
@@ -18,6 +33,9 @@ class ByteSink {
   virtual void write(const char* data, std::size_t size) = 0;
   // A hint that about `bytes` more are coming; lets a string grow once instead of repeatedly.
   virtual void expect(std::size_t /*bytes*/) {}
+  // Writes the ranges' lines in order. Here one after another on the calling thread; a file
+  // being written by an OutputSet lets idle threads format ranges too (same bytes either way).
+  virtual void write_ranges(const LineRanges& ranges);
 };
 
 class StringSink final : public ByteSink {
@@ -71,8 +89,16 @@ class TextWriter {
     make_room(1);
     *cur_++ = '\n';
   }
-  // Hands everything still buffered to the sink; call once at the end.
+  // Hands everything still buffered to the sink; call once at the end (or before write_lines).
   void finish();
+
+  // Items per range of write_lines: large enough that handing a range between threads costs
+  // little next to formatting it (about 100 KB of text), small enough that the ranges in flight
+  // do not raise the peak memory.
+  static constexpr std::size_t kItemsPerRange = 2048;
+  // Writes the lines of `items` items, kItemsPerRange at a time, through the sink's
+  // write_ranges: what is buffered is handed on first, so the bytes come out in order.
+  void write_lines(std::size_t items, std::function<void(TextWriter&, std::size_t begin, std::size_t end)> format);
 
   // The fast way to write the millions of lines of a mesh: one check for buffer space per line
   // instead of one per field. `out.line(n)` makes room for up to n fields and the newline (n at

@@ -371,3 +371,7 @@ set_tests_properties(e2e.one_triangulation PROPERTIES TIMEOUT 300)
 e2e_case(water.ruppert_ib2 ${E2E_DATA}/water.poly "-pq20.7 --algorithm=ruppert --interior-bound=2" --no-verify
          --warning "where the termination guard stopped refinement")
 set_tests_properties(e2e.water.ruppert_ib2 PROPERTIES TIMEOUT 900)
+# Large files are formatted in ranges by whichever writing thread is free (io/range_pool.h).
+add_test(NAME e2e.writer_threads COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/writer_threads.sh $<TARGET_FILE:deltri>
+         $<TARGET_FILE:deltri_bench_gen>)
+set_tests_properties(e2e.writer_threads PROPERTIES TIMEOUT 300)
