@@ -290,10 +290,12 @@ CommitNotes OutputSet::commit(const TemporaryListener& listener) {
       if (l) l({});
     }
   } unlisten{listener};
-  const std::size_t workers = std::max<std::size_t>(1, std::min(workers_, files_.size()));
-  RangePool pool(workers);
+  // Every worker writes: one with no file of its own left formats ranges of the others' files.
+  const std::size_t writers = std::max<std::size_t>(1, workers_);
+  RangePool pool(writers);
   std::exception_ptr error =
-      run_in_order(files_.size(), workers, [&](std::size_t k) { write_temporary(files_[k], temps[k], &pool); }, &pool);
+      run_in_order(files_.size(), writers, [&](std::size_t k) { write_temporary(files_[k], temps[k], &pool); }, &pool);
+  const std::size_t workers = std::max<std::size_t>(1, std::min(workers_, files_.size()));
   // A rename can still fail when something that is not a file stands in the way; find that before
   // the first rename, so that a failed run leaves every old output as it was.
   if (!error)

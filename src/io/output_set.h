@@ -30,9 +30,10 @@ class RangePool;
 
 class OutputSet {
  public:
-  // At most this many threads write at once: the target machine has two cores. A large file's
-  // body (LineRanges) is formatted by whichever of them is free, so the writing takes about the
-  // total work divided by the threads rather than as long as the largest file.
+  // How many threads write at once (the command line passes --threads; two is the target
+  // machine's cores). A large file's body (LineRanges) is formatted by whichever of them is free,
+  // so the writing takes about the total work divided by the threads rather than as long as the
+  // largest file.
   static constexpr std::size_t kDefaultWorkers = 2;
   explicit OutputSet(std::size_t workers = kDefaultWorkers) : workers_(workers) {}
 

@@ -1,7 +1,6 @@
 #include "io/range_pool.h"
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <exception>
 #include <string>
@@ -9,18 +8,15 @@
 
 namespace deltri {
 
-namespace {
-// Ranges of one file claimed but not yet written: one per writing thread, so the two threads of
-// the target machine rarely wait, and the buffers (about 100 KB each) leave the peak memory as
-// it was (docs/benchmarks.md).
-constexpr std::size_t kInFlight = 2;
-}  // namespace
-
-// One file's ranges. Ranges are claimed in order and never more than kInFlight ahead of the
-// next one to write; whichever thread finishes the next range writes it and any ready after it.
+// One file's ranges. Ranges are claimed in order and never more than `in_flight` ahead of the
+// next one to write (one per writing thread, so no thread waits for a slot, and the buffers, about
+// 100 KB each, leave the peak memory as it was: docs/benchmarks.md); whichever thread finishes
+// the next range writes it and any ready after it.
 class RangeJob {
  public:
-  RangeJob(ByteSink& sink, const LineRanges& ranges) : sink_(sink), ranges_(ranges), count_(ranges.count()) {}
+  RangeJob(ByteSink& sink, const LineRanges& ranges, std::size_t in_flight)
+      : sink_(sink), ranges_(ranges), count_(ranges.count()), in_flight_(in_flight), slots_(in_flight),
+        ready_(in_flight, 0) {}
 
   // Formats (and writes) ranges until none is left to claim.
   void work() {
@@ -58,15 +54,16 @@ class RangeJob {
   std::condition_variable changed_;
   std::size_t next_claim_ = 0, next_write_ = 0, busy_ = 0;
   bool writing_ = false;
-  std::array<std::string, kInFlight> slots_;
-  std::array<bool, kInFlight> ready_{};
+  const std::size_t in_flight_;
+  std::vector<std::string> slots_;
+  std::vector<char> ready_;
   std::vector<std::string> spares_;
   std::exception_ptr error_;
 };
 
 bool RangeJob::step() {
   std::unique_lock lock(mutex_);
-  changed_.wait(lock, [&] { return error_ || next_claim_ == count_ || next_claim_ < next_write_ + kInFlight; });
+  changed_.wait(lock, [&] { return error_ || next_claim_ == count_ || next_claim_ < next_write_ + in_flight_; });
   if (error_ || next_claim_ == count_) {
     open_ = false;
     return false;
@@ -90,8 +87,8 @@ bool RangeJob::step() {
   if (failed) {
     fail(failed);
   } else {
-    slots_[r % kInFlight] = std::move(text);
-    ready_[r % kInFlight] = true;
+    slots_[r % in_flight_] = std::move(text);
+    ready_[r % in_flight_] = 1;
     if (!writing_) drain(lock);
   }
   --busy_;
@@ -103,10 +100,10 @@ bool RangeJob::step() {
 // time (writing_), so the file gets the ranges in order.
 void RangeJob::drain(std::unique_lock<std::mutex>& lock) {
   writing_ = true;
-  while (!error_ && ready_[next_write_ % kInFlight]) {
-    const std::size_t slot = next_write_ % kInFlight;
+  while (!error_ && ready_[next_write_ % in_flight_]) {
+    const std::size_t slot = next_write_ % in_flight_;
     std::string text = std::move(slots_[slot]);
-    ready_[slot] = false;
+    ready_[slot] = 0;
     lock.unlock();
     std::exception_ptr failed;
     try {
@@ -127,7 +124,7 @@ void RangeJob::drain(std::unique_lock<std::mutex>& lock) {
 }
 
 void RangePool::write(ByteSink& sink, const LineRanges& ranges) {
-  RangeJob job(sink, ranges);
+  RangeJob job(sink, ranges, workers_);
   {
     std::lock_guard lock(mutex_);
     jobs_.push_back(&job);

@@ -19,7 +19,7 @@ class RangeJob;
 class RangePool {
  public:
   // `workers`: how many threads run files and, once done with their files, help().
-  explicit RangePool(std::size_t workers) : working_(workers) {}
+  explicit RangePool(std::size_t workers) : workers_(workers), working_(workers) {}
   RangePool(const RangePool&) = delete;
   RangePool& operator=(const RangePool&) = delete;
 
@@ -38,6 +38,7 @@ class RangePool {
   std::mutex mutex_;
   std::condition_variable changed_;
   std::vector<RangeJob*> jobs_;
+  const std::size_t workers_;
   std::size_t working_;  // workers not yet in help()
 };
 
