@@ -221,7 +221,7 @@ constexpr std::array kLongOptions = {
                "radius lfs/3, refine around the shields, fill the lopped corners with fans",
                [](S& s, const std::string*) { s.corner_lopping = true; }},
     LongOption{"threads", "N", false,
-               "refine large meshes (and build the triangulation) on up to N threads (default: all cores); "
+               "refine large meshes (and build the triangulation, write the files) on up to N threads (default: all cores); "
                "the output is the same for every N",
                set_threads},
     LongOption{"man", "", false, "print the manual page (roff) and exit",
