@@ -237,7 +237,8 @@ int run(const Switches& sw) {
     messages.notice(std::string(unsupported) + " is not available yet and is ignored");
 
   const InputFiles in = input_files(sw);
-  Pslg pslg = in.is_poly ? read_poly_file(in.path) : read_node_file(in.path);
+  const int threads = threads_to_use(sw);  // --threads reads too
+  Pslg pslg = in.is_poly ? read_poly_file(in.path, threads) : read_node_file(in.path, threads);
   PipelineSource source;
   source.name = in.path == "-" ? kStandardInputName : in.path;
   source.is_poly = in.is_poly;

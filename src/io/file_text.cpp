@@ -115,9 +115,9 @@ void read_range(std::FILE* f, const std::string& path, char* dest, std::size_t f
 
 // Two threads each copy half of the file: on this hardware copying out of the page cache is
 // bound by page faults, which two cores take in parallel.
-FileText read_sized(FileHandle f, const std::string& path, std::size_t size) {
+FileText read_sized(FileHandle f, const std::string& path, std::size_t size, int threads) {
   FileText text{BigBytes(size ? size : 1), size};
-  if (size < kParallelReadBytes) {
+  if (size < kParallelReadBytes || threads < 2) {
     read_range(f.get(), path, text.bytes.get(), 0, size);
     return text;
   }
@@ -144,7 +144,7 @@ FileText read_sized(FileHandle f, const std::string& path, std::size_t size) {
 
 }  // namespace
 
-FileText read_file_text(const std::string& path) {
+FileText read_file_text(const std::string& path, int threads) {
   if (path == "-") return read_stream(stdin, kStandardInputName);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a file");
@@ -153,7 +153,7 @@ FileText read_file_text(const std::string& path) {
   if (ec || size == 0) return read_stream(f.get(), path);  // pipes, devices, files whose size lies
   // Never mapped: a mapped file that another process shrinks faults (SIGBUS) on the lost pages,
   // where read() reports a short file, which becomes the ordinary truncated-file error.
-  return read_sized(std::move(f), path, static_cast<std::size_t>(size));
+  return read_sized(std::move(f), path, static_cast<std::size_t>(size), threads);
 }
 
 }  // namespace deltri

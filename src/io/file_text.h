@@ -22,7 +22,8 @@ struct FileText {
 inline constexpr const char* kStandardInputName = "standard input";
 
 // The bytes of `path`, or of standard input when `path` is "-". Throws InputError(path, 0, ...)
-// when the file cannot be read (missing, a directory, a read error).
-FileText read_file_text(const std::string& path);
+// when the file cannot be read (missing, a directory, a read error). A large file is read by two
+// threads when `threads` is 2 or more (--threads), else by the calling thread alone.
+FileText read_file_text(const std::string& path, int threads = 2);
 
 }  // namespace deltri

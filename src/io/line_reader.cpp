@@ -72,8 +72,10 @@ LineReader LineReader::tail_after(std::size_t bytes) const {
   return tail;
 }
 
-LineReader LineReader::open(const std::string& path) {
-  return LineReader(path == "-" ? kStandardInputName : path, read_file_text(path));
+LineReader LineReader::open(const std::string& path, int threads) {
+  LineReader in(path == "-" ? kStandardInputName : path, read_file_text(path, threads));
+  in.threads_ = threads;
+  return in;
 }
 
 void LineReader::skip_separators() {

@@ -30,10 +30,12 @@ class LineReader {
   // `name` is used in messages; `text` is the whole file.
   LineReader(std::string name, const std::string& text);
   LineReader(std::string name, FileText text);
-  // Reads the file (standard input for "-"); throws InputError when it cannot.
-  static LineReader open(const std::string& path);
+  // Reads the file (standard input for "-"); throws InputError when it cannot. `threads` (at
+  // least 1) bounds the threads that reading and parsing this text may take.
+  static LineReader open(const std::string& path, int threads = 2);
 
   const std::string& name() const { return name_; }
+  int threads() const { return threads_; }
   // Moves to the next line that has a field; false at end of text.
   bool next_line();
   // The 1-based number of the current line (after the end: the number of lines in the text).
@@ -77,6 +79,7 @@ class LineReader {
   const char* end_;
   long line_ = 0;
   bool in_line_ = false;
+  int threads_ = 2;
 };
 
 }  // namespace deltri

@@ -257,7 +257,8 @@ std::uint32_t read_node_section(LineReader& in, Pslg& out, bool allow_empty) {
   out.num_attributes = h.attributes;
   out.has_markers = h.markers;
   out.source_name = in.name();
-  if (h.count >= kParallelVertices && in.bytes_left() >= kParallelBytes && read_vertices_in_parallel(in, out, h))
+  if (in.threads() >= 2 && h.count >= kParallelVertices && in.bytes_left() >= kParallelBytes &&
+      read_vertices_in_parallel(in, out, h))
     return h.count;
   reserve_vertices(in.bytes_left(), out, h);
   read_vertices_serially(in, out, h);
@@ -289,8 +290,8 @@ void require_regular_numbering(const Pslg& pslg, const std::string& referrer) {
                        " name vertices by number, so which vertex each number means is ambiguous)");
 }
 
-Pslg read_node_file(const std::string& path) {
-  LineReader in = LineReader::open(path);
+Pslg read_node_file(const std::string& path, int threads) {
+  LineReader in = LineReader::open(path, threads);
   Pslg pslg;
   read_node_section(in, pslg);
   // Standard input has no extension to say what it is: a .poly piped in without -p would be meshed

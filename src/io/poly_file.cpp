@@ -22,7 +22,7 @@ std::string node_path_for(const std::string& poly_path) {
 
 void load_separate_vertices(const LineReader& in, Pslg& out) {
   if (in.name() == kStandardInputName) in.fail("the vertices are in a separate .node file, which standard input cannot name");
-  out = read_node_file(node_path_for(in.name()));
+  out = read_node_file(node_path_for(in.name()), in.threads());
 }
 
 // Reads a section header's count; the section must be there.
@@ -199,8 +199,8 @@ void write_regions(TextWriter& out, const std::vector<Pslg::Region>& regions, in
 
 }  // namespace
 
-Pslg read_poly_file(const std::string& path) {
-  LineReader in = LineReader::open(path);
+Pslg read_poly_file(const std::string& path, int threads) {
+  LineReader in = LineReader::open(path, threads);
   Pslg pslg;
   if (read_node_section(in, pslg, true) == 0) load_separate_vertices(in, pslg);
   read_segments(in, pslg);

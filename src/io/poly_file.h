@@ -19,7 +19,9 @@
 
 namespace deltri {
 
-Pslg read_poly_file(const std::string& path);
+// Reads a .poly file (and its separate .node when its node section is empty); `threads` as for
+// read_node_file.
+Pslg read_poly_file(const std::string& path, int threads = 2);
 
 // For each subsegment id, the first live edge carrying it (kNone: gone from the mesh) and
 // whether it lies on the mesh boundary: the segments a .poly (and the library) writes, in order.

@@ -173,6 +173,16 @@ TEST(node_large_file_parallel_path_matches_serial) {
   REQUIRE(b.read_warnings.size() == 1u);
   CHECK(b.read_warnings[0].starts_with(broken_path + ":" + std::to_string(line) +
                                        ": vertex index 180001 is out of sequence: expected 180000"));
+  // One thread (--threads=1) reads the file whole and must find what the two halves found.
+  for (const auto& [file, two] : {std::pair{path, &p}, std::pair{broken_path, &b}}) {
+    const Pslg one = read_node_file(file, 1);
+    REQUIRE(one.points.size() == two->points.size());
+    bool same = one.attributes == two->attributes && one.markers == two->markers &&
+                one.read_warnings == two->read_warnings;
+    for (std::size_t i = 0; i < one.points.size(); ++i)
+      same = same && one.points[i].x == two->points[i].x && one.points[i].y == two->points[i].y;
+    CHECK(same);
+  }
   const std::string truncated = text.substr(0, text.rfind("\n200000 ") + 1);
   const std::string short_message = node_error("big_short.node", truncated);
   CHECK(short_message.find("unexpected end of file: 200000 vertices announced, 199999 found") != std::string::npos);
