@@ -190,11 +190,11 @@ void refuse_overwriting_inputs(const RunReport& report, const InputFiles& in, co
 
 // --size-field=FILE: FILE.node (or FILE as named) and FILE.ele, the wanted edge length the first
 // vertex attribute (refine/size_field.h).
-SizeField read_size_field(const std::string& name) {
+SizeField read_size_field(const std::string& name, int threads) {
   std::string extension;
   const std::string base = input_base(name, &extension);
   const std::string node_path = extension == "node" ? name : base + ".node";
-  Pslg background = read_node_file(node_path);
+  Pslg background = read_node_file(node_path, threads);
   if (background.num_attributes < 1)
     throw InputError(node_path, 0, "--size-field: the vertices have no attribute; the first one is the wanted edge length");
   const std::size_t n = background.points.size(), na = static_cast<std::size_t>(background.num_attributes);
@@ -205,7 +205,7 @@ SizeField read_size_field(const std::string& name) {
       throw InputError(node_path, 0, "--size-field: vertex " + std::to_string(v + background.first_index) +
                                          ": the wanted edge length (first attribute) must be positive, not " + std::to_string(lengths[v]));
   }
-  const EleData ele = read_ele_file(base + ".ele", background.first_index, static_cast<std::uint32_t>(n));
+  const EleData ele = read_ele_file(base + ".ele", background.first_index, static_cast<std::uint32_t>(n), threads);
   std::vector<std::uint32_t> corners;
   for (std::uint32_t t = 0; t < ele.triangle_count(); ++t)
     for (std::uint32_t k = 0; k < 3; ++k) corners.push_back(ele.corners[t * ele.nodes_per_triangle + k]);
@@ -214,13 +214,14 @@ SizeField read_size_field(const std::string& name) {
 
 // -r: the previous mesh's .ele (numbered as the .node just read) and, with a bare -a or a named
 // .area, its .area bounds.
-PreviousMesh read_previous_mesh(const InputFiles& in, const Pslg& pslg) {
+PreviousMesh read_previous_mesh(const InputFiles& in, const Pslg& pslg, int threads) {
   PreviousMesh previous;
   previous.ele_name = in.base + ".ele";
   require_regular_numbering(pslg, "the triangles of " + previous.ele_name);
-  previous.ele = read_ele_file(previous.ele_name, pslg.first_index, static_cast<std::uint32_t>(pslg.points.size()));
+  previous.ele =
+      read_ele_file(previous.ele_name, pslg.first_index, static_cast<std::uint32_t>(pslg.points.size()), threads);
   previous.area_bounds = in.area_file;
-  if (in.area_file) previous.areas = read_area_file(in.base + ".area", previous.ele.triangle_count());
+  if (in.area_file) previous.areas = read_area_file(in.base + ".area", previous.ele.triangle_count(), threads);
   return previous;
 }
 
@@ -244,13 +245,13 @@ int run(const Switches& sw) {
   source.is_poly = in.is_poly;
   PreviousMesh previous;
   if (in.refine) {
-    previous = read_previous_mesh(in, pslg);
+    previous = read_previous_mesh(in, pslg, threads);
     source.previous = &previous;
   }
   std::optional<SizeField> size_field;
   SizeTest size_test;
   if (!sw.size_field.empty()) {
-    size_field.emplace(read_size_field(sw.size_field));
+    size_field.emplace(read_size_field(sw.size_field, threads));
     size_test = size_field->test();
     source.size_test = &size_test;
   }

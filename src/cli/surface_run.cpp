@@ -118,7 +118,7 @@ std::optional<std::string> surface_input(const Switches& sw) {
 int run_surface(const Switches& sw, const std::string& path) {
   const auto start = std::chrono::steady_clock::now();
   note_ignored_switches(sw);
-  const FacetInput input = read_facet_file(path);
+  const FacetInput input = read_facet_file(path, threads_to_use(sw));
   const SurfaceResult result = run_surface_pipeline(input, sw);
   const SurfaceMesh& mesh = result.mesh;
   const SurfaceReport& report = result.report;

@@ -7,8 +7,8 @@
 
 namespace deltri {
 
-std::vector<double> read_area_file(const std::string& path, std::uint32_t expected_count) {
-  LineReader in = LineReader::open(path);
+std::vector<double> read_area_file(const std::string& path, std::uint32_t expected_count, int threads) {
+  LineReader in = LineReader::open(path, threads);
   if (!in.next_line()) in.fail("unexpected end of file: the area header is missing");
   const auto count = static_cast<std::uint32_t>(in.read_int({"area header", -1, "number of triangles"}, 0, 0xFFFFFFF0LL));
   if (expected_count != 0xFFFFFFFFu && count != expected_count)

@@ -53,8 +53,8 @@ void write_triangle_line(Out& out, const Mesh& mesh, const VertexNumbering& numb
 
 }  // namespace
 
-EleData read_ele_file(const std::string& path, int first_index, std::uint32_t vertex_count) {
-  LineReader in = LineReader::open(path);
+EleData read_ele_file(const std::string& path, int first_index, std::uint32_t vertex_count, int threads) {
+  LineReader in = LineReader::open(path, threads);
   EleData ele;
   std::uint32_t count = 0;
   read_ele_header(in, ele, count);

@@ -70,7 +70,7 @@ void read_node_section(LineReader& in, FacetInput& out) {
     read_points(in, h, out);
   } else {
     if (in.name() == kStandardInputName) in.fail("the points are in a separate .node file, which standard input cannot name");
-    LineReader node = LineReader::open(base_of(in.name()) + ".node");
+    LineReader node = LineReader::open(base_of(in.name()) + ".node", in.threads());
     const NodeHeader3 nh = read_header(node);
     read_points(node, nh, out);
   }
@@ -168,8 +168,8 @@ bool is_facet_file(const std::string& path) {
   return false;
 }
 
-FacetInput read_facet_file(const std::string& path) {
-  LineReader in = LineReader::open(path);
+FacetInput read_facet_file(const std::string& path, int threads) {
+  LineReader in = LineReader::open(path, threads);
   FacetInput out;
   out.source_name = path;
   read_node_section(in, out);

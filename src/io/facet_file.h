@@ -25,7 +25,8 @@ namespace deltri {
 // False when the file cannot be read (the ordinary reader then says why).
 bool is_facet_file(const std::string& path);
 
-// Throws InputError "file:line: what is wrong" on any malformed or inconsistent content.
-FacetInput read_facet_file(const std::string& path);
+// Throws InputError "file:line: what is wrong" on any malformed or inconsistent content. A file
+// of 4 MiB or more is read by two threads when `threads` is 2 or more (--threads).
+FacetInput read_facet_file(const std::string& path, int threads = 2);
 
 }  // namespace deltri

@@ -134,7 +134,7 @@ CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId 
 
 // The part's triangles and vertices after the mesh's. The appends fault in fresh pages, most of
 // their cost: the links and vertices on a second thread, the rest on this one.
-PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark) {
+PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark, int threads) {
   Mesh& r = cut.part;
   const PartIds ids{&cut.vertices,
                     &cut.records,
@@ -163,7 +163,12 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark) {
     r.subseg.for_each([&](EdgeRef f, SubsegmentId s) { detail::subseg_slots(mesh).set(base + f, ids.record(s, mark)); });
     detail::subseg_slots(r).clear();
   };
-  run_both(links_and_vertices, corners_and_subsegments);
+  if (threads >= 2) {
+    run_both(links_and_vertices, corners_and_subsegments);
+  } else {
+    links_and_vertices();
+    corners_and_subsegments();
+  }
   for (std::vector<double> Mesh::*array : kTriangleData) {
     std::vector<double>& to = mesh.*array;
     const std::vector<double>& from = r.*array;

@@ -95,7 +95,8 @@ struct PartIds {
 // the part's copies of the shared records it owns (part_records) replace the mesh's, its ids are
 // mapped back (PartIds), its slots follow the mesh's. The part's arrays are
 // freed as they are copied. The cut's edges are still boundary edges afterwards (sew_cut bonds them).
-PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark);
+// With `threads` 2 or more, two threads share the copying.
+PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark, int threads = 2);
 
 // Bonds the cut's edges of the two sides again and takes `mark` off them; returns them, oriented as
 // on the side that stayed, in cut_keys order. Throws std::logic_error when a cut edge has no partner.

@@ -337,7 +337,7 @@ void refine_sides(Mesh& mesh, CutOff& cut, const Held& held, Predicates& pred, c
 PartResult join_sides(Mesh& mesh, Predicates& pred, const PartPlan& plan, CutOff& cut, PartResult& left,
                       PartResult& right, const TerminatorStart& before) {
   const std::uint64_t seam_edges = cut.cut_keys.size();
-  const PartIds ids = append_part(mesh, cut, kSeamEdge);
+  const PartIds ids = append_part(mesh, cut, kSeamEdge, plan.threads);
   const std::vector<TriangleId> seeds = sew_and_flip(mesh, pred, ids, cut, left.unsplit, right.unsplit);
   TerminatorStart seam_start = join_starts(std::move(left.end), right.end, before.locked, mesh, ids, cut);
   // The right side's small arrays and its Terminator's queue were freed into the malloc arena of
