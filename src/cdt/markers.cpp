@@ -11,8 +11,10 @@ void assign_boundary_markers(Mesh& mesh, bool input_had_markers) {
     for (const VertexId v : {s.a, s.b})
       if (mesh.marker[v] == 0) mesh.marker[v] = s.marker;
   }
+  // Links first: nearly every edge has a twin, so the corners are read only at the boundary and at
+  // dead slots, half the memory traffic of this pass over every edge.
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
-    if (mesh.corner[e] == kNone || mesh.link[e] != kNone) continue;
+    if (mesh.link[e] != kNone || mesh.corner[e] == kNone) continue;
     for (const VertexId v : {mesh.org(e), mesh.dest(e)})
       if (mesh.marker[v] == 0) mesh.marker[v] = 1;
   }
