@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "io/file_text.h"
 #include "io/text_writer.h"
 #include "mesh/mesh.h"
 
@@ -24,7 +25,7 @@ struct EleData {
 // Reads a .ele for -r. `first_index` is the numbering of the matching .node; every node must be
 // one of its `vertex_count` vertices. Triangle indices must be integers but are not checked.
 // A file of 4 MiB or more is read by two threads when `threads` is 2 or more (--threads).
-EleData read_ele_file(const std::string& path, int first_index, std::uint32_t vertex_count, int threads = 2);
+EleData read_ele_file(const std::string& path, int first_index, std::uint32_t vertex_count, int threads = kReadThreads);
 
 struct EleWriteOptions {
   int first_index = 1;

@@ -17,6 +17,7 @@
 
 #include <string>
 
+#include "io/file_text.h"
 #include "pslg/facets.h"
 
 namespace deltri {
@@ -27,6 +28,6 @@ bool is_facet_file(const std::string& path);
 
 // Throws InputError "file:line: what is wrong" on any malformed or inconsistent content. A file
 // of 4 MiB or more is read by two threads when `threads` is 2 or more (--threads).
-FacetInput read_facet_file(const std::string& path, int threads = 2);
+FacetInput read_facet_file(const std::string& path, int threads = kReadThreads);
 
 }  // namespace deltri

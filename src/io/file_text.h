@@ -18,12 +18,15 @@ struct FileText {
   const char* data() const { return bytes.get(); }
 };
 
+// The readers' thread bound when the caller gives none: a large file is read in two halves.
+inline constexpr int kReadThreads = 2;
+
 // How messages name standard input (the path "-").
 inline constexpr const char* kStandardInputName = "standard input";
 
 // The bytes of `path`, or of standard input when `path` is "-". Throws InputError(path, 0, ...)
 // when the file cannot be read (missing, a directory, a read error). A large file is read by two
 // threads when `threads` is 2 or more (--threads), else by the calling thread alone.
-FileText read_file_text(const std::string& path, int threads = 2);
+FileText read_file_text(const std::string& path, int threads = kReadThreads);
 
 }  // namespace deltri

@@ -32,7 +32,7 @@ class LineReader {
   LineReader(std::string name, FileText text);
   // Reads the file (standard input for "-"); throws InputError when it cannot. `threads` (at
   // least 1) bounds the threads that reading and parsing this text may take.
-  static LineReader open(const std::string& path, int threads = 2);
+  static LineReader open(const std::string& path, int threads = kReadThreads);
 
   const std::string& name() const { return name_; }
   int threads() const { return threads_; }
@@ -79,7 +79,7 @@ class LineReader {
   const char* end_;
   long line_ = 0;
   bool in_line_ = false;
-  int threads_ = 2;
+  int threads_ = kReadThreads;
 };
 
 }  // namespace deltri

@@ -22,7 +22,7 @@ namespace deltri {
 
 // Reads a .node file; at least three vertices are required. A large file is read and parsed by
 // two threads when `threads` is 2 or more (--threads), else by the calling thread alone.
-Pslg read_node_file(const std::string& path, int threads = 2);
+Pslg read_node_file(const std::string& path, int threads = kReadThreads);
 
 // Reads a node section (header and vertex lines) into `out`, replacing its vertices; returns the
 // header's vertex count, which must be at least 3. With `allow_empty` a count of 0 is accepted

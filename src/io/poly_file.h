@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "io/file_text.h"
 #include "io/text_writer.h"
 #include "mesh/mesh.h"
 #include "pslg/pslg.h"
@@ -21,7 +22,7 @@ namespace deltri {
 
 // Reads a .poly file (and its separate .node when its node section is empty); `threads` as for
 // read_node_file.
-Pslg read_poly_file(const std::string& path, int threads = 2);
+Pslg read_poly_file(const std::string& path, int threads = kReadThreads);
 
 // For each subsegment id, the first live edge carrying it (kNone: gone from the mesh) and
 // whether it lies on the mesh boundary: the segments a .poly (and the library) writes, in order.

@@ -163,12 +163,7 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark, int threads) {
     r.subseg.for_each([&](EdgeRef f, SubsegmentId s) { detail::subseg_slots(mesh).set(base + f, ids.record(s, mark)); });
     detail::subseg_slots(r).clear();
   };
-  if (threads >= 2) {
-    run_both(links_and_vertices, corners_and_subsegments);
-  } else {
-    links_and_vertices();
-    corners_and_subsegments();
-  }
+  run_both(threads >= 2, links_and_vertices, corners_and_subsegments);
   for (std::vector<double> Mesh::*array : kTriangleData) {
     std::vector<double>& to = mesh.*array;
     const std::vector<double>& from = r.*array;

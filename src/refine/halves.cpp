@@ -322,12 +322,7 @@ void refine_sides(Mesh& mesh, CutOff& cut, const Held& held, Predicates& pred, c
     left = refine_part(mesh, pred, left_plan, std::move(left_start));
     release_free_heap();
   };
-  if (plan.threads >= 2) {
-    run_both(refine_right, refine_left);
-  } else {
-    refine_right();
-    refine_left();
-  }
+  run_both(plan.threads >= 2, refine_right, refine_left);
   pred.counters.add(right_pred.counters);
   left.end = whole_end(std::move(left.end), whole, held, cut, right.end);
 }

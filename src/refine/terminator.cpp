@@ -182,12 +182,7 @@ TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) 
     start.pieces = SegmentPieces(mesh);
     start.apices = SegmentApices(mesh);
   };
-  if (opt.threads > 1 && mesh.triangle_slots() >= kParallelStartSlots) {
-    run_both(floor, rest);
-  } else {
-    floor();
-    rest();
-  }
+  run_both(opt.threads > 1 && mesh.triangle_slots() >= kParallelStartSlots, floor, rest);
   if (const std::uint64_t memory = memory_cap(mesh, opt.memory_budget); memory < start.steiner_cap) {
     start.steiner_cap = memory;
     start.cap_kind = CapKind::Memory;

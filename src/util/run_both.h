@@ -37,4 +37,16 @@ void run_both(First&& first, Second&& second) {
   if (failure) std::rethrow_exception(failure);
 }
 
+// run_both when `parallel`, else first() and then second() on this thread: for callers whose
+// thread budget (--threads) or amount of work decides.
+template <class First, class Second>
+void run_both(bool parallel, First&& first, Second&& second) {
+  if (parallel) {
+    run_both(first, second);
+  } else {
+    first();
+    second();
+  }
+}
+
 }  // namespace deltri
