@@ -81,7 +81,8 @@ class MortonKey {
   static constexpr double kCells = 16777215.0;  // 2^24 - 1
   static constexpr std::uint32_t kLastCell = 0xFFFFFFu;
   MortonKey() = default;
-  // The bounding box is found by two threads (when `threads` allows) over the two halves.
+  // The bounding box is found by two threads (when `threads` allows) over the two halves, each
+  // in a box of its own stack: the two results side by side share a cache line.
   MortonKey(const BigVector<Point>& pts, const std::vector<VertexKind>& kind, int threads) {
     struct Box {
       bool any = false;
@@ -89,7 +90,7 @@ class MortonKey {
       double hi_x = -1e308, hi_y = -1e308;
     } half[2];
     split_in_two(pts.size(), worth_two(threads, pts.size()), [&](std::size_t from, std::size_t to) {
-      Box& box = half[from == 0 ? 0 : 1];
+      Box box;
       for (std::size_t i = from; i < to; ++i) {
         if (kind[i] != VertexKind::Input) continue;
         const Point& p = pts[i];
@@ -97,6 +98,7 @@ class MortonKey {
         box.lo.x = std::min(box.lo.x, p.x), box.lo.y = std::min(box.lo.y, p.y);
         box.hi_x = std::max(box.hi_x, p.x), box.hi_y = std::max(box.hi_y, p.y);
       }
+      half[from == 0 ? 0 : 1] = box;
     });
     for (const Box& box : half) {
       if (!box.any) continue;
@@ -203,12 +205,18 @@ class Builder {
     const TriangleId right_slot = slot + 2 * half - 2;
     TriangleId left, right;
     if (threads > 1 && n >= kParallelThreshold) {
-      Builder other(p_, order_, corner_, link_, key_);
+      // The worker's builder lives on the worker's stack: its predicate counters, written at every
+      // test, would share a cache line with this thread's stack.
+      PredicateCounters counted;
       // An init-capture: clang before 16 cannot capture a structured binding (the fuzz build).
-      std::thread worker([&, half = half] { left = other.build(lo, half, slot, threads / 2); });
+      std::thread worker([&, half = half] {
+        Builder other(p_, order_, corner_, link_, key_);
+        left = other.build(lo, half, slot, threads / 2);
+        counted = other.pred.counters;
+      });
       right = build(lo + half, n - half, right_slot, threads - threads / 2);
       worker.join();
-      pred.counters.add(other.pred.counters);
+      pred.counters.add(counted);
     } else {
       left = build(lo, half, slot, 1);
       right = build(lo + half, n - half, right_slot, 1);

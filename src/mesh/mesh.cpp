@@ -144,10 +144,11 @@ Mesh Mesh::part_with(const std::vector<VertexId>& vertices, const std::vector<Su
 
 void Mesh::take_vertices(Mesh& from, VertexId first) {
   const std::size_t na = static_cast<std::size_t>(from.num_attributes);
-  for (VertexId v = first; v < from.vertex_count(); ++v) {
-    kind.push_back(from.kind[v]);
-    if (!from.marker.empty()) marker.push_back(from.marker[v]);
-  }
+  // Whole ranges: appending one at a time rewrote the sizes, which share cache lines with the
+  // arrays that another thread appends to at the same time (mesh/parts.cpp).
+  const auto from_first = static_cast<std::ptrdiff_t>(first), from_end = static_cast<std::ptrdiff_t>(from.vertex_count());
+  kind.insert(kind.end(), from.kind.begin() + from_first, from.kind.begin() + from_end);
+  if (!from.marker.empty()) marker.insert(marker.end(), from.marker.begin() + from_first, from.marker.begin() + from_end);
   move_appending(from.points, points, [](const Point& p) { return p; }, first);
   attributes.insert(attributes.end(), from.attributes.begin() + static_cast<std::ptrdiff_t>(first * na),
                     from.attributes.end());

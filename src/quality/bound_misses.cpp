@@ -239,8 +239,13 @@ BoundMisses first_pass(const Mesh& m, const BoundRequest& r, const AngleTest& te
   }
   const TriangleId middle{slots / 2};
   BoundMisses upper;
-  run_both([&] { mark_misses(m, r, test, middle, slots, missing, upper); },
-           [&] { mark_misses(m, r, test, TriangleId{0}, middle, missing, out); });
+  run_both(
+      [&] {
+        BoundMisses mine;  // counted on the worker's stack, not beside `out` on this one's
+        mark_misses(m, r, test, middle, slots, missing, mine);
+        upper = mine;
+      },
+      [&] { mark_misses(m, r, test, TriangleId{0}, middle, missing, out); });
   out.below_angle += upper.below_angle;
   out.above_size += upper.above_size;
   out.total += upper.total;

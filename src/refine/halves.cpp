@@ -310,12 +310,15 @@ void refine_sides(Mesh& mesh, CutOff& cut, const Held& held, Predicates& pred, c
   PartPlan left_plan{plan.depth - 1, plan.threads - plan.threads / 2, plan.parts, plan.parts, 0, false};
   PartPlan right_plan = left_plan;
   right_plan.threads = std::max(1, plan.threads / 2);
-  Predicates right_pred;
+  PredicateCounters right_counted;
   // A side's Terminator (its queue, its indices) is freed into the malloc arena of the thread that
   // ran it, which keeps it: the side refined next, or the other thread's, would hold it on top
   // (50x50 holes, two threads: 3 MiB of the peak, which sits in the last parts' refinement).
+  // The right side counts its predicates on its own thread's stack, where no other thread writes.
   const auto refine_right = [&] {
+    Predicates right_pred;
     right = refine_part(cut.part, right_pred, right_plan, std::move(right_start));
+    right_counted = right_pred.counters;
     release_free_heap();
   };
   const auto refine_left = [&] {
@@ -323,7 +326,7 @@ void refine_sides(Mesh& mesh, CutOff& cut, const Held& held, Predicates& pred, c
     release_free_heap();
   };
   run_both(plan.threads >= 2, refine_right, refine_left);
-  pred.counters.add(right_pred.counters);
+  pred.counters.add(right_counted);
   left.end = whole_end(std::move(left.end), whole, held, cut, right.end);
 }
 

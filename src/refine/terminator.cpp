@@ -268,9 +268,15 @@ std::vector<EdgeRef> Terminator::initially_encroached() {
   }
   const EdgeRef middle{edges / 2};
   std::vector<EdgeRef> upper;
-  Predicates upper_pred;
-  run_both([&] { scan(middle, edges, upper_pred, upper); }, [&] { scan(EdgeRef{0}, middle, pred_, found); });
-  pred_.counters.add(upper_pred.counters);
+  PredicateCounters upper_counted;
+  run_both(
+      [&] {
+        Predicates upper_pred;  // counting on the worker's stack, not in a line this thread writes
+        scan(middle, edges, upper_pred, upper);
+        upper_counted = upper_pred.counters;
+      },
+      [&] { scan(EdgeRef{0}, middle, pred_, found); });
+  pred_.counters.add(upper_counted);
   found.insert(found.end(), upper.begin(), upper.end());
   return found;
 }

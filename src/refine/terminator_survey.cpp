@@ -50,7 +50,13 @@ void Terminator::survey_remaining() {
   }
   const TriangleId middle{slots / 2};
   RefineReport upper;
-  run_both([&] { survey(middle, slots, upper); }, [&] { survey(TriangleId{0}, middle, report_); });
+  run_both(
+      [&] {
+        RefineReport mine;  // tallied on the worker's stack, apart from what this thread writes
+        survey(middle, slots, mine);
+        upper = std::move(mine);
+      },
+      [&] { survey(TriangleId{0}, middle, report_); });
   report_.bad_triangles_left += upper.bad_triangles_left;
   report_.oversized_left += upper.oversized_left;
   report_.skinny_left += upper.skinny_left;

@@ -78,13 +78,21 @@ class BigBytes {
 
 // Appends f(x) for every x of `from` from index `first` on to `to` and frees `from`, giving its
 // pages back as they are copied, so that the two arrays never hold their whole size at once (that
-// set the peak memory of refine/halves.cpp's join).
+// set the peak memory of refine/halves.cpp's join). `to` grows a block at a time from a buffer on
+// this thread's stack, not an element at a time: its size, rewritten at every element, sits in
+// the mesh beside the arrays that another thread appends to at once (mesh/parts.cpp).
 template <class T, class U, class F>
 void move_appending(BigVector<T>& from, BigVector<U>& to, F f, std::size_t first = 0) {
   constexpr std::size_t kChunk = std::size_t{1} << 16;
+  constexpr std::size_t kBlock = 256;
+  U block[kBlock];
   for (std::size_t i = first; i < from.size(); i += kChunk) {
     const std::size_t end = from.size() < i + kChunk ? from.size() : i + kChunk;
-    for (std::size_t k = i; k < end; ++k) to.push_back(f(from[k]));
+    for (std::size_t k = i; k < end; k += kBlock) {
+      const std::size_t n = end - k < kBlock ? end - k : kBlock;
+      for (std::size_t j = 0; j < n; ++j) block[j] = f(from[k + j]);
+      to.insert(to.end(), block, block + n);
+    }
     release_pages(from.data() + i, (end - i) * sizeof(T));
   }
   BigVector<T>().swap(from);
