@@ -115,8 +115,9 @@ std::uint64_t to_count(double x) { return x < 1.8e19 ? static_cast<std::uint64_t
 
 }  // namespace
 
-double feature_work(const Mesh& mesh) {
-  const std::vector<double> f = initial_feature_sizes(mesh);
+double feature_work(const Mesh& mesh) { return feature_work(mesh, initial_feature_sizes(mesh)); }
+
+double feature_work(const Mesh& mesh, const std::vector<double>& f) {
   std::vector<double> longest(mesh.vertex_count(), 0.0);
   double work = 0.0;
   for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
@@ -144,7 +145,11 @@ double feature_work(const Mesh& mesh) {
 }
 
 std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds) {
-  const double cap = kCapPerWork * feature_work(mesh) +
+  return steiner_cap(mesh, bounds, initial_feature_sizes(mesh));
+}
+
+std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds, const std::vector<double>& features) {
+  const double cap = kCapPerWork * feature_work(mesh, features) +
                      static_cast<double>(kCapPerVertex) * mesh.vertex_count() + 4.0 * triangles_wanted(mesh, bounds);
   return to_count(cap);
 }

@@ -117,9 +117,12 @@ inline constexpr double kBytesPerTriangle = kBytesPerSteiner / 2.0;
 // is larger (a thin triangle between two segments is as wide as the strip); each edge adds half
 // its length over the distance across it (a strip's neighbours grade down to its width); each
 // vertex adds log2(1 + longest edge / f), the octaves the mesh grades over around it.
+// `features`: initial_feature_sizes(mesh), when the caller has it already.
 double feature_work(const Mesh& mesh);
+double feature_work(const Mesh& mesh, const std::vector<double>& features);
 
 std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds);
+std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds, const std::vector<double>& features);
 // The Steiner points that fit in `memory_budget` bytes beside the mesh (UINT64_MAX for a budget of 0:
 // none).
 std::uint64_t memory_cap(const Mesh& mesh, double memory_budget);
