@@ -25,7 +25,7 @@ std::size_t mapped_size(std::size_t bytes) {
 }
 
 // Maps one huge page more than needed and trims both ends, so that the block starts on a 2 MiB
-// boundary and all its whole 2 MiB ranges can be huge pages. Null when mmap fails.
+// boundary. Null when mmap fails.
 void* map_aligned(std::size_t size) {
   const std::size_t padded = size + kHugePage;
   void* raw = mmap(nullptr, padded, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -34,9 +34,7 @@ void* map_aligned(std::size_t size) {
   const std::uintptr_t aligned = (start + kHugePage - 1) & ~(std::uintptr_t{kHugePage} - 1);
   if (aligned > start) munmap(raw, aligned - start);
   if (const std::size_t tail = padded - (aligned - start) - size) munmap(reinterpret_cast<void*>(aligned + size), tail);
-  void* block = reinterpret_cast<void*>(aligned);
-  madvise(block, size, MADV_HUGEPAGE);  // refused (no THP, old kernel): small pages then
-  return block;
+  return reinterpret_cast<void*>(aligned);
 }
 #endif
 

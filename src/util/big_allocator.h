@@ -1,9 +1,11 @@
 // Storage for the few arrays that grow with the input (coordinates, triangle corners and links,
-// sort buffers, file text). Blocks of at least kBigBlock bytes are mapped on their own, aligned to
-// 2 MiB and marked for transparent huge pages where the system offers them: a million-point run
-// otherwise takes tens of thousands of 4 KiB page faults, which cost about a fifth of its time,
-// and the random accesses of sorting and merging miss the TLB far less on 2 MiB pages. Where the
-// mapping or the advice is unavailable the block is ordinary memory, just slower.
+// sort buffers, file text). Blocks of at least kBigBlock bytes are mapped on their own and aligned
+// to 2 MiB (so that PageWarmer's ranges are whole huge pages where the system makes them anyway,
+// THP "always"). They are not advised into transparent huge pages: on the project's machine (a
+// virtual machine that hands free 8 MiB blocks back to its host) a fresh huge page is memory the
+// host must fault in again, and run after run, interleaved with other programs, small pages were
+// as fast or faster on every benchmark and far steadier (1M points 0.33 against 0.38 s, the 5M
+// square 1.23 against 1.32 s: docs/benchmarks.md, "Huge pages and the host").
 #pragma once
 
 #include <cstddef>
