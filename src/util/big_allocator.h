@@ -4,8 +4,8 @@
 // THP "always"). They are not advised into transparent huge pages: on the project's machine (a
 // virtual machine that hands free 8 MiB blocks back to its host) a fresh huge page is memory the
 // host must fault in again, and run after run, interleaved with other programs, small pages were
-// as fast or faster on every benchmark and far steadier (1M points 0.33 against 0.38 s, the 5M
-// square 1.23 against 1.32 s: docs/benchmarks.md, "Huge pages and the host").
+// as fast or faster on every benchmark and far steadier (1M points 0.34 against 0.39 s, the 5M
+// square 1.32 against 1.40 s: docs/benchmarks.md, "Huge pages and the host").
 #pragma once
 
 #include <cstddef>
