@@ -362,21 +362,30 @@ PartResult join_sides(Mesh& mesh, Predicates& pred, const PartPlan& plan, CutOff
   return joined;
 }
 
-PartResult refine_part(Mesh& mesh, Predicates& pred, const PartPlan& plan, TerminatorStart start) {
-  const std::vector<std::uint8_t> moves = plan.depth > 0 ? cut_in_two(mesh) : std::vector<std::uint8_t>{};
-  if (moves.empty()) return refine_whole_part(mesh, pred, *plan.parts, std::move(start));
+// A part cut in two by `moves` (cut_in_two's): both sides refined, then joined.
+PartResult refine_cut(Mesh& mesh, Predicates& pred, const PartPlan& plan, TerminatorStart start,
+                      const std::vector<std::uint8_t>& moves) {
   TerminatorStart before;  // what the seam goes on from: the part's cap and locks
   before.steiner_cap = start.steiner_cap;
   before.cap_kind = start.cap_kind;
   before.locked = start.locked;
-  std::vector<char> keep = vertices_needed(mesh, moves, start.pieces, 0);
-  CutOff cut = cut_off(mesh, moves, kSeamEdge, vertices_needed(mesh, moves, start.pieces, 1));
+  std::vector<char> keep, needed;
+  run_both(
+      plan.threads >= 2, [&] { needed = vertices_needed(mesh, moves, start.pieces, 1); },
+      [&] { keep = vertices_needed(mesh, moves, start.pieces, 0); });
+  CutOff cut = cut_off(mesh, moves, kSeamEdge, std::move(needed));
   Held held = hold_only(mesh, cut, std::move(keep));
   PartResult left, right;
   refine_sides(mesh, cut, held, pred, plan, std::move(start), left, right);
   hold_all(mesh, held, cut);
   release_free_heap();
   return join_sides(mesh, pred, plan, cut, left, right, before);
+}
+
+PartResult refine_part(Mesh& mesh, Predicates& pred, const PartPlan& plan, TerminatorStart start) {
+  const std::vector<std::uint8_t> moves = plan.depth > 0 ? cut_in_two(mesh) : std::vector<std::uint8_t>{};
+  if (moves.empty()) return refine_whole_part(mesh, pred, *plan.parts, std::move(start));
+  return refine_cut(mesh, pred, plan, std::move(start), moves);
 }
 
 }  // namespace
@@ -409,12 +418,13 @@ RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions&
   whole.extent = extent_of(mesh);  // the parts' scale: every vertex, the initial splits included
   const std::uint64_t cap = whole.steiner_cap;
   const PartPlan plan{depth, std::max(1, opt.threads), &one_thread, &opt, steiner_of(initial), true};
-  if (cut_in_two(mesh).empty()) {  // nothing to cut: one Terminator on the whole mesh
+  const std::vector<std::uint8_t> moves = cut_in_two(mesh);
+  if (moves.empty()) {  // nothing to cut: one Terminator on the whole mesh
     RefineReport report = Terminator(mesh, pred, opt, std::move(whole)).run();
     add_counts(report, initial);
     return report;
   }
-  RefineReport report = refine_part(mesh, pred, plan, std::move(whole)).report;
+  RefineReport report = refine_cut(mesh, pred, plan, std::move(whole), moves).report;
   report.in_halves = true;
   add_counts(report, initial);
   report.steiner_cap = cap;
