@@ -97,7 +97,8 @@ Mesh mesh_from_pslg(Pslg& pslg) {
 void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Switches& sw,
                RunReport& report) {
   Predicates pred;
-  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates, !sw.exact_input, sw.split_segments);
+  report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates, !sw.exact_input, sw.split_segments,
+                                    threads_to_use(sw));
   if (sw.convex_hull) enclose_convex_hull(mesh);
   const std::vector<Point> no_holes;
   report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull);
@@ -154,7 +155,8 @@ void rebuild(Mesh& mesh, const Pslg& pslg, const PipelineSource& source, const S
   const PreviousMesh& previous = *source.previous;
   rebuild_mesh(mesh, pred, previous.ele, previous.ele_name);
   report.rebuilt_triangles = previous.ele.triangle_count();
-  if (source.is_poly) report.segments = insert_segments(mesh, pred, pslg.segments, {}, !sw.exact_input, sw.split_segments);
+  if (source.is_poly)
+    report.segments = insert_segments(mesh, pred, pslg.segments, {}, !sw.exact_input, sw.split_segments, threads_to_use(sw));
   protect_boundary(mesh);
   if (previous.area_bounds) {
     mesh.area_bound = previous.areas;

@@ -7,10 +7,20 @@
 #include "cdt/repeated_segments.h"
 #include "cdt/segment_inserter.h"
 #include "mesh/subsegments.h"
+#include "util/run_both.h"
 
 namespace deltri {
 
 namespace {
+
+// Segments are inserted in blocks: first every segment of the block is looked for among the
+// edges, read-only and on two threads (most segments of a fine boundary are edges of its Delaunay
+// triangulation already), then they are inserted in input order, each found edge checked to be
+// there still and its slots fetched a few segments ahead. The results are those of inserting one
+// segment after the other; the block bounds what the look-ups hold.
+constexpr std::uint32_t kLookBlock = 32768;
+constexpr std::uint32_t kLeastLookShared = 4096;  // fewer are looked up on this thread alone
+constexpr std::uint32_t kFetchAhead = 8;
 
 // A repeated segment's non-zero marker reaches the earlier segment's pieces whose marker is 0,
 // the same rule as for pieces shared by overlapping segments.
@@ -29,7 +39,7 @@ void pass_markers(Mesh& mesh, const std::vector<std::pair<std::uint32_t, int>>& 
 
 SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Segment>& segments,
                               const std::vector<std::pair<VertexId, VertexId>>& duplicates,
-                              bool snap_to_segments, bool split_to_conform) {
+                              bool snap_to_segments, bool split_to_conform, int threads) {
   SegmentReport report;
   mesh.enable_subsegments();
   std::vector<VertexId> kept(mesh.vertex_count());
@@ -55,15 +65,28 @@ SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Ps
   mesh.reserve_constrained_edges(2 * segments.size());  // both sides of each, split or not
   SegmentInserter inserter(mesh, pred, snap_to_segments, split_to_conform);
   std::vector<std::pair<std::uint32_t, int>> repeated_markers;
-  for (std::uint32_t i = 0; i < segments.size(); ++i) {
-    if (ends[i].first == kNone) continue;
-    const int marker = segments[i].marker;
-    if (repeat_of[i] != kNone) {
-      ++report.repeated;
-      if (segments[repeat_of[i]].marker == 0 && marker != 0) repeated_markers.emplace_back(repeat_of[i], marker);
-      continue;
+  const auto piece = [&](std::uint32_t i) { return Piece{ends[i].first, ends[i].second, segments[i].marker, i}; };
+  std::vector<EdgeFound> found;
+  for (std::uint32_t block = 0; block < segments.size(); block += kLookBlock) {
+    const std::uint32_t end = static_cast<std::uint32_t>(std::min<std::size_t>(segments.size(), block + kLookBlock));
+    found.assign(end - block, EdgeFound{});
+    const auto look = [&](std::uint32_t from, std::uint32_t to) {
+      for (std::uint32_t i = from; i < to; ++i)
+        if (ends[i].first != kNone && repeat_of[i] == kNone) found[i - block] = inserter.look_ahead(piece(i));
+    };
+    const std::uint32_t mid = block + (end - block) / 2;
+    run_both(threads >= 2 && end - block >= kLeastLookShared, [&] { look(mid, end); }, [&] { look(block, mid); });
+    for (std::uint32_t i = block; i < end; ++i) {
+      if (i + kFetchAhead < end) inserter.fetch(found[i + kFetchAhead - block]);
+      if (ends[i].first == kNone) continue;
+      const int marker = segments[i].marker;
+      if (repeat_of[i] != kNone) {
+        ++report.repeated;
+        if (segments[repeat_of[i]].marker == 0 && marker != 0) repeated_markers.emplace_back(repeat_of[i], marker);
+        continue;
+      }
+      inserter.insert(piece(i), found[i - block]);
     }
-    inserter.insert({ends[i].first, ends[i].second, marker, i});
   }
   pass_markers(mesh, repeated_markers);
   drop_dead_subsegments(mesh);

@@ -38,8 +38,10 @@ struct SegmentReport {
 // (segment_inserter.h) of a segment's interior splits the segment there, as one exactly on it does.
 // With split_to_conform (-s), a segment missing from the triangulation is split at its midpoint,
 // recursively, until its pieces are edges, instead of flipping edges to make it one.
+// With threads >= 2 the segments are looked for among the edges on two threads first; the result
+// is the same for any count.
 SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Segment>& segments,
                               const std::vector<std::pair<VertexId, VertexId>>& duplicates,
-                              bool snap_to_segments = true, bool split_to_conform = false);
+                              bool snap_to_segments = true, bool split_to_conform = false, int threads = 1);
 
 }  // namespace deltri

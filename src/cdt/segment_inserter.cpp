@@ -7,6 +7,8 @@
 #include "geometry/constructions.h"
 #include "geometry/exact_determinants.h"
 #include "mesh/subsegments.h"
+#include "mesh/vertex_edges.h"
+#include "util/prefetch.h"
 
 namespace deltri {
 
@@ -16,6 +18,46 @@ void SegmentInserter::insert(const Piece& segment) {
     const Piece piece = pending_.back();
     pending_.pop_back();
     if (piece.u != piece.v) process(piece);
+  }
+}
+
+void SegmentInserter::insert(const Piece& segment, const EdgeFound& found) {
+  const Mesh& mesh = ed_.mesh;
+  const EdgeRef e = found.edge;
+  const bool still = e != kNone && mesh.corner[e] == segment.u && mesh.dest(e) == segment.v &&
+                     mesh.apex(e) == found.apex && mesh.link[e] == found.twin &&
+                     (found.twin == kNone || mesh.apex(found.twin) == found.twin_apex) &&
+                     ed_.leaving(segment.u) != kNone && ed_.leaving(segment.v) != kNone;
+  if (!still) return insert(segment);
+  // What process() does when first_step_to_vertex finds the edge u->v and no apex beside it is
+  // near enough to snap to (near_vertex looks at u, v and the apex only: a fresh segment has no
+  // snapped pairs yet).
+  record(e, segment);
+}
+
+EdgeFound SegmentInserter::look_ahead(const Piece& segment) const {
+  const Mesh& mesh = ed_.mesh;
+  const EdgeRef out = ed_.leaving(segment.u);
+  if (out == kNone || ed_.leaving(segment.v) == kNone) return {};
+  EdgeRef edge = kNone;
+  for_each_around(mesh, out, [&](EdgeRef e) {
+    if (mesh.dest(e) == segment.v) edge = e;
+  });
+  if (edge == kNone) return {};
+  const EdgeRef twin = mesh.link[edge];
+  const EdgeFound found{edge, twin, mesh.apex(edge), twin == kNone ? VertexId{kNone} : mesh.apex(twin)};
+  if (snap_ && near_vertex(segment, {found.apex, found.twin_apex}) != kNone) return {};
+  return found;
+}
+
+void SegmentInserter::fetch(const EdgeFound& found) const {
+  if (found.edge == kNone) return;
+  const Mesh& mesh = ed_.mesh;
+  for (const EdgeRef e : {found.edge, found.twin}) {
+    if (e == kNone) continue;
+    prefetch(mesh.corners_at(triangle_of(e)));
+    prefetch(&mesh.link[e]);
+    prefetch(mesh.subseg.home_of(e));
   }
 }
 

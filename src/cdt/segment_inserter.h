@@ -35,6 +35,14 @@ struct InsertionCounts {
 // how much a move along that axis moves the point off the segment's line.
 inline constexpr double kSnapUlps = 4.0;
 
+// What a look at the triangulation found for a segment u-v before its turn (look_ahead): the edge
+// u->v and its twin, with the apices beside them then, where the segment would be recorded on that
+// edge at once (no vertex near enough to snap to); else edge is kNone.
+struct EdgeFound {
+  EdgeRef edge = kNone, twin = kNone;
+  VertexId apex = kNone, twin_apex = kNone;
+};
+
 class SegmentInserter {
  public:
   // With snap_to_segments, a vertex within kSnapUlps of the open segment being inserted splits it
@@ -47,6 +55,16 @@ class SegmentInserter {
       : ed_(mesh, pred), recovery_(ed_), snap_(snap_to_segments), conform_(split_to_conform) {}
 
   void insert(const Piece& segment);
+  // insert(segment), given what look_ahead found for it before the segments since were inserted:
+  // where the triangulation still has that edge with those apices, insert() would record the
+  // segment there and do nothing else, so that is done without the search (identical results).
+  void insert(const Piece& segment, const EdgeFound& found);
+  // The segment's edge, if the triangulation has it now and the segment would be recorded on it
+  // at once. Reads only, so several threads may look at segments at once while none inserts.
+  EdgeFound look_ahead(const Piece& segment) const;
+  // Starts fetching what inserting `found` reads and writes: its slots and the subsegment table's
+  // entries, cache misses in arrays of megabytes.
+  void fetch(const EdgeFound& found) const;
   const InsertionCounts& counts() const { return counts_; }
 
  private:

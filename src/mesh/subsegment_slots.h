@@ -37,6 +37,11 @@ class SubsegmentSlots {
   bool has(std::size_t e) const { return (bits_[e >> 6] >> (e & 63)) & 1; }
   // The word of bits holding slot e's, to prefetch.
   const std::uint64_t* bits_at(std::size_t e) const { return &bits_[e >> 6]; }
+  // Where the table looks first for slot e's value, to prefetch before a write (nullptr while
+  // the table is empty).
+  const void* home_of(std::size_t e) const {
+    return table_.empty() ? nullptr : &table_[home(static_cast<std::uint32_t>(e))];
+  }
 
   std::size_t size() const { return size_; }  // slots, 0 while the mesh has no segments
   bool empty() const { return size_ == 0; }
