@@ -78,7 +78,7 @@ void SubsegmentSlots::resize(std::size_t n) {
     for_each([&](EdgeRef e, SubsegmentId) {
       if (e >= n) dropped.push_back(e);
     });
-    for (std::uint32_t e : dropped) erase(e);
+    erase_all(dropped);
   }
   bits_.resize((n + 63) / 64, 0);
   size_ = n;

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "mesh/ids.h"
+#include "util/prefetch.h"
 
 namespace deltri {
 
@@ -49,14 +50,16 @@ class SubsegmentSlots {
   // Bytes held (bits and table), for the memory accounting in tests and docs.
   std::size_t bytes() const { return bits_.capacity() * sizeof(std::uint64_t) + table_.capacity() * sizeof(Entry); }
 
-  // f(e, id) for every slot e that carries a value, e increasing.
+  // f(e, id) for every slot e that carries a value, e increasing. The values are scattered over
+  // the table: a second walk over the bits runs kFetchAhead slots ahead, fetching their entries.
   template <class F>
   void for_each(F&& f) const {
-    for (std::size_t w = 0; w < bits_.size(); ++w)
-      for (std::uint64_t b = bits_[w]; b != 0; b &= b - 1) {
-        const std::size_t e = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
-        f(EdgeRef{static_cast<std::uint32_t>(e)}, find(e));
-      }
+    SetSlots ahead(bits_);
+    for (unsigned k = 0; k < kFetchAhead && ahead.next(); ++k) fetch_home(ahead.slot);
+    for (SetSlots at(bits_); at.next();) {
+      if (ahead.next()) fetch_home(ahead.slot);
+      f(EdgeRef{static_cast<std::uint32_t>(at.slot)}, find(at.slot));
+    }
   }
 
   // Equal contents slot by slot (tests compare meshes and snapshots).
@@ -74,6 +77,25 @@ class SubsegmentSlots {
     std::uint32_t slot;  // kNone: empty
     SubsegmentId id;
   };
+
+  // The set slots in increasing order: next() moves to the next one (false past the last).
+  struct SetSlots {
+    explicit SetSlots(const std::vector<std::uint64_t>& bits) : bits(bits) {}
+    bool next() {
+      while (word == 0) {
+        if (++w >= bits.size()) return false;
+        word = bits[w];
+      }
+      slot = w * 64 + static_cast<std::size_t>(std::countr_zero(word));
+      word &= word - 1;
+      return true;
+    }
+    const std::vector<std::uint64_t>& bits;
+    std::size_t w = static_cast<std::size_t>(-1), slot = 0;
+    std::uint64_t word = 0;
+  };
+  static constexpr unsigned kFetchAhead = 32;
+  void fetch_home(std::size_t e) const { prefetch(table_.data() + home(static_cast<std::uint32_t>(e))); }
 
   std::size_t home(std::uint32_t slot) const {
     // Fibonacci hashing: consecutive slots land far apart.
@@ -104,6 +126,17 @@ class SubsegmentSlots {
     set_triangle_slowly(e, s);
   }
   void set_triangle_slowly(std::size_t e, SubsegmentId s);
+  // Clears every slot listed (each carrying a value, none twice), fetching the table entries
+  // kFetchAhead slots ahead: one by one, each erase waited for a cache miss.
+  template <class Slots>
+  void erase_all(const Slots& slots) {
+    const std::size_t n = std::size(slots);
+    for (std::size_t i = 0; i < n && i < kFetchAhead; ++i) fetch_home(slots[i]);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i + kFetchAhead < n) fetch_home(slots[i + kFetchAhead]);
+      erase(slots[i]);
+    }
+  }
   // Room in the table for `more` entries beyond those held, without a rehash on the way.
   void reserve_entries(std::size_t more);
   void insert(std::size_t e, SubsegmentId s);
@@ -139,6 +172,10 @@ class SubsegmentSlots::Editor {
  public:
   void set(std::size_t e, SubsegmentId s) { slots_->set(e, s); }
   void set_triangle(std::size_t e, SubsegmentId s) { slots_->set_triangle(e, s); }
+  template <class Slots>
+  void erase_all(const Slots& slots) {
+    slots_->erase_all(slots);
+  }
   void reserve_entries(std::size_t more) { slots_->reserve_entries(more); }
   void assign(std::size_t n) { slots_->assign(n); }
   void resize(std::size_t n) { slots_->resize(n); }
@@ -164,7 +201,7 @@ void SubsegmentSlots::remap(F&& f) {
     x.id = f(x.id);
     if (x.id == kNone) cleared.push_back(x.slot);
   }
-  for (std::uint32_t e : cleared) erase(e);
+  erase_all(cleared);
 }
 
 }  // namespace deltri

@@ -62,7 +62,7 @@ std::size_t drop_unused_subsegments(Mesh& mesh) {
       ++dropped;
     }
   // Cleared before renumbering.
-  for (EdgeRef e : dead) detail::subseg_slots(mesh).set(e, kNone);
+  detail::subseg_slots(mesh).erase_all(dead);
   drop_dead_subsegments(mesh);
   return dropped;
 }
