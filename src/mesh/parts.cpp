@@ -63,9 +63,9 @@ std::size_t list_part_ids(const Mesh& mesh, CutOff& cut, const std::vector<std::
 
 // Copies the part's slots: corners and subsegments in the part's ids, links inside the part,
 // subsegments (cut edges marked on both sides), and the triangle data; records which records the
-// part owns and which lie on the cut.
-void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, const std::vector<TriangleId>& slot,
-               SubsegmentId mark) {
+// part owns and which lie on the cut. Returns the moved slots that carry a subsegment in the mesh.
+std::vector<EdgeRef> copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves,
+                               const std::vector<TriangleId>& slot, SubsegmentId mark, std::size_t carried) {
   const std::vector<VertexId> vertex = cut.vertex_map(mesh.vertex_count());
   const std::vector<SubsegmentId> record_of = local_ids(cut.records, mesh.subsegments.size());
   Mesh& r = cut.part;
@@ -76,6 +76,10 @@ void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, 
     (r.*kTriangleData[k]).resize(static_cast<std::size_t>(n) * width[k]);
   }
   const auto record = [&](SubsegmentId s) { return s < mesh.subsegments.size(); };
+  std::vector<EdgeRef> leaving;  // the mesh's slots whose subsegments the part takes
+  std::vector<std::pair<EdgeRef, SubsegmentId>> values;  // the part's slots that carry one
+  leaving.reserve(carried);
+  values.reserve(carried);
   for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!moves[t] || !mesh.is_live(t)) continue;
     for (unsigned i = 0; i < 3; ++i) {
@@ -85,13 +89,14 @@ void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, 
       detail::corner_slots(r)[f] = vertex[mesh.corner[e]];
       detail::link_slots(r)[f] = twin == kNone || on_cut ? kNone : edge_of(slot[triangle_of(twin)], side_of(twin));
       SubsegmentId s = mesh.subseg[e];
+      if (s != kNone) leaving.push_back(e);
       if (on_cut) cut.cut_keys.push_back(edge_key(mesh.corner[twin], mesh.corner[lnext(twin)]));
       if (record(s)) (on_cut ? cut.cut_records : cut.part_records)[s] = 1;
       if (on_cut && s == kNone) {
         s = mark;
         detail::subseg_slots(mesh).set(twin, mark);
       }
-      detail::subseg_slots(r).set(f, record(s) ? record_of[s] : s);
+      if (s != kNone) values.emplace_back(f, record(s) ? record_of[s] : s);
     }
     for (std::size_t k = 0; k < std::size(kTriangleData); ++k) {
       const auto& from = mesh.*kTriangleData[k];
@@ -99,6 +104,8 @@ void copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::uint8_t>& moves, 
                   (r.*kTriangleData[k]).begin() + static_cast<std::ptrdiff_t>(slot[t] * width[k]));
     }
   }
+  detail::subseg_slots(r).insert_all(values);
+  return leaving;
 }
 
 }  // namespace
@@ -119,15 +126,13 @@ CutOff cut_off(Mesh& mesh, const std::vector<std::uint8_t>& moves, SubsegmentId 
   detail::corner_slots(r).resize(3 * static_cast<std::size_t>(n));
   detail::link_slots(r).resize(r.corner.size());
   detail::subseg_slots(r).resize(r.corner.size());
-  detail::subseg_slots(r).reserve_entries(carried);  // and the cut's marks, a few more
-  copy_part(mesh, cut, moves, slot, mark);
+  const std::vector<EdgeRef> leaving = copy_part(mesh, cut, moves, slot, mark, carried);
   std::sort(cut.cut_keys.begin(), cut.cut_keys.end());
-  // The moved triangles' slots die here: kill_triangle unlinks the other side's cut edges, and
-  // their subsegments, which the part holds now, leave the mesh's table.
-  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
-    if (!moves[t] || !mesh.is_live(t)) continue;
-    detail::kill_with_subsegments(mesh, t);
-  }
+  // The moved triangles' slots die here: their subsegments, which the part holds now, leave the
+  // mesh's table, and kill_triangle unlinks the other side's cut edges.
+  detail::subseg_slots(mesh).erase_all(leaving);
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
+    if (moves[t] && mesh.is_live(t)) mesh.kill_triangle(t);
   detail::subseg_slots(mesh).fit();
   return cut;
 }
@@ -159,8 +164,10 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark, int threads) {
     move_appending(detail::corner_slots(r), detail::corner_slots(mesh), [&](VertexId v) { return ids.vertex(v); });
     const std::size_t base = edge_of(ids.triangle_base, 0);
     detail::subseg_slots(mesh).resize(base + r.subseg.size());
-    detail::subseg_slots(mesh).reserve_entries(r.subseg.count());
-    r.subseg.for_each([&](EdgeRef f, SubsegmentId s) { detail::subseg_slots(mesh).set(base + f, ids.record(s, mark)); });
+    std::vector<std::pair<EdgeRef, SubsegmentId>> values;
+    values.reserve(r.subseg.count());
+    r.subseg.for_each([&](EdgeRef f, SubsegmentId s) { values.emplace_back(EdgeRef{static_cast<std::uint32_t>(base + f)}, ids.record(s, mark)); });
+    detail::subseg_slots(mesh).insert_all(values);
     detail::subseg_slots(r).clear();
   };
   run_both(threads >= 2, links_and_vertices, corners_and_subsegments);

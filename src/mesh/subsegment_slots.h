@@ -126,6 +126,18 @@ class SubsegmentSlots {
     set_triangle_slowly(e, s);
   }
   void set_triangle_slowly(std::size_t e, SubsegmentId s);
+  // Gives each slot e of the (e, s) listed the value s (no slot carrying one yet, none twice, no s
+  // kNone), as set(e, s) one after the other would, fetching the table entries kFetchAhead ahead.
+  template <class Pairs>
+  void insert_all(const Pairs& pairs) {
+    const std::size_t n = std::size(pairs);
+    reserve_entries(n);
+    for (std::size_t i = 0; i < n && i < kFetchAhead; ++i) fetch_home(pairs[i].first);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i + kFetchAhead < n) fetch_home(pairs[i + kFetchAhead].first);
+      insert(pairs[i].first, pairs[i].second);
+    }
+  }
   // Clears every slot listed (each carrying a value, none twice), fetching the table entries
   // kFetchAhead slots ahead: one by one, each erase waited for a cache miss.
   template <class Slots>
@@ -175,6 +187,10 @@ class SubsegmentSlots::Editor {
   template <class Slots>
   void erase_all(const Slots& slots) {
     slots_->erase_all(slots);
+  }
+  template <class Pairs>
+  void insert_all(const Pairs& pairs) {
+    slots_->insert_all(pairs);
   }
   void reserve_entries(std::size_t more) { slots_->reserve_entries(more); }
   void assign(std::size_t n) { slots_->assign(n); }
