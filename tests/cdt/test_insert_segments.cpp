@@ -1,8 +1,12 @@
 // Segment insertion: every input segment ends up as a chain of constrained edges, the mesh stays
 // valid and constrained Delaunay, and each kind of input repair is counted.
+#include <algorithm>
 #include <random>
+#include <set>
 
 #include "cdt/holes_and_regions.h"
+#include "cdt/segment_inserter.h"
+#include "mesh/subsegments.h"
 #include "cdt_fixture.h"
 #include "harness/id_literals.h"
 
@@ -259,5 +263,67 @@ TEST(cdt_grid_segment_soup_with_every_degeneracy) {
     for (const auto& s : segs)
       if (s.a != s.b) CHECK(connected(all, s.a, s.b));
     CHECK_NEAR(area(b.mesh), 81.0, 1e-11);
+  }
+}
+
+// insert_segments looks for every segment among the edges first (read-only, on two threads when it
+// may), then inserts them in input order with what it found. The mesh must be the one that
+// inserting the segments one after the other gives (SegmentInserter alone), slot for slot, with one
+// thread and with two: an input where most segments are edges of the Delaunay triangulation (as on
+// a fine boundary) and some cross them, flipping and splitting edges found earlier, over several
+// blocks of look-ups.
+TEST(cdt_found_edges_give_the_mesh_of_one_segment_after_the_other) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point> pts;
+  for (int i = 0; i < 50000; ++i) pts.push_back({u(rng), u(rng)});
+  Mesh dt;
+  dt.points.assign(pts.begin(), pts.end());
+  dt.kind.assign(pts.size(), VertexKind::Input);
+  delaunay_triangulate(dt, DelaunayAlgorithm::DivideAndConquer, 1);
+  std::set<std::pair<VertexId, VertexId>> taken;
+  std::vector<Pslg::Segment> segments;
+  const auto add = [&](VertexId a, VertexId b) {
+    if (a == b || !taken.insert({std::min(a, b), std::max(a, b)}).second) return;
+    segments.push_back({a, b, static_cast<int>(segments.size() % 5)});
+  };
+  for (std::uint32_t e = 0; e < dt.corner.size(); ++e)  // about half the edges, either way round
+    if (dt.corner[e] != kNone && rng() % 3 == 0) add(dt.org(EdgeRef{e}), dt.dest(EdgeRef{e}));
+  for (std::size_t i = segments.size() / 3; i < segments.size(); i += 97)  // chords among them
+    add(VertexId{static_cast<std::uint32_t>(rng() % pts.size())}, VertexId{static_cast<std::uint32_t>(rng() % pts.size())});
+  std::shuffle(segments.begin(), segments.end(), rng);
+  CHECK(segments.size() > 2 * 32768);  // over two blocks of look-ups
+
+  const auto fresh = [&](Mesh& m) {
+    m.points.assign(pts.begin(), pts.end());
+    m.kind.assign(pts.size(), VertexKind::Input);
+    return delaunay_triangulate(m, DelaunayAlgorithm::DivideAndConquer, 1);
+  };
+  Mesh one_by_one;
+  fresh(one_by_one);
+  one_by_one.enable_subsegments();
+  Predicates pred;
+  SegmentInserter inserter(one_by_one, pred, true, false);
+  for (std::uint32_t i = 0; i < segments.size(); ++i)
+    inserter.insert(Piece{VertexId{segments[i].a}, VertexId{segments[i].b}, segments[i].marker, i});
+  drop_dead_subsegments(one_by_one);
+  CHECK(inserter.counts().crossings > 100);  // the chords crossed what was there
+
+  for (int threads : {1, 2}) {
+    Mesh m;
+    const DelaunayReport report = fresh(m);
+    Predicates p;
+    insert_segments(m, p, segments, report.duplicates, true, false, threads);
+    CHECK(m.corner == one_by_one.corner);
+    CHECK(m.link == one_by_one.link);
+    CHECK(m.subseg == one_by_one.subseg);
+    CHECK_EQ(m.subsegments.size(), one_by_one.subsegments.size());
+    bool same = m.subsegments.size() == one_by_one.subsegments.size();
+    for (std::size_t s = 0; same && s < m.subsegments.size(); ++s) {
+      const Subsegment &x = m.subsegments[s], &y = one_by_one.subsegments[s];
+      same = x.a == y.a && x.b == y.b && x.marker == y.marker && x.segment == y.segment;
+    }
+    CHECK(same);
+    CHECK(mesh_valid(m));
   }
 }
