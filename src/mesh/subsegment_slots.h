@@ -95,7 +95,7 @@ class SubsegmentSlots {
     std::uint64_t word = 0;
   };
   static constexpr unsigned kFetchAhead = 32;
-  void fetch_home(std::size_t e) const { prefetch(table_.data() + home(static_cast<std::uint32_t>(e))); }
+  void fetch_home(std::size_t e) const { prefetch(home_of(e)); }
 
   std::size_t home(std::uint32_t slot) const {
     // Fibonacci hashing: consecutive slots land far apart.
