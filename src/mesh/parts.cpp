@@ -51,6 +51,7 @@ std::size_t list_part_ids(const Mesh& mesh, CutOff& cut, const std::vector<std::
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
       keep[mesh.corner[e]] = 1;
+      mesh.subseg.fetch_ahead(e);
       if (!mesh.subseg.has(e)) continue;
       ++carried;
       if (mesh.subseg[e] < records.size()) records[mesh.subseg[e]] = 1;
@@ -85,6 +86,7 @@ std::vector<EdgeRef> copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::u
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i), f = edge_of(slot[t], i);
       const EdgeRef twin = mesh.link[e];
+      mesh.subseg.fetch_ahead(e);
       const bool on_cut = twin != kNone && !moves[triangle_of(twin)];
       detail::corner_slots(r)[f] = vertex[mesh.corner[e]];
       detail::link_slots(r)[f] = twin == kNone || on_cut ? kNone : edge_of(slot[triangle_of(twin)], side_of(twin));
@@ -278,6 +280,7 @@ Held hold_only(Mesh& mesh, const CutOff& cut, std::vector<char> keep) {
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
       keep[mesh.corner[e]] = 1;
+      mesh.subseg.fetch_ahead(e);
       if (mesh.subseg.has(e) && mesh.subseg[e] < records.size()) records[mesh.subseg[e]] = 1;
     }
   }

@@ -38,6 +38,13 @@ class SubsegmentSlots {
   bool has(std::size_t e) const { return (bits_[e >> 6] >> (e & 63)) & 1; }
   // The word of bits holding slot e's, to prefetch.
   const std::uint64_t* bits_at(std::size_t e) const { return &bits_[e >> 6]; }
+  // For loops that read the values slot after slot: starts fetching the table entry of the slot
+  // kSlotsAhead further on, if it carries one (a bit test), so that its lookup there finds it in
+  // cache instead of waiting for memory.
+  void fetch_ahead(std::size_t e) const {
+    const std::size_t f = e + kSlotsAhead;
+    if (f < size_ && has(f)) prefetch(home_of(f));
+  }
   // Where the table looks first for slot e's value, to prefetch before a write (nullptr while
   // the table is empty).
   const void* home_of(std::size_t e) const {
@@ -95,6 +102,7 @@ class SubsegmentSlots {
     std::uint64_t word = 0;
   };
   static constexpr unsigned kFetchAhead = 32;
+  static constexpr std::size_t kSlotsAhead = 96;  // about 16 set slots on a refined mesh
   void fetch_home(std::size_t e) const { prefetch(home_of(e)); }
 
   std::size_t home(std::uint32_t slot) const {

@@ -107,6 +107,7 @@ std::vector<char> vertices_needed(const Mesh& mesh, const std::vector<std::uint8
     for (unsigned i = 0; i < 3; ++i) {
       const EdgeRef e = edge_of(t, i);
       keep[mesh.corner[e]] = 1;
+      mesh.subseg.fetch_ahead(e);
       if (mesh.subseg[e] < pieces.of_subsegment.size()) keep_ends(pieces.of_subsegment[mesh.subseg[e]]);
     }
   }

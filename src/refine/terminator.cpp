@@ -268,6 +268,7 @@ void Terminator::split_initial_encroachments() {
 std::vector<EdgeRef> Terminator::initially_encroached() {
   const auto scan = [this](EdgeRef from, EdgeRef to, Predicates& pred, std::vector<EdgeRef>& out) {
     for (EdgeRef e = from; e < to; ++e) {
+      mesh_.subseg.fetch_ahead(e);
       if (mesh_.corner[e] == kNone || !mesh_.subseg.has(e)) continue;
       if (mesh_.link[e] != kNone && mesh_.link[e] < e) continue;
       if (is_splittable(e) && is_encroached(mesh_, pred, e, rule_)) out.push_back(e);
