@@ -106,7 +106,7 @@ std::vector<EdgeRef> copy_part(Mesh& mesh, CutOff& cut, const std::vector<std::u
                   (r.*kTriangleData[k]).begin() + static_cast<std::ptrdiff_t>(slot[t] * width[k]));
     }
   }
-  detail::subseg_slots(r).insert_all(values);
+  detail::subseg_slots(r).set_all(values);
   return leaving;
 }
 
@@ -169,7 +169,7 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark, int threads) {
     std::vector<std::pair<EdgeRef, SubsegmentId>> values;
     values.reserve(r.subseg.count());
     r.subseg.for_each([&](EdgeRef f, SubsegmentId s) { values.emplace_back(EdgeRef{static_cast<std::uint32_t>(base + f)}, ids.record(s, mark)); });
-    detail::subseg_slots(mesh).insert_all(values);
+    detail::subseg_slots(mesh).set_all(values);
     detail::subseg_slots(r).clear();
   };
   run_both(threads >= 2, links_and_vertices, corners_and_subsegments);

@@ -134,27 +134,26 @@ class SubsegmentSlots {
     set_triangle_slowly(e, s);
   }
   void set_triangle_slowly(std::size_t e, SubsegmentId s);
-  // Gives each slot e of the (e, s) listed the value s (no slot carrying one yet, none twice, no s
-  // kNone), as set(e, s) one after the other would, fetching the table entries kFetchAhead ahead.
+  // set(e, s) for each (e, s) listed, in order, fetching the table entries kFetchAhead pairs
+  // ahead: one by one, each write waited for a cache miss in a table of megabytes.
   template <class Pairs>
-  void insert_all(const Pairs& pairs) {
+  void set_all(const Pairs& pairs) {
     const std::size_t n = std::size(pairs);
     reserve_entries(n);
     for (std::size_t i = 0; i < n && i < kFetchAhead; ++i) fetch_home(pairs[i].first);
     for (std::size_t i = 0; i < n; ++i) {
       if (i + kFetchAhead < n) fetch_home(pairs[i + kFetchAhead].first);
-      insert(pairs[i].first, pairs[i].second);
+      set(pairs[i].first, pairs[i].second);
     }
   }
-  // Clears every slot listed (each carrying a value, none twice), fetching the table entries
-  // kFetchAhead slots ahead: one by one, each erase waited for a cache miss.
+  // set(e, kNone) for each slot listed, fetching ahead likewise.
   template <class Slots>
   void erase_all(const Slots& slots) {
     const std::size_t n = std::size(slots);
     for (std::size_t i = 0; i < n && i < kFetchAhead; ++i) fetch_home(slots[i]);
     for (std::size_t i = 0; i < n; ++i) {
       if (i + kFetchAhead < n) fetch_home(slots[i + kFetchAhead]);
-      erase(slots[i]);
+      if (has(slots[i])) erase(slots[i]);
     }
   }
   // Room in the table for `more` entries beyond those held, without a rehash on the way.
@@ -197,8 +196,8 @@ class SubsegmentSlots::Editor {
     slots_->erase_all(slots);
   }
   template <class Pairs>
-  void insert_all(const Pairs& pairs) {
-    slots_->insert_all(pairs);
+  void set_all(const Pairs& pairs) {
+    slots_->set_all(pairs);
   }
   void reserve_entries(std::size_t more) { slots_->reserve_entries(more); }
   void assign(std::size_t n) { slots_->assign(n); }

@@ -96,9 +96,10 @@ TEST(every_slot_set_then_cleared_in_turn) {
   CHECK_EQ(m.subseg.count(), 0u);
 }
 
-// erase_all clears a list of slots at once (fetching ahead in the table): the same contents as
-// clearing them one by one, in small tables where runs wrap past the end and in large ones.
-TEST(erase_all_matches_clearing_one_by_one) {
+// erase_all and set_all write a list of slots at once (fetching ahead in the table): the same
+// contents as writing them one by one, in small tables where runs wrap past the end and in large
+// ones.
+TEST(erase_all_and_set_all_match_writing_one_by_one) {
   std::mt19937 rng(11);
   for (std::uint32_t triangles : {3u, 50u, 5000u}) {
     Mesh m = slots_mesh(triangles);
@@ -115,9 +116,19 @@ TEST(erase_all_matches_clearing_one_by_one) {
         ref[e] = kNone;
       }
     std::shuffle(cleared.begin(), cleared.end(), rng);
+    cleared.push_back(cleared.front());  // a slot already cleared is left alone
     detail::subseg_slots(m).erase_all(cleared);
     CHECK(matches(m, ref));
     CHECK(!cleared.empty());
+    // set_all: new values on set and unset slots alike, a slot written twice keeping the later.
+    std::vector<std::pair<EdgeRef, SubsegmentId>> values;
+    for (std::size_t e = 0; e < ref.size(); ++e)
+      if (rng() % 2 == 0) values.emplace_back(EdgeRef{static_cast<std::uint32_t>(e)}, id_of(1000 + e % 89));
+    std::shuffle(values.begin(), values.end(), rng);
+    values.emplace_back(values.front().first, id_of(7));
+    for (const auto& [e, id] : values) ref[e] = id;
+    detail::subseg_slots(m).set_all(values);
+    CHECK(matches(m, ref));
   }
 }
 
