@@ -109,10 +109,8 @@ double largest_coordinate(const Box& box) {
 constexpr double kMaxReservedTriangles = 3.2e7;
 constexpr double kQualityGrowth = 6.0;
 
-void reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
-  const double wanted = triangles_wanted(mesh, opt.size);
-  const double slots = mesh.triangle_slots();
-  const double added = wanted > 0.0 ? 2.0 * wanted : opt.angle.asked() ? (kQualityGrowth - 1.0) * slots : 0.0;
+// Room for `slots` triangles and `added` more, with a vertex for every two added.
+void reserve_room(Mesh& mesh, double slots, double added) {
   if (!(added > 0.0) || slots + added > kMaxReservedTriangles) return;  // let such runs grow as needed
   const std::size_t triangles = static_cast<std::size_t>(slots + added);
   const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(added / 2.0);
@@ -123,6 +121,12 @@ void reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
   } catch (const std::bad_alloc&) {
     // address space is short (a ulimit): grow as needed instead
   }
+}
+
+void reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
+  const double wanted = triangles_wanted(mesh, opt.size);
+  const double slots = mesh.triangle_slots();
+  reserve_room(mesh, slots, wanted > 0.0 ? 2.0 * wanted : opt.angle.asked() ? (kQualityGrowth - 1.0) * slots : 0.0);
 }
 
 template <class Array>
@@ -161,6 +165,13 @@ bool proven_for(const RefineOptions& opt, double input_angle) {
 
 }  // namespace
 
+void reserve_ahead_of_refinement(Mesh& mesh, const RefineOptions& opt) {
+  if (!opt.angle.asked() || opt.size.any()) return;  // size bounds are estimated on the domain
+  // A Delaunay triangulation of n vertices has about 2n triangles.
+  const double slots = 2.0 * mesh.vertex_count();
+  reserve_room(mesh, slots, (kQualityGrowth - 1.0) * slots);
+}
+
 Box extent_of(const Mesh& mesh) {
   Box box;
   for (const Point& p : mesh.points)
@@ -180,14 +191,15 @@ TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) 
   const bool may_cap = opt.size_test == nullptr;
   std::vector<double> features;
   std::optional<std::uint64_t> cap;
+  // Two shares of about the same time (45x45 holes: 13 and 14 ms).
   const auto sizes = [&] {
     features = initial_feature_sizes(mesh);
     if (parallel && may_cap) cap = deltri::steiner_cap(mesh, opt.size, features);
+    start.pieces = SegmentPieces(mesh);
   };
   double input_angle = HUGE_VAL;
   const auto angles = [&] {
     input_angle = smallest_input_angle(mesh);
-    start.pieces = SegmentPieces(mesh);
     start.apices = SegmentApices(mesh);
   };
   run_both(parallel, sizes, angles);
