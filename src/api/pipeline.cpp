@@ -237,7 +237,6 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     stage("mesh reconstruction");
     check_stage(mesh, "mesh reconstruction");
   } else {
-    if (refinement_wanted(sw, source)) reserve_ahead_of_refinement(mesh, refine_options(sw, report.area_file));
     const DelaunayReport dt = delaunay_triangulate(mesh, sw.algorithm, threads_to_use(sw));
     report.duplicates = dt.duplicates.size();
     // As for a header of one or two vertices: duplicates merged, nothing could be triangulated.

@@ -160,13 +160,6 @@ struct RefineReport : RefineWork {
 // opt.memory_budget can hold.
 RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& opt);
 
-// Before the Delaunay stage, for a quality refinement without size bounds: room in the triangle
-// and vertex arrays for what refinement will make of the mesh's vertices (the estimate it makes
-// itself when it starts), so that the arrays the triangulation fills are not copied into larger
-// ones at its start (45x45 holes: 127,000 triangles' corners and links, 130,000 points).
-// Address space only; without it, or where the guess is low, refinement reserves as before.
-void reserve_ahead_of_refinement(Mesh& mesh, const RefineOptions& opt);
-
 // Adds from's counts of work done (Steiner points, splits, refusals, stops) to to's; the closing
 // survey's counts are not added (they describe one mesh).
 void add_counts(RefineReport& to, const RefineReport& from);

@@ -109,8 +109,10 @@ double largest_coordinate(const Box& box) {
 constexpr double kMaxReservedTriangles = 3.2e7;
 constexpr double kQualityGrowth = 6.0;
 
-// Room for `slots` triangles and `added` more, with a vertex for every two added.
-void reserve_room(Mesh& mesh, double slots, double added) {
+void reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
+  const double wanted = triangles_wanted(mesh, opt.size);
+  const double slots = mesh.triangle_slots();
+  const double added = wanted > 0.0 ? 2.0 * wanted : opt.angle.asked() ? (kQualityGrowth - 1.0) * slots : 0.0;
   if (!(added > 0.0) || slots + added > kMaxReservedTriangles) return;  // let such runs grow as needed
   const std::size_t triangles = static_cast<std::size_t>(slots + added);
   const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(added / 2.0);
@@ -121,12 +123,6 @@ void reserve_room(Mesh& mesh, double slots, double added) {
   } catch (const std::bad_alloc&) {
     // address space is short (a ulimit): grow as needed instead
   }
-}
-
-void reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
-  const double wanted = triangles_wanted(mesh, opt.size);
-  const double slots = mesh.triangle_slots();
-  reserve_room(mesh, slots, wanted > 0.0 ? 2.0 * wanted : opt.angle.asked() ? (kQualityGrowth - 1.0) * slots : 0.0);
 }
 
 template <class Array>
@@ -164,13 +160,6 @@ bool proven_for(const RefineOptions& opt, double input_angle) {
 }
 
 }  // namespace
-
-void reserve_ahead_of_refinement(Mesh& mesh, const RefineOptions& opt) {
-  if (!opt.angle.asked() || opt.size.any()) return;  // size bounds are estimated on the domain
-  // A Delaunay triangulation of n vertices has about 2n triangles.
-  const double slots = 2.0 * mesh.vertex_count();
-  reserve_room(mesh, slots, (kQualityGrowth - 1.0) * slots);
-}
 
 Box extent_of(const Mesh& mesh) {
   Box box;
