@@ -180,7 +180,7 @@ TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) 
   const bool may_cap = opt.size_test == nullptr;
   std::vector<double> features;
   std::optional<std::uint64_t> cap;
-  // Two shares of about the same time (45x45 holes: 13 and 14 ms).
+  // Two shares of about the same time (benchmarks.md, "The whole mesh's start shared more evenly").
   const auto sizes = [&] {
     features = initial_feature_sizes(mesh);
     if (parallel && may_cap) cap = deltri::steiner_cap(mesh, opt.size, features);
