@@ -134,27 +134,29 @@ class SubsegmentSlots {
     set_triangle_slowly(e, s);
   }
   void set_triangle_slowly(std::size_t e, SubsegmentId s);
-  // set(e, s) for each (e, s) listed, in order, fetching the table entries kFetchAhead pairs
-  // ahead: one by one, each write waited for a cache miss in a table of megabytes.
-  template <class Pairs>
-  void set_all(const Pairs& pairs) {
-    const std::size_t n = std::size(pairs);
-    reserve_entries(n);
-    for (std::size_t i = 0; i < n && i < kFetchAhead; ++i) fetch_home(pairs[i].first);
+  // write(item) for each item listed, in order, with the table entry of slot_of(item) fetched
+  // kFetchAhead items ahead: one by one, each write waited for a cache miss in a table of megabytes.
+  template <class List, class SlotOf, class Write>
+  void write_fetching_ahead(const List& list, SlotOf slot_of, Write write) {
+    const std::size_t n = std::size(list);
+    for (std::size_t i = 0; i < n && i < kFetchAhead; ++i) fetch_home(slot_of(list[i]));
     for (std::size_t i = 0; i < n; ++i) {
-      if (i + kFetchAhead < n) fetch_home(pairs[i + kFetchAhead].first);
-      set(pairs[i].first, pairs[i].second);
+      if (i + kFetchAhead < n) fetch_home(slot_of(list[i + kFetchAhead]));
+      write(list[i]);
     }
   }
-  // set(e, kNone) for each slot listed, fetching ahead likewise.
+  // set(e, s) for each (e, s) listed, in order.
+  template <class Pairs>
+  void set_all(const Pairs& pairs) {
+    reserve_entries(std::size(pairs));
+    write_fetching_ahead(pairs, [](const auto& p) { return p.first; }, [this](const auto& p) { set(p.first, p.second); });
+  }
+  // set(e, kNone) for each slot listed.
   template <class Slots>
   void erase_all(const Slots& slots) {
-    const std::size_t n = std::size(slots);
-    for (std::size_t i = 0; i < n && i < kFetchAhead; ++i) fetch_home(slots[i]);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i + kFetchAhead < n) fetch_home(slots[i + kFetchAhead]);
-      if (has(slots[i])) erase(slots[i]);
-    }
+    write_fetching_ahead(slots, [](auto e) { return e; }, [this](auto e) {
+      if (has(e)) erase(e);
+    });
   }
   // Room in the table for `more` entries beyond those held, without a rehash on the way.
   void reserve_entries(std::size_t more);
