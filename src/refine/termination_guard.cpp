@@ -15,26 +15,26 @@ double twice_area_of(const Point& a, const Point& b, const Point& c) {
   return std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
 }
 
-// Distance from the apex of e to the line of e: twice the area over the base.
-double apex_height(const Mesh& mesh, EdgeRef e) {
-  const Point& a = mesh.point(mesh.org(e));
-  const Point& b = mesh.point(mesh.dest(e));
-  return twice_area_of(a, b, mesh.point(mesh.apex(e))) / distance(a, b);
-}
-
 }  // namespace
 
+// An edge's length counts once, from the side with the smaller id (the twin's length is the same
+// number: hypot ignores the signs); a subsegment's apex height counts from both sides.
 std::vector<double> initial_feature_sizes(const Mesh& mesh) {
   std::vector<double> f(mesh.vertex_count(), HUGE_VAL);
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.corner[e] == kNone) continue;
+    const bool first = mesh.link[e] == kNone || e < mesh.link[e];
+    const bool constrained = mesh.has_subsegments() && mesh.subseg.has(e);
+    if (!first && !constrained) continue;
     const VertexId a = mesh.org(e), b = mesh.dest(e);
     const double length = distance(mesh.point(a), mesh.point(b));
-    f[a] = std::min(f[a], length);
-    f[b] = std::min(f[b], length);
-    if (mesh.has_subsegments() && mesh.subseg.has(e)) {
+    if (first) {
+      f[a] = std::min(f[a], length);
+      f[b] = std::min(f[b], length);
+    }
+    if (constrained) {  // the apex's distance to the subsegment's line: twice the area over the base
       const VertexId c = mesh.apex(e);
-      f[c] = std::min(f[c], apex_height(mesh, e));
+      f[c] = std::min(f[c], twice_area_of(mesh.point(a), mesh.point(b), mesh.point(c)) / length);
     }
   }
   return f;
