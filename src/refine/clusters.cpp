@@ -1,6 +1,7 @@
 #include "refine/clusters.h"
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 namespace deltri {
@@ -58,6 +59,48 @@ double wedge_to_next_subsegment(const Mesh& mesh, EdgeRef e) {
   }
 }
 
+// Where the angle counter-clockwise from direction u to direction w lies against a right angle,
+// read off the signs of their cross and dot products where both are clear of zero by kClear times
+// |u| |w|, that is where the angle is about kClear radians or more from 0, pi/2, pi and 3 pi/2. Near
+// those, and where the squares overflow or underflow, the answer is Near.
+enum class RightAngle { Below, Above, Near };
+constexpr double kClear = 1e-9;
+
+RightAngle against_right_angle(double ux, double uy, double wx, double wy) {
+  const double norms = (ux * ux + uy * uy) * (wx * wx + wy * wy);
+  if (!(norms > 1e-280 && norms < 1e280)) return RightAngle::Near;
+  const double cross = ux * wy - uy * wx, dot = ux * wx + uy * wy;
+  const double least = kClear * kClear * norms;
+  if (cross * cross <= least) return RightAngle::Near;
+  if (cross < 0.0) return RightAngle::Above;  // beyond pi
+  if (dot * dot <= least) return RightAngle::Near;
+  return dot > 0.0 ? RightAngle::Below : RightAngle::Above;
+}
+
+// Beyond this many triangles the sum below is not assumed to stay within kClear of the angle.
+constexpr std::uint32_t kLongTurn = 10000;
+
+// wedge_to_next_subsegment(mesh, e) < kAcute, mostly without its atan2 per triangle: the wedge is the
+// angle from e to the next subsegment (mod 2 pi), and the sum of per-triangle angles differs from it
+// by rounding, about 1e-15 a triangle, so where against_right_angle decides, the sum falls on the
+// same side of kAcute. Only wedges within about kClear of a right angle are added up.
+bool acute_wedge(const Mesh& mesh, EdgeRef e) {
+  std::uint32_t triangles = 1;
+  EdgeRef back = lprev(e);
+  for (EdgeRef f = e; !has_subsegment(mesh, back); back = lprev(f), ++triangles) {
+    f = mesh.link[back];
+    if (f == kNone || f == e) return false;  // no wedge: wedge_to_next_subsegment's HUGE_VAL
+  }
+  if (triangles < kLongTurn) {
+    const Point& o = mesh.point(mesh.org(e));
+    const Point& d = mesh.point(mesh.dest(e));
+    const Point& x = mesh.point(mesh.org(back));
+    const RightAngle side = against_right_angle(d.x - o.x, d.y - o.y, x.x - o.x, x.y - o.y);
+    if (side != RightAngle::Near) return side == RightAngle::Below;
+  }
+  return wedge_to_next_subsegment(mesh, e) < kAcute;
+}
+
 }  // namespace
 
 SegmentApices::SegmentApices(const Mesh& mesh) : apex_(mesh.vertex_count(), false) {
@@ -74,8 +117,9 @@ SegmentApices::SegmentApices(const Mesh& mesh) : apex_(mesh.vertex_count(), fals
   for (VertexId v{0}; v < mesh.vertex_count(); ++v) apex_[v] = degree[v] >= 2;
   shells_.assign(mesh.vertex_count(), false);
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
-    if (mesh.corner[e] == kNone || !has_subsegment(mesh, e) || !apex_[mesh.org(e)]) continue;
-    if (wedge_to_next_subsegment(mesh, e) < kAcute) shells_[mesh.org(e)] = true;
+    if (mesh.corner[e] == kNone || !has_subsegment(mesh, e)) continue;
+    const VertexId v = mesh.org(e);
+    if (apex_[v] && !shells_[v]) shells_[v] = acute_wedge(mesh, e);
   }
 }
 

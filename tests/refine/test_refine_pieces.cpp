@@ -180,6 +180,29 @@ TEST(shells_only_at_acute_apices) {
   CHECK(fan.uses_shells(0_v));
 }
 
+// Vertex 0 is the corner of a hull triangle with angle theta there, inside which a fan of points
+// at radius 0.5 gives the corner many triangles. Within about 1e-9 radians of 90 degrees the wedge
+// is summed triangle by triangle; beyond, it is read off the two subsegments' directions. Either
+// way the shell follows the angle: 90 degrees and less than 1e-12 under it count as right.
+TEST(shells_at_fanned_corners_follow_the_angle_on_both_sides_of_ninety) {
+  const auto corner = [](double theta) {
+    std::vector<Point> pts{{0, 0}, {1, 0}, {std::cos(theta), std::sin(theta)}};
+    for (int k = 1; k < 12; ++k) pts.push_back({0.5 * std::cos(theta * k / 12), 0.5 * std::sin(theta * k / 12)});
+    Mesh m = triangulated(pts);
+    mark_boundary(m);
+    return SegmentApices(m).uses_shells(0_v);
+  };
+  const double right = std::numbers::pi / 2;
+  CHECK(corner(rad(60)));
+  CHECK(corner(right - 3e-9));
+  CHECK(corner(right - 1e-10));
+  CHECK(!corner(right - 1e-13));
+  CHECK(!corner(right));
+  CHECK(!corner(right + 1e-10));
+  CHECK(!corner(right + 3e-9));
+  CHECK(!corner(rad(120)));
+}
+
 TEST(clusters_gather_subsegments_within_sixty_degrees) {
   Mesh m = cluster_mesh();
   const SegmentApices apices(m);
