@@ -280,7 +280,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     check_stage(mesh, "refinement", conforming_expected(sw, report));
   }
   // Once, at the end: every marker follows from input markers, subsegments and the boundary.
-  assign_boundary_markers(mesh, pslg.has_markers);
+  assign_boundary_markers(mesh, pslg.has_markers, threads_to_use(sw));
 
   if (sw.check || always_checked(sw)) {
     CheckOptions opt;

@@ -12,6 +12,7 @@ namespace deltri {
 // boundary (an end of an edge with link == kNone), else 0.
 // Edge markers are left to the writers, with the matching rule: the subsegment's marker if
 // non-zero, else 1 on the boundary, else 0.
-void assign_boundary_markers(Mesh& mesh, bool input_had_markers);
+// With `threads` 2 or more, a large mesh's edges are scanned by two threads.
+void assign_boundary_markers(Mesh& mesh, bool input_had_markers, int threads = 1);
 
 }  // namespace deltri
