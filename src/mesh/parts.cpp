@@ -269,7 +269,7 @@ void compact_ids(Mesh& mesh, const Held& held) {
 
 }  // namespace
 
-Held hold_only(Mesh& mesh, const CutOff& cut, std::vector<char> keep) {
+Held hold_only(Mesh& mesh, const CutOff& cut, std::vector<char> keep, int threads) {
   Held held;
   held.whole_vertices = VertexId{mesh.vertex_count()};
   held.whole_records = static_cast<SubsegmentId>(mesh.subsegments.size());
@@ -297,21 +297,28 @@ Held hold_only(Mesh& mesh, const CutOff& cut, std::vector<char> keep) {
   const std::vector<VertexId> local = local_ids(held.vertices, mesh.vertex_count());
   const std::vector<SubsegmentId> local_record = local_ids(held.records, mesh.subsegments.size());
   const auto to_local = [&](VertexId v) { return v == kNone ? v : local[v]; };
-  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) detail::corner_slots(mesh)[e] = to_local(mesh.corner[e]);
-  // A dead slot's left-over subsegment of a record this side does not hold is dropped.
-  detail::subseg_slots(mesh).remap([&](SubsegmentId s) { return s < local_record.size() ? local_record[s] : s; });
-  compact_ids(mesh, held);
-  for (Subsegment& r : mesh.subsegments) r.a = to_local(r.a), r.b = to_local(r.b);
+  // The corners on a second thread (with `threads` 2 or more); the rest touches no corner.
+  run_both(
+      threads >= 2,
+      [&] {
+        for (EdgeRef e{0}; e < mesh.corner.size(); ++e) detail::corner_slots(mesh)[e] = to_local(mesh.corner[e]);
+      },
+      [&] {
+        // A dead slot's left-over subsegment of a record this side does not hold is dropped.
+        detail::subseg_slots(mesh).remap([&](SubsegmentId s) { return s < local_record.size() ? local_record[s] : s; });
+        compact_ids(mesh, held);
+        for (Subsegment& r : mesh.subsegments) r.a = to_local(r.a), r.b = to_local(r.b);
+      });
   return held;
 }
 
-void hold_all(Mesh& mesh, Held& held, const CutOff& cut) {
-  const std::size_t records = mesh.subsegments.size();
+namespace {
+
+// hold_all's work on everything but the corners.
+void hold_all_but_corners(Mesh& mesh, Held& held, const CutOff& cut, std::size_t records) {
   const auto to_whole = [&](VertexId v) { return held.whole_vertex(v); };
-  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) detail::corner_slots(mesh)[e] = to_whole(mesh.corner[e]);
   detail::subseg_slots(mesh).remap([&](SubsegmentId s) { return s < records ? held.whole_record(s) : s; });
   for (Subsegment& r : mesh.subsegments) r.a = to_whole(r.a), r.b = to_whole(r.b);
-
   const std::size_t na = static_cast<std::size_t>(mesh.num_attributes);
   expand(mesh.points, held.vertices, held.whole_vertices, 1);
   expand(mesh.kind, held.vertices, held.whole_vertices, 1);
@@ -324,6 +331,20 @@ void hold_all(Mesh& mesh, Held& held, const CutOff& cut) {
   for_each_not_held(cut.records, held.records, [&](std::size_t, SubsegmentId s) { mesh.subsegments[s] = Subsegment{}; });
   for (std::size_t j = 0; j < held.rest_records.size(); ++j) mesh.subsegments[held.rest_records[j]] = held.rest.subsegments[j];
   held.rest = Mesh{};
+}
+
+}  // namespace
+
+// As in hold_only, the corners on a second thread.
+void hold_all(Mesh& mesh, Held& held, const CutOff& cut, int threads) {
+  const std::size_t records = mesh.subsegments.size();
+  const auto to_whole = [&](VertexId v) { return held.whole_vertex(v); };
+  run_both(
+      threads >= 2,
+      [&] {
+        for (EdgeRef e{0}; e < mesh.corner.size(); ++e) detail::corner_slots(mesh)[e] = to_whole(mesh.corner[e]);
+      },
+      [&] { hold_all_but_corners(mesh, held, cut, records); });
 }
 
 std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, SubsegmentId mark) {

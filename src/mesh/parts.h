@@ -64,14 +64,16 @@ struct Held {
 // Renumbers the mesh left by cut_off to what its triangles use (and the vertices with keep[v] != 0),
 // in place: the per-vertex and per-record arrays shrink and give the pages of their tails back,
 // corners and subsegments take the new ids (a mark above every record id stays), and what
-// neither this side nor cut.part holds is kept in Held::rest.
-Held hold_only(Mesh& mesh, const CutOff& cut, std::vector<char> keep);
+// neither this side nor cut.part holds is kept in Held::rest. With `threads` 2 or more, two
+// threads share the renumbering.
+Held hold_only(Mesh& mesh, const CutOff& cut, std::vector<char> keep, int threads = 1);
 
 // Gives the mesh its ids of before hold_only back, in place, with what it added since numbered
 // after them (vertices from Held::whole_vertices on, records from Held::whole_records on): the
 // vertices only cut.part holds come from it, unchanged since the cut; the records only it holds
-// are left to append_part, which writes every record the part owns.
-void hold_all(Mesh& mesh, Held& held, const CutOff& cut);
+// are left to append_part, which writes every record the part owns. With `threads` 2 or more, two
+// threads share the renumbering.
+void hold_all(Mesh& mesh, Held& held, const CutOff& cut, int threads = 1);
 
 // Where a part's ids land when it is appended: the vertices and records it was cut with (below v0,
 // s0) where they were in the mesh; its own vertices (from v0 on) after the mesh's, from vertex_base
