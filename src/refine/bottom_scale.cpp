@@ -9,6 +9,7 @@
 #include "geometry/lattice.h"
 #include "refine/terminator.h"
 #include "refine/termination_guard.h"
+#include "util/run_both.h"
 
 namespace deltri {
 
@@ -104,20 +105,30 @@ bool Terminator::beyond_boundary(EdgeRef s, const Point& c) {
   return pred_.orient2d(mesh_.point(mesh_.org(s)), mesh_.point(mesh_.dest(s)), c) < 0;
 }
 
-std::uint64_t count_hopeless_edges(const Mesh& mesh, double sin2_theta) {
+std::uint64_t count_hopeless_edges(const Mesh& mesh, double sin2_theta, int threads) {
   if (!(sin2_theta > 0.0)) return 0;
-  std::uint64_t count = 0;
-  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
-    if (mesh.corner[e] == kNone) continue;
-    const VertexId a = mesh.org(e), b = mesh.dest(e);
-    if (a > b && mesh.link[e] != kNone) continue;  // each interior edge once
-    const Point& pa = mesh.point(a);
-    const Point& pb = mesh.point(b);
-    count += at_bottom_scale(squared_distance(pa, pb), pa) && hopeless_edge(pa, pb, sin2_theta);
-  }
-  return count;
+  const auto count_in = [&](EdgeRef from, EdgeRef to) {
+    std::uint64_t count = 0;
+    for (EdgeRef e = from; e < to; ++e) {
+      if (mesh.corner[e] == kNone) continue;
+      const VertexId a = mesh.org(e), b = mesh.dest(e);
+      if (a > b && mesh.link[e] != kNone) continue;  // each interior edge once
+      const Point& pa = mesh.point(a);
+      const Point& pb = mesh.point(b);
+      count += at_bottom_scale(squared_distance(pa, pb), pa) && hopeless_edge(pa, pb, sin2_theta);
+    }
+    return count;
+  };
+  const EdgeRef edges{static_cast<std::uint32_t>(mesh.corner.size())}, middle{edges / 2};
+  std::uint64_t upper = 0, lower = 0;
+  run_both(
+      threads >= 2 && mesh.triangle_slots() >= TerminatorStart::kParallelStartSlots,
+      [&] { upper = count_in(middle, edges); }, [&] { lower = count_in(EdgeRef{0}, middle); });
+  return lower + upper;
 }
 
-void Terminator::find_hopeless_edges() { report_.hopeless_edges = count_hopeless_edges(mesh_, opt_.angle.sin2()); }
+void Terminator::find_hopeless_edges() {
+  report_.hopeless_edges = count_hopeless_edges(mesh_, opt_.angle.sin2(), opt_.threads);
+}
 
 }  // namespace deltri

@@ -46,7 +46,8 @@ inline bool at_bottom_scale(double length2, const Point& p) {
 }
 
 // The edges of `mesh` at the bottom scale that no double can give a triangle with angles of at
-// least theta (sin2_theta = sin^2 theta; 0 counts none).
-std::uint64_t count_hopeless_edges(const Mesh& mesh, double sin2_theta);
+// least theta (sin2_theta = sin^2 theta; 0 counts none). With `threads` 2 or more, a large mesh's
+// two halves of the edges are counted at once.
+std::uint64_t count_hopeless_edges(const Mesh& mesh, double sin2_theta, int threads = 1);
 
 }  // namespace deltri
