@@ -80,10 +80,7 @@ bool keeps_every_subsegment(const Mesh& mesh, int no_steiner_on_segments) {
 // The box around the vertices and `known` (TerminatorStart::extent).
 Box extent_with(const Mesh& mesh, const Box& known) {
   Box box = extent_of(mesh);
-  if (!known.empty()) {
-    box.add({known.lo_x, known.lo_y});
-    box.add({known.hi_x, known.hi_y});
-  }
+  box.merge(known);
   return box;
 }
 
