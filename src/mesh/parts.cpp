@@ -347,10 +347,18 @@ void hold_all(Mesh& mesh, Held& held, const CutOff& cut, int threads) {
       [&] { hold_all_but_corners(mesh, held, cut, records); });
 }
 
-std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, SubsegmentId mark) {
+namespace {
+
+// The slots of the cut's edges among slots [from, to) of each side, in cut_keys order (kNone where
+// not found; of two for one key, the later).
+struct CutEdges {
+  std::vector<EdgeRef> stayed, moved;
+};
+CutEdges find_cut_edges(const Mesh& mesh, const CutOff& cut, const PartIds& ids, SubsegmentId mark, EdgeRef from,
+                        EdgeRef to) {
   const std::vector<std::uint64_t>& keys = cut.cut_keys;
-  std::vector<EdgeRef> stayed(keys.size(), kNone), moved(keys.size(), kNone);
-  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
+  CutEdges found{std::vector<EdgeRef>(keys.size(), kNone), std::vector<EdgeRef>(keys.size(), kNone)};
+  for (EdgeRef e = from; e < to; ++e) {
     if (mesh.link[e] != kNone || mesh.corner[e] == kNone) continue;
     const SubsegmentId s = mesh.subseg[e];
     if (s != mark && (s >= cut.cut_records.size() || !cut.cut_records[s])) continue;
@@ -359,18 +367,33 @@ std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, 
     const std::uint64_t key = on_stayed ? edge_key(mesh.org(e), mesh.dest(e)) : edge_key(mesh.dest(e), mesh.org(e));
     const auto at = std::lower_bound(keys.begin(), keys.end(), key);
     if (at == keys.end() || *at != key) continue;  // an earlier cut's edge
-    (on_stayed ? stayed : moved)[static_cast<std::size_t>(at - keys.begin())] = e;
+    (on_stayed ? found.stayed : found.moved)[static_cast<std::size_t>(at - keys.begin())] = e;
   }
-  for (std::size_t k = 0; k < keys.size(); ++k) {
-    const EdgeRef e = stayed[k], f = moved[k];
+  return found;
+}
+
+}  // namespace
+
+// The two halves of the slots are searched at once with `threads` 2 or more; the upper half's
+// finds come later in slot order, as in one pass.
+std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, SubsegmentId mark, int threads) {
+  const EdgeRef edges{static_cast<std::uint32_t>(mesh.corner.size())}, middle{edges / 2};
+  CutEdges lower, upper;
+  run_both(
+      threads >= 2, [&] { upper = find_cut_edges(mesh, cut, ids, mark, middle, edges); },
+      [&] { lower = find_cut_edges(mesh, cut, ids, mark, EdgeRef{0}, middle); });
+  const auto later = [](EdgeRef low, EdgeRef high) { return high != kNone ? high : low; };
+  for (std::size_t k = 0; k < cut.cut_keys.size(); ++k) {
+    const EdgeRef e = later(lower.stayed[k], upper.stayed[k]), f = later(lower.moved[k], upper.moved[k]);
     if (e == kNone || f == kNone) throw std::logic_error("the parts' cut edges do not match");
     mesh.bond(e, f);
     if (mesh.subseg[e] == mark) {
       detail::subseg_slots(mesh).set(e, kNone);
       detail::subseg_slots(mesh).set(f, kNone);
     }
+    lower.stayed[k] = e;
   }
-  return stayed;
+  return lower.stayed;
 }
 
 // Each side is constrained Delaunay, so only the sewn edges, and the sides of the quadrilaterals

@@ -102,7 +102,8 @@ PartIds append_part(Mesh& mesh, CutOff& cut, SubsegmentId mark, int threads = 2)
 
 // Bonds the cut's edges of the two sides again and takes `mark` off them; returns them, oriented as
 // on the side that stayed, in cut_keys order. Throws std::logic_error when a cut edge has no partner.
-std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, SubsegmentId mark);
+// With `threads` 2 or more, two threads search the slots.
+std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, SubsegmentId mark, int threads = 1);
 
 // Lawson's flips from the edges of `stack` until every edge reached is locally Delaunay; edges that
 // carry a subsegment (or any mark) are never flipped. The triangles the flips make go to `touched`.
