@@ -19,35 +19,55 @@
 namespace deltri {
 namespace {
 
+// Calls body(from, to) for the two halves of the triangle slots, at once when `parallel`.
+template <class Body>
+void over_halves(const Mesh& mesh, bool parallel, Body&& body) {
+  const TriangleId slots{mesh.triangle_slots()}, middle{slots / 2};
+  run_both(parallel, [&] { body(middle, slots); }, [&] { body(TriangleId{0}, middle); });
+}
+
 // Which live triangles go to the second part: those whose centroids lie beyond the median of the
 // centroids along the longer side of their bounding box, so that both parts start with as many
-// triangles. Empty when one side would be nearly empty (many centroids on the median).
-std::vector<std::uint8_t> cut_in_two(const Mesh& mesh) {
-  Box box;
-  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
-    if (mesh.is_live(t))
-      for (unsigned i = 0; i < 3; ++i) box.add(mesh.point(mesh.corner[edge_of(t, i)]));
+// triangles. Empty when one side would be nearly empty (many centroids on the median). With
+// `threads` 2 or more each pass over a large mesh is shared by two threads; the median is the same
+// value whatever the order of the keys.
+std::vector<std::uint8_t> cut_in_two(const Mesh& mesh, int threads) {
+  const bool parallel = threads >= 2 && mesh.triangle_slots() >= TerminatorStart::kParallelStartSlots;
+  Box boxes[2];
+  over_halves(mesh, parallel, [&](TriangleId from, TriangleId to) {
+    Box& box = boxes[from == 0 ? 0 : 1];
+    for (TriangleId t = from; t < to; ++t)
+      if (mesh.is_live(t))
+        for (unsigned i = 0; i < 3; ++i) box.add(mesh.point(mesh.corner[edge_of(t, i)]));
+  });
+  Box box = boxes[0];
+  box.merge(boxes[1]);
   const bool along_x = box.width() >= box.height();
   std::vector<double> key(mesh.triangle_slots(), 0.0);
-  std::vector<double> keys;
-  keys.reserve(mesh.live_triangles());
-  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
-    if (!mesh.is_live(t)) continue;
-    for (unsigned i = 0; i < 3; ++i) {
-      const Point& p = mesh.point(mesh.corner[edge_of(t, i)]);
-      key[t] += along_x ? p.x : p.y;
+  std::vector<double> keys[2];
+  over_halves(mesh, parallel, [&](TriangleId from, TriangleId to) {
+    std::vector<double>& mine = keys[from == 0 ? 0 : 1];
+    for (TriangleId t = from; t < to; ++t) {
+      if (!mesh.is_live(t)) continue;
+      for (unsigned i = 0; i < 3; ++i) {
+        const Point& p = mesh.point(mesh.corner[edge_of(t, i)]);
+        key[t] += along_x ? p.x : p.y;
+      }
+      mine.push_back(key[t]);
     }
-    keys.push_back(key[t]);
-  }
-  if (keys.empty()) return {};
-  const auto middle = keys.begin() + static_cast<std::ptrdiff_t>(keys.size() / 2);
-  std::nth_element(keys.begin(), middle, keys.end());
+  });
+  keys[0].insert(keys[0].end(), keys[1].begin(), keys[1].end());
+  std::vector<double>().swap(keys[1]);
+  std::vector<double>& all = keys[0];
+  if (all.empty()) return {};
+  const auto middle = all.begin() + static_cast<std::ptrdiff_t>(all.size() / 2);
+  std::nth_element(all.begin(), middle, all.end());
   const double median = *middle;
   std::vector<std::uint8_t> moves(mesh.triangle_slots(), 0);
   std::size_t left = 0;
   for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (mesh.is_live(t)) left += (moves[t] = key[t] < median ? 0 : 1) == 0;
-  if (4 * left < keys.size() || 4 * (keys.size() - left) < keys.size()) return {};
+  if (4 * left < all.size() || 4 * (all.size() - left) < all.size()) return {};
   return moves;
 }
 
@@ -264,8 +284,8 @@ TerminatorStart join_starts(TerminatorStart left, const TerminatorStart& right, 
 // triangles the sides left unsplit, those on the seam and those the flips made.
 std::vector<TriangleId> sew_and_flip(Mesh& mesh, Predicates& pred, const PartIds& ids, const CutOff& cut,
                                      const std::vector<TriangleId>& left_unsplit,
-                                     const std::vector<TriangleId>& right_unsplit) {
-  const std::vector<EdgeRef> seam = sew_cut(mesh, cut, ids, kSeamEdge);
+                                     const std::vector<TriangleId>& right_unsplit, int threads) {
+  const std::vector<EdgeRef> seam = sew_cut(mesh, cut, ids, kSeamEdge, threads);
   std::vector<TriangleId> seeds = left_unsplit;
   for (TriangleId t : right_unsplit) seeds.push_back(ids.triangle(t));
   for (EdgeRef e : seam) {
@@ -350,7 +370,7 @@ PartResult join_sides(Mesh& mesh, Predicates& pred, const PartPlan& plan, CutOff
                       PartResult& right, const TerminatorStart& before) {
   const std::uint64_t seam_edges = cut.cut_keys.size();
   const PartIds ids = append_part(mesh, cut, kSeamEdge, plan.threads);
-  const std::vector<TriangleId> seeds = sew_and_flip(mesh, pred, ids, cut, left.unsplit, right.unsplit);
+  const std::vector<TriangleId> seeds = sew_and_flip(mesh, pred, ids, cut, left.unsplit, right.unsplit, plan.threads);
   TerminatorStart seam_start = join_starts(std::move(left.end), right.end, before.locked, mesh, ids, cut);
   // The right side's small arrays and its Terminator's queue were freed into the malloc arena of
   // the thread that refined it, which kept them: the seams and the rest of the run held them on
@@ -397,7 +417,7 @@ PartResult refine_cut(Mesh& mesh, Predicates& pred, const PartPlan& plan, Termin
 }
 
 PartResult refine_part(Mesh& mesh, Predicates& pred, const PartPlan& plan, TerminatorStart start) {
-  const std::vector<std::uint8_t> moves = plan.depth > 0 ? cut_in_two(mesh) : std::vector<std::uint8_t>{};
+  const std::vector<std::uint8_t> moves = plan.depth > 0 ? cut_in_two(mesh, plan.threads) : std::vector<std::uint8_t>{};
   if (moves.empty()) return refine_whole_part(mesh, pred, *plan.parts, std::move(start));
   return refine_cut(mesh, pred, plan, std::move(start), moves);
 }
@@ -420,7 +440,7 @@ bool halves_apply(const Mesh& mesh, const RefineOptions& opt) {
     return false;
   if (opt.angle.cascades()) return false;
   if (part_depth(mesh, opt) < 1) return false;
-  return count_hopeless_edges(mesh, opt.angle.sin2()) == 0;
+  return count_hopeless_edges(mesh, opt.angle.sin2(), opt.threads) == 0;
 }
 
 RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
@@ -432,7 +452,7 @@ RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions&
   whole.extent = extent_of(mesh);  // the parts' scale: every vertex, the initial splits included
   const std::uint64_t cap = whole.steiner_cap;
   const PartPlan plan{depth, std::max(1, opt.threads), &one_thread, &opt, steiner_of(initial), true};
-  const std::vector<std::uint8_t> moves = cut_in_two(mesh);
+  const std::vector<std::uint8_t> moves = cut_in_two(mesh, opt.threads);
   if (moves.empty()) {  // nothing to cut: one Terminator on the whole mesh
     RefineReport report = Terminator(mesh, pred, opt, std::move(whole)).run();
     add_counts(report, initial);
