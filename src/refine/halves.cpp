@@ -19,11 +19,12 @@
 namespace deltri {
 namespace {
 
-// Calls body(from, to) for the two halves of the triangle slots, at once when `parallel`.
+// Calls body(half, from, to) for the lower (0) and upper (1) half of the triangle slots, at once
+// when `parallel`.
 template <class Body>
 void over_halves(const Mesh& mesh, bool parallel, Body&& body) {
   const TriangleId slots{mesh.triangle_slots()}, middle{slots / 2};
-  run_both(parallel, [&] { body(middle, slots); }, [&] { body(TriangleId{0}, middle); });
+  run_both(parallel, [&] { body(1, middle, slots); }, [&] { body(0, TriangleId{0}, middle); });
 }
 
 // Which live triangles go to the second part: those whose centroids lie beyond the median of the
@@ -33,20 +34,22 @@ void over_halves(const Mesh& mesh, bool parallel, Body&& body) {
 // value whatever the order of the keys.
 std::vector<std::uint8_t> cut_in_two(const Mesh& mesh, int threads) {
   const bool parallel = threads >= 2 && mesh.triangle_slots() >= TerminatorStart::kParallelStartSlots;
-  Box boxes[2];
-  over_halves(mesh, parallel, [&](TriangleId from, TriangleId to) {
-    Box& box = boxes[from == 0 ? 0 : 1];
+  // Each half's box and keys are gathered on its own thread's stack and handed over at the end.
+  Box box, upper_box;
+  over_halves(mesh, parallel, [&](int half, TriangleId from, TriangleId to) {
+    Box mine;
     for (TriangleId t = from; t < to; ++t)
       if (mesh.is_live(t))
-        for (unsigned i = 0; i < 3; ++i) box.add(mesh.point(mesh.corner[edge_of(t, i)]));
+        for (unsigned i = 0; i < 3; ++i) mine.add(mesh.point(mesh.corner[edge_of(t, i)]));
+    (half == 0 ? box : upper_box) = mine;
   });
-  Box box = boxes[0];
-  box.merge(boxes[1]);
+  box.merge(upper_box);
   const bool along_x = box.width() >= box.height();
   std::vector<double> key(mesh.triangle_slots(), 0.0);
-  std::vector<double> keys[2];
-  over_halves(mesh, parallel, [&](TriangleId from, TriangleId to) {
-    std::vector<double>& mine = keys[from == 0 ? 0 : 1];
+  std::vector<double> all, upper_keys;
+  over_halves(mesh, parallel, [&](int half, TriangleId from, TriangleId to) {
+    std::vector<double> mine;
+    mine.reserve(to - from);
     for (TriangleId t = from; t < to; ++t) {
       if (!mesh.is_live(t)) continue;
       for (unsigned i = 0; i < 3; ++i) {
@@ -55,10 +58,10 @@ std::vector<std::uint8_t> cut_in_two(const Mesh& mesh, int threads) {
       }
       mine.push_back(key[t]);
     }
+    (half == 0 ? all : upper_keys) = std::move(mine);
   });
-  keys[0].insert(keys[0].end(), keys[1].begin(), keys[1].end());
-  std::vector<double>().swap(keys[1]);
-  std::vector<double>& all = keys[0];
+  all.insert(all.end(), upper_keys.begin(), upper_keys.end());
+  std::vector<double>().swap(upper_keys);
   if (all.empty()) return {};
   const auto middle = all.begin() + static_cast<std::ptrdiff_t>(all.size() / 2);
   std::nth_element(all.begin(), middle, all.end());
