@@ -177,7 +177,9 @@ TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) 
   const bool may_cap = opt.size_test == nullptr;
   std::vector<double> features;
   std::optional<std::uint64_t> cap;
-  // Two shares of about the same time (benchmarks.md, "The whole mesh's start shared more evenly").
+  // The sizes take about twice the angles' time since the shells are read off directions; the
+  // segment pieces stay with the sizes all the same: made on the other thread they raised the
+  // 45x45 holes' peak by 0.5-0.8 MiB (benchmarks.md, "Serial steps of the parts on two threads").
   const auto sizes = [&] {
     features = initial_feature_sizes(mesh);
     if (parallel && may_cap) cap = deltri::steiner_cap(mesh, opt.size, features);
