@@ -27,14 +27,9 @@ void over_halves(const Mesh& mesh, bool parallel, Body&& body) {
   run_both(parallel, [&] { body(1, middle, slots); }, [&] { body(0, TriangleId{0}, middle); });
 }
 
-// Which live triangles go to the second part: those whose centroids lie beyond the median of the
-// centroids along the longer side of their bounding box, so that both parts start with as many
-// triangles. Empty when one side would be nearly empty (many centroids on the median). With
-// `threads` 2 or more each pass over a large mesh is shared by two threads; the median is the same
-// value whatever the order of the keys.
-std::vector<std::uint8_t> cut_in_two(const Mesh& mesh, int threads) {
-  const bool parallel = threads >= 2 && mesh.triangle_slots() >= TerminatorStart::kParallelStartSlots;
-  // Each half's box and keys are gathered on its own thread's stack and handed over at the end.
+// The box around the live triangles' corners. Each half's box and (in cut_in_two) keys are
+// gathered on its own thread's stack and handed over at the end.
+Box box_of_live_triangles(const Mesh& mesh, bool parallel) {
   Box box, upper_box;
   over_halves(mesh, parallel, [&](int half, TriangleId from, TriangleId to) {
     Box mine;
@@ -44,6 +39,17 @@ std::vector<std::uint8_t> cut_in_two(const Mesh& mesh, int threads) {
     (half == 0 ? box : upper_box) = mine;
   });
   box.merge(upper_box);
+  return box;
+}
+
+// Which live triangles go to the second part: those whose centroids lie beyond the median of the
+// centroids along the longer side of their bounding box, so that both parts start with as many
+// triangles. Empty when one side would be nearly empty (many centroids on the median). With
+// `threads` 2 or more each pass over a large mesh is shared by two threads; the median is the same
+// value whatever the order of the keys.
+std::vector<std::uint8_t> cut_in_two(const Mesh& mesh, int threads) {
+  const bool parallel = threads >= 2 && mesh.triangle_slots() >= TerminatorStart::kParallelStartSlots;
+  const Box box = box_of_live_triangles(mesh, parallel);
   const bool along_x = box.width() >= box.height();
   std::vector<double> key(mesh.triangle_slots(), 0.0);
   std::vector<double> all, upper_keys;
