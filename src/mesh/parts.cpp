@@ -383,7 +383,8 @@ std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, 
       threads >= 2, [&] { upper = find_cut_edges(mesh, cut, ids, mark, middle, edges); },
       [&] { lower = find_cut_edges(mesh, cut, ids, mark, EdgeRef{0}, middle); });
   const auto later = [](EdgeRef low, EdgeRef high) { return high != kNone ? high : low; };
-  for (std::size_t k = 0; k < cut.cut_keys.size(); ++k) {
+  std::vector<EdgeRef> stayed(cut.cut_keys.size(), kNone);
+  for (std::size_t k = 0; k < stayed.size(); ++k) {
     const EdgeRef e = later(lower.stayed[k], upper.stayed[k]), f = later(lower.moved[k], upper.moved[k]);
     if (e == kNone || f == kNone) throw std::logic_error("the parts' cut edges do not match");
     mesh.bond(e, f);
@@ -391,9 +392,9 @@ std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, 
       detail::subseg_slots(mesh).set(e, kNone);
       detail::subseg_slots(mesh).set(f, kNone);
     }
-    lower.stayed[k] = e;
+    stayed[k] = e;
   }
-  return lower.stayed;
+  return stayed;
 }
 
 // Each side is constrained Delaunay, so only the sewn edges, and the sides of the quadrilaterals
