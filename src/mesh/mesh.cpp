@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "util/run_both.h"
-
 namespace deltri {
 
 TriangleId Mesh::add_triangle(VertexId a, VertexId b, VertexId c) {
@@ -75,20 +73,6 @@ void Mesh::interpolate_attributes(VertexId v, VertexId a, VertexId b) {
 void Mesh::enable_subsegments() {
   auto& corner = this->corner.slots_;
   if (subseg.size() != corner.size()) subseg.assign(corner.size());
-}
-
-void Mesh::reserve_room(std::size_t triangles, std::size_t vertices, bool parallel) {
-  run_both(
-      parallel,
-      [&] {
-        corner.slots_.reserve(3 * triangles);
-        points.reserve(vertices);
-      },
-      [&] {
-        link.slots_.reserve(3 * triangles);
-        if (has_subsegments()) subseg.reserve(3 * triangles);
-        kind.reserve(vertices);
-      });
 }
 
 void Mesh::compact_triangles() {

@@ -170,10 +170,11 @@ struct Mesh {
   // count up front, and growing the table by doublings was half of its time on the holes.
   void reserve_constrained_edges(std::size_t edges) { subseg.reserve_entries(edges); }
   // Room for `triangles` triangles in the triangle arrays without a reallocation.
-  void reserve_triangles(std::size_t triangles) { reserve_room(triangles, 0, false); }
-  // Room for `triangles` triangles and `vertices` vertices (points and kinds); with `parallel` the
-  // arrays are copied into their new room by two threads, the corners and points on one.
-  void reserve_room(std::size_t triangles, std::size_t vertices, bool parallel);
+  void reserve_triangles(std::size_t triangles) {
+    corner.slots_.reserve(3 * triangles);
+    link.slots_.reserve(3 * triangles);
+    if (has_subsegments()) subseg.reserve(3 * triangles);
+  }
   // Moves live triangles over dead slots so that every slot is live (ids change).
   void compact_triangles();
 

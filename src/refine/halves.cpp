@@ -19,64 +19,35 @@
 namespace deltri {
 namespace {
 
-// Calls body(half, from, to) for the lower (0) and upper (1) half of the triangle slots, at once
-// when `parallel`.
-template <class Body>
-void over_halves(const Mesh& mesh, bool parallel, Body&& body) {
-  const TriangleId slots{mesh.triangle_slots()}, middle{slots / 2};
-  run_both(parallel, [&] { body(1, middle, slots); }, [&] { body(0, TriangleId{0}, middle); });
-}
-
-// The box around the live triangles' corners. Each half's box and (in cut_in_two) keys are
-// gathered on its own thread's stack and handed over at the end.
-Box box_of_live_triangles(const Mesh& mesh, bool parallel) {
-  Box box, upper_box;
-  over_halves(mesh, parallel, [&](int half, TriangleId from, TriangleId to) {
-    Box mine;
-    for (TriangleId t = from; t < to; ++t)
-      if (mesh.is_live(t))
-        for (unsigned i = 0; i < 3; ++i) mine.add(mesh.point(mesh.corner[edge_of(t, i)]));
-    (half == 0 ? box : upper_box) = mine;
-  });
-  box.merge(upper_box);
-  return box;
-}
-
 // Which live triangles go to the second part: those whose centroids lie beyond the median of the
 // centroids along the longer side of their bounding box, so that both parts start with as many
-// triangles. Empty when one side would be nearly empty (many centroids on the median). With
-// `threads` 2 or more each pass over a large mesh is shared by two threads; the median is the same
-// value whatever the order of the keys.
-std::vector<std::uint8_t> cut_in_two(const Mesh& mesh, int threads) {
-  const bool parallel = threads >= 2 && mesh.triangle_slots() >= TerminatorStart::kParallelStartSlots;
-  const Box box = box_of_live_triangles(mesh, parallel);
+// triangles. Empty when one side would be nearly empty (many centroids on the median).
+std::vector<std::uint8_t> cut_in_two(const Mesh& mesh) {
+  Box box;
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
+    if (mesh.is_live(t))
+      for (unsigned i = 0; i < 3; ++i) box.add(mesh.point(mesh.corner[edge_of(t, i)]));
   const bool along_x = box.width() >= box.height();
   std::vector<double> key(mesh.triangle_slots(), 0.0);
-  std::vector<double> all, upper_keys;
-  over_halves(mesh, parallel, [&](int half, TriangleId from, TriangleId to) {
-    std::vector<double> mine;
-    mine.reserve(to - from);
-    for (TriangleId t = from; t < to; ++t) {
-      if (!mesh.is_live(t)) continue;
-      for (unsigned i = 0; i < 3; ++i) {
-        const Point& p = mesh.point(mesh.corner[edge_of(t, i)]);
-        key[t] += along_x ? p.x : p.y;
-      }
-      mine.push_back(key[t]);
+  std::vector<double> keys;
+  keys.reserve(mesh.live_triangles());
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    for (unsigned i = 0; i < 3; ++i) {
+      const Point& p = mesh.point(mesh.corner[edge_of(t, i)]);
+      key[t] += along_x ? p.x : p.y;
     }
-    (half == 0 ? all : upper_keys) = std::move(mine);
-  });
-  all.insert(all.end(), upper_keys.begin(), upper_keys.end());
-  std::vector<double>().swap(upper_keys);
-  if (all.empty()) return {};
-  const auto middle = all.begin() + static_cast<std::ptrdiff_t>(all.size() / 2);
-  std::nth_element(all.begin(), middle, all.end());
+    keys.push_back(key[t]);
+  }
+  if (keys.empty()) return {};
+  const auto middle = keys.begin() + static_cast<std::ptrdiff_t>(keys.size() / 2);
+  std::nth_element(keys.begin(), middle, keys.end());
   const double median = *middle;
   std::vector<std::uint8_t> moves(mesh.triangle_slots(), 0);
   std::size_t left = 0;
   for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
     if (mesh.is_live(t)) left += (moves[t] = key[t] < median ? 0 : 1) == 0;
-  if (4 * left < all.size() || 4 * (all.size() - left) < all.size()) return {};
+  if (4 * left < keys.size() || 4 * (keys.size() - left) < keys.size()) return {};
   return moves;
 }
 
@@ -426,7 +397,7 @@ PartResult refine_cut(Mesh& mesh, Predicates& pred, const PartPlan& plan, Termin
 }
 
 PartResult refine_part(Mesh& mesh, Predicates& pred, const PartPlan& plan, TerminatorStart start) {
-  const std::vector<std::uint8_t> moves = plan.depth > 0 ? cut_in_two(mesh, plan.threads) : std::vector<std::uint8_t>{};
+  const std::vector<std::uint8_t> moves = plan.depth > 0 ? cut_in_two(mesh) : std::vector<std::uint8_t>{};
   if (moves.empty()) return refine_whole_part(mesh, pred, *plan.parts, std::move(start));
   return refine_cut(mesh, pred, plan, std::move(start), moves);
 }
@@ -461,7 +432,7 @@ RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions&
   whole.extent = extent_of(mesh);  // the parts' scale: every vertex, the initial splits included
   const std::uint64_t cap = whole.steiner_cap;
   const PartPlan plan{depth, std::max(1, opt.threads), &one_thread, &opt, steiner_of(initial), true};
-  const std::vector<std::uint8_t> moves = cut_in_two(mesh, opt.threads);
+  const std::vector<std::uint8_t> moves = cut_in_two(mesh);
   if (moves.empty()) {  // nothing to cut: one Terminator on the whole mesh
     RefineReport report = Terminator(mesh, pred, opt, std::move(whole)).run();
     add_counts(report, initial);

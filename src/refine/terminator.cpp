@@ -114,7 +114,9 @@ void reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
   const std::size_t triangles = static_cast<std::size_t>(slots + added);
   const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(added / 2.0);
   try {
-    mesh.reserve_room(triangles, vertices, opt.threads >= 2 && mesh.triangle_slots() >= TerminatorStart::kParallelStartSlots);
+    mesh.reserve_triangles(triangles);
+    mesh.points.reserve(vertices);
+    mesh.kind.reserve(vertices);
   } catch (const std::bad_alloc&) {
     // address space is short (a ulimit): grow as needed instead
   }
