@@ -315,7 +315,8 @@ Held hold_only(Mesh& mesh, const CutOff& cut, std::vector<char> keep, int thread
 namespace {
 
 // hold_all's work on everything but the corners.
-void hold_all_but_corners(Mesh& mesh, Held& held, const CutOff& cut, std::size_t records) {
+void hold_all_but_corners(Mesh& mesh, Held& held, const CutOff& cut) {
+  const std::size_t records = mesh.subsegments.size();
   const auto to_whole = [&](VertexId v) { return held.whole_vertex(v); };
   detail::subseg_slots(mesh).remap([&](SubsegmentId s) { return s < records ? held.whole_record(s) : s; });
   for (Subsegment& r : mesh.subsegments) r.a = to_whole(r.a), r.b = to_whole(r.b);
@@ -337,14 +338,12 @@ void hold_all_but_corners(Mesh& mesh, Held& held, const CutOff& cut, std::size_t
 
 // As in hold_only, the corners on a second thread.
 void hold_all(Mesh& mesh, Held& held, const CutOff& cut, int threads) {
-  const std::size_t records = mesh.subsegments.size();
-  const auto to_whole = [&](VertexId v) { return held.whole_vertex(v); };
   run_both(
       threads >= 2,
       [&] {
-        for (EdgeRef e{0}; e < mesh.corner.size(); ++e) detail::corner_slots(mesh)[e] = to_whole(mesh.corner[e]);
+        for (EdgeRef e{0}; e < mesh.corner.size(); ++e) detail::corner_slots(mesh)[e] = held.whole_vertex(mesh.corner[e]);
       },
-      [&] { hold_all_but_corners(mesh, held, cut, records); });
+      [&] { hold_all_but_corners(mesh, held, cut); });
 }
 
 namespace {

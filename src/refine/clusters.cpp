@@ -45,18 +45,27 @@ EdgeRef next_spoke(const Mesh& mesh, EdgeRef e, bool ccw, EdgeRef stop, double& 
   }
 }
 
+// Turns counter-clockwise around the origin of subsegment edge e, calling visit(f) for the edge f
+// leaving it in each triangle passed, to the next subsegment there: returns the edge that carries
+// it (from its far end back to the origin), or kNone when the turn reaches an edge of the mesh that
+// is no subsegment (a boundary left unconstrained) or comes full circle.
+template <class Visit>
+EdgeRef turn_to_next_subsegment(const Mesh& mesh, EdgeRef e, Visit&& visit) {
+  for (EdgeRef f = e;;) {
+    visit(f);
+    const EdgeRef back = lprev(f);  // from the apex of f's triangle back to the origin
+    if (has_subsegment(mesh, back)) return back;
+    f = mesh.link[back];
+    if (f == kNone || f == e) return kNone;
+  }
+}
+
 // The angle inside the domain from subsegment edge e counter-clockwise around its origin to the
-// next subsegment there; HUGE_VAL when the turn reaches an edge of the mesh that is no
-// subsegment (a boundary left unconstrained) or comes full circle.
+// next subsegment there, the sum of the triangles' angles; HUGE_VAL when there is none.
 double wedge_to_next_subsegment(const Mesh& mesh, EdgeRef e) {
   double angle = 0.0;
-  for (EdgeRef f = e;;) {
-    angle += angle_at_origin(mesh, f);
-    const EdgeRef back = lprev(f);  // from the apex of f's triangle back to the origin
-    if (has_subsegment(mesh, back)) return angle;
-    f = mesh.link[back];
-    if (f == kNone || f == e) return HUGE_VAL;
-  }
+  const EdgeRef back = turn_to_next_subsegment(mesh, e, [&](EdgeRef f) { angle += angle_at_origin(mesh, f); });
+  return back == kNone ? HUGE_VAL : angle;
 }
 
 // Where the angle counter-clockwise from direction u to direction w lies against a right angle,
@@ -85,12 +94,9 @@ constexpr std::uint32_t kLongTurn = 10000;
 // by rounding, about 1e-15 a triangle, so where against_right_angle decides, the sum falls on the
 // same side of kAcute. Only wedges within about kClear of a right angle are added up.
 bool acute_wedge(const Mesh& mesh, EdgeRef e) {
-  std::uint32_t triangles = 1;
-  EdgeRef back = lprev(e);
-  for (EdgeRef f = e; !has_subsegment(mesh, back); back = lprev(f), ++triangles) {
-    f = mesh.link[back];
-    if (f == kNone || f == e) return false;  // no wedge: wedge_to_next_subsegment's HUGE_VAL
-  }
+  std::uint32_t triangles = 0;
+  const EdgeRef back = turn_to_next_subsegment(mesh, e, [&](EdgeRef) { ++triangles; });
+  if (back == kNone) return false;  // no wedge: wedge_to_next_subsegment's HUGE_VAL
   if (triangles < kLongTurn) {
     const Point& o = mesh.point(mesh.org(e));
     const Point& d = mesh.point(mesh.dest(e));
