@@ -70,12 +70,10 @@ SegmentReport insert_segments(Mesh& mesh, Predicates& pred, const std::vector<Ps
   for (std::uint32_t block = 0; block < segments.size(); block += kLookBlock) {
     const std::uint32_t end = static_cast<std::uint32_t>(std::min<std::size_t>(segments.size(), block + kLookBlock));
     found.assign(end - block, EdgeFound{});
-    const auto look = [&](std::uint32_t from, std::uint32_t to) {
+    run_halves(threads >= 2 && end - block >= kLeastLookShared, block, end, [&](std::uint32_t from, std::uint32_t to, int) {
       for (std::uint32_t i = from; i < to; ++i)
         if (ends[i].first != kNone && repeat_of[i] == kNone) found[i - block] = inserter.look_ahead(piece(i));
-    };
-    const std::uint32_t mid = block + (end - block) / 2;
-    run_both(threads >= 2 && end - block >= kLeastLookShared, [&] { look(mid, end); }, [&] { look(block, mid); });
+    });
     for (std::uint32_t i = block; i < end; ++i) {
       if (i + kFetchAhead < end) inserter.fetch(found[i + kFetchAhead - block]);
       if (ends[i].first == kNone) continue;

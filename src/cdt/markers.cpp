@@ -38,10 +38,8 @@ void assign_boundary_markers(Mesh& mesh, bool input_had_markers, int threads) {
       if (mesh.marker[v] == 0) mesh.marker[v] = s.marker;
   }
   const EdgeRef edges{static_cast<std::uint32_t>(mesh.corner.size())};
-  const EdgeRef middle{edges / 2};
-  run_both(
-      threads >= 2 && edges >= kParallelMarkerSlots, [&] { mark_boundary_ends(mesh, middle, edges); },
-      [&] { mark_boundary_ends(mesh, EdgeRef{0}, middle); });
+  run_halves(threads >= 2 && edges >= kParallelMarkerSlots, EdgeRef{0}, edges,
+             [&](EdgeRef from, EdgeRef to, int) { mark_boundary_ends(mesh, from, to); });
 }
 
 }  // namespace deltri

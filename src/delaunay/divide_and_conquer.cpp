@@ -34,11 +34,11 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <thread>
 #include <type_traits>
 #include <utility>
 
 #include "mesh/topology_writer.h"
+#include "util/run_both.h"
 
 namespace deltri {
 namespace {
@@ -49,15 +49,6 @@ bool less_on(int axis, const Point& a, const Point& b) {
 }
 
 constexpr std::uint32_t kParallelThreshold = 1u << 15;
-
-// Runs body(from, to) over [0, n), split in two halves on two threads if `parallel`.
-template <class Body>
-void split_in_two(std::size_t n, bool parallel, const Body& body) {
-  if (!parallel) return body(std::size_t{0}, n);
-  std::thread first([&] { body(std::size_t{0}, n / 2); });
-  body(n / 2, n);
-  first.join();
-}
 
 // Splitting work in two pays only when `threads` allows it and there is enough of it.
 bool worth_two(int threads, std::size_t n) { return threads > 1 && n >= kParallelThreshold; }
@@ -89,7 +80,7 @@ class MortonKey {
       Point lo;
       double hi_x = -1e308, hi_y = -1e308;
     } half[2];
-    split_in_two(pts.size(), worth_two(threads, pts.size()), [&](std::size_t from, std::size_t to) {
+    run_halves(worth_two(threads, pts.size()), std::size_t{0}, pts.size(), [&](std::size_t from, std::size_t to, int h) {
       Box box;
       for (std::size_t i = from; i < to; ++i) {
         if (kind[i] != VertexKind::Input) continue;
@@ -98,7 +89,7 @@ class MortonKey {
         box.lo.x = std::min(box.lo.x, p.x), box.lo.y = std::min(box.lo.y, p.y);
         box.hi_x = std::max(box.hi_x, p.x), box.hi_y = std::max(box.hi_y, p.y);
       }
-      half[from == 0 ? 0 : 1] = box;
+      half[h] = box;
     });
     for (const Box& box : half) {
       if (!box.any) continue;
@@ -153,8 +144,8 @@ void radix_sort(BigVector<KeyedVertex>& items, int threads) {
   std::vector<std::uint32_t> count(2 * kDigits);
   for (int d = 0; d < 3; ++d) {
     std::fill(count.begin(), count.end(), 0u);
-    split_in_two(n, two, [&](std::size_t from, std::size_t to) {
-      std::uint32_t* c = &count[from == 0 ? 0 : kDigits];
+    run_halves(two, std::size_t{0}, n, [&](std::size_t from, std::size_t to, int h) {
+      std::uint32_t* c = &count[h * kDigits];
       for (std::size_t k = from; k < to; ++k) ++c[digit(items[k], d)];
     });
     std::uint32_t sum = 0;
@@ -165,8 +156,8 @@ void radix_sort(BigVector<KeyedVertex>& items, int threads) {
       sum += std::exchange(count[kDigits + i], sum);
     }
     if (one_bucket) continue;  // nothing to reorder
-    split_in_two(n, two, [&](std::size_t from, std::size_t to) {
-      std::uint32_t* c = &count[from == 0 ? 0 : kDigits];
+    run_halves(two, std::size_t{0}, n, [&](std::size_t from, std::size_t to, int h) {
+      std::uint32_t* c = &count[h * kDigits];
       for (std::size_t k = from; k < to; ++k) buffer[c[digit(items[k], d)]++] = items[k];
     });
     items.swap(buffer);
@@ -209,13 +200,13 @@ class Builder {
       // test, would share a cache line with this thread's stack.
       PredicateCounters counted;
       // An init-capture: clang before 16 cannot capture a structured binding (the fuzz build).
-      std::thread worker([&, half = half] {
-        Builder other(p_, order_, corner_, link_, key_);
-        left = other.build(lo, half, slot, threads / 2);
-        counted = other.pred.counters;
-      });
-      right = build(lo + half, n - half, right_slot, threads - threads / 2);
-      worker.join();
+      run_both(
+          [&, half = half] {
+            Builder other(p_, order_, corner_, link_, key_);
+            left = other.build(lo, half, slot, threads / 2);
+            counted = other.pred.counters;
+          },
+          [&] { right = build(lo + half, n - half, right_slot, threads - threads / 2); });
       pred.counters.add(counted);
     } else {
       left = build(lo, half, slot, 1);
@@ -487,10 +478,9 @@ BigVector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, in
     if (v == n / 2) first_half = all;
     all += mesh.kind[v] == VertexKind::Input;
   }
-  if (!two) first_half = 0;
   BigVector<KeyedVertex> items(all);
-  split_in_two(n, two, [&](std::size_t from, std::size_t to) {
-    std::size_t k = from == 0 ? 0 : first_half;
+  run_halves(two, std::size_t{0}, n, [&](std::size_t from, std::size_t to, int h) {
+    std::size_t k = h == 0 ? 0 : first_half;
     for (std::size_t v = from; v < to; ++v)
       if (mesh.kind[v] == VertexKind::Input) items[k++] = {key ? (*key)(mesh.points[v]) : 0, static_cast<VertexId>(v)};
   });
@@ -501,7 +491,7 @@ BigVector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, in
 // sorted[k] = points[items[k].id], order[k] = items[k].id; the random reads are split over threads.
 void gather(const BigVector<Point>& points, const BigVector<KeyedVertex>& items,
             BigVector<Point>& sorted, BigVector<VertexId>& order, int threads) {
-  split_in_two(items.size(), worth_two(threads, items.size()), [&](std::size_t from, std::size_t to) {
+  run_halves(worth_two(threads, items.size()), std::size_t{0}, items.size(), [&](std::size_t from, std::size_t to, int) {
     for (std::size_t k = from; k < to; ++k) {
       sorted[k] = points[items[k].id];
       order[k] = items[k].id;
@@ -617,16 +607,16 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   BigVector<KeyedVertex>().swap(items);
   BigVector<Point>().swap(mesh.points);
 
-  const std::size_t slots = 2 * static_cast<std::size_t>(m) - 2;
+  const std::size_t triangles = 2 * static_cast<std::size_t>(m) - 2, edge_slots = 3 * triangles;
   // Zero-filling the two arrays (and faulting in their pages) is done by a thread each.
-  split_in_two(2, worth_two(threads, m), [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k) k == 0 ? detail::corner_slots(mesh).resize(3 * slots) : detail::link_slots(mesh).resize(3 * slots);
-  });
+  run_both(
+      worth_two(threads, m), [&] { detail::corner_slots(mesh).resize(edge_slots); },
+      [&] { detail::link_slots(mesh).resize(edge_slots); });
   Builder builder(sorted.data(), order.data(), detail::corner_slots(mesh), detail::link_slots(mesh), cut_key);
   builder.build(0, m, 0, threads);
   counters.add(builder.pred.counters);
 
-  split_in_two(mesh.corner.size(), worth_two(threads, m), [&](std::size_t from, std::size_t to) {
+  run_halves(worth_two(threads, m), std::size_t{0}, mesh.corner.size(), [&](std::size_t from, std::size_t to, int) {
     for (std::size_t e = from; e < to; ++e)
       if (mesh.corner[e] != kGhostVertex) detail::corner_slots(mesh)[e] = order[mesh.corner[e]];
   });
@@ -636,9 +626,8 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   order.resize(total);
   for (std::size_t k = 0; k < bystanders.size(); ++k) order[m + k] = bystanders[k].first;
   // The vertices' order and the triangles' slots are independent: one thread each.
-  split_in_two(2, worth_two(threads, m), [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k) k == 0 ? permute_in_place(sorted.data(), order.data(), total) : remove_ghosts(mesh);
-  });
+  run_both(
+      worth_two(threads, m), [&] { permute_in_place(sorted.data(), order.data(), total); }, [&] { remove_ghosts(mesh); });
   for (const auto& [v, p] : bystanders) sorted[v] = p;
   mesh.points = std::move(sorted);
 }

@@ -5,13 +5,12 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <exception>
 #include <filesystem>
 #include <system_error>
-#include <thread>
 #include <utility>
 
 #include "pslg/errors.h"
+#include "util/run_both.h"
 
 
 namespace deltri {
@@ -121,23 +120,12 @@ FileText read_sized(FileHandle f, const std::string& path, std::size_t size, int
     read_range(f.get(), path, text.bytes.get(), 0, size);
     return text;
   }
-  std::exception_ptr second_failed;
-  std::thread second([&] {
-    try {
-      FileHandle g = open_or_throw(path);
-      read_range(g.get(), path, text.bytes.get(), size / 2, size);
-    } catch (...) {
-      second_failed = std::current_exception();
-    }
-  });
-  try {
-    read_range(f.get(), path, text.bytes.get(), 0, size / 2);
-  } catch (...) {
-    second.join();
-    throw;
-  }
-  second.join();
-  if (second_failed) std::rethrow_exception(second_failed);
+  run_both(
+      [&] {
+        FileHandle g = open_or_throw(path);
+        read_range(g.get(), path, text.bytes.get(), size / 2, size);
+      },
+      [&] { read_range(f.get(), path, text.bytes.get(), 0, size / 2); });
   return text;
 }
 

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <climits>
 #include <exception>
-#include <thread>
 
 #include "io/output_numbering.h"
 #include "pslg/errors.h"
+#include "util/run_both.h"
 
 namespace deltri {
 namespace {
@@ -231,9 +231,7 @@ bool read_vertices_in_parallel(LineReader& in, Pslg& out, const NodeHeader& h) {
   first.part = &out;
   first.first = kFirstFromFile;
   second.part = &second_part;
-  std::thread worker(run_half, tail, std::cref(h), std::ref(second));
-  run_half(head, h, first);
-  worker.join();
+  run_both([&] { run_half(tail, h, second); }, [&] { run_half(head, h, first); });
   if (first.fatal) std::rethrow_exception(first.fatal);
   if (second.fatal) std::rethrow_exception(second.fatal);
   const bool first_ran_out = first.count < h.count && first.lines > 0;

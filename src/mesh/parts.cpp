@@ -376,15 +376,13 @@ CutEdges find_cut_edges(const Mesh& mesh, const CutOff& cut, const PartIds& ids,
 // The two halves of the slots are searched at once with `threads` 2 or more; the upper half's
 // finds come later in slot order, as in one pass.
 std::vector<EdgeRef> sew_cut(Mesh& mesh, const CutOff& cut, const PartIds& ids, SubsegmentId mark, int threads) {
-  const EdgeRef edges{static_cast<std::uint32_t>(mesh.corner.size())}, middle{edges / 2};
-  CutEdges lower, upper;
-  run_both(
-      threads >= 2, [&] { upper = find_cut_edges(mesh, cut, ids, mark, middle, edges); },
-      [&] { lower = find_cut_edges(mesh, cut, ids, mark, EdgeRef{0}, middle); });
+  CutEdges half[2];
+  run_halves(threads >= 2, EdgeRef{0}, EdgeRef{static_cast<std::uint32_t>(mesh.corner.size())},
+             [&](EdgeRef from, EdgeRef to, int h) { half[h] = find_cut_edges(mesh, cut, ids, mark, from, to); });
   const auto later = [](EdgeRef low, EdgeRef high) { return high != kNone ? high : low; };
   std::vector<EdgeRef> stayed(cut.cut_keys.size(), kNone);
   for (std::size_t k = 0; k < stayed.size(); ++k) {
-    const EdgeRef e = later(lower.stayed[k], upper.stayed[k]), f = later(lower.moved[k], upper.moved[k]);
+    const EdgeRef e = later(half[0].stayed[k], half[1].stayed[k]), f = later(half[0].moved[k], half[1].moved[k]);
     if (e == kNone || f == kNone) throw std::logic_error("the parts' cut edges do not match");
     mesh.bond(e, f);
     if (mesh.subseg[e] == mark) {

@@ -232,24 +232,17 @@ void mark_misses(const Mesh& m, const BoundRequest& r, const AngleTest& test, Tr
 // halves' add up to what one pass finds, whatever the thread count.
 BoundMisses first_pass(const Mesh& m, const BoundRequest& r, const AngleTest& test, std::vector<char>& missing) {
   const TriangleId slots{m.triangle_slots()};
-  BoundMisses out;
-  if (r.threads < 2 || slots < kParallelSlots) {
-    mark_misses(m, r, test, TriangleId{0}, slots, missing, out);
-    return out;
-  }
-  const TriangleId middle{slots / 2};
-  BoundMisses upper;
-  run_both(
-      [&] {
-        BoundMisses mine;  // counted on the worker's stack, not beside `out` on this one's
-        mark_misses(m, r, test, middle, slots, missing, mine);
-        upper = mine;
-      },
-      [&] { mark_misses(m, r, test, TriangleId{0}, middle, missing, out); });
-  out.below_angle += upper.below_angle;
-  out.above_size += upper.above_size;
-  out.total += upper.total;
-  return out;
+  BoundMisses half[2];
+  run_halves(r.threads >= 2 && slots >= kParallelSlots, TriangleId{0}, slots,
+             [&](TriangleId from, TriangleId to, int h) {
+               BoundMisses mine;  // counted on each thread's own stack, not side by side
+               mark_misses(m, r, test, from, to, missing, mine);
+               half[h] = mine;
+             });
+  half[0].below_angle += half[1].below_angle;
+  half[0].above_size += half[1].above_size;
+  half[0].total += half[1].total;
+  return half[0];
 }
 
 }  // namespace

@@ -119,12 +119,11 @@ std::uint64_t count_hopeless_edges(const Mesh& mesh, double sin2_theta, int thre
     }
     return count;
   };
-  const EdgeRef edges{static_cast<std::uint32_t>(mesh.corner.size())}, middle{edges / 2};
-  std::uint64_t upper = 0, lower = 0;
-  run_both(
-      threads >= 2 && mesh.triangle_slots() >= TerminatorStart::kParallelStartSlots,
-      [&] { upper = count_in(middle, edges); }, [&] { lower = count_in(EdgeRef{0}, middle); });
-  return lower + upper;
+  std::uint64_t count[2] = {0, 0};
+  run_halves(threads >= 2 && mesh.triangle_slots() >= TerminatorStart::kParallelStartSlots, EdgeRef{0},
+             EdgeRef{static_cast<std::uint32_t>(mesh.corner.size())},
+             [&](EdgeRef from, EdgeRef to, int half) { count[half] = count_in(from, to); });
+  return count[0] + count[1];
 }
 
 void Terminator::find_hopeless_edges() {

@@ -275,21 +275,17 @@ std::vector<EdgeRef> Terminator::initially_encroached() {
     }
   };
   const EdgeRef edges{static_cast<std::uint32_t>(mesh_.corner.size())};
-  std::vector<EdgeRef> found;
-  if (opt_.threads < 2 || mesh_.triangle_slots() < TerminatorStart::kParallelStartSlots) {
-    scan(EdgeRef{0}, edges, pred_, found);
-    return found;
-  }
-  const EdgeRef middle{edges / 2};
-  std::vector<EdgeRef> upper;
+  std::vector<EdgeRef> found, upper;
   PredicateCounters upper_counted;
-  run_both(
-      [&] {
-        Predicates upper_pred;  // counting on the worker's stack, not in a line this thread writes
-        scan(middle, edges, upper_pred, upper);
-        upper_counted = upper_pred.counters;
-      },
-      [&] { scan(EdgeRef{0}, middle, pred_, found); });
+  run_halves(opt_.threads >= 2 && mesh_.triangle_slots() >= TerminatorStart::kParallelStartSlots, EdgeRef{0}, edges,
+             [&](EdgeRef from, EdgeRef to, int half) {
+               if (half == 0) return scan(from, to, pred_, found);
+               Predicates upper_pred;  // counting on the worker's stack, not in a line this thread writes
+               std::vector<EdgeRef> mine;
+               scan(from, to, upper_pred, mine);
+               upper = std::move(mine);
+               upper_counted = upper_pred.counters;
+             });
   pred_.counters.add(upper_counted);
   found.insert(found.end(), upper.begin(), upper.end());
   return found;

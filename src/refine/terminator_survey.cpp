@@ -44,19 +44,14 @@ void Terminator::survey(TriangleId from, TriangleId to, RefineReport& into) cons
 // last of equally skinny triangles, the first of equally oversized ones).
 void Terminator::survey_remaining() {
   const TriangleId slots{mesh_.triangle_slots()};
-  if (opt_.threads < 2 || slots < kParallelSurveySlots) {
-    survey(TriangleId{0}, slots, report_);
-    return;
-  }
-  const TriangleId middle{slots / 2};
   RefineReport upper;
-  run_both(
-      [&] {
-        RefineReport mine;  // tallied on the worker's stack, apart from what this thread writes
-        survey(middle, slots, mine);
-        upper = std::move(mine);
-      },
-      [&] { survey(TriangleId{0}, middle, report_); });
+  run_halves(opt_.threads >= 2 && slots >= kParallelSurveySlots, TriangleId{0}, slots,
+             [&](TriangleId from, TriangleId to, int half) {
+               if (half == 0) return survey(from, to, report_);
+               RefineReport mine;  // tallied on the worker's stack, apart from what this thread writes
+               survey(from, to, mine);
+               upper = std::move(mine);
+             });
   report_.bad_triangles_left += upper.bad_triangles_left;
   report_.oversized_left += upper.oversized_left;
   report_.skinny_left += upper.skinny_left;

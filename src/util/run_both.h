@@ -1,4 +1,5 @@
-// Two independent jobs at once: the one place refinement starts threads for work of its own.
+// Two independent jobs at once, and a range's two halves at once: the one place the pipeline
+// starts threads for work of its own.
 #pragma once
 
 #include <exception>
@@ -47,6 +48,16 @@ void run_both(bool parallel, First&& first, Second&& second) {
     first();
     second();
   }
+}
+
+// Splits [begin, end) at its middle and calls part(from, to, half) for each half: the upper
+// (half 1) on a second thread and the lower (half 0) on this one when `parallel`, else both here.
+// The halves must not depend on each other; what each finds is kept by half and combined as one
+// pass over the whole range would have found it, so that the answer is the same for any threads.
+template <class Index, class Part>
+void run_halves(bool parallel, Index begin, Index end, Part&& part) {
+  const Index middle{begin + (end - begin) / 2};
+  run_both(parallel, [&] { part(middle, end, 1); }, [&] { part(begin, middle, 0); });
 }
 
 }  // namespace deltri
