@@ -165,32 +165,33 @@ Box extent_of(const Mesh& mesh) {
   return box;
 }
 
-// Two sets of passes over the mesh, of about equal cost on large inputs (45x45 holes: 12 and 16
-// ms): the feature sizes, from which come the guard's floor and the Steiner cap, and the input's
-// angles, segment pieces and apices. With a second thread and a large mesh they run at once, and
-// the cap is computed alongside before the angles say whether the proven range lifts it (then it
-// is dropped); on one thread only when needed. The feature sizes are found once for both uses.
+// Passes over the mesh in two rounds of two, each pair of about equal cost on large inputs (45x45
+// holes: 7 ms each, then 7 and 2): the feature sizes beside the input's angles and apices, then the
+// Steiner cap, which needs the sizes, beside the segment pieces. With a second thread and a large
+// mesh each pair runs at once, and the cap is computed before the angles say whether the proven
+// range lifts it (then it is dropped); on one thread only when needed. The feature sizes are found
+// once for both uses.
 TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) {
   TerminatorStart start;
   const bool parallel = opt.threads > 1 && mesh.triangle_slots() >= kParallelStartSlots;
   // A caller's size test asks for what is unknown in advance: memory alone caps the work then.
   const bool may_cap = opt.size_test == nullptr;
   std::vector<double> features;
-  std::optional<std::uint64_t> cap;
-  // The sizes take about twice the angles' time since the shells are read off directions; the
-  // segment pieces stay with the sizes all the same: made on the other thread they raised the
-  // 45x45 holes' peak by 0.5-0.8 MiB (benchmarks.md, "Serial steps of the parts on two threads").
-  const auto sizes = [&] {
-    features = initial_feature_sizes(mesh);
-    if (parallel && may_cap) cap = deltri::steiner_cap(mesh, opt.size, features);
-    start.pieces = SegmentPieces(mesh);
-  };
   double input_angle = HUGE_VAL;
-  const auto angles = [&] {
-    input_angle = smallest_input_angle(mesh);
-    start.apices = SegmentApices(mesh);
-  };
-  run_both(parallel, sizes, angles);
+  run_both(
+      parallel, [&] { features = initial_feature_sizes(mesh); },
+      [&] {
+        input_angle = smallest_input_angle(mesh);
+        start.apices = SegmentApices(mesh);
+      });
+  std::optional<std::uint64_t> cap;
+  // The segment pieces are made on the second thread: made on this one they raised the 45x45
+  // holes' peak by 0.5-0.8 MiB (benchmarks.md, "Serial steps of the parts on two threads").
+  run_both(
+      parallel, [&] { start.pieces = SegmentPieces(mesh); },
+      [&] {
+        if (parallel && may_cap) cap = deltri::steiner_cap(mesh, opt.size, features);
+      });
   start.proven_range = proven_for(opt, input_angle);
   start.guard_floor = guard_floor_of(mesh, opt, input_angle, features);
   // Within the proven range the theorems bound the work.

@@ -1,5 +1,5 @@
-// Two independent jobs at once, and a range's two halves at once: the one place the pipeline
-// starts threads for work of its own.
+// Two independent jobs at once, and a range's two halves at once: where the pipeline's threads
+// start, but for the writers' pool (io/output_set.cpp) and the page warmer's worker.
 #pragma once
 
 #include <exception>
