@@ -50,6 +50,16 @@ bool less_on(int axis, const Point& a, const Point& b) {
 
 constexpr std::uint32_t kParallelThreshold = 1u << 15;
 
+// Runs body(from, to) over [0, n), split in two halves on two threads if `parallel`. The stage
+// keeps this beside run_halves: with run_halves in these loops the 1M points' stage measured 4-5%
+// slower in several builds, the time going to the recursion, whose code had not changed (code
+// layout; benchmarks.md, 2026-12-05).
+template <class Body>
+void split_in_two(std::size_t n, bool parallel, const Body& body) {
+  if (!parallel) return body(std::size_t{0}, n);
+  run_both([&] { body(std::size_t{0}, n / 2); }, [&] { body(n / 2, n); });
+}
+
 // Splitting work in two pays only when `threads` allows it and there is enough of it.
 bool worth_two(int threads, std::size_t n) { return threads > 1 && n >= kParallelThreshold; }
 
@@ -80,7 +90,7 @@ class MortonKey {
       Point lo;
       double hi_x = -1e308, hi_y = -1e308;
     } half[2];
-    run_halves(worth_two(threads, pts.size()), std::size_t{0}, pts.size(), [&](std::size_t from, std::size_t to, int h) {
+    split_in_two(pts.size(), worth_two(threads, pts.size()), [&](std::size_t from, std::size_t to) {
       Box box;
       for (std::size_t i = from; i < to; ++i) {
         if (kind[i] != VertexKind::Input) continue;
@@ -89,7 +99,7 @@ class MortonKey {
         box.lo.x = std::min(box.lo.x, p.x), box.lo.y = std::min(box.lo.y, p.y);
         box.hi_x = std::max(box.hi_x, p.x), box.hi_y = std::max(box.hi_y, p.y);
       }
-      half[h] = box;
+      half[from == 0 ? 0 : 1] = box;
     });
     for (const Box& box : half) {
       if (!box.any) continue;
@@ -144,8 +154,8 @@ void radix_sort(BigVector<KeyedVertex>& items, int threads) {
   std::vector<std::uint32_t> count(2 * kDigits);
   for (int d = 0; d < 3; ++d) {
     std::fill(count.begin(), count.end(), 0u);
-    run_halves(two, std::size_t{0}, n, [&](std::size_t from, std::size_t to, int h) {
-      std::uint32_t* c = &count[h * kDigits];
+    split_in_two(n, two, [&](std::size_t from, std::size_t to) {
+      std::uint32_t* c = &count[from == 0 ? 0 : kDigits];
       for (std::size_t k = from; k < to; ++k) ++c[digit(items[k], d)];
     });
     std::uint32_t sum = 0;
@@ -156,8 +166,8 @@ void radix_sort(BigVector<KeyedVertex>& items, int threads) {
       sum += std::exchange(count[kDigits + i], sum);
     }
     if (one_bucket) continue;  // nothing to reorder
-    run_halves(two, std::size_t{0}, n, [&](std::size_t from, std::size_t to, int h) {
-      std::uint32_t* c = &count[h * kDigits];
+    split_in_two(n, two, [&](std::size_t from, std::size_t to) {
+      std::uint32_t* c = &count[from == 0 ? 0 : kDigits];
       for (std::size_t k = from; k < to; ++k) buffer[c[digit(items[k], d)]++] = items[k];
     });
     items.swap(buffer);
@@ -478,9 +488,10 @@ BigVector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, in
     if (v == n / 2) first_half = all;
     all += mesh.kind[v] == VertexKind::Input;
   }
+  if (!two) first_half = 0;
   BigVector<KeyedVertex> items(all);
-  run_halves(two, std::size_t{0}, n, [&](std::size_t from, std::size_t to, int h) {
-    std::size_t k = h == 0 ? 0 : first_half;
+  split_in_two(n, two, [&](std::size_t from, std::size_t to) {
+    std::size_t k = from == 0 ? 0 : first_half;
     for (std::size_t v = from; v < to; ++v)
       if (mesh.kind[v] == VertexKind::Input) items[k++] = {key ? (*key)(mesh.points[v]) : 0, static_cast<VertexId>(v)};
   });
@@ -491,7 +502,7 @@ BigVector<KeyedVertex> order_vertices(const Mesh& mesh, const MortonKey* key, in
 // sorted[k] = points[items[k].id], order[k] = items[k].id; the random reads are split over threads.
 void gather(const BigVector<Point>& points, const BigVector<KeyedVertex>& items,
             BigVector<Point>& sorted, BigVector<VertexId>& order, int threads) {
-  run_halves(worth_two(threads, items.size()), std::size_t{0}, items.size(), [&](std::size_t from, std::size_t to, int) {
+  split_in_two(items.size(), worth_two(threads, items.size()), [&](std::size_t from, std::size_t to) {
     for (std::size_t k = from; k < to; ++k) {
       sorted[k] = points[items[k].id];
       order[k] = items[k].id;
@@ -616,7 +627,7 @@ void divide_and_conquer_delaunay(Mesh& mesh, const DivideAndConquerOptions& opti
   builder.build(0, m, 0, threads);
   counters.add(builder.pred.counters);
 
-  run_halves(worth_two(threads, m), std::size_t{0}, mesh.corner.size(), [&](std::size_t from, std::size_t to, int) {
+  split_in_two(mesh.corner.size(), worth_two(threads, m), [&](std::size_t from, std::size_t to) {
     for (std::size_t e = from; e < to; ++e)
       if (mesh.corner[e] != kGhostVertex) detail::corner_slots(mesh)[e] = order[mesh.corner[e]];
   });
