@@ -56,7 +56,7 @@ check-debug:
 # nothing: its own build, of those tests only.
 check-tsan:
 	@cmake -S . -B build-tsan -DDELTRI_TSAN=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-	@cmake --build build-tsan -j $(JOBS) --target test_api_threads test_refine test_io test_quality test_delaunay test_cdt
+	@cmake --build build-tsan -j $(JOBS) --target test_api_threads test_refine test_io test_quality test_delaunay test_cdt test_util
 	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/test_api_threads data
 	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/test_refine halves_give_the_same_mesh
 	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/test_io line_ranges
@@ -65,6 +65,7 @@ check-tsan:
 	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/test_io node_
 	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/test_delaunay two_threads_give_identical_mesh
 	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/test_cdt found_edges
+	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/tests/test_util run_
 
 # The README's two commands in a fresh clone of this checkout's HEAD, from a clean environment,
 # with MAKEFLAGS unset and then set to -s (tests/setup/check_fresh.sh). Not part of `make test`.
