@@ -99,6 +99,49 @@ struct SegmentVertices {
   std::vector<std::vector<VertexId>> junctions;       // per input segment: its vertices on other segments too
 };
 
+// The number after every input segment's: the first number a hull edge can take.
+std::uint32_t first_hull_number(const Mesh& m) {
+  std::uint32_t first = 0;
+  for (const Subsegment& r : m.subsegments)
+    if (r.a != kNone && r.segment != kNone) first = std::max(first, r.segment + 1);
+  return first;
+}
+
+std::uint32_t root_of(std::vector<std::uint32_t>& parent, std::uint32_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+// Pieces of the boundary that come from no input segment (the convex hull's edges, with -c or
+// without -p) are numbered after the input segments, one number per hull edge: the pieces joined
+// at vertices refinement put on them (not input vertices) form one edge. So a hull edge meets an
+// input segment, or another hull edge, at a junction as two segments do, and the rules below
+// explain the angles between them, as meshcheck's convex-hull mode and Triangle do.
+void number_hull_edges(const Mesh& m, std::uint32_t first, SegmentVertices& s) {
+  std::vector<std::uint32_t> parent;
+  for (VertexId v{0}; v < m.vertex_count(); ++v)
+    for (Spoke& k : s.spokes[v])
+      if (k.segment == kNone && v < k.to) {  // each piece once, from its lower end
+        k.segment = first + static_cast<std::uint32_t>(parent.size());
+        parent.push_back(static_cast<std::uint32_t>(parent.size()));
+        for (Spoke& back : s.spokes[k.to])
+          if (back.to == v && back.segment == kNone) back.segment = k.segment;
+      }
+  if (parent.empty()) return;
+  for (VertexId v{0}; v < m.vertex_count(); ++v) {
+    if (m.kind[v] == VertexKind::Input) continue;
+    std::uint32_t joined = kNone;
+    for (const Spoke& k : s.spokes[v]) {
+      if (k.segment < first) continue;
+      if (joined == kNone) joined = k.segment - first;
+      else parent[root_of(parent, k.segment - first)] = root_of(parent, joined);
+    }
+  }
+  for (auto& list : s.spokes)
+    for (Spoke& k : list)
+      if (k.segment != kNone && k.segment >= first) k.segment = first + root_of(parent, k.segment - first);
+}
+
 SegmentVertices collect_spokes(const Mesh& m) {
   SegmentVertices s;
   s.spokes.resize(m.vertex_count());
@@ -115,6 +158,7 @@ SegmentVertices collect_spokes(const Mesh& m) {
       s.spokes[b].push_back({std::atan2(p.y - q.y, p.x - q.x), a, seg});
     }
   }
+  number_hull_edges(m, first_hull_number(m), s);
   for (VertexId v{0}; v < m.vertex_count(); ++v) {
     auto& list = s.spokes[v];
     std::sort(list.begin(), list.end(), [](const Spoke& x, const Spoke& y) { return x.direction < y.direction; });

@@ -67,6 +67,58 @@ TEST(the_same_angle_at_a_crossing_deltri_made_is_a_repair_not_the_input) {
   CHECK_EQ(wide.other, 1u);
 }
 
+namespace {
+
+// The thin domain o, a = (10, 0), b = (10, 1) after -c refinement: the hull edge o-a, split at
+// s = (5, 0) and t = (8, 0), and the hull edge a-b are pieces of no input segment; with
+// `segment`, input segment 0 runs o-p-b, p = (5, 0.5) being a split point of it.
+Mesh thin_domain(bool segment) {
+  Mesh m = mesh_of({{0, 0}, {5, 0}, {8, 0}, {10, 0}, {5, 0.5}, {10, 1}});
+  m.kind[1] = m.kind[2] = m.kind[4] = VertexKind::Segment;
+  m.add_triangle(0_v, 1_v, 4_v);  // 5.71 degrees at o
+  m.add_triangle(1_v, 2_v, 4_v);  // 9.46 degrees at t; shortest edge s-p
+  m.add_triangle(2_v, 3_v, 5_v);  // 26.6 degrees at t; shortest edge a-b
+  m.add_triangle(2_v, 5_v, 4_v);  // 15.2 degrees at p; shortest edge t-b
+  m.enable_subsegments();
+  const auto piece = [&](EdgeRef e, VertexId a, VertexId b, std::uint32_t seg) {
+    m.subsegments.push_back({a, b, 1, seg});
+    m.set_subsegment(e, SubsegmentId{static_cast<std::uint32_t>(m.subsegments.size() - 1)});
+  };
+  piece(0_e, 0_v, 1_v, kNone);  // o -> s
+  piece(3_e, 1_v, 2_v, kNone);  // s -> t
+  piece(6_e, 2_v, 3_v, kNone);  // t -> a
+  piece(7_e, 3_v, 5_v, kNone);  // a -> b
+  if (segment) {
+    piece(10_e, 5_v, 4_v, 0);  // b -> p
+    piece(2_e, 4_v, 0_v, 0);   // p -> o
+  }
+  return m;
+}
+
+}  // namespace
+
+// A hull edge meets an input segment at a junction as a segment does: o's 5.71 degrees between the
+// hull edge o-a and segment 0 explains the corner at o (rule 1) and the three triangles whose
+// shortest edge joins the two (rule 2), as meshcheck's convex-hull mode does. When hull pieces
+// counted as no segment at all, those three were "other", and -pq20Dc --strict refused
+// dengwirda__mesh2d's lake.poly, all of whose small angles meshcheck explains.
+TEST(a_hull_edge_meets_an_input_segment_at_a_junction) {
+  const BoundMisses b = count_bound_misses(thin_domain(true), angle(30));
+  CHECK_EQ(b.below_angle, 4u);
+  CHECK_EQ(b.small_input_angle, 4u);
+  CHECK_EQ(b.not_forced_by_input(), 0u);
+}
+
+// The pieces of one hull edge, joined at the points refinement put on it, are one edge: s and t are
+// not junctions, so the triangles at them are not "next to a repaired crossing", and with no input
+// segment nothing but a small hull corner could explain them (o has one hull edge only here).
+TEST(the_pieces_of_a_hull_edge_are_one_edge) {
+  const BoundMisses b = count_bound_misses(thin_domain(false), angle(30));
+  CHECK_EQ(b.below_angle, 4u);
+  CHECK_EQ(b.repaired_input, 0u);
+  CHECK_EQ(b.other, 4u);
+}
+
 TEST(without_segments_a_skinny_triangle_is_unexplained_or_at_the_limits) {
   CHECK_EQ(count_bound_misses(wedge(false, VertexKind::Input), angle(30)).other, 1u);
   BoundRequest r = angle(30);

@@ -22,7 +22,9 @@ sed 's/^/  stderr: /' "$work/stderr"
 case $status in
   0)
     case $switches in *q*|*a*|*u*) refined=--refined ;; *) refined= ;; esac
-    case $name in *.node) hull=--convex-hull ;; *) hull= ;; esac
+    # The convex hull bounds the mesh of a .node, and with -c (the first single-dash word).
+    triangle_switches=$(printf '%s\n' $switches | grep -m 1 '^-[^-]')
+    case $name:$triangle_switches in *.node:* | *:*c*) hull=--convex-hull ;; *) hull= ;; esac
     # "# check: exact only": segments spanning hundreds of orders of magnitude, which the
     # verifier's long double parametrisation of a segment cannot order; the exact checker can.
     if ! sed -n 2p "$input" | grep -q '^# check: exact only'; then
