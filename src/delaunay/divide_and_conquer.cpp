@@ -209,14 +209,14 @@ class Builder {
       // The worker's builder lives on the worker's stack: its predicate counters, written at every
       // test, would share a cache line with this thread's stack.
       PredicateCounters counted;
-      // An init-capture: clang before 16 cannot capture a structured binding (the fuzz build).
+      // Init-captures: clang before 16 cannot capture a structured binding (the fuzz build).
       run_both(
           [&, half = half] {
             Builder other(p_, order_, corner_, link_, key_);
             left = other.build(lo, half, slot, threads / 2);
             counted = other.pred.counters;
           },
-          [&] { right = build(lo + half, n - half, right_slot, threads - threads / 2); });
+          [&, half = half] { right = build(lo + half, n - half, right_slot, threads - threads / 2); });
       pred.counters.add(counted);
     } else {
       left = build(lo, half, slot, 1);

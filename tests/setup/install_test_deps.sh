@@ -21,7 +21,8 @@ gmsh|cmd:gmsh
 librsvg2-bin|cmd:rsvg-convert
 getdp|cmd:getdp
 freefem++|cmd:FreeFem++
-libfreefem++|deb:libfreefem++'
+libfreefem++|deb:libfreefem++
+clang|cmd:clang++'
 
 present() {
   case $1 in
