@@ -58,11 +58,6 @@ bool misses_angle(const Point& a, const Point& b, const Point& c, const AngleTes
   return test.below(a, b, c) || test.below(b, c, a) || test.below(c, a, b);
 }
 
-bool misses_angle(const Mesh& m, TriangleId t, const AngleTest& test) {
-  const auto [a, b, c] = m.corner_points(t);
-  return misses_angle(a, b, c, test);
-}
-
 bool misses_size(const Mesh& m, TriangleId t, const Point& a, const Point& b, const Point& c, const BoundRequest& r) {
   const double area = 0.5 * std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
   if (r.size.max_area > 0.0 && area > r.size.max_area * (1.0 + kMargin)) return true;
@@ -250,13 +245,17 @@ VertexId explaining_junction(const Mesh& m, const SegmentVertices& s, TriangleId
   return kNone;
 }
 
+// What a triangle misses, in its entry of the first pass's `missing`.
+constexpr char kMissesAngle = 1, kMissesSize = 2;
+
 // Slots from which the first pass takes two threads, as the Terminator's closing survey does.
 constexpr std::uint32_t kParallelSlots = 100000;
 // The corners come in slot order, their points from anywhere: fetched this many slots ahead.
 constexpr std::uint32_t kPrefetchSlots = 16;
 
 // The first pass over slots [from, to): the three first counts into `out` (which starts at zero),
-// missing[t] set for the triangles that miss. Each corner's points are loaded once for both tests.
+// missing[t] set to what each triangle misses (kMissesAngle, kMissesSize). Each corner's points are
+// loaded once for both tests.
 void mark_misses(const Mesh& m, const BoundRequest& r, const AngleTest& test, TriangleId from, TriangleId to,
                  std::vector<char>& missing, BoundMisses& out) {
   for (TriangleId t = from; t < to; ++t) {
@@ -267,8 +266,8 @@ void mark_misses(const Mesh& m, const BoundRequest& r, const AngleTest& test, Tr
     const bool angle = misses_angle(a, b, c, test), size = misses_size(m, t, a, b, c, r);
     out.below_angle += angle;
     out.above_size += size;
-    missing[t] = angle || size;
-    out.total += missing[t];
+    missing[t] = static_cast<char>((angle ? kMissesAngle : 0) | (size ? kMissesSize : 0));
+    out.total += missing[t] != 0;
   }
 }
 
@@ -299,7 +298,8 @@ BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
   const SegmentVertices s = collect_spokes(m);
   for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t) || !missing[t]) continue;
-    const VertexId j = misses_angle(m, t, angle_test) ? explaining_junction(m, s, t) : kNone;
+    // The input explains a small angle, never a size: a triangle too large is not forced by it.
+    const VertexId j = missing[t] == kMissesAngle ? explaining_junction(m, s, t) : kNone;
     bool touches_repair = false, touches_segment = false;
     for (int i = 0; i < 3; ++i) {
       const VertexId v = m.corner[edge_of(t, i)];

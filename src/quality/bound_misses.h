@@ -6,13 +6,14 @@
 // the -a bound (or its own regional / .area bound), or its longest edge is above the -u length.
 // Each such triangle gets the first of these causes that applies (docs/manual.md, "Quality
 // accounting"):
-//   small_input_angle  its angle miss is explained by the input, at an input vertex j: (1) a corner
-//                      j where segments meet, with the other two corners inside the sector between
-//                      two neighbouring segments at j, that sector under 60 degrees; or its shortest
-//                      edge joins points on two input segments that meet at j and (2) meet there at
-//                      under 60 degrees (the wedge between them), or (3) lie at distances from j
-//                      equal within 1%, the edge not itself on a segment (the isosceles triangles of
-//                      concentric shells). These are the exemptions of Miller, Pav and Walkington
+//   small_input_angle  it misses no size bound, and its angle miss is explained by the input, at an
+//                      input vertex j: (1) a corner j where segments meet, with the other two corners
+//                      inside the sector between two neighbouring segments at j, that sector under
+//                      60 degrees; or its shortest edge joins points on two input segments that
+//                      meet at j and (2) meet there at under 60 degrees (the wedge between them), or
+//                      (3) lie at distances from j equal within 1%, the edge not itself on a segment
+//                      (the isosceles triangles of concentric shells). Hull edges (-c, .node inputs)
+//                      count as segments. These are the exemptions of Miller, Pav and Walkington
 //                      and of Triangle; tests/tools/verify_quality.cpp checks meshes by the same rules;
 //   repaired_input     the same explanation at a vertex deltri made where input segments cross or
 //                      overlap (not an input vertex, yet on two or more input segments), or a corner

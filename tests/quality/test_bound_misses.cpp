@@ -48,6 +48,21 @@ TEST(a_skinny_triangle_between_two_input_segments_is_forced_by_the_input) {
   CHECK_EQ(count_bound_misses(wedge(true, VertexKind::Input), angle(5)).total, 0u);
 }
 
+// The input explains a small angle, not a size: the same wedge above an area bound is not forced
+// by the input, whether or not it also misses the angle (its area is 5).
+TEST(a_triangle_too_large_is_not_forced_by_a_small_input_angle) {
+  BoundRequest r = angle(30);
+  r.size.max_area = 4;
+  const BoundMisses b = count_bound_misses(wedge(true, VertexKind::Input), r);
+  CHECK_EQ(b.total, 1u);
+  CHECK_EQ(b.below_angle, 1u);
+  CHECK_EQ(b.above_size, 1u);
+  CHECK_EQ(b.small_input_angle, 0u);
+  CHECK_EQ(b.not_forced_by_input(), 1u);
+  r.size.max_area = 6;
+  CHECK_EQ(count_bound_misses(wedge(true, VertexKind::Input), r).small_input_angle, 1u);
+}
+
 TEST(the_same_angle_at_a_crossing_deltri_made_is_a_repair_not_the_input) {
   const BoundMisses b = count_bound_misses(wedge(true, VertexKind::Segment), angle(30));
   CHECK_EQ(b.repaired_input, 1u);
