@@ -212,13 +212,16 @@ double junction_angle(const SegmentVertices& s, VertexId j, std::uint32_t a, std
   return smallest;
 }
 
-// Rules 2 and 3 for the edge p-q: the junction they explain the triangle by, or kNone.
+// Rules 2 and 3 for the edge p-q: the junction they explain the triangle by, or kNone. An edge
+// with an end at the junction spans no wedge: it lies along one of the two segments, and its
+// triangle is inside their small angle (rule 1 at that end) or outside it, unexplained.
 VertexId junction_of_edge(const Mesh& m, const SegmentVertices& s, VertexId p, VertexId q, bool edge_on_segment) {
   const double small = kSmallInputAngle * std::numbers::pi / 180.0;
   for (std::uint32_t a : s.segments[p])
     for (std::uint32_t b : s.segments[q]) {
       if (a == b || a == kNone || b == kNone || a >= s.junctions.size()) continue;
       for (VertexId j : s.junctions[a]) {
+        if (j == p || j == q) continue;
         if (std::find(s.segments[j].begin(), s.segments[j].end(), b) == s.segments[j].end()) continue;
         if (junction_angle(s, j, a, b) < small) return j;                     // rule 2: the wedge
         const double dp = length(m.points[p], m.points[j]), dq = length(m.points[q], m.points[j]);

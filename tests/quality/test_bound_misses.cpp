@@ -63,6 +63,31 @@ TEST(a_triangle_too_large_is_not_forced_by_a_small_input_angle) {
   CHECK_EQ(count_bound_misses(wedge(true, VertexKind::Input), r).small_input_angle, 1u);
 }
 
+// Input segments a (j = (0, 0) to (10, 0), through p = (5, 0)) and b (j to (10, 1)) meet at j at
+// 5.71 degrees. The triangle j, r, p with r = (2.5, -30) lies outside that angle, below a: its
+// shortest edge j-p runs along a to the junction itself and spans no wedge, so nothing in the input
+// explains its 9.5 degrees at r (meshcheck agrees). It was counted as forced by the input: found on
+// earcut's touching-holes6.poly at -pq30Y, by comparing the account with meshcheck's.
+TEST(an_edge_along_a_segment_to_the_junction_spans_no_wedge) {
+  Mesh m = mesh_of({{0, 0}, {5, 0}, {10, 0}, {10, 1}, {2.5, -30}});
+  m.kind[1] = VertexKind::Segment;
+  m.add_triangle(0_v, 4_v, 1_v);  // below a: 9.5 degrees at r, shortest edge j-p
+  m.add_triangle(0_v, 1_v, 3_v);  // inside the angle: 5.71 degrees at j (rule 1)
+  m.add_triangle(1_v, 2_v, 3_v);  // inside the angle: shortest edge (10,0)-(10,1) spans it (rule 2)
+  bond_all(m);
+  m.enable_subsegments();
+  m.subsegments.push_back({0_v, 1_v, 1, 0});
+  m.subsegments.push_back({1_v, 2_v, 1, 0});
+  m.subsegments.push_back({3_v, 0_v, 1, 1});
+  m.set_subsegment(3_e, 0_s);  // j -> p
+  m.set_subsegment(6_e, 1_s);  // p -> (10, 0)
+  m.set_subsegment(5_e, 2_s);  // (10, 1) -> j
+  const BoundMisses b = count_bound_misses(m, angle(30));
+  CHECK_EQ(b.below_angle, 3u);
+  CHECK_EQ(b.small_input_angle, 2u);
+  CHECK_EQ(b.other, 1u);
+}
+
 TEST(the_same_angle_at_a_crossing_deltri_made_is_a_repair_not_the_input) {
   const BoundMisses b = count_bound_misses(wedge(true, VertexKind::Segment), angle(30));
   CHECK_EQ(b.repaired_input, 1u);

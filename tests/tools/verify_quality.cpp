@@ -5,7 +5,8 @@
 // 1. a corner at a vertex where input segments meet, inside the angle between two neighbouring
 //    segments there when that angle is under 60 degrees: no mesh does better inside it;
 // 2. a shortest edge joining points on two input segments that meet (at a shared end, an end of
-//    one lying on the other, or a crossing) at an angle under 60 degrees: the wedge between them;
+//    one lying on the other, or a crossing) at an angle under 60 degrees, neither end being the
+//    meeting point: the wedge between them;
 // 3. a shortest edge joining points on two segments that meet, at distances from the meeting
 //    point equal within 1%: the isosceles triangles of concentric shells (Miller, Pav and
 //    Walkington's exemption; Triangle 1.6 applies it at any junction angle), unless that edge is
@@ -122,6 +123,8 @@ class Explainer {
       for (int s2 : c_.segments_at[b]) {
         if (s1 == s2) continue;
         for (const Point& j : meeting_points(s1, s2)) {
+          // An edge with an end at j lies along a segment and spans no wedge (rule 1 or nothing).
+          if (c_.out.points[a] == j || c_.out.points[b] == j) continue;
           if (meeting_angle(s1, s2, j) < kSmallInputAngle) return true;
           const long double da = distance(c_.out.points[a], j), db = distance(c_.out.points[b], j);
           if (!on_a_segment && da > 0 && db > 0 && std::fabs(da - db) <= 0.01L * std::max(da, db)) return true;
