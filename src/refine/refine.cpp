@@ -57,8 +57,6 @@ RefineReport refine_beyond_reach(Mesh& mesh, Predicates& pred, const RefineOptio
   return Terminator(mesh, pred, opt, std::move(start)).run();
 }
 
-}  // namespace
-
 // Above kCascadeAngleDeg refinement can cascade (Sec. 7.3, Fig. 37): each generation of vertices
 // closer together than the last. So the mesh is first refined to kCascadeAngleDeg, which refinement
 // reaches, then on at the asked bound with at most kCascadeAllowance Steiner points per vertex of
@@ -67,12 +65,7 @@ RefineReport refine_beyond_reach(Mesh& mesh, Predicates& pred, const RefineOptio
 // higher bound must not give a worse mesh, so the first stage's mesh is taken back, and the report
 // counts its triangles that miss the asked bound. Either way the run ends within a small multiple
 // of the first stage's size, time and memory (the copy kept is one more first-stage mesh).
-RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& asked) {
-  refuse_impossible_size_bounds(mesh, asked);
-  const bool given = asked.area_field != nullptr && !asked.area_field->empty();
-  const AreaField field = asked.size.triangle_bounds && !given ? AreaField::of(mesh) : AreaField{};
-  RefineOptions opt = asked;
-  if (!given) opt.area_field = &field;
+RefineReport refine_in_stages(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
   if (!opt.angle.cascades()) return refine_within_reach(mesh, pred, opt);
   RefineOptions reach = opt;
   reach.angle = AngleBound(kCascadeAngleDeg);
@@ -93,6 +86,31 @@ RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& aske
   }
   report.in_two_stages = true;
   report.first_stage_steiner = steiner_of(first);
+  return report;
+}
+
+// Each triangle's entry in mesh.area_bound becomes the bound refinement held it to: that of the
+// initial triangle its centroid lies in (refine/area_field.h). The entries handed on by slot can
+// differ, and the quality account (quality/bound_misses.h) reads them.
+void record_field_bounds(Mesh& mesh, const AreaField& field) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    const auto [a, b, c] = mesh.corner_points(t);
+    mesh.area_bound[t] = field.bound_at({(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0});
+  }
+}
+
+}  // namespace
+
+RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& asked) {
+  refuse_impossible_size_bounds(mesh, asked);
+  const bool given = asked.area_field != nullptr && !asked.area_field->empty();
+  const AreaField field = asked.size.triangle_bounds && !given ? AreaField::of(mesh) : AreaField{};
+  RefineOptions opt = asked;
+  if (!given) opt.area_field = &field;
+  const RefineReport report = refine_in_stages(mesh, pred, opt);
+  if (!opt.area_field->empty() && mesh.area_bound.size() == mesh.triangle_slots())
+    record_field_bounds(mesh, *opt.area_field);
   return report;
 }
 
