@@ -12,6 +12,27 @@
 
 namespace deltri {
 
+namespace {
+
+// The first step from u in another fan of u. Where the domain pinches at u (a mesh read with -r
+// whose region touches itself at a vertex), the triangles around u form several fans with outside
+// between them, and the vertex index knows an edge of one only; a piece leaving u through another
+// fan was counted "outside every triangle" and lost its marker. Scans the mesh, so it runs only
+// for a first step that found no way out of its fan (never in a Delaunay triangulation of the
+// convex hull, where every fan is whole).
+RayStart start_in_another_fan(const Mesh& mesh, Predicates& pred, VertexId u, VertexId v) {
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    for (EdgeRef e : edges_of(t)) {
+      if (mesh.org(e) != u) continue;
+      if (const RayStart s = first_step_to_vertex(mesh, pred, e, v); s.kind != RayStart::Kind::Blocked) return s;
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
 void SegmentInserter::insert(const Piece& segment) {
   pending_.push_back(segment);
   while (!pending_.empty()) {
@@ -93,7 +114,8 @@ void SegmentInserter::process(const Piece& piece) {
   }
   const Point& pu = mesh.point(piece.u);
   const Point& pv = mesh.point(piece.v);
-  const RayStart start = first_step_to_vertex(mesh, pred, from_u, piece.v);
+  RayStart start = first_step_to_vertex(mesh, pred, from_u, piece.v);
+  if (start.kind == RayStart::Kind::Blocked) start = start_in_another_fan(mesh, pred, piece.u, piece.v);
   if (start.kind == RayStart::Kind::Blocked) {
     ++counts_.unrecovered;  // impossible in a valid triangulation of the convex hull
     return;
