@@ -27,9 +27,7 @@ SizeTest size_test_of(const api::SizeFunction& size, std::exception_ptr& thrown)
   };
 }
 
-api::Mesh run(const api::Input& input, const std::string& switches, const api::SizeFunction& size,
-              std::exception_ptr& thrown) {
-  const Switches sw = parse_library_switches(switches, static_cast<bool>(size));
+api::Mesh run(const api::Input& input, const Switches& sw, const api::SizeFunction& size, std::exception_ptr& thrown) {
   const int first_index = sw.zero_based ? 0 : 1;
   Pslg pslg = pslg_from_input(input, first_index, sw.poly);
   PipelineSource source;
@@ -52,15 +50,19 @@ api::Mesh run(const api::Input& input, const std::string& switches, const api::S
 
 }  // namespace
 
-api::Mesh api::triangulate(const Input& input, const std::string& switches, const SizeFunction& size) {
+api::Mesh triangulate_parsed(const api::Input& input, const Switches& sw, const api::SizeFunction& size) {
   std::exception_ptr thrown;
   try {
-    return run(input, switches, size, thrown);
+    return run(input, sw, size, thrown);
   } catch (const SizeFunctionThrew&) {
     std::rethrow_exception(thrown);
   } catch (...) {
     rethrow_as_library_error();
   }
+}
+
+api::Mesh api::triangulate(const Input& input, const std::string& switches, const SizeFunction& size) {
+  return triangulate_parsed(input, parse_library_switches(switches, static_cast<bool>(size)), size);
 }
 
 }  // namespace deltri

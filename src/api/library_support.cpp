@@ -10,21 +10,6 @@
 namespace deltri {
 namespace {
 
-// A bare u (no length after it) asks for the caller's size test, as Triangle's u does; the
-// command-line parser knows only u<length>, so the library takes a bare one out first.
-std::string without_bare_u(const std::string& switches, bool& bare_u) {
-  std::string rest;
-  for (std::size_t i = 0; i < switches.size(); ++i) {
-    const char next = i + 1 < switches.size() ? switches[i + 1] : '\0';
-    if (switches[i] == 'u' && !((next >= '0' && next <= '9') || next == '.')) {
-      bare_u = true;
-      continue;
-    }
-    rest += switches[i];
-  }
-  return rest;
-}
-
 std::string without_suffix(std::string text, const std::string& suffix) {
   if (text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0)
     text.erase(text.size() - suffix.size());
@@ -66,22 +51,24 @@ std::vector<std::string> long_options_of(const std::string& switches, std::strin
 }  // namespace
 
 Switches parse_library_switches(const std::string& given, bool size_function) {
-  std::string letters;
-  const std::vector<std::string> options = long_options_of(given, letters);
-  bool bare_u = false;
-  std::string word = without_bare_u(letters, bare_u);
-  if (!word.empty() && word[0] == '-') word.erase(0, 1);
-  if (bare_u && !size_function)
-    throw api::Error(DELTRI_USAGE_ERROR, "u: a bare u asks for a size test, and none was given (or give a length, u0.05)");
-  std::vector<std::string> args = {"deltri"};
-  if (!word.empty()) args.push_back("-" + word);
-  args.insert(args.end(), options.begin(), options.end());
-  args.push_back("input");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  Switches sw = parse_switches(static_cast<int>(argv.size()), argv.data());
-  sw.quiet = true;
-  return sw;
+  try {
+    std::string letters;
+    const std::vector<std::string> options = long_options_of(given, letters);
+    if (!letters.empty() && letters[0] == '-') letters.erase(0, 1);
+    std::vector<std::string> args = {"deltri"};
+    if (!letters.empty()) args.push_back("-" + letters);
+    args.insert(args.end(), options.begin(), options.end());
+    args.push_back("input");
+    std::vector<const char*> argv;
+    for (const std::string& a : args) argv.push_back(a.c_str());
+    Switches sw = parse_switches(static_cast<int>(argv.size()), argv.data(), SwitchSource::Library);
+    if (sw.caller_size_test && !size_function)
+      throw api::Error(DELTRI_USAGE_ERROR, "u: a bare u asks for a size test, and none was given (or give a length, u0.05)");
+    sw.quiet = true;
+    return sw;
+  } catch (...) {
+    rethrow_as_library_error();
+  }
 }
 
 void rethrow_as_library_error() {

@@ -46,7 +46,7 @@ std::string negative_number_message(char letter) {
   }
 }
 
-void parse_word(std::string_view word, Switches& s) {
+void parse_word(std::string_view word, Switches& s, SwitchSource source) {
   for (std::size_t i = 1; i < word.size();) {
     const char letter = word[i++];
     const SwitchRow* row = find_row(letter);
@@ -62,6 +62,10 @@ void parse_word(std::string_view word, Switches& s) {
                            negative_number_message(letter));
       }
       const std::size_t n = number_length(word.substr(i), row->arg == ArgKind::OptionalInt);
+      if (n == 0 && letter == 'u' && source == SwitchSource::Library) {
+        s.caller_size_test = true;
+        continue;
+      }
       if (n == 0 && letter == 'u')
         throw UsageError(
             "-u: a bare -u runs the size test compiled into Triangle, which deltri does not have; write the "
@@ -167,7 +171,7 @@ void refuse_corner_lopping_combinations(const Switches& s) {
 }
 }  // namespace
 
-Switches parse_switches(int argc, const char* const* argv) {
+Switches parse_switches(int argc, const char* const* argv, SwitchSource source) {
   Switches s;
   for (int k = 0; k < argc; ++k) s.command_line += (k ? " " : "") + std::string(argv[k]);
   for (int k = 1; k < argc; ++k) {
@@ -175,7 +179,7 @@ Switches parse_switches(int argc, const char* const* argv) {
     if (word.size() > 2 && word[0] == '-' && word[1] == '-') {
       parse_long_option(word, s);
     } else if (word.size() > 1 && word[0] == '-') {
-      parse_word(word, s);
+      parse_word(word, s, source);
     } else {
       s.input = std::string(word);
     }

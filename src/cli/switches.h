@@ -19,6 +19,7 @@ struct Switches {
   double max_area = -1.0;
   bool variable_area = false;    // -a  bare: regional or per-triangle areas
   bool user_test = false;        // -u<length>: no edge longer than length
+  bool caller_size_test = false; // a bare u in a library switch string: the caller's size function
   double max_edge_length = -1.0;
   bool circumcenters_only = false;  // -k: Steiner points at circumcentres, no off-centres
   QueueOrder queue_order = QueueOrder::Ratio;  // --queue=
@@ -84,10 +85,14 @@ struct Switches {
 // The threads a run may use: --threads=N, or every core the machine reports (at least one).
 int threads_to_use(const Switches& sw);
 
+// Who gives the switches: the command line refuses a bare -u (it has no compiled-in size test);
+// the library takes it as asking for the caller's size function (caller_size_test).
+enum class SwitchSource { CommandLine, Library };
+
 // Parses Triangle-style arguments: switch words start with '-' and hold any number of letters,
 // a letter's number follows it directly; the last other argument names the input.
 // Throws UsageError on an unknown letter or a malformed number.
-Switches parse_switches(int argc, const char* const* argv);
+Switches parse_switches(int argc, const char* const* argv, SwitchSource source = SwitchSource::CommandLine);
 
 // The -h text and the man page (docs/deltri.1), made from the same tables the parser uses.
 std::string help_text();

@@ -97,6 +97,19 @@ TEST(errors_name_the_switch) {
   CHECK(usage_error({"-p", "x"}).empty());
 }
 
+// The library's switch strings go through this parser too: there a bare u asks for the caller's
+// size function, and the long options are read as options (their letters are no switches).
+TEST(library_source_takes_a_bare_u_and_long_options) {
+  const char* args[] = {"deltri", "-pqu", "--range-restricted", "--threads=2", "input"};
+  const Switches s = parse_switches(5, args, SwitchSource::Library);
+  CHECK(s.poly && s.quality && s.caller_size_test && !s.user_test);
+  CHECK(s.range_restricted && s.threads == 2);
+  CHECK(!s.refine && !s.voronoi);
+  const char* sized[] = {"deltri", "-pu0.5", "input"};
+  const Switches t = parse_switches(3, sized, SwitchSource::Library);
+  CHECK(t.user_test && !t.caller_size_test && t.max_edge_length == 0.5);
+}
+
 TEST(help_lists_every_switch_of_the_table) {
   const std::string help = help_text();
   for (const SwitchRow& row : switch_table()) {
