@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "api/c_support.h"
+#include "api/library_support.h"
 #include "cli/version.h"
 
 namespace deltri {
@@ -23,28 +24,19 @@ void check_attribute_count(int count, const char* name) {
                                  std::to_string(count));
 }
 
-bool has(const char* switches, char letter) {
-  // The letters of numbers (digits, '.', 'e' inside an exponent) are never switch letters asked
-  // about here, except 'e' of an exponent, which follows a digit and precedes a digit or sign.
-  for (const char* p = switches; *p; ++p) {
-    if (*p != letter) continue;
-    const bool exponent = letter == 'e' && p > switches && ((p[-1] >= '0' && p[-1] <= '9') || p[-1] == '.') &&
-                          ((p[1] >= '0' && p[1] <= '9') || p[1] == '-' || p[1] == '+');
-    if (!exponent) return true;
-  }
-  return false;
-}
-
-api::Input input_of(const triangulateio& in, const char* switches) {
+// Which arrays are read follows the parsed switches, as for the command line's files: segments
+// with p; holes and regions with p but not r (a refinement keeps the previous mesh's holes); the
+// triangles, their attributes and area bounds with r.
+api::Input input_of(const triangulateio& in, const Switches& sw) {
   api::Input input;
   input.points = input_array(in.pointlist, in.numberofpoints, 2, "pointlist", "numberofpoints");
   check_attribute_count(in.numberofpointattributes, "numberofpointattributes");
   input.point_attribute_count = in.numberofpointattributes;
   input.point_attributes = input_array(in.pointattributelist, in.numberofpoints, in.numberofpointattributes,
-                                       "pointattributelist", "numberofpoints times numberofpointattributes");
+                                       "pointattributelist", "numberofpoints", false, "numberofpointattributes");
   input.point_markers = input_array(in.pointmarkerlist, in.numberofpoints, 1, "pointmarkerlist", "numberofpoints", true);
-  const bool refine = has(switches, 'r');
-  if (has(switches, 'p')) {
+  const bool refine = sw.refine;
+  if (sw.poly) {
     input.segments = input_array(in.segmentlist, in.numberofsegments, 2, "segmentlist", "numberofsegments");
     input.segment_markers = input_array(in.segmentmarkerlist, in.numberofsegments, 1, "segmentmarkerlist", "numberofsegments", true);
     if (!refine) {
@@ -60,7 +52,7 @@ api::Input input_of(const triangulateio& in, const char* switches) {
     check_attribute_count(in.numberoftriangleattributes, "numberoftriangleattributes");
     input.triangle_attribute_count = in.numberoftriangleattributes;
     input.triangle_attributes = input_array(in.triangleattributelist, in.numberoftriangles, in.numberoftriangleattributes,
-                                            "triangleattributelist", "numberoftriangles times numberoftriangleattributes");
+                                            "triangleattributelist", "numberoftriangles", false, "numberoftriangleattributes");
     input.triangle_areas = input_array(in.trianglearealist, in.numberoftriangles, 1, "trianglearealist", "numberoftriangles", true);
   }
   return input;
@@ -116,7 +108,7 @@ class Outputs {
 };
 
 void write_outputs(const api::Mesh& m, const triangulateio& in, triangulateio& out, triangulateio* vorout,
-                   const char* switches) {
+                   const Switches& sw) {
   Outputs o;
   o.add(&out.pointlist, m.points);
   o.add(&out.pointattributelist, m.point_attributes);
@@ -128,7 +120,7 @@ void write_outputs(const api::Mesh& m, const triangulateio& in, triangulateio& o
   o.add(&out.segmentmarkerlist, m.segment_markers);
   o.add(&out.edgelist, m.edges);
   o.add(&out.edgemarkerlist, m.edge_markers);
-  const bool poly = has(switches, 'p') && !has(switches, 'r');
+  const bool poly = sw.poly && !sw.refine;  // Triangle's rule: then the input's holes and regions are the output's
   if (poly) {
     o.share(&out.holelist, in.holelist);
     o.share(&out.regionlist, in.regionlist);
@@ -164,13 +156,13 @@ int triangulate_arrays(const char* switches, triangulateio* in, triangulateio* o
   return with_status(status, [&] {
     if (switches == nullptr) switches = "";
     if (in == nullptr || out == nullptr) fail(DELTRI_USAGE_ERROR, "the input and output structs must not be NULL");
-    const bool voronoi = has(switches, 'v');
-    if (voronoi && vorout == nullptr) fail(DELTRI_USAGE_ERROR, "v: the Voronoi output struct is NULL");
-    const api::Input input = input_of(*in, switches);
+    const Switches sw = parse_library_switches(switches, test != nullptr);
+    if (sw.voronoi && vorout == nullptr) fail(DELTRI_USAGE_ERROR, "v: the Voronoi output struct is NULL");
+    const api::Input input = input_of(*in, sw);
     api::SizeFunction size;
     if (test) size = [test, user](const double* o, const double* d, const double* a, double area) { return test(o, d, a, area, user) != 0; };
-    const api::Mesh mesh = api::triangulate(input, switches, size);
-    write_outputs(mesh, *in, *out, voronoi ? vorout : nullptr, switches);
+    const api::Mesh mesh = triangulate_parsed(input, sw, size);
+    write_outputs(mesh, *in, *out, sw.voronoi ? vorout : nullptr, sw);
   });
 }
 

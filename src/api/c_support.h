@@ -17,13 +17,17 @@ namespace deltri {
 [[noreturn]] inline void fail(int code, const std::string& message) { throw api::Error(code, message); }
 
 // The values of an input array: `count` items of `per_item` values, from `list`, which may be NULL
-// only when there are none, or (`optional`) always (then: none).
+// only when there are none, or (`optional`) always (then: none). With `per_item_name` the values
+// per item are a count of the caller's too, and a message names both and gives their product.
 template <class T>
 std::vector<T> input_array(const T* list, long long count, long long per_item, const char* name, const char* count_name,
-                           bool optional = false) {
+                           bool optional = false, const char* per_item_name = nullptr) {
   if (count < 0) fail(DELTRI_INPUT_ERROR, std::string(count_name) + " is " + std::to_string(count) + ", must not be negative");
   const long long values = count * per_item;
   if (values == 0 || (list == nullptr && optional)) return {};
+  if (list == nullptr && per_item_name != nullptr)
+    fail(DELTRI_INPUT_ERROR, std::string(name) + " is NULL but " + count_name + " times " + per_item_name + " is " +
+                                 std::to_string(values) + " (" + std::to_string(count) + " times " + std::to_string(per_item) + ")");
   if (list == nullptr)
     fail(DELTRI_INPUT_ERROR, std::string(name) + " is NULL but " + count_name + " is " + std::to_string(count));
   return std::vector<T>(list, list + values);
