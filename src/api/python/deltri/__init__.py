@@ -16,8 +16,10 @@ import numpy as np
 __all__ = ['triangulate', 'mesh_surface', 'DeltriError', 'version']
 
 
-class DeltriError(Exception):
-    """A bad input or switch string: str(e) is the library's one-line message, e.code its status."""
+class DeltriError(ValueError):
+    """A bad input or switch string: str(e) is the one-line message naming the key or switch, e.code
+    the status (1 input, 2 switches; deltri/triangle.h). A ValueError, as the `triangle` package's
+    errors are."""
 
     def __init__(self, code, message):
         super().__init__(message)
@@ -101,13 +103,77 @@ def version():
     return _lib.deltri_version().decode()
 
 
-def _array(d, key, dtype, columns):
-    if key not in d or d[key] is None:
+_INT_MIN, _INT_MAX = -2 ** 31, 2 ** 31 - 1
+
+
+def _fail(message, code=1):
+    raise DeltriError(code, message)
+
+
+def _shape(a):
+    return '(%s)' % ', '.join(str(n) for n in a.shape) if a.ndim != 1 else '(%d,)' % a.shape[0]
+
+
+def _numbers(value, key, integer, allow_bool=False):
+    """value as a numpy array of C doubles or ints, or None when it is None or empty. Integers
+    given as floats must be whole; every integer must fit a C int (no wrapping, no truncation)."""
+    if value is None:
         return None
-    a = np.ascontiguousarray(np.asarray(d[key], dtype=dtype))
+    try:
+        a = np.asarray(value)
+    except (ValueError, TypeError):
+        _fail('%s: not a rectangular array of numbers (rows of different lengths?)' % key)
     if a.size == 0:
         return None
-    return a.reshape(-1, columns) if columns else a.reshape(len(a), -1)
+    kinds = 'iuf' + ('b' if allow_bool else '')
+    if a.dtype.kind not in kinds:
+        _fail('%s: the values must be %s, not %s' % (key, 'integers' if integer else 'real numbers', a.dtype))
+    if not integer:
+        return a.astype(np.float64)
+    if a.dtype.kind == 'f':
+        finite = np.isfinite(a)
+        bad = ~finite
+        bad[finite] = a[finite] != np.floor(a[finite])
+        if bad.any():
+            _fail('%s: %r is not an integer' % (key, a[bad].flat[0].item()))
+    if a.dtype.kind != 'b':
+        low, high = a.min().item(), a.max().item()
+        for v in (low, high):
+            if v < _INT_MIN or v > _INT_MAX:
+                _fail('%s: %d is outside the range of a C int (%d to %d)' % (key, v, _INT_MIN, _INT_MAX))
+    return a.astype(np.intc)
+
+
+def _rows(value, key, integer, columns):
+    """An (n, columns) array, columns one of the given counts; None when absent or empty."""
+    a = _numbers(value, key, integer)
+    if a is None:
+        return None
+    if a.ndim != 2 or a.shape[1] not in columns:
+        _fail('%s: shape %s is not %s' % (key, _shape(a), ' or '.join('(n, %d)' % c for c in columns)))
+    return np.ascontiguousarray(a)
+
+
+def _per_item(value, key, integer, items, what, table=False):
+    """One value per item, (n,) or (n, 1), or with `table` (n, k) rows of k values; n must be `items`."""
+    a = _numbers(value, key, integer, allow_bool=integer)
+    if a is None:
+        return None
+    if a.ndim == 1:
+        a = a.reshape(-1, 1)
+    elif a.ndim != 2 or (a.shape[1] != 1 and not table):
+        _fail('%s: shape %s is not %s' % (key, _shape(a), '(n,) or (n, k)' if table else '(n,) or (n, 1)'))
+    if len(a) != items:
+        unit = 'row' if a.shape[1] > 1 else 'value'
+        _fail('%s: %d %s%s for %d %s, expected %d' % (key, len(a), unit, '' if len(a) == 1 else 's', items, what, items))
+    return np.ascontiguousarray(a)
+
+
+def _count(a, key):
+    n = 0 if a is None else len(a)
+    if n > _INT_MAX:
+        _fail('%s: %d items, more than a C int counts' % (key, n))
+    return n
 
 
 def _set(io, field, array, keep):
@@ -119,43 +185,47 @@ def _set(io, field, array, keep):
 
 
 def _vertices(d, io, keep, dimension):
-    vertices = _array(d, 'vertices', np.float64, dimension)
+    vertices = _rows(d.get('vertices'), 'vertices', False, (dimension,))
     if vertices is None:
-        raise DeltriError(1, "the input has no 'vertices'")
-    io.numberofpoints = len(vertices)
+        _fail("the input has no 'vertices'")
+    io.numberofpoints = _count(vertices, 'vertices')
     _set(io, 'pointlist', vertices, keep)
+    markers = _per_item(d.get('vertex_markers'), 'vertex_markers', True, io.numberofpoints, 'vertices')
+    _set(io, 'pointmarkerlist', markers, keep)
 
 
 def _fill_input(d, io, keep):
+    """The dict's arrays into io, each checked for shape, type, range and length against its items
+    (the library reads as many values as the counts say; a short array would be read past its end)."""
     _vertices(d, io, keep, 2)
-    attributes = _array(d, 'vertex_attributes', np.float64, None)
+    n = io.numberofpoints
+    attributes = _per_item(d.get('vertex_attributes'), 'vertex_attributes', False, n, 'vertices', table=True)
     if attributes is not None:
         io.numberofpointattributes = attributes.shape[1]
         _set(io, 'pointattributelist', attributes, keep)
-    _set(io, 'pointmarkerlist', _array(d, 'vertex_markers', np.intc, 1), keep)
-    segments = _array(d, 'segments', np.intc, 2)
-    if segments is not None:
-        io.numberofsegments = len(segments)
-        _set(io, 'segmentlist', segments, keep)
-        _set(io, 'segmentmarkerlist', _array(d, 'segment_markers', np.intc, 1), keep)
-    holes = _array(d, 'holes', np.float64, 2)
-    if holes is not None:
-        io.numberofholes = len(holes)
-        _set(io, 'holelist', holes, keep)
-    regions = _array(d, 'regions', np.float64, 4)
-    if regions is not None:
-        io.numberofregions = len(regions)
-        _set(io, 'regionlist', regions, keep)
-    triangles = _array(d, 'triangles', np.intc, None)
+    segments = _rows(d.get('segments'), 'segments', True, (2,))
+    io.numberofsegments = _count(segments, 'segments')
+    _set(io, 'segmentlist', segments, keep)
+    _set(io, 'segmentmarkerlist',
+         _per_item(d.get('segment_markers'), 'segment_markers', True, io.numberofsegments, 'segments'), keep)
+    holes = _rows(d.get('holes'), 'holes', False, (2,))
+    io.numberofholes = _count(holes, 'holes')
+    _set(io, 'holelist', holes, keep)
+    regions = _rows(d.get('regions'), 'regions', False, (4,))
+    io.numberofregions = _count(regions, 'regions')
+    _set(io, 'regionlist', regions, keep)
+    triangles = _rows(d.get('triangles'), 'triangles', True, (3, 6))
+    io.numberoftriangles = _count(triangles, 'triangles')
     if triangles is not None:
-        io.numberoftriangles = len(triangles)
         io.numberofcorners = triangles.shape[1]
         _set(io, 'trianglelist', triangles, keep)
-        attributes = _array(d, 'triangle_attributes', np.float64, None)
-        if attributes is not None:
-            io.numberoftriangleattributes = attributes.shape[1]
-            _set(io, 'triangleattributelist', attributes, keep)
-        _set(io, 'trianglearealist', _array(d, 'triangle_max_area', np.float64, 1), keep)
+    t = io.numberoftriangles
+    attributes = _per_item(d.get('triangle_attributes'), 'triangle_attributes', False, t, 'triangles', table=True)
+    if attributes is not None:
+        io.numberoftriangleattributes = attributes.shape[1]
+        _set(io, 'triangleattributelist', attributes, keep)
+    _set(io, 'trianglearealist', _per_item(d.get('triangle_max_area'), 'triangle_max_area', False, t, 'triangles'), keep)
+    return holes, regions
 
 
 def _copy(pointer, count, columns, dtype):
@@ -206,9 +276,14 @@ def triangulate(d, opts='', size=None):
     voronoi_edges, voronoi_ray_directions). `size`, if given, is called as
     size(((x0, y0), (x1, y1), (x2, y2)), area) for triangles during refinement: a true result
     means too big, split it. Raises DeltriError on bad input."""
+    if '\0' in opts:
+        _fail('opts: a NUL character at position %d would end the switches there' % opts.index('\0'), 2)
     keep = []
     io_in, io_out, io_vor = _TriangulateIO(), _TriangulateIO(), _TriangulateIO()
-    _fill_input(d, io_in, keep)
+    holes, regions = _fill_input(d, io_in, keep)
+    # The library sets the output's hole count when the switches it parsed say p without r (then the
+    # input's holes and regions are the output's); left at -1 it says they are not.
+    io_out.numberofholes = -1
     thrown = []
 
     def test(org, dest, apex, area, user):
@@ -227,32 +302,43 @@ def triangulate(d, opts='', size=None):
     code = _lib.deltri_triangulate_sized(switches, ctypes.byref(io_in), ctypes.byref(io_out),
                                          ctypes.byref(io_vor), callback, None, ctypes.byref(status))
     if thrown:
-        _output(io_out, io_vor if 'v' in opts else None)  # release what was made
+        _output(io_out, io_vor)  # release what was made
         raise thrown[0]
     if code != 0:
         raise DeltriError(code, status.message.decode(errors='replace'))
-    result = _output(io_out, io_vor if 'v' in opts else None)
-    for key in ('holes', 'regions'):
-        if key in d and 'p' in opts and 'r' not in opts:
-            result[key] = np.array(d[key], dtype=np.float64)
+    poly = io_out.numberofholes >= 0
+    result = _output(io_out, io_vor)  # the Voronoi arrays are there only when v asked for them
+    for key, given, columns in (('holes', holes, 2), ('regions', regions, 4)):
+        if poly and key in d:
+            result[key] = given.copy() if given is not None else np.zeros((0, columns))
     return result
 
 
 def _facets_in(d, io, keep):
     _vertices(d, io, keep, 3)
-    _set(io, 'pointmarkerlist', _array(d, 'vertex_markers', np.intc, 1), keep)
     corners, sizes, per_facet, holes, holes_per_facet, markers = [], [], [], [], [], []
-    for facet in d.get('facets', []):
+    for f, facet in enumerate(d.get('facets', [])):
+        key = 'facets[%d]' % f
         polygons = facet.get('polygons', [])
         per_facet.append(len(polygons))
-        for polygon in polygons:
-            polygon = np.asarray(polygon, dtype=np.intc).reshape(-1)
+        for k, polygon in enumerate(polygons):
+            name = "%s['polygons'][%d]" % (key, k)
+            polygon = _numbers(polygon, name, True)
+            if polygon is None:  # the library says what is wrong with an empty polygon
+                polygon = np.zeros(0, dtype=np.intc)
+            if polygon.ndim > 1:
+                _fail('%s: shape %s is not (k,), a list of vertex numbers' % (name, _shape(polygon)))
+            polygon = polygon.reshape(-1)
             sizes.append(len(polygon))
             corners.extend(polygon.tolist())
-        facet_holes = np.asarray(facet.get('holes', []), dtype=np.float64).reshape(-1, 3)
+        facet_holes = _rows(facet.get('holes'), "%s['holes']" % key, False, (3,))
+        facet_holes = np.zeros((0, 3)) if facet_holes is None else facet_holes
         holes_per_facet.append(len(facet_holes))
         holes.extend(facet_holes.reshape(-1).tolist())
-        markers.append(int(facet.get('marker', 0)))
+        marker = _numbers(facet.get('marker', 0), "%s['marker']" % key, True, allow_bool=True)
+        if marker is not None and marker.ndim != 0:
+            _fail("%s['marker']: shape %s is not a single number" % (key, _shape(marker)))
+        markers.append(0 if marker is None else int(marker))
     lists = [('cornerlist', corners, np.intc), ('polygonsizelist', sizes, np.intc), ('holelist', holes, np.float64),
              ('facetpolygonlist', per_facet, np.intc), ('facetholelist', holes_per_facet, np.intc),
              ('facetmarkerlist', markers, np.intc)]
@@ -270,6 +356,8 @@ def mesh_surface(d, opts=''):
     Returns a dict of numpy arrays: vertices (m x 3), vertex_markers (when given, unless 'B'),
     triangles (t x 3), triangle_attributes (t x 1, the facet markers), triangle_facets (t), edges
     (the subsegments, s x 2) and edge_markers (unless 'B'). Raises DeltriError on bad input."""
+    if '\0' in opts:
+        _fail('opts: a NUL character at position %d would end the switches there' % opts.index('\0'), 2)
     keep = []
     io_in, io_out, status = _Facets(), _Surface(), _Status()
     _facets_in(d, io_in, keep)
