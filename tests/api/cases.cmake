@@ -63,3 +63,18 @@ add_executable(test_api_paper_options ${API_DIR}/test_paper_options.cpp)
 target_compile_options(test_api_paper_options PRIVATE ${DELTRI_WARNINGS})
 target_link_libraries(test_api_paper_options PRIVATE deltri_core)
 add_test(NAME api.paper_options COMMAND test_api_paper_options)
+# One input through the command line, the C library, the C++ library and the Python module: the
+# same mesh or the same error class, long options in the switch string included (issue 47).
+add_executable(test_api_cross_c ${API_DIR}/cross_client.c)
+set_target_properties(test_api_cross_c PROPERTIES C_STANDARD 99 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF)
+target_compile_options(test_api_cross_c PRIVATE -Wall -Wextra -pedantic)
+target_link_libraries(test_api_cross_c PRIVATE deltri_shared)
+target_include_directories(test_api_cross_c PRIVATE ${CMAKE_SOURCE_DIR}/src/api)
+add_executable(test_api_cross_cpp ${API_DIR}/cross_client.cpp)
+target_compile_options(test_api_cross_cpp PRIVATE ${DELTRI_WARNINGS})
+target_link_libraries(test_api_cross_cpp PRIVATE deltri_shared)
+target_include_directories(test_api_cross_cpp PRIVATE ${CMAKE_SOURCE_DIR}/src/api)
+add_test(NAME api.cross_interface COMMAND sh -c "${API_NEEDS_NUMPY}" sh
+         ${API_DIR}/cross_interface.py $<TARGET_FILE:deltri> $<TARGET_FILE:test_api_cross_c>
+         $<TARGET_FILE:test_api_cross_cpp>)
+set_tests_properties(api.cross_interface PROPERTIES ENVIRONMENT "${API_PYTHON_ENV}" SKIP_RETURN_CODE 77 TIMEOUT 300)
