@@ -128,12 +128,27 @@ int main(void) {
   expect_error("23 endpoint 4, from 0 (z)", "pzQ", &in, DELTRI_INPUT_ERROR, "segment 1: second endpoint 4 is not a vertex (vertices are numbered 0 to 3)");
   base(&in); in.segmentlist = NULL;
   expect_error("25 segments missing", "pQ", &in, DELTRI_INPUT_ERROR, "segmentlist is NULL but numberofsegments is 4");
+  base(&in); in.numberofpointattributes = 3;
+  expect_error("point attributes missing", "pQ", &in, DELTRI_INPUT_ERROR,
+               "pointattributelist is NULL but numberofpoints times numberofpointattributes is 12 (4 times 3)");
+  triangles[0] = 1; triangles[1] = 2; triangles[2] = 3; triangles[3] = 1; triangles[4] = 3; triangles[5] = 4;
+  base(&in); in.numberoftriangles = 2; in.numberofcorners = 3; in.trianglelist = triangles; in.numberoftriangleattributes = 5;
+  expect_error("triangle attributes missing", "rQ", &in, DELTRI_INPUT_ERROR,
+               "triangleattributelist is NULL but numberoftriangles times numberoftriangleattributes is 10 (2 times 5)");
   base(&in); in.numberofholes = 1;
   expect_error("26/28 holes missing", "pQ", &in, DELTRI_INPUT_ERROR, "holelist is NULL but numberofholes is 1");
   base(&in); in.numberofholes = -1; in.holelist = holes;
   expect_error("27 negative hole count", "pQ", &in, DELTRI_INPUT_ERROR, "numberofholes is -1, must not be negative");
   holes[0] = NAN; holes[1] = 1; base(&in); in.holelist = holes; in.numberofholes = 1;
   expect_error("29 hole at NaN", "pQ", &in, DELTRI_INPUT_ERROR, "hole 1: x coordinate is not a finite number (nan)");
+  /* Issue 47: the long options hold an r (threads, range-restricted): the holes and regions are read
+     all the same, as the parsed switches say (p, no r), not a scan of the string's letters. */
+  expect_error("29 hole at NaN, --threads=2", "pQ --threads=2", &in, DELTRI_INPUT_ERROR, "hole 1: x coordinate is not a finite number (nan)");
+  expect_error("29 hole at NaN, --range-restricted", "pq30Q --range-restricted", &in, DELTRI_INPUT_ERROR,
+               "hole 1: x coordinate is not a finite number (nan)");
+  base(&in); in.numberofregions = 2;
+  expect_error("30 regions missing, --corner-lopping", "pq30Q --corner-lopping", &in, DELTRI_INPUT_ERROR,
+               "regionlist is NULL but numberofregions is 2");
   base(&in); in.numberofregions = 2;
   expect_error("30 regions missing", "pQ", &in, DELTRI_INPUT_ERROR, "regionlist is NULL but numberofregions is 2");
   regions[0] = 1; regions[1] = 1; regions[2] = INFINITY; regions[3] = 0.1; base(&in); in.regionlist = regions; in.numberofregions = 1;

@@ -91,6 +91,88 @@ def areas(m):
     return 0.5 * ((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1]) - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0]))
 
 
+def expect_error(d, opts, words, what, code=1):
+    """deltri.triangulate(d, opts) must raise DeltriError (a ValueError) with `code` and every word."""
+    try:
+        m = deltri.triangulate(d, opts)
+        check(False, '%s: no error, %d triangles' % (what, len(m.get('triangles', []))))
+    except deltri.DeltriError as e:
+        check(isinstance(e, ValueError) and e.code == code and all(w in str(e) for w in words),
+              '%s: DeltriError %d "%s"' % (what, e.code, e))
+
+
+def arrays(square):
+    """Issue 47 items 2, 3 and 12: every array's length, shape, type and range checked against its
+    items, with an error naming the key; nothing read past an array's end or reinterpreted."""
+    # Optional arrays shorter than their items (they were read past their end: garbage, then SIGSEGV).
+    n = 3000
+    ring = [[math.cos(2 * math.pi * k / n), math.sin(2 * math.pi * k / n)] for k in range(n)]
+    expect_error({'vertices': ring, 'vertex_markers': [1]}, 'Q', ['vertex_markers', '1 value for 3000 vertices', 'expected 3000'],
+                 'vertex_markers of 1 for 3000 vertices')
+    expect_error({'vertices': ring, 'vertex_attributes': [[1.0, 2.0]]}, 'Q', ['vertex_attributes', '1 row for 3000 vertices', 'expected 3000'],
+                 'vertex_attributes of 1 row for 3000 vertices')
+    expect_error(dict(square, segment_markers=[5, 6]), 'p', ['segment_markers', '2 values', '4 segments', 'expected 4'],
+                 'segment_markers of 2 for 4 segments')
+    first = deltri.triangulate(square, 'pq30a0.01')
+    t = len(first['triangles'])
+    expect_error(dict(first, triangle_max_area=[0.1]), 'rpa', ['triangle_max_area', '1 value for %d triangles' % t, 'expected %d' % t],
+                 'triangle_max_area of 1 for %d triangles' % t)
+    expect_error(dict(first, triangle_attributes=[[1.0]] * (t - 1)), 'rpA', ['triangle_attributes', '%d values for %d triangles' % (t - 1, t)],
+                 'triangle_attributes of %d for %d triangles' % (t - 1, t))
+    expect_error(dict(square, segment_markers=[1, 2, 3, 4], segments=None), 'p', ['segment_markers', 'expected 0'],
+                 'segment_markers without segments')
+    # Shapes: a (4, 3) segment array is not 6 segments, a 4 x 3 region array not 3 regions.
+    expect_error(dict(square, segments=np.array([[0, 1, 2], [1, 2, 3], [2, 3, 0], [3, 0, 1]])), 'p', ['segments', '(4, 3)', '(n, 2)'],
+                 'segments of shape (4, 3)')
+    expect_error(dict(square, regions=np.zeros((4, 3)) + 0.5), 'pA', ['regions', '(4, 3)', '(n, 4)'], 'regions of shape (4, 3)')
+    expect_error(dict(square, holes=[0.5, 0.5]), 'p', ['holes', '(2,)'], 'holes as a flat list')
+    expect_error(dict(square, vertices=np.zeros((4, 3))), 'p', ['vertices', '(4, 3)'], 'vertices of shape (4, 3)')
+    expect_error(dict(square, vertex_markers=np.ones((4, 2), dtype=int)), 'p', ['vertex_markers', '(4, 2)'], 'vertex_markers of shape (4, 2)')
+    expect_error(dict(first, triangles=np.zeros((t, 4), dtype=int)), 'rp', ['triangles', '(%d, 4)' % t, '(n, 3) or (n, 6)'],
+                 'triangles of shape (t, 4)')
+    expect_error(dict(square, segments=[[0, 1], [1, 2], [2, 3], [3]]), 'p', ['segments', 'rectangular'], 'ragged segments')
+    # Ranges and types: no wrapping, no truncation, no strings or complex numbers taken for numbers.
+    wrap = np.array([[0, 1], [1, 2], [2, 3], [3, 2 ** 32]], dtype=np.int64)  # 2^32 wraps to 0 as a C int
+    expect_error(dict(square, segments=wrap), 'p', ['segments', '4294967296', 'C int'], 'int64 segment endpoint 2^32')
+    expect_error(dict(square, segment_markers=[1, 2, 3, -2 ** 31 - 1]), 'p', ['segment_markers', '-2147483649'],
+                 'segment marker below a C int')
+    expect_error(dict(square, segments=[[0, 1], [1, 2], [2, 3], [3, 0.5]]), 'p', ['segments', '0.5', 'not an integer'],
+                 'float segment endpoint 0.5')
+    expect_error(dict(square, segments=[[0, 1], [1, 2], [2, 3], [3, float('nan')]]), 'p', ['segments', 'nan'],
+                 'NaN segment endpoint')
+    expect_error(dict(square, vertices=[['0', '0'], ['1', '0'], ['1', '1'], ['0', '1']]), 'p', ['vertices', 'real numbers'],
+                 'vertices as strings')
+    expect_error(dict(square, holes=[[0.5 + 1j, 0.5]]), 'p', ['holes', 'complex'], 'a complex hole point')
+    # What the `triangle` package takes is taken: whole floats as indices, 1-D markers, tuples.
+    plain = deltri.triangulate(square, 'pq30')
+    as_floats = deltri.triangulate(dict(square, segments=np.array(square['segments'], dtype=float)), 'pq30')
+    check(np.array_equal(plain['triangles'], as_floats['triangles']), 'segments as whole floats: the same mesh as ints')
+    flat = deltri.triangulate(dict(square, vertex_markers=(1, 2, 3, 4), segment_markers=np.array([5, 6, 7, 8])), 'p')
+    check(flat['vertex_markers'][:4, 0].tolist() == [1, 2, 3, 4] and sorted(flat['segment_markers'][:, 0].tolist()) == [5, 6, 7, 8],
+          'markers as a tuple and a 1-D array: read one per item')
+    # Item 12: a NUL in the switches is an error, not the end of them ('p\0q30' was -p alone).
+    expect_error(square, 'p\0q30', ['opts', 'NUL', 'position 1'], 'a NUL byte in opts', code=2)
+    # Item 1 through the module: the holes and regions go back with p whatever long options follow.
+    holed = dict(square, vertices=[[0, 0], [3, 0], [3, 3], [0, 3], [1, 1], [2, 1], [2, 2], [1, 2]],
+                 segments=[[0, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 7], [7, 4]], holes=[[1.5, 1.5]])
+    for opts in ('pq30', 'pq30 --range-restricted', 'pq30 --threads=2'):
+        m = deltri.triangulate(holed, opts)
+        check(abs(areas(m).sum() - 8) < 1e-12 and np.array_equal(m.get('holes'), np.array([[1.5, 1.5]])),
+              '-%s: area %.15g (8: the hole carved), holes returned %s' % (opts, areas(m).sum(), m.get('holes', 'none').tolist()))
+    # The surface mode's input too: a polygon is a list of vertex numbers, a facet's holes rows of 3.
+    cube = {'vertices': [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], 'facets': [{'polygons': [[[0, 1], [2, 3]]]}]}
+    try:
+        deltri.mesh_surface(cube, 'p')
+        check(False, 'surface polygon of shape (2, 2): no error')
+    except deltri.DeltriError as e:
+        check("facets[0]['polygons'][0]" in str(e) and '(2, 2)' in str(e), 'surface polygon of shape (2, 2): "%s"' % e)
+    try:
+        deltri.mesh_surface(dict(cube, facets=[{'polygons': [[0, 1, 2, 3]], 'holes': [[0.5, 0.5]]}]), 'p')
+        check(False, 'surface hole of shape (1, 2): no error')
+    except deltri.DeltriError as e:
+        check("facets[0]['holes']" in str(e) and '(1, 2)' in str(e), 'surface hole of shape (1, 2): "%s"' % e)
+
+
 def main():
     deltri_path, source_dir = sys.argv[1:3]
     work = tempfile.mkdtemp()
@@ -170,6 +252,8 @@ def main():
             check(got == expected, 'region point at (%g, %g): attribute 7 on %s of the triangles (%s expected)' %
                   (at[0], at[1], got, expected))
         check(deltri.version().count('.') == 2, 'version %s' % deltri.version())
+        arrays(square)
+
     finally:
         shutil.rmtree(work)
     if failures:
