@@ -131,11 +131,11 @@ def _numbers(value, key, integer, allow_bool=False):
     if not integer:
         return a.astype(np.float64)
     if a.dtype.kind == 'f':
-        finite = np.isfinite(a)
-        bad = ~finite
-        bad[finite] = a[finite] != np.floor(a[finite])
+        flat = a.reshape(-1)
+        with np.errstate(invalid='ignore'):
+            bad = ~np.isfinite(flat) | (flat != np.trunc(flat))
         if bad.any():
-            _fail('%s: %r is not an integer' % (key, a[bad].flat[0].item()))
+            _fail('%s: %r is not an integer' % (key, flat[bad][0].item()))
     if a.dtype.kind != 'b':
         low, high = a.min().item(), a.max().item()
         for v in (low, high):
