@@ -155,6 +155,19 @@ def arrays(square):
           'markers as a tuple and a 1-D array: read one per item')
     # Item 12: a NUL in the switches is an error, not the end of them ('p\0q30' was -p alone).
     expect_error(square, 'p\0q30', ['opts', 'NUL', 'position 1'], 'a NUL byte in opts', code=2)
+    # The module's own Qz joins the caller's letters: a leading dash or a string of long options alone
+    # reaches the parser as the command line would take it.
+    counts = []
+    for opts in ('q30a0.1', '-q30a0.1', ' q30a0.1', 'q30a0.1 --threads=2'):
+        try:
+            counts.append(len(deltri.triangulate(square, opts)['triangles']))
+        except deltri.DeltriError as e:
+            counts.append(str(e))
+    check(len(set(counts)) == 1 and isinstance(counts[0], int), "q30a0.1, -q30a0.1, ' q30a0.1', with --threads=2: %s" % counts)
+    try:
+        check(len(deltri.triangulate(square, '--threads=2')['triangles']) == 2, "'--threads=2' alone: 2 triangles")
+    except deltri.DeltriError as e:
+        check(False, "'--threads=2' alone: %s" % e)
     # Item 1 through the module: the holes and regions go back with p whatever long options follow.
     holed = dict(square, vertices=[[0, 0], [3, 0], [3, 3], [0, 3], [1, 1], [2, 1], [2, 2], [1, 2]],
                  segments=[[0, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 7], [7, 4]], holes=[[1.5, 1.5]])

@@ -267,6 +267,17 @@ def _output(out, vor):
     return r
 
 
+def _switches(opts, added):
+    """The switch string with the module's own letters joined to the caller's word of letters (a
+    leading dash dropped, as Triangle ignores it), or put before the long options when there is none."""
+    if '\0' in opts:
+        _fail('opts: a NUL character at position %d would end the switches there' % opts.index('\0'), 2)
+    rest = opts.lstrip(' \t')
+    if rest.startswith('--') or not rest:
+        return (added + ' ' + rest).rstrip().encode()
+    return (added + (rest[1:] if rest.startswith('-') else rest)).encode()
+
+
 def triangulate(d, opts='', size=None):
     """Triangulates the dict d (the `triangle` package's keys: vertices, vertex_markers,
     vertex_attributes, segments, segment_markers, holes, regions, and for 'r' triangles,
@@ -276,8 +287,7 @@ def triangulate(d, opts='', size=None):
     voronoi_edges, voronoi_ray_directions). `size`, if given, is called as
     size(((x0, y0), (x1, y1), (x2, y2)), area) for triangles during refinement: a true result
     means too big, split it. Raises DeltriError on bad input."""
-    if '\0' in opts:
-        _fail('opts: a NUL character at position %d would end the switches there' % opts.index('\0'), 2)
+    switches = _switches(opts, 'Qz')
     keep = []
     io_in, io_out, io_vor = _TriangulateIO(), _TriangulateIO(), _TriangulateIO()
     holes, regions = _fill_input(d, io_in, keep)
@@ -298,7 +308,6 @@ def triangulate(d, opts='', size=None):
 
     callback = _SIZE_TEST(test) if size is not None else _SIZE_TEST()
     status = _Status()
-    switches = ('Qz' + opts).encode()
     code = _lib.deltri_triangulate_sized(switches, ctypes.byref(io_in), ctypes.byref(io_out),
                                          ctypes.byref(io_vor), callback, None, ctypes.byref(status))
     if thrown:
@@ -356,12 +365,11 @@ def mesh_surface(d, opts=''):
     Returns a dict of numpy arrays: vertices (m x 3), vertex_markers (when given, unless 'B'),
     triangles (t x 3), triangle_attributes (t x 1, the facet markers), triangle_facets (t), edges
     (the subsegments, s x 2) and edge_markers (unless 'B'). Raises DeltriError on bad input."""
-    if '\0' in opts:
-        _fail('opts: a NUL character at position %d would end the switches there' % opts.index('\0'), 2)
+    switches = _switches(opts, 'z')
     keep = []
     io_in, io_out, status = _Facets(), _Surface(), _Status()
     _facets_in(d, io_in, keep)
-    code = _lib.deltri_mesh_surface(('z' + opts).encode(), ctypes.byref(io_in), ctypes.byref(io_out),
+    code = _lib.deltri_mesh_surface(switches, ctypes.byref(io_in), ctypes.byref(io_out),
                                     ctypes.byref(status))
     if code != 0:
         raise DeltriError(code, status.message.decode(errors='replace'))
