@@ -134,6 +134,22 @@ void note_array(PageWarmer& warmer, unsigned slot, const Array& a) {
 // lens of 0.01 degrees catches such points and lets every other one be.
 constexpr double kLeastLensDeg = 0.01;
 
+// A candidate Steiner point is tested against a lens never flatter than that of 20 degrees. With
+// a lower angle bound, or none (-a, -u alone), the bound's own lens let free points settle a
+// hair's breadth from a segment and left slivers of 0.01 degrees beside it; with this one such a
+// point splits the subsegment instead, and size-bounded meshes keep their angles near 20 degrees
+// away from small input angles, at about the same triangle count (docs/refinement.md, "Area
+// bounds alone"). Only candidates: the vertices already there (the input's among them) are held
+// to the bound's own lens, or a size bound alone would split every segment an input vertex
+// stands near, as a -q20 mesh does. At 20 degrees and above the two lenses are one.
+constexpr double kLeastCandidateLensDeg = 20.0;
+
+EncroachRule candidate_rule_for(const RefineOptions& opt, const EncroachRule& rule) {
+  if (opt.algorithm != RefinementAlgorithm::Terminator || rule.min_apex_angle_deg <= 90.0) return rule;
+  const EncroachRule floor = EncroachRule::lens(kLeastCandidateLensDeg);
+  return floor.min_apex_angle_deg < rule.min_apex_angle_deg ? floor : rule;
+}
+
 // Ruppert encroaches with diametral circles (Sec. 3.1). Chew splits a subsegment only when it
 // lies between a bad triangle and its circumcentre, which the probe's walk finds whatever the rule
 // (candidate_probe.h), or when the circumcentre lies on it (Sec. 4.1): the lens of 0 degrees, the
@@ -215,6 +231,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       interior_rules_{opt.interior_bound != 0 ? AngleBound(std::max(opt.angle.degrees(), kInteriorBoundDeg)) : opt.angle,
                       opt.size, opt.area_field, opt.size_test},
       rule_(rule_for(opt)),
+      candidate_rule_(candidate_rule_for(opt, rule_)),
       // Ruppert and Chew insert circumcentres (Sec. 3.1, 4.1).
       off_center_factor_(opt.off_centers && opt.algorithm == RefinementAlgorithm::Terminator ? opt.angle.off_center_factor() : 0.0),
       kept_bound_sin2_(AngleBound(std::max(opt.angle.degrees(), kLeastLensDeg)).sin2()),

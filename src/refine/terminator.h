@@ -225,7 +225,8 @@ class Terminator {
   const RefineOptions opt_;
   QualityRules rules_;
   QualityRules interior_rules_;  // Sec. 7.2 (--interior-bound): rules_ with max(-q, 30 degrees)
-  EncroachRule rule_;
+  EncroachRule rule_;            // whether a vertex already in the mesh encroaches
+  EncroachRule candidate_rule_;  // whether a candidate Steiner point does (terminator.cpp)
   double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
   double kept_bound_sin2_ = 0.0;    // -Y/-YY: sin^2 of the angle bound, of the least lens without -q
   double floor_sin2_ = 0.0;         // sin^2 of min(that angle, the initial mesh's smallest), of half that

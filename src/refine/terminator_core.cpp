@@ -32,7 +32,7 @@ Outcome Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   Candidate c;
   if (const auto refusal = choose_point(t, a, c)) return *refusal;  // l.13
   const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
-  const Probe probe = probe_candidate(mesh_, pred_, t, c.point, rule_, marks_, splittable);  // l.14
+  const Probe probe = probe_candidate(mesh_, pred_, t, c.point, candidate_rule_, marks_, splittable);  // l.14
   if (probe.status == ProbeStatus::Unusable) return Outcome::Unusable;
   if (probe.status == ProbeStatus::Clear) return insert_point(t, a, c, probe);  // l.15-17
   return split_encroached_instead(entry, a, probe);                               // l.18-25

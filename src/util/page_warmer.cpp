@@ -29,14 +29,7 @@ void populate(char*, std::size_t) {}
 
 }  // namespace
 
-PageWarmer::PageWarmer(bool enabled) : enabled_(enabled && kAvailable) {
-  if (!enabled_) return;
-  try {
-    worker_ = std::thread([this] { work(); });
-  } catch (const std::system_error&) {
-    enabled_ = false;  // no thread to be had: the pages fault in on use
-  }
-}
+PageWarmer::PageWarmer(bool enabled) : enabled_(enabled && kAvailable) {}
 
 PageWarmer::~PageWarmer() {
   if (!worker_.joinable()) return;
@@ -50,6 +43,15 @@ PageWarmer::~PageWarmer() {
 
 void PageWarmer::note(unsigned slot, const void* data, std::size_t used, std::size_t capacity) {
   if (!enabled_ || slot >= kSlots) return;
+  if (!worker_.joinable()) {
+    if (used < kStartUsed) return;
+    try {
+      worker_ = std::thread([this] { work(); });
+    } catch (const std::system_error&) {
+      enabled_ = false;  // no thread to be had: the pages fault in on use
+      return;
+    }
+  }
   Watched& w = watched_[slot];
   const char* base = static_cast<const char*>(data);
   if (w.data != base) w = Watched{base, 0};  // a new block (the array was reallocated)

@@ -26,6 +26,11 @@ class PageWarmer {
   // so an array ends with an extra page resident only when it stops that close to one.
   static constexpr std::size_t kHugePage = std::size_t{2} << 20;
   static constexpr std::size_t kLead = std::size_t{128} << 10;
+  // The thread starts only once some array comes within kLead of the end of its first huge page,
+  // where warming first reaches past it: a small run's pages fault in within microseconds, while
+  // starting and joining a thread costs such a run more than all of them (and, on a busy
+  // machine, a wait for the scheduler).
+  static constexpr std::size_t kStartUsed = kHugePage - kLead;
   // No thread (and no effect) unless `enabled`.
   explicit PageWarmer(bool enabled);
   ~PageWarmer();

@@ -1,5 +1,6 @@
 // The page warmer populates the pages just beyond the used part of an array, and no others.
 #include <chrono>
+#include <filesystem>
 #include <cstdint>
 #include <thread>
 #include <vector>
@@ -25,6 +26,14 @@ std::size_t resident_pages(const void* p, std::size_t bytes) {
   if (mincore(const_cast<void*>(p), bytes, in.data()) != 0) return 0;
   std::size_t n = 0;
   for (unsigned char c : in) n += c & 1;
+  return n;
+}
+
+// Threads of this process, from /proc/self/task.
+std::size_t threads_now() {
+  std::size_t n = 0;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it("/proc/self/task", ec), end; !ec && it != end; it.increment(ec)) ++n;
   return n;
 }
 
@@ -59,6 +68,22 @@ TEST(page_warmer_populates_the_next_huge_page_shortly_before_use_and_no_further)
   const std::size_t used = huge - PageWarmer::kLead / 2;
   CHECK_EQ(warmed_pages(warmer, v, used, huge, 2 * huge), huge / 4096);
   CHECK_EQ(resident_pages(base + 2 * huge, capacity - 2 * huge), 0u);
+}
+
+// A small run pays for no thread: the warmer starts its own only when an array nears the end of
+// its first huge page, where warming first has something to do.
+TEST(page_warmer_starts_its_thread_only_when_an_array_nears_its_second_huge_page) {
+  constexpr std::size_t huge = PageWarmer::kHugePage;
+  BigVector<std::uint32_t> v;
+  v.reserve(16u << 20);
+  const std::size_t capacity = v.capacity() * sizeof(std::uint32_t);
+  const std::size_t before = threads_now();
+  CHECK(before > 0u);
+  PageWarmer warmer(true);
+  for (std::size_t used = 4096; used < PageWarmer::kStartUsed; used += 64 << 10) warmer.note(0, v.data(), used, capacity);
+  CHECK_EQ(threads_now(), before);
+  warmer.note(0, v.data(), huge - PageWarmer::kLead / 2, capacity);
+  CHECK_EQ(threads_now(), before + 1);
 }
 #endif
 
