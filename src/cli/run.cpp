@@ -99,7 +99,7 @@ void report_commit_notes(const CommitNotes& notes) {
                  "replaced by this run's set\n",
                  notes.replaced_meanwhile, notes.replaced_meanwhile == 1 ? "" : "s");
   else if (notes.waited_for_other_run)
-    std::fprintf(stderr, "deltri: warning: waited for another deltri run writing to the same directory\n");
+    std::fprintf(stderr, "deltri: warning: waited for another deltri run writing the same output files\n");
 }
 
 void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
@@ -273,7 +273,7 @@ int run(const Switches& sw) {
   schedule_outputs(outputs, {mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering,
                              sw.order == 2 ? &result.midpoints : nullptr, report, status});
   refuse_overwriting_inputs(report, in, pslg);
-  const CommitNotes notes = outputs.commit(set_interrupt_cleanup);
+  const CommitNotes notes = outputs.commit(interrupt_listener());
   report_commit_notes(notes);
   timer.stage("write");
   report.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
