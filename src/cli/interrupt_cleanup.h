@@ -32,9 +32,14 @@ namespace deltri {
 // that commits the outputs.
 void set_interrupt_cleanup(const std::vector<std::string>& temporaries, const std::vector<std::string>& finals);
 
-// Called before the first rename: from then on the handler finishes the renames. false if a
-// signal is already being handled (then nothing may be renamed).
-bool begin_interrupt_renames();
+// Called before the first rename, with the lock files held: from then on the handler finishes the
+// renames, then removes the lock files (as their holder would on its way out). false if a signal is
+// already being handled (then nothing may be renamed).
+bool begin_interrupt_renames(const std::vector<std::string>& lock_files);
+
+// Called after the renames, before the locks are let go: back to removing. If a handler is
+// finishing the renames meanwhile (on another thread), waits for it to end the process.
+void end_interrupt_renames();
 
 // The two above, as OutputSet::commit() takes them.
 CommitListener interrupt_listener();

@@ -187,6 +187,13 @@ class NameLocks {
   NameLocks(const NameLocks&) = delete;
   NameLocks& operator=(const NameLocks&) = delete;
   bool waited() const { return waited_; }
+  std::vector<std::string> paths() const {
+    std::vector<std::string> p;
+#ifdef DELTRI_POSIX_OUTPUT
+    for (const auto& held : held_) p.push_back(held.first);
+#endif
+    return p;
+  }
 
  private:
 #ifdef DELTRI_POSIX_OUTPUT
@@ -428,7 +435,8 @@ CommitNotes OutputSet::commit(const CommitListener& listener) {
   }
   // Past this point a signal finishes the renames instead of removing the temporaries left (see
   // cli/interrupt_cleanup.h); if one is already being handled, nothing is renamed.
-  if (!error && listener.begin_renames && !listener.begin_renames())
+  bool renaming = false;
+  if (!error && listener.begin_renames && !(renaming = listener.begin_renames(locks->paths())))
     error = std::make_exception_ptr(OutputError("interrupted before the outputs were put in place"));
   if (!error) {
     error = run_in_order(files_.size(), workers, [&](std::size_t k) {
@@ -439,6 +447,7 @@ CommitNotes OutputSet::commit(const CommitListener& listener) {
       temps[k].clear();
     });
   }
+  if (renaming && listener.end_renames) listener.end_renames();
   locks.reset();
   if (error) {
     remove_quietly(temps);

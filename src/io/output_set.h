@@ -28,10 +28,15 @@ struct CommitListener {
   // Every temporary path ("" for none) and its final name, before any temporary is created; two
   // empty lists once nothing is left to remove or rename.
   std::function<void(const std::vector<std::string>& temporaries, const std::vector<std::string>& finals)> pending;
-  // Asked just before the first rename. true: from now on an interrupted run must finish the
-  // renames rather than remove what is left (a mix of new and old files is never left); false: the
-  // run is already being interrupted and nothing may be renamed.
-  std::function<bool()> begin_renames;
+  // Asked just before the first rename, with the lock files this run holds. true: from now on an
+  // interrupted run must finish the renames rather than remove what is left (a mix of new and old
+  // files is never left), and then remove the lock files; false: the run is already being
+  // interrupted and nothing may be renamed.
+  std::function<bool(const std::vector<std::string>& lock_files)> begin_renames;
+  // Told after the renames (done or failed), before the locks are let go: an interrupted run no
+  // longer finishes renames or touches the lock files. Does not return if a signal is being
+  // handled meanwhile (the handler owns the locks until the process ends).
+  std::function<void()> end_renames;
 };
 
 class RangePool;

@@ -1,9 +1,9 @@
 #!/bin/sh
 # A signal between two renames of the outputs onto their final names (issue 47.9) must not leave a
 # mixed set (a new .node beside an old .ele): the run ends by the signal with either the old set
-# or the new one complete, and no temporary left. The moment is reached with a preloaded hook
-# (rename_hook.c) that sends SIGTERM right after the first rename; --threads=1 renames one file
-# after the other, so the others are still to do then.
+# or the new one complete, and no temporary or lock file left. The moment is reached with a
+# preloaded hook (rename_hook.c) that sends SIGTERM right after the first rename; --threads=1
+# renames one file after the other, so the others are still to do then.
 #   rename_window.sh DELTRI RENAME_HOOK DATA_DIR
 set -u
 deltri=$1 hook=$2 data=$3
@@ -36,11 +36,11 @@ for round in 1 2 3; do
   DELTRI_TEST_RENAME_HOOK=term LD_PRELOAD=$hook "$deltri" --threads=1 -pq30Q guitar.poly 2>err
   status=$?
   result=$(which)
-  left=$(ls -a | grep -c '\.tmp\.')
-  echo "round $round: exit $status, outputs: $result, temporaries left: $left"
+  left=$(ls -a | grep -c -e '\.tmp\.' -e '^\.deltri-lock')
+  echo "round $round: exit $status, outputs: $result, temporaries and lock files left: $left"
   [ $status = 143 ] || fail "the run was not ended by SIGTERM (exit $status): $(cat err)"
   [ "$result" = new ] || fail "after SIGTERM between the renames the outputs are '$result', not the new set"
-  [ "$left" = 0 ] || fail "temporaries left: $(ls -a | grep '\.tmp\.' | tr '\n' ' ')"
+  [ "$left" = 0 ] || fail "left behind: $(ls -a | grep -e '\.tmp\.' -e '^\.deltri-lock' | tr '\n' ' ')"
 done
 [ $failed = 0 ] && echo ok
 exit $failed
