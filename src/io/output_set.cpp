@@ -154,26 +154,29 @@ std::uint64_t name_hash(const std::string& name) {
 // on without waiting, while two runs writing one name still rename in turn. The lock file exists
 // only while it is held: its holder removes it before letting go, and a run that was waiting for
 // it then finds the path gone or pointing to a newer file, and locks again. Locks are taken in
-// sorted order of (directory device and inode, name), so two runs cannot deadlock, and each
-// target once, so no run waits for itself (one directory reached through a bind mount and through
+// sorted order of (directory device and inode, hash), so two runs cannot deadlock, and each lock
+// file once, so no run waits for itself (one directory reached through a bind mount and through
 // its own path is the same device and inode). Readers that do not lock see renames as before.
 class NameLocks {
  public:
-  explicit NameLocks(std::vector<Target> targets) {
-    std::sort(targets.begin(), targets.end());
-    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+  explicit NameLocks(const std::vector<Target>& targets) {
 #ifdef DELTRI_POSIX_OUTPUT
-    // Several names may share a lock file (a hash collision, or one name twice): lock it once.
-    std::vector<std::pair<std::tuple<bool, std::uint64_t, std::uint64_t, std::string>, std::uint64_t>> held;
+    // Sorted by the lock file's own identity (directory, hash), not by name: two names sharing a
+    // lock file (a hash collision, or one name twice) then share one place in the order too.
+    using Key = std::tuple<bool, std::uint64_t, std::uint64_t, std::string, std::uint64_t>;
+    std::vector<std::pair<Key, std::string>> locks;
     for (const Target& t : targets) {
       const std::uint64_t hash = name_hash(t.name);
-      const auto key = std::make_pair(std::make_tuple(t.identified, t.device, t.inode, t.identified ? std::string() : t.dir), hash);
-      if (std::find(held.begin(), held.end(), key) != held.end()) continue;
-      held.push_back(key);
       char hex[17];
       std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
-      lock(t.dir + "/.deltri-lock." + hex);
+      locks.emplace_back(Key{t.identified, t.device, t.inode, t.identified ? std::string() : t.dir, hash},
+                         t.dir + "/.deltri-lock." + hex);
     }
+    std::sort(locks.begin(), locks.end());
+    for (std::size_t i = 0; i < locks.size(); ++i)
+      if (i == 0 || locks[i].first != locks[i - 1].first) lock(locks[i].second);
+#else
+    (void)targets;
 #endif
   }
   ~NameLocks() {
@@ -428,7 +431,7 @@ CommitNotes OutputSet::commit(const CommitListener& listener) {
     if (f.final_path != kStandardOutput) targets.push_back(target_of(f.final_path));
   std::optional<NameLocks> locks;
   if (!error) {
-    locks.emplace(std::move(targets));
+    locks.emplace(targets);
     notes.waited_for_other_run = locks->waited();
     for (std::size_t k = 0; k < files_.size(); ++k)
       if (!temps[k].empty() && file_identity(files_[k].final_path) != before[k]) ++notes.replaced_meanwhile;
