@@ -203,8 +203,11 @@ bool node_withheld_by_I(const Switches& sw, const InputFiles& in, const Pslg& ps
 void refuse_vertices_in_no_file(const Switches& sw, const InputFiles& in, const Pslg& pslg, const Mesh* mesh,
                                 std::size_t input_vertices = 0) {
   if (!node_withheld_by_I(sw, in, pslg) || (sw.no_ele && !sw.edges)) return;
-  const char* cause = sw.quality ? "-q" : sw.fixed_area || sw.variable_area ? "-a" : sw.user_test ? "-u"
-                    : sw.conforming_delaunay ? "-D" : sw.order == 2 ? "-o2" : !sw.size_field.empty() ? "--size-field" : nullptr;
+  // Refinement with -S0 adds no vertex.
+  const bool refines = sw.max_steiner != 0;
+  const char* cause = refines && sw.quality ? "-q" : refines && (sw.fixed_area || sw.variable_area) ? "-a"
+                    : refines && sw.user_test ? "-u" : refines && !sw.size_field.empty() ? "--size-field"
+                    : refines && sw.conforming_delaunay ? "-D" : sw.order == 2 ? "-o2" : nullptr;
   if (!cause && mesh && mesh->vertex_count() > input_vertices) cause = "the repair of the input";
   if (!cause) return;
   const std::string node = output_base(in.base, true) + ".node";
