@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstdio>
 
 #if __has_include(<unistd.h>)
 #include <unistd.h>
@@ -11,14 +12,27 @@
 namespace deltri {
 namespace {
 
+// What the handler is to do with the published files.
+enum Phase : int {
+  kWriting = 0,   // remove the temporaries
+  kRenaming = 1,  // finish the renames
+  kHandling = 2,  // a handler is removing them: nothing may be renamed any more
+  kFinishing = 3, // a handler is finishing the renames: the locks are its until the process ends
+};
+
 // The paths are copied into `storage` in normal context; the handler sees them only through
 // `published` and `count`, which are set after the copy is complete and cleared before the next
 // change, so it never reads a list being rebuilt. Lock-free atomics are async-signal-safe.
 struct Registry {
-  std::vector<std::string> storage;
+  std::vector<std::string> storage;  // temporary, final, temporary, final, ...
   std::vector<const char*> pointers;
   std::atomic<const char* const*> published{nullptr};
-  std::atomic<std::size_t> count{0};
+  std::atomic<std::size_t> count{0};  // pairs
+  std::vector<std::string> lock_storage;  // the lock files held during the renames
+  std::vector<const char*> lock_pointers;
+  std::atomic<const char* const*> locks{nullptr};
+  std::atomic<std::size_t> lock_count{0};
+  std::atomic<int> phase{kWriting};
   bool installed = false;
 };
 
@@ -27,12 +41,29 @@ Registry& registry() {
   return r;
 }
 
-extern "C" void remove_temporaries_and_reraise(int signal_number) {
+extern "C" void finish_or_remove_and_reraise(int signal_number) {
   Registry& r = registry();
+  // Either this claims the files before any rename (and the committing thread will not start
+  // renaming), or the renames have begun and this claims finishing them (and the committing
+  // thread will not let go of the locks). A second signal while a handler runs finds kHandling
+  // (remove again) or kFinishing (rename again): both harmless repeats.
+  int phase = r.phase.load();
+  while ((phase == kWriting && !r.phase.compare_exchange_weak(phase, kHandling)) ||
+         (phase == kRenaming && !r.phase.compare_exchange_weak(phase, kFinishing))) {
+  }
+  const bool remove = phase == kWriting || phase == kHandling;
   const char* const* paths = r.published.load();
   const std::size_t n = r.count.load();
 #ifdef DELTRI_HAVE_UNLINK
-  for (std::size_t i = 0; paths && i < n; ++i) unlink(paths[i]);
+  for (std::size_t i = 0; paths && i < n; ++i) {
+    // A temporary already renamed is no longer there: the call fails with ENOENT, harmlessly.
+    if (remove) unlink(paths[2 * i]);
+    else std::rename(paths[2 * i], paths[2 * i + 1]);
+  }
+  // Only in the renaming phase are the locks known to be this run's: remove them while held.
+  const char* const* locks = remove ? nullptr : r.locks.load();
+  const std::size_t m = r.lock_count.load();
+  for (std::size_t i = 0; locks && i < m; ++i) unlink(locks[i]);
 #endif
   std::signal(signal_number, SIG_DFL);
   std::raise(signal_number);
@@ -40,14 +71,17 @@ extern "C" void remove_temporaries_and_reraise(int signal_number) {
 
 }  // namespace
 
-void set_interrupt_cleanup(const std::vector<std::string>& paths) {
+void set_interrupt_cleanup(const std::vector<std::string>& temporaries, const std::vector<std::string>& finals) {
   Registry& r = registry();
   r.count.store(0);
   r.published.store(nullptr);
   r.storage.clear();
   r.pointers.clear();
-  for (const std::string& p : paths)
-    if (!p.empty()) r.storage.push_back(p);
+  for (std::size_t k = 0; k < temporaries.size() && k < finals.size(); ++k)
+    if (!temporaries[k].empty()) {
+      r.storage.push_back(temporaries[k]);
+      r.storage.push_back(finals[k]);
+    }
   for (const std::string& p : r.storage) r.pointers.push_back(p.c_str());
   if (!r.installed && !r.storage.empty()) {
     for (const int s : {SIGINT, SIGTERM,
@@ -56,12 +90,43 @@ void set_interrupt_cleanup(const std::vector<std::string>& paths) {
 #endif
          }) {
       // A signal the user chose to ignore (nohup) stays ignored.
-      if (std::signal(s, remove_temporaries_and_reraise) == SIG_IGN) std::signal(s, SIG_IGN);
+      if (std::signal(s, finish_or_remove_and_reraise) == SIG_IGN) std::signal(s, SIG_IGN);
     }
     r.installed = true;
   }
   r.published.store(r.pointers.data());
-  r.count.store(r.pointers.size());
+  r.count.store(r.pointers.size() / 2);
 }
+
+bool begin_interrupt_renames(const std::vector<std::string>& lock_files) {
+  Registry& r = registry();
+  r.lock_count.store(0);
+  r.locks.store(nullptr);
+  r.lock_storage = lock_files;
+  r.lock_pointers.clear();
+  for (const std::string& p : r.lock_storage) r.lock_pointers.push_back(p.c_str());
+  r.locks.store(r.lock_pointers.data());
+  r.lock_count.store(r.lock_pointers.size());
+  int phase = kWriting;
+  return r.phase.compare_exchange_strong(phase, kRenaming);
+}
+
+void end_interrupt_renames() {
+  Registry& r = registry();
+  int phase = kRenaming;
+  if (!r.phase.compare_exchange_strong(phase, kWriting)) {
+    // A handler on another thread is finishing the renames and then ends the process; letting go
+    // of the locks now would let it remove lock files of other runs.
+    for (;;) {
+#ifdef DELTRI_HAVE_UNLINK
+      pause();
+#endif
+    }
+  }
+  r.lock_count.store(0);
+  r.locks.store(nullptr);
+}
+
+CommitListener interrupt_listener() { return {set_interrupt_cleanup, begin_interrupt_renames, end_interrupt_renames}; }
 
 }  // namespace deltri

@@ -1,20 +1,47 @@
-// Removing the output temporaries when the run is interrupted (SIGINT, SIGTERM, SIGHUP).
+// What an interrupted run (SIGINT, SIGTERM, SIGHUP) does with its output temporaries.
 //
 // This is the program's one piece of process-wide mutable state, and it has to be: a signal is
 // delivered to the process, and its handler can reach only what is global. It lives here in the
-// CLI, not in the library (io/output_set.h only reports its temporary names to a listener).
-// The handler is async-signal-safe: it walks a list prepared before the temporaries exist,
-// unlinks each, restores the default action and raises the signal again, so the exit status
-// still says which signal ended the run.
+// CLI, not in the library (io/output_set.h only reports its temporaries to a listener).
+//
+// While the temporaries are being written, the handler removes them: the old outputs stay as they
+// were. Once the renames onto the final names have begun, removing the temporaries not yet renamed
+// would leave a mixed set (a new .node beside an old .ele), so the handler finishes the renames
+// instead, with rename(2), and the new set is complete. Finishing was chosen over rolling back:
+// a rollback would need a copy of every old file kept aside until the end, and its own renames
+// could be cut short just the same; the renames left are few, in directories already locked by
+// this run, and each is one system call. Blocking the signals around the renames would not do
+// either: a signal to the process goes to any thread that has not blocked it.
+//
+// Which of the two the handler does is decided by one atomic exchange, so that the handler and the
+// thread about to start renaming can never both act (the handler may run on another thread). The
+// handler is async-signal-safe: it walks lists prepared before the temporaries exist, then
+// restores the default action and raises the signal again, so the exit status still says which
+// signal ended the run.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "io/output_set.h"
+
 namespace deltri {
 
-// Installs the handlers (once) and makes `paths` the temporaries to remove; an empty list once
-// they are renamed or removed. Not thread-safe: called from the thread that commits the outputs.
-void set_interrupt_cleanup(const std::vector<std::string>& paths);
+// Installs the handlers (once) and makes `temporaries` (with their final names) the files to
+// remove; empty lists once they are renamed or removed. Not thread-safe: called from the thread
+// that commits the outputs.
+void set_interrupt_cleanup(const std::vector<std::string>& temporaries, const std::vector<std::string>& finals);
+
+// Called before the first rename, with the lock files held: from then on the handler finishes the
+// renames, then removes the lock files (as their holder would on its way out). false if a signal is
+// already being handled (then nothing may be renamed).
+bool begin_interrupt_renames(const std::vector<std::string>& lock_files);
+
+// Called after the renames, before the locks are let go: back to removing. If a handler is
+// finishing the renames meanwhile (on another thread), waits for it to end the process.
+void end_interrupt_renames();
+
+// The two above, as OutputSet::commit() takes them.
+CommitListener interrupt_listener();
 
 }  // namespace deltri

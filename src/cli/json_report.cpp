@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "cli/version.h"
 #include "quality/statistics.h"
@@ -47,16 +48,24 @@ class Json {
   void string(const char* key, const std::string& v) {
     field(key);
     out_ += '"';
-    for (unsigned char c : v) {
+    for (std::size_t i = 0; i < v.size();) {
+      const unsigned char c = static_cast<unsigned char>(v[i]);
       if (c == '"' || c == '\\') {
         out_ += '\\';
         out_ += static_cast<char>(c);
+        ++i;
       } else if (c < 0x20) {
-        char buffer[8];
-        std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-        out_ += buffer;
+        escape(c);
+        ++i;
+      } else if (const std::size_t n = utf8_sequence(v, i)) {
+        out_.append(v, i, n);
+        i += n;
       } else {
-        out_ += static_cast<char>(c);
+        // A byte that is not part of valid UTF-8 (a file name in Latin-1, say): JSON text must be
+        // UTF-8, so it is written as the character of the same number, U+0080 to U+00FF, which
+        // keeps the byte and reads right for Latin-1 names.
+        escape(c);
+        ++i;
       }
     }
     out_ += '"';
@@ -64,6 +73,29 @@ class Json {
   std::string take() { return std::move(out_) + "\n"; }
 
  private:
+  void escape(unsigned char c) {
+    char buffer[8];
+    std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+    out_ += buffer;
+  }
+  // The length of the well-formed UTF-8 sequence at v[i] (Unicode's table 3-7:
+  // no overlong forms, no surrogates, nothing above U+10FFFF), or 0 where there is none.
+  static std::size_t utf8_sequence(const std::string& v, std::size_t i) {
+    const auto at = [&](std::size_t k) { return i + k < v.size() ? static_cast<unsigned char>(v[i + k]) : 0u; };
+    const unsigned c = at(0);
+    const auto cont = [&](std::size_t k) { return (at(k) & 0xC0u) == 0x80u; };
+    if (c < 0x80) return 1;
+    if (c >= 0xC2 && c <= 0xDF) return cont(1) ? 2 : 0;
+    if (c >= 0xE0 && c <= 0xEF) {
+      const unsigned lo = c == 0xE0 ? 0xA0 : 0x80, hi = c == 0xED ? 0x9F : 0xBF;
+      return at(1) >= lo && at(1) <= hi && cont(2) ? 3 : 0;
+    }
+    if (c >= 0xF0 && c <= 0xF4) {
+      const unsigned lo = c == 0xF0 ? 0x90 : 0x80, hi = c == 0xF4 ? 0x8F : 0xBF;
+      return at(1) >= lo && at(1) <= hi && cont(2) && cont(3) ? 4 : 0;
+    }
+    return 0;
+  }
   void field(const char* key) {
     if (!first_) out_ += ',';
     first_ = false;

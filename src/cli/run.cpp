@@ -99,7 +99,7 @@ void report_commit_notes(const CommitNotes& notes) {
                  "replaced by this run's set\n",
                  notes.replaced_meanwhile, notes.replaced_meanwhile == 1 ? "" : "s");
   else if (notes.waited_for_other_run)
-    std::fprintf(stderr, "deltri: warning: waited for another deltri run writing to the same directory\n");
+    std::fprintf(stderr, "deltri: warning: waited for another deltri run writing the same output files\n");
 }
 
 void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
@@ -188,6 +188,34 @@ void refuse_overwriting_inputs(const RunReport& report, const InputFiles& in, co
     }
 }
 
+// Whether the .node is left out because of -I alone (it would overwrite the input's vertices; as in
+// Triangle, it is still written when the vertices came from the .poly itself).
+bool node_withheld_by_I(const Switches& sw, const InputFiles& in, const Pslg& pslg) {
+  const bool vertices_in_poly = in.is_poly && (pslg.source_name == in.path || in.path == "-");
+  return sw.no_iteration && !vertices_in_poly && !sw.no_node && !uses_standard_output(sw);
+}
+
+// With the .node withheld by -I, the .ele and .edge can name only the input's vertices: a mesh
+// with vertices of its own would be written as triangles whose corners are in no file (Triangle
+// writes such an .ele without a word). Refused before any work where the switches ask for new
+// vertices, and, should a repair of the input have added some, before anything is written.
+// (-N is not refused: leaving out the .node is then what was asked for.)
+void refuse_vertices_in_no_file(const Switches& sw, const InputFiles& in, const Pslg& pslg, const Mesh* mesh,
+                                std::size_t input_vertices = 0) {
+  if (!node_withheld_by_I(sw, in, pslg) || (sw.no_ele && !sw.edges)) return;
+  // Refinement with -S0 adds no vertex.
+  const bool refines = sw.max_steiner != 0;
+  const char* cause = refines && sw.quality ? "-q" : refines && (sw.fixed_area || sw.variable_area) ? "-a"
+                    : refines && sw.user_test ? "-u" : refines && !sw.size_field.empty() ? "--size-field"
+                    : refines && sw.conforming_delaunay ? "-D" : sw.order == 2 ? "-o2" : nullptr;
+  if (!cause && mesh && mesh->vertex_count() > input_vertices) cause = "the repair of the input";
+  if (!cause) return;
+  const std::string node = output_base(in.base, true) + ".node";
+  throw UsageError(std::string("-I: ") + cause + " adds vertices, which only a .node could hold, and -I does not write " +
+                   node + " (it would replace the input's vertices); leave out -I (the outputs are then " +
+                   output_base(in.base, false) + ".*) or add -N if the .node is not wanted");
+}
+
 // --size-field=FILE: FILE.node (or FILE as named) and FILE.ele, the wanted edge length the first
 // vertex attribute (refine/size_field.h).
 SizeField read_size_field(const std::string& name, int threads) {
@@ -240,6 +268,7 @@ int run(const Switches& sw) {
   const InputFiles in = input_files(sw);
   const int threads = threads_to_use(sw);  // --threads reads too
   Pslg pslg = in.is_poly ? read_poly_file(in.path, threads) : read_node_file(in.path, threads);
+  refuse_vertices_in_no_file(sw, in, pslg, nullptr);
   PipelineSource source;
   source.name = in.path == "-" ? kStandardInputName : in.path;
   source.is_poly = in.is_poly;
@@ -273,7 +302,8 @@ int run(const Switches& sw) {
   schedule_outputs(outputs, {mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering,
                              sw.order == 2 ? &result.midpoints : nullptr, report, status});
   refuse_overwriting_inputs(report, in, pslg);
-  const CommitNotes notes = outputs.commit(set_interrupt_cleanup);
+  refuse_vertices_in_no_file(sw, in, pslg, &mesh, report.input_vertices);
+  const CommitNotes notes = outputs.commit(interrupt_listener());
   report_commit_notes(notes);
   timer.stage("write");
   report.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -131,7 +131,7 @@ int run_surface(const Switches& sw, const std::string& path) {
   const std::string base = path.ends_with(".smesh") ? path.substr(0, path.size() - 6) : input_base(path, &extension);
   OutputSet outputs(static_cast<std::size_t>(threads_to_use(sw)));  // --threads writes too
   const std::vector<std::string> written = schedule(outputs, mesh, sw, output_base(base, sw.no_iteration), input.first_index);
-  outputs.commit(set_interrupt_cleanup);
+  outputs.commit(interrupt_listener());
   if (sw.quiet) return kExitOk;
   std::FILE* out = uses_standard_output(sw) ? stderr : stdout;
   std::string files;

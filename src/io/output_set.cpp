@@ -11,6 +11,7 @@
 #include <random>
 #include <system_error>
 #include <thread>
+#include <tuple>
 
 #include "io/range_pool.h"
 #include "pslg/errors.h"
@@ -39,29 +40,65 @@ long process_id() {
 #endif
 }
 
+std::string directory_of(const std::string& path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  return parent.empty() ? std::string(".") : parent.string();
+}
+
+std::string file_name_of(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+// The longest file name the directory takes (255 on most file systems).
+std::size_t longest_name(const std::string& dir) {
+#ifdef DELTRI_POSIX_OUTPUT
+  errno = 0;
+  const long n = pathconf(dir.c_str(), _PC_NAME_MAX);
+  if (n > 0) return static_cast<std::size_t>(n);
+#else
+  (void)dir;
+#endif
+  return 255;
+}
+
+// How much of a final file name a temporary keeps in front of `suffix_size` more characters: all
+// of it when that fits in the directory's longest name, else as much as fits. Without the cut an
+// output whose name is within a few dozen characters of the limit could not be written at all.
+std::size_t stem_size(std::size_t final_size, std::size_t suffix_size, std::size_t longest) {
+  return std::min(final_size, longest > suffix_size ? longest - suffix_size : std::size_t{1});
+}
+
 // FINAL.tmp.PID.RANDOM: the process id lets a later run prove a leftover stale (its process is
 // gone); the random part keeps names unique within the process. `rng` belongs to one commit().
 std::string temporary_name(const std::string& final_path, std::mt19937_64& rng) {
   static const char kHex[] = "0123456789abcdef";
-  std::string name = final_path + ".tmp." + std::to_string(process_id()) + ".";
+  std::string suffix = ".tmp." + std::to_string(process_id()) + ".";
   std::uint64_t bits = rng();
-  for (int i = 0; i < 12; ++i, bits >>= 4) name += kHex[bits & 15];
-  return name;
+  for (int i = 0; i < 12; ++i, bits >>= 4) suffix += kHex[bits & 15];
+  const std::string name = file_name_of(final_path);
+  const std::string dir_part = final_path.substr(0, final_path.size() - name.size());
+  return dir_part + name.substr(0, stem_size(name.size(), suffix.size(), longest_name(directory_of(final_path)))) +
+         suffix;
 }
 
 // The process id of a temporary of `final_name` (a file name, no directory), or -1 if `name` is
-// not one: FINAL.tmp.<digits>.<12 hex digits>.
-long temporary_owner(const std::string& name, const std::string& final_name) {
-  const std::string prefix = final_name + ".tmp.";
-  if (name.size() <= prefix.size() + 14 || name.compare(0, prefix.size(), prefix) != 0) return -1;
-  const std::string rest = name.substr(prefix.size());
-  const std::size_t dot = rest.find('.');
-  if (dot == 0 || dot == std::string::npos || dot > 10 || rest.size() - dot - 1 != 12) return -1;
-  for (std::size_t i = 0; i < dot; ++i)
-    if (rest[i] < '0' || rest[i] > '9') return -1;
-  for (std::size_t i = dot + 1; i < rest.size(); ++i)
-    if (!std::isxdigit(static_cast<unsigned char>(rest[i]))) return -1;
-  return std::stol(rest.substr(0, dot));
+// not one: STEM.tmp.<digits>.<12 hex digits>, STEM being `final_name` or, for a name too long for
+// the whole to fit in `longest` characters, as much of it as temporary_name() keeps.
+long temporary_owner(const std::string& name, const std::string& final_name, std::size_t longest) {
+  if (name.size() < 13) return -1;
+  const std::size_t random_at = name.size() - 12;
+  for (std::size_t i = random_at; i < name.size(); ++i)
+    if (!std::isxdigit(static_cast<unsigned char>(name[i]))) return -1;
+  if (name[random_at - 1] != '.') return -1;
+  std::size_t digits_at = random_at - 1;
+  while (digits_at > 0 && name[digits_at - 1] >= '0' && name[digits_at - 1] <= '9') --digits_at;
+  const std::size_t digits = random_at - 1 - digits_at;
+  static const std::string kTmp = ".tmp.";
+  if (digits == 0 || digits > 10 || digits_at < kTmp.size() + 1 ||
+      name.compare(digits_at - kTmp.size(), kTmp.size(), kTmp) != 0)
+    return -1;
+  const std::size_t stem = digits_at - kTmp.size();
+  if (stem != stem_size(final_name.size(), name.size() - stem, longest) || final_name.compare(0, stem, name, 0, stem) != 0)
+    return -1;
+  return std::stol(name.substr(digits_at, digits));
 }
 
 bool process_gone(long pid) {
@@ -73,51 +110,117 @@ bool process_gone(long pid) {
 #endif
 }
 
-// Exclusive advisory locks of the output directories, taken in sorted order (no deadlock between
-// runs) and released on destruction. Readers that do not lock see renames as before.
-class DirectoryLocks {
- public:
-  explicit DirectoryLocks(std::vector<std::string> dirs) {
-    // One lock per directory, however its path is spelt: a second flock of the same directory on
-    // another descriptor would wait for this process itself (out/x.msh beside x.1.ele named
-    // /abs/out/x.msh hung).
-    for (std::string& d : dirs) {
-      std::error_code ec;
-      const std::filesystem::path canonical = std::filesystem::weakly_canonical(d.empty() ? "." : d, ec);
-      if (!ec) d = canonical.string();
-    }
-    std::sort(dirs.begin(), dirs.end());
-    dirs.erase(std::unique(dirs.begin(), dirs.end()), dirs.end());
+// Where an output lands: its directory's device and inode (however the directory is spelt: a
+// symbolic link, a bind mount, "." or its full path) and its file name. Two outputs with the same
+// target are one file; with the directory not there yet, its spelling stands in.
+struct Target {
+  std::string dir;  // as first spelt, for the lock file's path
+  std::uint64_t device = 0, inode = 0;
+  bool identified = false;
+  std::string name;
+  std::tuple<bool, std::uint64_t, std::uint64_t, std::string, std::string> key() const {
+    return {identified, device, inode, identified ? std::string() : dir, name};
+  }
+  bool operator<(const Target& o) const { return key() < o.key(); }
+  bool operator==(const Target& o) const { return key() == o.key(); }
+};
+
+Target target_of(const std::string& path) {
+  Target t;
+  t.dir = directory_of(path);
+  t.name = file_name_of(path);
 #ifdef DELTRI_POSIX_OUTPUT
-    for (const std::string& d : dirs) {
-      const int fd = open(d.c_str(), O_RDONLY | O_CLOEXEC);
-      if (fd < 0) continue;  // then the renames fail or succeed without the lock's protection
+  struct stat st;
+  if (stat(t.dir.c_str(), &st) == 0) {
+    t.device = static_cast<std::uint64_t>(st.st_dev);
+    t.inode = static_cast<std::uint64_t>(st.st_ino);
+    t.identified = true;
+  }
+#endif
+  return t;
+}
+
+// FNV-1a of a file name: the same in every build, so that two deltri programs agree on the name
+// of the lock file of one output.
+std::uint64_t name_hash(const std::string& name) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (const unsigned char c : name) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+// Exclusive advisory locks (flock), one per final output name: a hidden file
+// DIR/.deltri-lock.<16 hex digits of the name's hash>, short whatever the output's name. Locking
+// names rather than directories is what lets runs writing other names into the same directory go
+// on without waiting, while two runs writing one name still rename in turn. The lock file exists
+// only while it is held: its holder removes it before letting go, and a run that was waiting for
+// it then finds the path gone or pointing to a newer file, and locks again. Locks are taken in
+// sorted order of (directory device and inode, hash), so two runs cannot deadlock, and each lock
+// file once, so no run waits for itself (one directory reached through a bind mount and through
+// its own path is the same device and inode). Readers that do not lock see renames as before.
+class NameLocks {
+ public:
+  explicit NameLocks(const std::vector<Target>& targets) {
+#ifdef DELTRI_POSIX_OUTPUT
+    // Sorted by the lock file's own identity (directory, hash), not by name: two names sharing a
+    // lock file (a hash collision, or one name twice) then share one place in the order too.
+    using Key = std::tuple<bool, std::uint64_t, std::uint64_t, std::string, std::uint64_t>;
+    std::vector<std::pair<Key, std::string>> locks;
+    for (const Target& t : targets) {
+      const std::uint64_t hash = name_hash(t.name);
+      char hex[17];
+      std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+      locks.emplace_back(Key{t.identified, t.device, t.inode, t.identified ? std::string() : t.dir, hash},
+                         t.dir + "/.deltri-lock." + hex);
+    }
+    std::sort(locks.begin(), locks.end());
+    for (std::size_t i = 0; i < locks.size(); ++i)
+      if (i == 0 || locks[i].first != locks[i - 1].first) lock(locks[i].second);
+#else
+    (void)targets;
+#endif
+  }
+  ~NameLocks() {
+#ifdef DELTRI_POSIX_OUTPUT
+    for (const auto& [path, fd] : held_) {
+      unlink(path.c_str());  // while still held: see the class comment
+      close(fd);             // closing releases the lock
+    }
+#endif
+  }
+  NameLocks(const NameLocks&) = delete;
+  NameLocks& operator=(const NameLocks&) = delete;
+  bool waited() const { return waited_; }
+  std::vector<std::string> paths() const {
+    std::vector<std::string> p;
+#ifdef DELTRI_POSIX_OUTPUT
+    for (const auto& held : held_) p.push_back(held.first);
+#endif
+    return p;
+  }
+
+ private:
+#ifdef DELTRI_POSIX_OUTPUT
+  void lock(const std::string& path) {
+    for (int attempt = 0; attempt < 1000; ++attempt) {
+      // Read-only is enough for flock, so users who share a directory share its lock files too.
+      const int fd = open(path.c_str(), O_RDONLY | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+      if (fd < 0) return;  // then the renames go ahead without this lock's protection
       if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
         waited_ = true;
         while (flock(fd, LOCK_EX) != 0 && errno == EINTR) {}
       }
-      fds_.push_back(fd);
+      struct stat held, now;
+      if (fstat(fd, &held) == 0 && stat(path.c_str(), &now) == 0 && held.st_dev == now.st_dev && held.st_ino == now.st_ino) {
+        held_.emplace_back(path, fd);
+        return;
+      }
+      close(fd);  // its holder removed it: lock the file now at that path
     }
-#endif
   }
-  ~DirectoryLocks() {
-#ifdef DELTRI_POSIX_OUTPUT
-    for (const int fd : fds_) close(fd);  // closing releases the lock
+  std::vector<std::pair<std::string, int>> held_;
 #endif
-  }
-  DirectoryLocks(const DirectoryLocks&) = delete;
-  DirectoryLocks& operator=(const DirectoryLocks&) = delete;
-  bool waited() const { return waited_; }
-
- private:
-  std::vector<int> fds_;
   bool waited_ = false;
 };
-
-std::string directory_of(const std::string& path) {
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  return parent.empty() ? std::string(".") : parent.string();
-}
 
 // An identity of what is at `path` now (inode, size and time), to see whether another process
 // replaced it; empty when nothing is there.
@@ -260,12 +363,13 @@ std::size_t OutputSet::remove_stale_temporaries() const {
   for (const File& f : files_) {
     if (f.final_path == kStandardOutput) continue;
     const std::string dir = directory_of(f.final_path);
-    const std::string name = std::filesystem::path(f.final_path).filename().string();
+    const std::string name = file_name_of(f.final_path);
     if (std::find(seen.begin(), seen.end(), std::make_pair(dir, name)) != seen.end()) continue;
     seen.emplace_back(dir, name);
+    const std::size_t longest = longest_name(dir);
     std::error_code ec;
     for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-      const long owner = temporary_owner(it->path().filename().string(), name);
+      const long owner = temporary_owner(it->path().filename().string(), name, longest);
       if (owner < 0 || !process_gone(owner)) continue;
       std::error_code ignored;
       removed += std::filesystem::remove(it->path(), ignored);
@@ -274,20 +378,38 @@ std::size_t OutputSet::remove_stale_temporaries() const {
   return removed;
 }
 
-CommitNotes OutputSet::commit(const TemporaryListener& listener) {
+// Two outputs of one run naming the same file would leave only one of them, and which one would
+// depend on the order of the renames: refused, as an output naming an input is.
+void OutputSet::refuse_duplicate_names() const {
+  std::vector<std::pair<Target, std::size_t>> targets;
+  for (std::size_t k = 0; k < files_.size(); ++k)
+    if (files_[k].final_path != kStandardOutput) targets.emplace_back(target_of(files_[k].final_path), k);
+  std::stable_sort(targets.begin(), targets.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t i = 1; i < targets.size(); ++i)
+    if (targets[i].first == targets[i - 1].first) {
+      const std::string& first = files_[std::min(targets[i].second, targets[i - 1].second)].final_path;
+      const std::string& second = files_[std::max(targets[i].second, targets[i - 1].second)].final_path;
+      fail(second, first == second ? "named by two outputs of this run (no files written)"
+                                   : "the same file as " + first + ", another output of this run (no files written)");
+    }
+}
+
+CommitNotes OutputSet::commit(const CommitListener& listener) {
+  refuse_duplicate_names();
   CommitNotes notes;
   notes.stale_temporaries_removed = remove_stale_temporaries();
   std::mt19937_64 rng{std::random_device{}()};
-  std::vector<std::string> temps, before;
+  std::vector<std::string> temps, before, finals;
   for (const File& f : files_) {
     temps.push_back(f.final_path == kStandardOutput ? std::string() : temporary_name(f.final_path, rng));
     before.push_back(f.final_path == kStandardOutput ? std::string() : file_identity(f.final_path));
+    finals.push_back(f.final_path);
   }
-  if (listener) listener(temps);
+  if (listener.pending) listener.pending(temps, finals);
   struct Unlisten {
-    const TemporaryListener& l;
+    const CommitListener& l;
     ~Unlisten() {
-      if (l) l({});
+      if (l.pending) l.pending({}, {});
     }
   } unlisten{listener};
   // Every worker writes: one with no file of its own left formats ranges of the others' files.
@@ -304,16 +426,21 @@ CommitNotes OutputSet::commit(const TemporaryListener& listener) {
     });
   // Renaming over an existing file frees the old one's blocks and cached pages, which for a large
   // .ele takes tens of milliseconds: worth sharing between threads too.
-  std::vector<std::string> dirs;
+  std::vector<Target> targets;
   for (const File& f : files_)
-    if (f.final_path != kStandardOutput) dirs.push_back(directory_of(f.final_path));
-  std::optional<DirectoryLocks> locks;
+    if (f.final_path != kStandardOutput) targets.push_back(target_of(f.final_path));
+  std::optional<NameLocks> locks;
   if (!error) {
-    locks.emplace(dirs);
+    locks.emplace(targets);
     notes.waited_for_other_run = locks->waited();
     for (std::size_t k = 0; k < files_.size(); ++k)
       if (!temps[k].empty() && file_identity(files_[k].final_path) != before[k]) ++notes.replaced_meanwhile;
   }
+  // Past this point a signal finishes the renames instead of removing the temporaries left (see
+  // cli/interrupt_cleanup.h); if one is already being handled, nothing is renamed.
+  bool renaming = false;
+  if (!error && listener.begin_renames && !(renaming = listener.begin_renames(locks->paths())))
+    error = std::make_exception_ptr(OutputError("interrupted before the outputs were put in place"));
   if (!error) {
     error = run_in_order(files_.size(), workers, [&](std::size_t k) {
       if (temps[k].empty()) return;
@@ -323,6 +450,7 @@ CommitNotes OutputSet::commit(const TemporaryListener& listener) {
       temps[k].clear();
     });
   }
+  if (renaming && listener.end_renames) listener.end_renames();
   locks.reset();
   if (error) {
     remove_quietly(temps);

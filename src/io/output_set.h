@@ -13,8 +13,8 @@ namespace deltri {
 
 // What commit() met besides its own files, for the caller to report.
 struct CommitNotes {
-  // Another run held the lock of an output directory, so this one waited for it (the other run's
-  // set, if it wrote the same names, is now wholly replaced by this one's).
+  // Another run held the lock of one of this run's output names, so this one waited for it (the
+  // other run's set is now wholly replaced by this one's). Runs writing other names never wait.
   bool waited_for_other_run = false;
   // Output files that changed on disk (another process replaced them) while this run was writing.
   std::size_t replaced_meanwhile = 0;
@@ -22,9 +22,22 @@ struct CommitNotes {
   std::size_t stale_temporaries_removed = 0;
 };
 
-// Told every temporary path before any is created, and an empty list once none is left: the CLI
-// keeps them where a signal handler can remove them (the library itself keeps no global state).
-using TemporaryListener = std::function<void(const std::vector<std::string>&)>;
+// What commit() tells the CLI, which keeps it where a signal handler can reach it (the library
+// itself keeps no global state).
+struct CommitListener {
+  // Every temporary path ("" for none) and its final name, before any temporary is created; two
+  // empty lists once nothing is left to remove or rename.
+  std::function<void(const std::vector<std::string>& temporaries, const std::vector<std::string>& finals)> pending;
+  // Asked just before the first rename, with the lock files this run holds. true: from now on an
+  // interrupted run must finish the renames rather than remove what is left (a mix of new and old
+  // files is never left), and then remove the lock files; false: the run is already being
+  // interrupted and nothing may be renamed.
+  std::function<bool(const std::vector<std::string>& lock_files)> begin_renames;
+  // Told after the renames (done or failed), before the locks are let go: an interrupted run no
+  // longer finishes renames or touches the lock files. Does not return if a signal is being
+  // handled meanwhile (the handler owns the locks until the process ends).
+  std::function<void()> end_renames;
+};
 
 class RangePool;
 
@@ -55,11 +68,17 @@ class OutputSet {
   // fail after others succeeded, those stay renamed: the remaining renames are within the same
   // directories and in practice cannot fail.)
   //
-  // Temporaries are named FINAL.tmp.PID.RANDOM. Before writing, temporaries of this kind for the
-  // same final names whose process is gone are removed (an interrupted or killed run's). The
-  // renames happen under an exclusive advisory lock (flock) of every output directory, so that
-  // two deltri runs writing the same names leave one run's complete set, never a mix.
-  CommitNotes commit(const TemporaryListener& listener = {});
+  // Two outputs naming the same file (also through another spelling of its directory) are refused
+  // with OutputError before anything is written.
+  //
+  // Temporaries are named FINAL.tmp.PID.RANDOM, FINAL cut short where the whole would exceed the
+  // directory's longest file name (so any output name the file system takes can be written).
+  // Before writing, temporaries of this kind for the same final names whose process is gone are
+  // removed (an interrupted or killed run's). The renames happen under an exclusive advisory lock
+  // (flock) of each final name (a short hidden lock file beside it, removed afterwards), so that two
+  // deltri runs writing the same names leave one run's complete set, never a mix, while runs writing
+  // other names in the same directory never wait for each other.
+  CommitNotes commit(const CommitListener& listener = {});
 
   std::size_t size() const { return files_.size(); }
 
@@ -71,6 +90,7 @@ class OutputSet {
   };
   static void write_temporary(File& f, const std::string& temp_path, RangePool* pool);
   std::size_t remove_stale_temporaries() const;
+  void refuse_duplicate_names() const;
   static void write_standard_output(File& f);
   std::size_t workers_;
   std::vector<File> files_;

@@ -154,3 +154,71 @@ TEST(output_set_directory_in_the_way_changes_nothing) {
   CHECK_EQ(iotest::read_file((dir / "a.1.node").string()), "old\n");  // renamed only if all can be
   CHECK_EQ(files_in(dir), 2u);
 }
+
+TEST(output_set_refuses_two_outputs_naming_one_file) {
+  const fs::path dir = iotest::scratch_dir() / "out_twice";
+  fs::create_directories(dir);
+  OutputSet set;
+  set.add((dir / "a.1.node").string(), "node\n");
+  set.add((dir / "a.1.ele").string(), "ele\n");
+  set.add((dir / "." / "a.1.node").string(), "json\n");  // the same file, spelt another way
+  bool threw = false;
+  try {
+    set.commit();
+  } catch (const OutputError& e) {
+    threw = true;
+    CHECK(std::string(e.what()).find("another output of this run (no files written)") != std::string::npos);
+  }
+  CHECK(threw);
+  CHECK_EQ(files_in(dir), 0u);
+}
+
+TEST(output_set_writes_names_near_the_longest) {
+  // A temporary named FINAL.tmp.PID.RANDOM would be about 25 characters longer than the limit.
+  const fs::path dir = iotest::scratch_dir() / "out_long";
+  fs::create_directories(dir);
+  const std::string name = std::string(247, 'n') + ".ele";  // 251 characters, under 255
+  OutputSet set;
+  set.add((dir / name).string(), "ele\n");
+  set.commit();
+  CHECK_EQ(iotest::read_file((dir / name).string()), "ele\n");
+  CHECK_EQ(files_in(dir), 1u);
+}
+
+TEST(output_set_tells_the_listener_each_phase) {
+  const fs::path dir = iotest::scratch_dir() / "out_listener";
+  fs::create_directories(dir);
+  const std::string node = (dir / "a.1.node").string(), ele = (dir / "a.1.ele").string();
+  iotest::write_file("out_listener/a.1.node", "old\n");
+  for (const bool allow : {false, true}) {
+    std::vector<std::string> temporaries, finals, locks;
+    int ended = 0, cleared = 0;
+    CommitListener listener;
+    listener.pending = [&](const std::vector<std::string>& t, const std::vector<std::string>& f) {
+      if (t.empty()) ++cleared;
+      else temporaries = t, finals = f;
+    };
+    listener.begin_renames = [&](const std::vector<std::string>& l) {
+      locks = l;
+      for (const std::string& lock : l) CHECK(fs::exists(lock));  // held while renaming
+      for (const std::string& t : temporaries) CHECK(fs::exists(t));
+      return allow;
+    };
+    listener.end_renames = [&] { ++ended; };
+    OutputSet set;
+    set.add(node, "new\n");
+    set.add(ele, "ele\n");
+    if (allow) {
+      set.commit(listener);
+    } else {
+      CHECK_THROWS(set.commit(listener));  // a signal is being handled: nothing is renamed
+    }
+    CHECK_EQ(finals.size(), 2u);
+    CHECK_EQ(locks.size(), 2u);  // one per output name
+    CHECK_EQ(ended, allow ? 1 : 0);
+    CHECK_EQ(cleared, 1);
+    for (const std::string& lock : locks) CHECK(!fs::exists(lock));  // removed by their holder
+    CHECK_EQ(iotest::read_file(node), allow ? "new\n" : "old\n");
+    CHECK_EQ(files_in(dir), allow ? 2u : 1u);
+  }
+}
