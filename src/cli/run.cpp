@@ -298,7 +298,8 @@ int run(const Switches& sw) {
   const bool bounds_missed = (report.misses && report.misses->not_forced_by_input() > 0) ||
                              (report.conformity && report.conformity->total > 0);
   const int status = sw.strict && (bounds_missed || mesh.live_triangles() == 0) ? kExitBounds : kExitOk;
-  OutputSet outputs(static_cast<std::size_t>(threads_to_use(sw)));  // --threads writes too
+  OutputSet outputs(OutputSet::workers_for(std::size_t{mesh.vertex_count()} + mesh.live_triangles(),
+                                           static_cast<std::size_t>(threads_to_use(sw))));  // --threads writes too
   schedule_outputs(outputs, {mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering,
                              sw.order == 2 ? &result.midpoints : nullptr, report, status});
   refuse_overwriting_inputs(report, in, pslg);

@@ -129,7 +129,8 @@ int run_surface(const Switches& sw, const std::string& path) {
   if (!report.converged) warn_not_converged(mesh, sw);
   std::string extension;
   const std::string base = path.ends_with(".smesh") ? path.substr(0, path.size() - 6) : input_base(path, &extension);
-  OutputSet outputs(static_cast<std::size_t>(threads_to_use(sw)));  // --threads writes too
+  OutputSet outputs(OutputSet::workers_for(mesh.points.size() + mesh.triangles.size(),
+                                           static_cast<std::size_t>(threads_to_use(sw))));  // --threads writes too
   const std::vector<std::string> written = schedule(outputs, mesh, sw, output_base(base, sw.no_iteration), input.first_index);
   outputs.commit(interrupt_listener());
   if (sw.quiet) return kExitOk;

@@ -357,22 +357,30 @@ void check_replaceable(const std::string& path) {
     fail(path, "cannot be replaced: it exists and is not a regular file");
 }
 
+// One pass over each output directory, however many outputs it holds: in a batch folder of
+// thousands of files a pass per output name was most of a small run's time in the file system.
 std::size_t OutputSet::remove_stale_temporaries() const {
-  std::size_t removed = 0;
-  std::vector<std::pair<std::string, std::string>> seen;  // (directory, file name)
+  std::vector<std::pair<std::string, std::vector<std::string>>> names_by_dir;  // directory, file names
   for (const File& f : files_) {
     if (f.final_path == kStandardOutput) continue;
     const std::string dir = directory_of(f.final_path);
-    const std::string name = file_name_of(f.final_path);
-    if (std::find(seen.begin(), seen.end(), std::make_pair(dir, name)) != seen.end()) continue;
-    seen.emplace_back(dir, name);
+    auto it = std::find_if(names_by_dir.begin(), names_by_dir.end(), [&](const auto& d) { return d.first == dir; });
+    if (it == names_by_dir.end()) it = names_by_dir.insert(names_by_dir.end(), {dir, {}});
+    it->second.push_back(file_name_of(f.final_path));
+  }
+  std::size_t removed = 0;
+  for (const auto& [dir, names] : names_by_dir) {
     const std::size_t longest = longest_name(dir);
     std::error_code ec;
     for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-      const long owner = temporary_owner(it->path().filename().string(), name, longest);
-      if (owner < 0 || !process_gone(owner)) continue;
-      std::error_code ignored;
-      removed += std::filesystem::remove(it->path(), ignored);
+      const std::string entry = it->path().filename().string();
+      for (const std::string& name : names) {
+        const long owner = temporary_owner(entry, name, longest);
+        if (owner < 0 || !process_gone(owner)) continue;
+        std::error_code ignored;
+        removed += std::filesystem::remove(it->path(), ignored);
+        break;
+      }
     }
   }
   return removed;

@@ -50,6 +50,15 @@ class OutputSet {
   static constexpr std::size_t kDefaultWorkers = 2;
   explicit OutputSet(std::size_t workers = kDefaultWorkers) : workers_(workers) {}
 
+  // The writers for a mesh of `items` vertices and elements with `threads` allowed: one below
+  // kLeastItemsForThreads, where a second thread costs more than it saves (starting and joining
+  // it, and on a busy machine the wait to be scheduled, against well under a millisecond of
+  // formatting).
+  static constexpr std::size_t kLeastItemsForThreads = 32768;
+  static std::size_t workers_for(std::size_t items, std::size_t threads) {
+    return items < kLeastItemsForThreads ? 1 : threads;
+  }
+
   // A file whose text is already in memory.
   void add(std::string final_path, std::string contents);
   // A file produced during commit(): `produce` writes into a sink that goes straight to the
