@@ -162,8 +162,9 @@ int run_surface(const Switches& sw, const std::string& path) {
                plural(mesh.triangle_count(), "triangle", "triangles").c_str(), smallest_angle(mesh),
                files.empty() ? " nothing" : files.c_str(), seconds);
   if (sw.verbose > 0)
-    std::fprintf(out, "Facets agreed after %d round%s (%zu facet meshes); new vertices: %zu on shared segments, %zu others\n",
-                 report.rounds, report.rounds == 1 ? "" : "s", report.facet_meshings, report.shared_splits,
+    std::fprintf(out, "Facets %s after %d round%s (%zu facet meshes); new vertices: %zu on shared segments, %zu others\n",
+                 report.converged ? "agreed" : "made to agree by a last pass with their segments kept", report.rounds,
+                 report.rounds == 1 ? "" : "s", report.facet_meshings, report.shared_splits,
                  mesh.points.size() - input.points.size() - report.shared_splits);
   return kExitOk;
 }
