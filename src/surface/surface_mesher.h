@@ -52,8 +52,8 @@ struct SurfaceReport {
   bool converged = true;            // false: the -YY guard pass made the result
   // The run's Steiner budget: -S if given, and never more than the sum of the caps the 2-D guard
   // (refine/termination_guard.h) gave the facets in the first round, nor than the memory budget
-  // holds. The facets and the rounds draw on it together; once spent, facets are meshed with the
-  // Steiner points they have, so the rounds end.
+  // holds. The facets and the rounds draw on it together (-S strictly, by equal shares per round;
+  // the guard's total by ending the rounds once reached); then a last -YY pass makes them agree.
   long steiner_budget = -1;         // -1: none was needed (no refinement)
   bool budget_reached = false;      // the rounds ended on the budget (or a facet's share of -S stopped it)
   std::size_t steiner_total = 0;    // Steiner points of the final surface
