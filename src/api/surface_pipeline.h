@@ -7,6 +7,8 @@
 #pragma once
 
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "cli/switches.h"
 #include "pslg/facets.h"
@@ -19,11 +21,23 @@ struct SurfaceResult {
   SurfaceMesh mesh;
   SurfaceReport report;
   std::optional<SurfaceCheck> check;  // with -C
+  // Input points (0-based) with the coordinates of an earlier one, each with the point it was
+  // merged into.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> merged;
+  // When the round cap or the Steiner budget ended the run: the triangles below the -q angle and
+  // above the -a area.
+  std::size_t below_angle = 0, above_area = 0;
   bool check_failed() const { return check && !check->ok(); }
 };
 
 // The switches mean the same for a facet as for a PSLG (-q, -a<number>, -u, -D, -Y, -S, the
 // algorithm, the threads); the 2-D-only ones (-r, a bare -a, -A, -c, -v, -n, -o2, -j) are ignored.
-SurfaceResult run_surface_pipeline(const FacetInput& input, const Switches& sw);
+// `progress`, if set, hears of each meshing round as it ends (-V). Points with the coordinates of an
+// earlier point are merged into it (`merged`); an input whose coordinates are very large or very
+// small is meshed scaled by a power of two, and the mesh scaled back.
+SurfaceResult run_surface_pipeline(const FacetInput& input, const Switches& sw, const SurfaceProgress& progress = {});
+
+// The smallest angle of a triangle in space, in degrees.
+double surface_smallest_angle(const Point3& a, const Point3& b, const Point3& c);
 
 }  // namespace deltri

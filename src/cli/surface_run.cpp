@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "api/surface_pipeline.h"
 #include "cli/interrupt_cleanup.h"
@@ -37,41 +36,51 @@ void note_ignored_switches(const Switches& sw) {
   if (sw.strict) note("--strict");
 }
 
-std::array<Point3, 3> corners(const SurfaceMesh& m, std::size_t t) {
-  const std::array<std::uint32_t, 3>& v = m.triangles[t];
-  return {m.points[v[0]], m.points[v[1]], m.points[v[2]]};
-}
-
-// The smallest angle of triangle t in space, in degrees.
-double smallest_angle(const SurfaceMesh& m, std::size_t t) {
-  const std::array<Point3, 3> p = corners(m, t);
-  double best = 180.0;
-  for (int i = 0; i < 3; ++i) {
-    const Point3 a = p[(i + 1) % 3] - p[i], b = p[(i + 2) % 3] - p[i];
-    best = std::min(best, std::atan2(norm(cross(a, b)), dot(a, b)) * 180.0 / std::numbers::pi);
-  }
-  return best;
-}
-
 double smallest_angle(const SurfaceMesh& m) {
   double best = 180.0;
-  for (std::size_t t = 0; t < m.triangle_count(); ++t) best = std::min(best, smallest_angle(m, t));
+  for (const std::array<std::uint32_t, 3>& v : m.triangles)
+    best = std::min(best, surface_smallest_angle(m.points[v[0]], m.points[v[1]], m.points[v[2]]));
   return best;
 }
 
-// The guard's pass keeps the segments as they are, so bounds may be missed: say how many.
-void warn_not_converged(const SurfaceMesh& m, const Switches& sw) {
-  std::size_t below = 0, above = 0;
-  for (std::size_t t = 0; t < m.triangle_count(); ++t) {
-    below += sw.quality && smallest_angle(m, t) < sw.min_angle;
-    const std::array<Point3, 3> p = corners(m, t);
-    const double area = 0.5 * norm(cross(p[1] - p[0], p[2] - p[0]));
-    above += sw.fixed_area && area > sw.max_area;
+std::string numbered(std::uint32_t v, int first) { return std::to_string(static_cast<long long>(v) + first); }
+
+// Loud, counted statements of what the result is not: merged points, facets left empty, and the
+// round cap's or the Steiner budget's misses (counted by the pipeline, in the coordinates the
+// facets were meshed in).
+void warn(const SurfaceResult& result, const Switches& sw, int first) {
+  const SurfaceReport& report = result.report;
+  if (!result.merged.empty()) {
+    std::string which;
+    for (std::size_t i = 0; i < result.merged.size() && i < 8; ++i)
+      which += std::string(i ? ", " : "") + numbered(result.merged[i].first, first) + " into " + numbered(result.merged[i].second, first);
+    if (result.merged.size() > 8) which += ", ...";
+    std::fprintf(stderr, "deltri: warning: %s the coordinates of an earlier point, merged into it: %s\n",
+                 plural(result.merged.size(), "point repeats", "points repeat").c_str(), which.c_str());
   }
-  std::fprintf(stderr,
-               "deltri: warning: the facets did not agree on their shared segments within %d rounds; meshed again "
-               "with no Steiner points on segments: %zu of %zu triangles below the -q angle, %zu above the -a area\n",
-               kMaxSurfaceRounds, below, m.triangle_count(), above);
+  if (!report.emptied_facets.empty()) {
+    std::string which;
+    for (std::size_t i = 0; i < report.emptied_facets.size() && i < 8; ++i)
+      which += std::string(i ? ", " : "") + numbered(report.emptied_facets[i], first);
+    if (report.emptied_facets.size() > 8) which += ", ...";
+    std::fprintf(stderr,
+                 "deltri: warning: %s left with no triangle: a hole point lies in the region of its outer loop, "
+                 "which it carves away whole when no inner loop encloses it (facet %s); the surface is open there\n",
+                 plural(report.emptied_facets.size(), "facet", "facets").c_str(), which.c_str());
+  }
+  const SurfaceMesh& m = result.mesh;
+  if (report.budget_reached)
+    std::fprintf(stderr,
+                 "deltri: warning: the surface run spent its budget of %ld Steiner points (%s, shared by every facet and "
+                 "round): %zu of %zu triangles below the -q angle, %zu above the -a area\n",
+                 report.steiner_budget,
+                 sw.max_steiner >= 0 && report.steiner_budget == sw.max_steiner ? "-S" : "the termination guard's",
+                 result.below_angle, m.triangle_count(), result.above_area);
+  else if (!report.converged)
+    std::fprintf(stderr,
+                 "deltri: warning: the facets did not agree on their shared segments within %d rounds; meshed again "
+                 "with no Steiner points on segments: %zu of %zu triangles below the -q angle, %zu above the -a area\n",
+                 kMaxSurfaceRounds, result.below_angle, m.triangle_count(), result.above_area);
 }
 
 std::string requested(const Switches::FileRequest& r, const std::string& out, const char* extension) {
@@ -119,14 +128,23 @@ int run_surface(const Switches& sw, const std::string& path) {
   const auto start = std::chrono::steady_clock::now();
   note_ignored_switches(sw);
   const FacetInput input = read_facet_file(path, threads_to_use(sw));
-  const SurfaceResult result = run_surface_pipeline(input, sw);
+  std::FILE* progress_out = uses_standard_output(sw) ? stderr : stdout;
+  SurfaceProgress progress;
+  if (sw.verbose > 0 && !sw.quiet)
+    progress = [progress_out](const SurfaceRound& r) {
+      std::fprintf(progress_out, "Round %d: %zu facets meshed; %zu Steiner points (budget %s), %zu on shared segments; %zu facets to mesh again\n",
+                   r.round, r.facets_meshed, r.steiner, r.budget < 0 ? "not set" : std::to_string(r.budget).c_str(),
+                   r.shared_splits, r.to_mesh_again);
+      std::fflush(progress_out);
+    };
+  const SurfaceResult result = run_surface_pipeline(input, sw, progress);
   const SurfaceMesh& mesh = result.mesh;
   const SurfaceReport& report = result.report;
   if (result.check_failed()) {
     std::fprintf(stderr, "deltri: -C: the surface mesh is not consistent; no files written\n%s", result.check->summary().c_str());
     return kExitCheck;
   }
-  if (!report.converged) warn_not_converged(mesh, sw);
+  warn(result, sw, input.first_index);
   std::string extension;
   const std::string base = path.ends_with(".smesh") ? path.substr(0, path.size() - 6) : input_base(path, &extension);
   OutputSet outputs(OutputSet::workers_for(mesh.points.size() + mesh.triangles.size(),
@@ -145,8 +163,9 @@ int run_surface(const Switches& sw, const std::string& path) {
                plural(mesh.triangle_count(), "triangle", "triangles").c_str(), smallest_angle(mesh),
                files.empty() ? " nothing" : files.c_str(), seconds);
   if (sw.verbose > 0)
-    std::fprintf(out, "Facets agreed after %d round%s (%zu facet meshes); new vertices: %zu on shared segments, %zu others\n",
-                 report.rounds, report.rounds == 1 ? "" : "s", report.facet_meshings, report.shared_splits,
+    std::fprintf(out, "Facets %s after %d round%s (%zu facet meshes); new vertices: %zu on shared segments, %zu others\n",
+                 report.converged ? "agreed" : "made to agree by a last pass with their segments kept", report.rounds,
+                 report.rounds == 1 ? "" : "s", report.facet_meshings, report.shared_splits,
                  mesh.points.size() - input.points.size() - report.shared_splits);
   return kExitOk;
 }

@@ -114,6 +114,7 @@ void read_poly_facet(LineReader& in, FacetInput& out, bool markers, long long nu
   }
   for (long long h = 0; h < holes; ++h) {
     next_facet_line(in, count, k);
+    f.hole_lines.push_back(in.line());
     in.read_int({"facet hole", h + 1, "index"}, LLONG_MIN, LLONG_MAX);
     Point3 p;
     p.x = in.read_double({"facet hole", h + 1, "x coordinate"});

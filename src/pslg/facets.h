@@ -22,6 +22,7 @@ struct FacetInput {
     // segment, three or more a closed loop of segments.
     std::vector<std::vector<std::uint32_t>> polygons;
     std::vector<Point3> holes;  // points in the facet's plane whose enclosed part is left out
+    std::vector<long> hole_lines;  // each hole's line in the file, for messages (empty: the facet's line)
     int marker = 0;
     long line = 0;              // the facet's first line in the file, for messages
   };

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <tuple>
 #include <utility>
 
+#include "geometry/predicates.h"
 #include "quality/check_mesh.h"
 
 namespace deltri {
@@ -30,8 +32,36 @@ void check_facets(const SurfaceMesh& m, SurfaceCheck& c) {
   }
 }
 
-// A shared subsegment must be an edge in every facet holding its input segment: the surface's
-// subsegments are the union over the facets, so each is looked up in each facet's own edges.
+// Whether facet f's mesh covers the midpoint of the piece a-b of one of its segments (global
+// vertex ids), by exact orientation tests in its plane coordinates: a piece that is no edge of the
+// facet is right only where the facet's hole points carved the region around it away.
+bool covers_piece(const SurfaceMesh& m, std::uint32_t f, std::uint32_t a, std::uint32_t b) {
+  const Mesh& mesh = m.facet_meshes[f];
+  const std::vector<std::uint32_t>& global = m.facet_vertex[f];
+  std::uint32_t la = kNone, lb = kNone;
+  for (std::uint32_t v = 0; v < global.size(); ++v) {
+    if (global[v] == a) la = v;
+    if (global[v] == b) lb = v;
+  }
+  if (la == kNone || lb == kNone) return true;  // the facet lost a vertex of its own segment: a fault
+  const Point& pa = mesh.points[la];
+  const Point& pb = mesh.points[lb];
+  const Point mid{pa.x + 0.5 * (pb.x - pa.x), pa.y + 0.5 * (pb.y - pa.y)};
+  Predicates pred;
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    const auto [x, y, z] = mesh.corners(t);
+    const Point& px = mesh.points[x];
+    const Point& py = mesh.points[y];
+    const Point& pz = mesh.points[z];
+    if (pred.orient2d(px, py, mid) >= 0 && pred.orient2d(py, pz, mid) >= 0 && pred.orient2d(pz, px, mid) >= 0) return true;
+  }
+  return false;
+}
+
+// A shared subsegment must be an edge in every facet holding its input segment (unless that
+// facet's hole points carved the piece away): the surface's subsegments are the union over the
+// facets, so each is looked up in each facet's own edges.
 void check_conforming(const SurfaceMesh& m, SurfaceCheck& c) {
   std::vector<EdgeSet> facet_edges(m.facet_meshes.size());
   for (std::uint32_t f = 0; f < m.facet_meshes.size(); ++f) {
@@ -46,10 +76,32 @@ void check_conforming(const SurfaceMesh& m, SurfaceCheck& c) {
   for (const SurfaceMesh::Edge& s : m.subsegments) {
     const std::pair<std::uint32_t, std::uint32_t> key{std::min(s.a, s.b), std::max(s.a, s.b)};
     for (std::uint32_t f : m.segment_facets[s.segment])
-      if (!facet_edges[f].count(key))
+      if (!facet_edges[f].count(key) && covers_piece(m, f, s.a, s.b))
         fault(c, "subsegment " + std::to_string(s.a + 1) + "-" + std::to_string(s.b + 1) + " is no edge of facet " +
                      std::to_string(f + 1) + ", which holds its segment");
   }
+}
+
+// The surface in space, from its triangles alone: two distinct vertices of triangles at one point
+// are a crack (facets meeting there along different copies of their border, each border an edge
+// of one triangle where the surface should be joined).
+void check_cracks(const SurfaceMesh& m, SurfaceCheck& c) {
+  std::vector<char> used(m.points.size(), 0);
+  for (const std::array<std::uint32_t, 3>& t : m.triangles)
+    for (std::uint32_t v : t) used[v] = 1;
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t v = 0; v < m.points.size(); ++v)
+    if (used[v]) order.push_back(v);
+  const auto key = [&](std::uint32_t v) {
+    const Point3& p = m.points[v];
+    return std::tuple{p.x + 0.0, p.y + 0.0, p.z + 0.0};
+  };
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (key(order[i - 1]) == key(order[i]))
+      fault(c, "vertices " + std::to_string(std::min(order[i - 1], order[i]) + 1) + " and " +
+                   std::to_string(std::max(order[i - 1], order[i]) + 1) +
+                   " of triangles lie at one point: the surface is cracked there");
 }
 
 void check_planar(const SurfaceMesh& m, SurfaceCheck& c) {
@@ -79,6 +131,7 @@ SurfaceCheck check_surface(const SurfaceMesh& mesh) {
   check_facets(mesh, c);
   check_conforming(mesh, c);
   check_planar(mesh, c);
+  check_cracks(mesh, c);
   return c;
 }
 

@@ -16,6 +16,9 @@ struct FacetMeshOptions {
   bool refine = false;  // run refine_mesh with `refinement`
   RefineOptions refinement;
   int threads = 1;      // > 1: facets are meshed two at a time (each facet on one thread)
+  // -S: the Steiner points the whole surface run may add, over every facet and every round
+  // (surface_mesher.h); -1 unlimited. refinement.max_steiner is set per facet meshing from it.
+  long steiner_total = -1;
 };
 
 struct FacetMeshResult {

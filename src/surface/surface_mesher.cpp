@@ -5,6 +5,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "refine/termination_guard.h"
 #include "util/run_both.h"
 
 namespace deltri {
@@ -38,6 +39,7 @@ struct Piece {
 
 struct FacetState {
   std::vector<std::uint32_t> segments;  // input segments it holds, ascending
+  std::size_t own_steiner = 0;          // its mesh's Steiner points not on a shared segment
   std::vector<std::uint32_t> lone;      // lone vertices (one-corner polygons)
   std::vector<LocalVertex> local;       // per PSLG vertex
   std::vector<Piece> pieces;            // per PSLG segment
@@ -46,8 +48,8 @@ struct FacetState {
 
 class SurfaceBuilder {
  public:
-  SurfaceBuilder(const FacetInput& input, const FacetMeshOptions& options, int max_rounds)
-      : in_(input), options_(options), max_rounds_(max_rounds) {}
+  SurfaceBuilder(const FacetInput& input, const FacetMeshOptions& options, int max_rounds, const SurfaceProgress& progress)
+      : in_(input), options_(options), max_rounds_(max_rounds), progress_(progress) {}
 
   SurfaceMesh run(SurfaceReport& report);
 
@@ -61,10 +63,14 @@ class SurfaceBuilder {
   std::vector<std::uint32_t> facet_vertices(std::uint32_t f, const std::vector<std::uint32_t>& split_base,
                                             SurfaceMesh& out) const;
   SurfaceMesh lift();
+  std::size_t steiner_count() const;
+  FacetMeshOptions share_of_budget(const FacetMeshOptions& options, std::size_t facets, long budget) const;
 
   const FacetInput& in_;
   const FacetMeshOptions& options_;
   const int max_rounds_;
+  const SurfaceProgress& progress_;
+  bool use_seeds_ = true;  // seed each facet with the interior vertices of its previous mesh
   std::vector<FacetPlane> planes_;
   std::vector<Segment3> segments_;
   std::unordered_map<std::uint64_t, std::uint32_t> segment_index_;
@@ -117,7 +123,7 @@ Pslg SurfaceBuilder::facet_pslg(std::uint32_t f) {
   FacetState& state = facets_[f];
   const FacetPlane& plane = planes_[f];
   Pslg pslg;
-  const std::vector<Point> seeds = previous_interior(state);
+  const std::vector<Point> seeds = use_seeds_ ? previous_interior(state) : std::vector<Point>{};
   state.local.clear();
   state.pieces.clear();
   std::unordered_map<std::uint32_t, std::uint32_t> of_input;
@@ -194,8 +200,20 @@ std::vector<std::uint32_t> SurfaceBuilder::mesh_facets(const std::vector<std::ui
   std::vector<std::vector<std::pair<std::uint32_t, double>>> cuts(facets.size());
   const auto mesh_every_other = [&](std::size_t first) {
     for (std::size_t i = first; i < facets.size(); i += 2) {
-      facets_[facets[i]].result = mesh_facet(facet_pslg(facets[i]), options);
+      FacetState& state = facets_[facets[i]];
+      state.result = mesh_facet(facet_pslg(facets[i]), options);
       if (record) cuts[i] = new_cuts(facets[i]);
+      // Its seeds and the vertices its refinement added, less those on shared segments (they
+      // become splits, counted once for all the facets holding them).
+      const Mesh& mesh = state.result.mesh;
+      std::size_t own = 0;
+      for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
+        if (v < state.local.size())
+          own += state.local[v].input == kNone && state.local[v].g == kNone;
+        else
+          own += mesh.kind[v] != VertexKind::Dead && mesh.kind[v] != VertexKind::Duplicate;
+      }
+      state.own_steiner = own - std::min(own, new_cuts(facets[i]).size());
     }
   };
   if (options.threads > 1 && facets.size() > 1)
@@ -224,30 +242,93 @@ std::vector<std::uint32_t> SurfaceBuilder::mesh_facets(const std::vector<std::ui
   return again;
 }
 
+// The Steiner points of the surface as the facets' meshes stand: each facet's own, and the
+// splits of the segments.
+std::size_t SurfaceBuilder::steiner_count() const {
+  std::size_t n = 0;
+  for (const FacetState& state : facets_) n += state.own_steiner;
+  for (const Segment3& s : segments_) n += s.splits.size();
+  return n;
+}
+
+// The options for one round's facets under -S: each facet may add an equal share of what is left.
+// Equal shares keep the result independent of the order and the threads the facets are meshed
+// on, and the round's facets together never exceed -S. Under the guard's budget alone each facet
+// keeps its own 2-D guard, and the rounds end once the surface holds the budget's points: the run
+// then holds at most the budget and one round's worth of facet caps.
+FacetMeshOptions SurfaceBuilder::share_of_budget(const FacetMeshOptions& options, std::size_t facets, long budget) const {
+  FacetMeshOptions o = options;
+  if (budget < 0 || options.steiner_total < 0) return o;
+  budget = std::min(budget, options.steiner_total);
+  const std::size_t used = steiner_count();
+  const long left = used >= static_cast<std::size_t>(budget) ? 0 : budget - static_cast<long>(used);
+  o.refinement.max_steiner = left / static_cast<long>(std::max<std::size_t>(1, facets));
+  return o;
+}
+
 SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
   for (std::size_t f = 0; f < in_.facets.size(); ++f) planes_.push_back(fit_facet_plane(in_, f));
   collect_segments();
   std::vector<std::uint32_t> dirty(facets_.size());
   for (std::uint32_t f = 0; f < dirty.size(); ++f) dirty[f] = f;
   report.converged = false;
+  // The rounds after the first re-mesh facets whose input grew by other facets' cuts, and their
+  // 2-D guards, tied to that input, do not bound the whole run: one budget does (SurfaceReport).
+  long budget = options_.refine ? options_.steiner_total : -1;
   for (report.rounds = 1; report.rounds <= max_rounds_; ++report.rounds) {
     report.facet_meshings += dirty.size();
-    dirty = mesh_facets(dirty, options_);
+    const FacetMeshOptions round_options = share_of_budget(options_, dirty.size(), budget);
+    const std::vector<std::uint32_t> meshed = dirty;
+    dirty = mesh_facets(dirty, round_options);
+    for (std::uint32_t f : meshed)
+      report.budget_reached = report.budget_reached || (budget >= 0 && facets_[f].result.refine.stopped_by_max_steiner);
+    if (report.rounds == 1 && options_.refine) {
+      double guard_total = 0.0;
+      for (const FacetState& state : facets_) guard_total += static_cast<double>(state.result.refine.steiner_cap);
+      if (options_.refinement.memory_budget > 0.0)
+        guard_total = std::min(guard_total, options_.refinement.memory_budget / kBytesPerSteiner);
+      const long guard = static_cast<long>(std::min(guard_total, 1e18));
+      budget = budget < 0 ? guard : std::min(budget, guard);
+    }
+    if (progress_)
+      progress_({report.rounds, meshed.size(), steiner_count(), budget, [&] {
+                   std::size_t n = 0;
+                   for (const Segment3& s : segments_) n += s.shared() ? s.splits.size() : 0;
+                   return n;
+                 }(), dirty.size()});
     if (dirty.empty()) {
       report.converged = true;
       break;
     }
+    // A facet stopped by its share would be meshed again with its old vertices and the others'
+    // new cuts and nothing to spend on them: slivers. The last pass below does better.
+    if (budget >= 0 && steiner_count() >= static_cast<std::size_t>(budget)) report.budget_reached = true;
+    if (report.budget_reached) break;
   }
+  report.steiner_budget = budget;
   if (!report.converged) {
-    // The guard: mesh every facet with its segments kept as they are now.
-    report.rounds = max_rounds_;
-    FacetMeshOptions kept = options_;
+    // The guard: mesh every facet again with its segments kept as they are now, so that no facet
+    // adds a cut and they all agree (under -S, a share of what it leaves). After the round cap the
+    // seeds stay (the facets' meshes were near done: the pynastran gear at -pq30a0.02 misses -q
+    // in 207 triangles with them, in 1,448 and -a in 1,017 without); after the budget they go, as
+    // the seeds of a facet stopped mid-way crowd the cuts that reached it later (the 312-facet
+    // sphere at -pq34: 915 misses of 171,760 without, 2,996 of 615,616 with).
+    report.rounds = std::min(report.rounds, max_rounds_);
+    use_seeds_ = !report.budget_reached;
+    if (!use_seeds_)
+      for (FacetState& state : facets_) state.own_steiner = 0;
+    FacetMeshOptions kept = share_of_budget(options_, facets_.size(), budget);
     kept.refinement.no_steiner_on_segments = 2;
     dirty.resize(facets_.size());
     for (std::uint32_t f = 0; f < dirty.size(); ++f) dirty[f] = f;
     report.facet_meshings += dirty.size();
     mesh_facets(dirty, kept, false);
+    for (const FacetState& state : facets_)
+      report.budget_reached = report.budget_reached || (budget >= 0 && state.result.refine.stopped_by_max_steiner);
   }
+  report.steiner_total = steiner_count();
+  for (std::uint32_t f = 0; f < facets_.size(); ++f)
+    if (!in_.facets[f].holes.empty() && facets_[f].result.mesh.live_triangles() == 0) report.emptied_facets.push_back(f);
   report.segments = segments_.size();
   for (const Segment3& s : segments_)
     if (s.shared()) ++report.shared_segments, report.shared_splits += s.splits.size();
@@ -324,8 +405,8 @@ SurfaceMesh SurfaceBuilder::lift() {
 }  // namespace
 
 SurfaceMesh mesh_surface(const FacetInput& input, const FacetMeshOptions& options, SurfaceReport& report,
-                         int max_rounds) {
-  SurfaceBuilder builder(input, options, max_rounds);
+                         int max_rounds, const SurfaceProgress& progress) {
+  SurfaceBuilder builder(input, options, max_rounds, progress);
   return builder.run(report);
 }
 

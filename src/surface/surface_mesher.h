@@ -21,6 +21,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <vector>
 
 #include "pslg/facets.h"
 #include "surface/facet_mesher.h"
@@ -30,6 +32,17 @@ namespace deltri {
 
 inline constexpr int kMaxSurfaceRounds = 40;
 
+// One meshing round, as it ends (-V).
+struct SurfaceRound {
+  int round = 0;
+  std::size_t facets_meshed = 0;    // in this round
+  std::size_t steiner = 0;          // Steiner points of the surface so far
+  long budget = -1;                 // the run's Steiner budget (-1: not set yet, round 1 without -S)
+  std::size_t shared_splits = 0;    // vertices on shared segments so far
+  std::size_t to_mesh_again = 0;    // facets the next round meshes
+};
+using SurfaceProgress = std::function<void(const SurfaceRound&)>;
+
 struct SurfaceReport {
   std::size_t segments = 0;         // distinct input segments
   std::size_t shared_segments = 0;  // held by two or more facets
@@ -37,6 +50,14 @@ struct SurfaceReport {
   int rounds = 0;                   // meshing rounds until the facets agreed
   std::size_t facet_meshings = 0;   // facet meshes made in all rounds
   bool converged = true;            // false: the -YY guard pass made the result
+  // The run's Steiner budget: -S if given, and never more than the sum of the caps the 2-D guard
+  // (refine/termination_guard.h) gave the facets in the first round, nor than the memory budget
+  // holds. The facets and the rounds draw on it together (-S strictly, by equal shares per round;
+  // the guard's total by ending the rounds once reached); then a last -YY pass makes them agree.
+  long steiner_budget = -1;         // -1: none was needed (no refinement)
+  bool budget_reached = false;      // the rounds ended on the budget (or a facet's share of -S stopped it)
+  std::size_t steiner_total = 0;    // Steiner points of the final surface
+  std::vector<std::uint32_t> emptied_facets;  // facets (0-based) whose hole points left no triangle
   RefineReport refine;              // summed over the facets' final meshes
   SegmentReport segment_repairs;    // summed likewise
 };
@@ -44,6 +65,6 @@ struct SurfaceReport {
 // Throws InputError for a facet that is not planar (facet_plane.h). `max_rounds` is the guard's
 // round cap (smaller only in tests of the guard).
 SurfaceMesh mesh_surface(const FacetInput& input, const FacetMeshOptions& options, SurfaceReport& report,
-                         int max_rounds = kMaxSurfaceRounds);
+                         int max_rounds = kMaxSurfaceRounds, const SurfaceProgress& progress = {});
 
 }  // namespace deltri

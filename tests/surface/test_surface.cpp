@@ -160,3 +160,66 @@ TEST(two_threads_give_the_same_surface) {
   CHECK(a.triangles == b.triangles);
   CHECK_EQ(r1.rounds, r2.rounds);
 }
+
+namespace {
+
+// A unit cube whose top facet names copies (points 8 to 11) of its corners 4 to 7.
+FacetInput cube_with_copied_top() {
+  FacetInput in;
+  in.source_name = "copied_top";
+  for (double z : {0.0, 1.0})
+    for (double y : {0.0, 1.0})
+      for (double x : {0.0, 1.0}) in.points.push_back({x, y, z});
+  for (std::uint32_t v = 4; v < 8; ++v) in.points.push_back(in.points[v]);
+  in.facets.resize(6);
+  in.facets[0].polygons = {{0, 2, 3, 1}};
+  in.facets[1].polygons = {{8, 9, 11, 10}};
+  in.facets[2].polygons = {{0, 1, 5, 4}};
+  in.facets[3].polygons = {{1, 3, 7, 5}};
+  in.facets[4].polygons = {{3, 2, 6, 7}};
+  in.facets[5].polygons = {{2, 0, 4, 6}};
+  return in;
+}
+
+}  // namespace
+
+// The mesher alone (the pipeline merges copies first) leaves the top's border apart from the
+// sides': -C must say the surface is cracked, where it used to pass.
+TEST(check_finds_a_crack_along_copied_points) {
+  SurfaceReport report;
+  const SurfaceMesh m = mesh_surface(cube_with_copied_top(), FacetMeshOptions{}, report);
+  CHECK(m.triangle_count() == 12);
+  const SurfaceCheck c = check_surface(m);
+  CHECK(c.faults == 4);
+  CHECK(c.summary().find("the surface is cracked there") != std::string::npos);
+}
+
+// A facet scaled to 1e155 or 1e-100 spans a plane (its squared lengths used to overflow or
+// underflow into "collinear"), and its frame keeps lengths.
+TEST(plane_frame_at_extreme_scales) {
+  for (double s : {1e-100, 1e100, 1e155, 1e300}) {
+    FacetInput in;
+    in.source_name = "scaled";
+    in.points = {{0, 0, s}, {s, 0, s}, {s, s, s}, {0, s, s}};
+    in.facets.resize(1);
+    in.facets[0].polygons = {{0, 1, 2, 3}};
+    const FacetPlane p = fit_facet_plane(in, 0);
+    CHECK(std::abs(std::abs(p.normal.z) - 1.0) < 1e-15);
+    const Point a = p.to_plane(in.points[0]), b = p.to_plane(in.points[2]);
+    CHECK(std::abs(std::hypot(b.x - a.x, b.y - a.y) / (s * std::sqrt(2.0)) - 1.0) < 1e-14);
+  }
+}
+
+// A hole point off its facet's plane is refused at its own line, naming the distance.
+TEST(hole_point_off_the_plane_is_refused) {
+  FacetInput in = cube_with_copied_top();
+  in.facets[1].holes = {{0.5, 0.5, 6.0}};
+  in.facets[1].hole_lines = {42};
+  std::string what;
+  try {
+    fit_facet_plane(in, 1);
+  } catch (const InputError& e) {
+    what = e.what();
+  }
+  CHECK(what.find(":42: facet 2: hole 1 lies 5 from the facet's plane") != std::string::npos);
+}
