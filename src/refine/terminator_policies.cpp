@@ -440,26 +440,38 @@ Assessment Terminator::assess_with(TriangleId t, const QualityRules& rules) cons
   return a;
 }
 
-// Miller, Pav and Walkington's rule, which Triangle also follows: a skinny triangle whose shortest
-// edge joins split points on two segment pieces that meet at a common endpoint, at equal distances
-// from it, is left alone. Such an edge is the base of an isosceles triangle at the junction; the
-// angle there is an input angle, and splitting it only cuts both pieces down again one shell
-// further in, forever when the junction angle is small. Equal within 0.1%: split points are
-// rounded.
+// Miller, Pav and Walkington's rule, which Triangle also follows, kept to the corner it is for: a
+// skinny triangle whose shortest edge ab joins split points on two segment pieces that meet at a
+// common endpoint j at under 60 degrees, at equal distances from j, and which lies inside the corner
+// triangle jab, is left alone. jab is isosceles with the input angle at j; splitting a triangle in
+// it only cuts both pieces down again one shell further in, forever when the junction angle is
+// small. A triangle on the far side of ab is not in that corner, and nothing forces its angle: left
+// alone it stayed at 28.6 degrees beside 42-45 degree junctions where Triangle 1.6 meets 30, and
+// a thin wedge filled with ladders of such rungs kept slivers of 1.6 degrees. Its Steiner point
+// lies outside the corner, and where it encroaches upon the cluster at j, SPLITPERMITTED decides as
+// for any other triangle (Fig. 38 l.21). Equal within 0.1%: split points are rounded.
 bool Terminator::shell_exempt(EdgeRef shortest) const {
   const VertexId a = mesh_.org(shortest), b = mesh_.dest(shortest);
   // Only segment splits have pieces; the kinds, a byte per vertex, stay in cache where the
   // pieces would be a miss.
   if (mesh_.kind[a] != VertexKind::Segment || mesh_.kind[b] != VertexKind::Segment) return false;
-  const PieceEnds* pa = pieces_.piece_of(a);
-  const PieceEnds* pb = pieces_.piece_of(b);
-  if (pa == nullptr || pb == nullptr) return false;
-  const VertexId j = shared_end(*pa, *pb);
+  const PieceEnds* piece_a = pieces_.piece_of(a);
+  const PieceEnds* piece_b = pieces_.piece_of(b);
+  if (piece_a == nullptr || piece_b == nullptr) return false;
+  const VertexId j = shared_end(*piece_a, *piece_b);
   if (j == kNone) return false;
-  const double da2 = squared_distance(mesh_.point(a), mesh_.point(j));
-  const double db2 = squared_distance(mesh_.point(b), mesh_.point(j));
+  const Point &pa = mesh_.point(a), &pb = mesh_.point(b), &pj = mesh_.point(j);
+  const double da2 = squared_distance(pa, pj);
+  const double db2 = squared_distance(pb, pj);
   constexpr double k = 0.999 * 0.999;  // the distances within 0.1%, compared squared
-  return da2 > k * db2 && db2 > k * da2;
+  if (!(da2 > k * db2 && db2 > k * da2)) return false;
+  // Under 60 degrees at j: the base of the isosceles triangle is shorter than its legs.
+  if (!(squared_distance(pa, pb) < std::min(da2, db2))) return false;
+  // The apex c (the triangle is abc, counter-clockwise) inside the closed corner triangle jab.
+  const VertexId c = mesh_.apex(shortest);
+  if (c == j) return true;
+  const Point& pc = mesh_.point(c);
+  return pred_.orient2d(pa, pb, pj) > 0.0 && pred_.orient2d(pb, pj, pc) >= 0.0 && pred_.orient2d(pj, pa, pc) >= 0.0;
 }
 
 // --corner-lopping: t is a triangle of a fan that fills a lopped corner: its angle at a lopped apex
