@@ -427,3 +427,9 @@ if(UNIX AND NOT APPLE)
 endif()
 add_test(NAME e2e.outputs.names COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/output_names.sh $<TARGET_FILE:deltri> ${E2E_DATA})
 set_tests_properties(e2e.outputs.names PROPERTIES TIMEOUT 300)
+
+# ---- small input angles force only the triangles inside them (issue 42): guitar.poly at
+# -q30a0.054 kept three triangles of 28.7-29.3 degrees across equal-shell edges beside 45-degree
+# junctions, where Triangle 1.6 meets 30 ----
+add_test(NAME e2e.shells.guitar.pq30a0.054 COMMAND ${QUALITY_BOUND} ${E2E_DATA}/guitar.poly -pq30a0.054 30 0.054)
+e2e_case(shells.guitar.pq30a0.054.verify ${E2E_DATA}/guitar.poly -pq30a0.054 --no-warning --verify "--refined --min-angle 30 --max-area 0.054")
