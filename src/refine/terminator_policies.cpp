@@ -448,9 +448,13 @@ Assessment Terminator::assess_with(TriangleId t, const QualityRules& rules) cons
 // rounded.
 bool Terminator::shell_exempt(EdgeRef shortest) const {
   const VertexId a = mesh_.org(shortest), b = mesh_.dest(shortest);
-  // Only segment splits have pieces; the kinds, a byte per vertex, stay in cache where the
-  // pieces would be a miss.
-  if (mesh_.kind[a] != VertexKind::Segment || mesh_.kind[b] != VertexKind::Segment) return false;
+  // Only segment splits have pieces, and with -r the straight vertices of the earlier run's
+  // segments (input vertices now, RefineOptions::straight_chains); the kinds, a byte per vertex,
+  // stay in cache where the pieces would be a miss.
+  const auto on_piece = [&](VertexId v) {
+    return mesh_.kind[v] == VertexKind::Segment || (opt_.straight_chains && mesh_.kind[v] == VertexKind::Input);
+  };
+  if (!on_piece(a) || !on_piece(b)) return false;
   const PieceEnds* pa = pieces_.piece_of(a);
   const PieceEnds* pb = pieces_.piece_of(b);
   if (pa == nullptr || pb == nullptr) return false;
