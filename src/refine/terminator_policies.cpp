@@ -50,6 +50,35 @@ std::optional<Outcome> Terminator::guard_insertion(const Assessment& a, const Ca
   return std::nullopt;
 }
 
+// A subsegment s encroached upon by the apex of a triangle on it whose width (the apex's distance
+// to s) is below one ulp of their coordinates, s itself longer than the bottom scale: a strip
+// between two segments a fraction of an ulp apart (two segments meeting at an angle of 1e-15
+// radians, a segment rounded off a collinear chain). No double lies inside such a strip, so no
+// triangle there can meet the bound, and the vertices of each side encroach upon the other's
+// subsegments: each split made the halves encroached upon again, down to subsegments of two ulps
+// along the whole strip, about 1e16 splits, with the feature floor near 1e-35 (the strip's width
+// times its angle) and the Steiner cap from its work far above the memory. The split is refused as
+// hopeless, as a short edge that no double can give a good triangle is (choose_point), and the
+// triangles are counted. Ordinary meshes have no triangle narrower than an ulp, and splits owed to
+// a size bound and subsegments at the bottom scale keep their rules (bottom_scale.h).
+// Not where an initial edge is hopeless (precision_scale_ above 1): the coarse floor holds there,
+// and robustness2.node, whose hull chains have such strips, kept its mesh only without the rule.
+bool Terminator::in_strip_below_an_ulp(EdgeRef s) const {
+  if (precision_scale_ != 1.0) return false;
+  const Point& a = mesh_.point(mesh_.org(s));
+  const Point& b = mesh_.point(mesh_.dest(s));
+  const double length2 = squared_distance(a, b);
+  if (at_bottom_scale(length2, a)) return false;
+  for (EdgeRef e : {s, mesh_.link[s]}) {
+    if (e == kNone) continue;
+    const Point& c = mesh_.point(mesh_.apex(e));
+    const double twice_area = std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    const double ulp = ulps_at(std::max({magnitude(a), magnitude(b), magnitude(c)}), 1.0);
+    if (twice_area * twice_area < ulp * ulp * length2 && encroaches(pred_, a, b, c, rule_)) return true;
+  }
+  return false;
+}
+
 // Fig. 39 l.39: the split point of s (split_point). Out of precision (it rounds onto an end, or a
 // neighbour is flush with s there, unless it is one that Chew's step deletes; checked again after
 // the step) and at the bottom of double precision the doubles near it are tried
