@@ -72,6 +72,9 @@ bool Terminator::in_strip_below_an_ulp(EdgeRef s) const {
   for (EdgeRef e : {s, mesh_.link[s]}) {
     if (e == kNone) continue;
     const Point& c = mesh_.point(mesh_.apex(e));
+    // A vertex at the bottom scale from an end is a flush neighbour (bottom_scale_split's case),
+    // not the far side of a strip.
+    if (at_bottom_scale(squared_distance(a, c), a) || at_bottom_scale(squared_distance(b, c), b)) continue;
     const double twice_area = std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
     const double ulp = ulps_at(std::max({magnitude(a), magnitude(b), magnitude(c)}), 1.0);
     if (twice_area * twice_area < ulp * ulp * length2 && encroaches(pred_, a, b, c, rule_)) return true;
