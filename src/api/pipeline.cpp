@@ -266,6 +266,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     RefineOptions opt = refine_options(sw, area_bounds_read(source));
     opt.size_test = source.size_test;
     opt.area_field = &area_field;
+    opt.straight_chains = rebuilding;
     if (lopping.apices > 0) {
       opt.lopped_apices = &lopping.apex;
       opt.lopped_sectors = &lopping.sectors;

@@ -43,8 +43,14 @@ std::size_t sector_of(const std::vector<Spoke>& spokes, double d) {
   return k;
 }
 
+// Two spokes in the same direction (segments overlapping at the vertex, which the repair of the
+// segments merges later) bound a sector of width 0, not a full turn: only a lone spoke has a turn
+// around it. Counted as a turn, such a sector let the apex be lopped with a shield vertex on each
+// of the overlapping segments, the same point twice, and the shields' repair was reported as
+// duplicate vertices and repeated segments of the input.
 double sector_width(const std::vector<Spoke>& spokes, std::size_t k) {
   const double w = spokes[(k + 1) % spokes.size()].direction - spokes[k].direction;
+  if (w == 0.0 && spokes.size() >= 2) return 0.0;
   return w <= 0.0 ? w + kTurn : w;
 }
 

@@ -64,6 +64,11 @@ struct RefineOptions {
   // from an apex to a shield vertex is never split.
   const std::vector<char>* lopped_apices = nullptr;
   const std::vector<std::array<VertexId, 3>>* lopped_sectors = nullptr;
+  // -r: the mesh and its segments are an earlier run's, whose segment splits are input vertices
+  // now; its straight chains of subsegments are segment pieces (straight_chain_vertices in
+  // refine/segment_pieces.h), as they were in that run. Off for a first run, whose pieces are its
+  // subsegments as given.
+  bool straight_chains = false;
   // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h) and the halves
   // run at once. The mesh does not depend on it.
   int threads = 1;

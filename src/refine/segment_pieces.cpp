@@ -1,8 +1,13 @@
 #include "refine/segment_pieces.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
+
+#include "geometry/constructions.h"
+#include "refine/bottom_scale.h"
 
 namespace deltri {
 
@@ -14,12 +19,78 @@ VertexId shared_end(const PieceEnds& mine, const PieceEnds& other) {
   return kNone;
 }
 
-SegmentPieces::SegmentPieces(const Mesh& mesh) {
-  std::vector<std::uint64_t> keys;
-  keys.reserve(mesh.subsegments.size());
+std::vector<char> straight_chain_vertices(const Mesh& mesh) {
+  const std::size_t n = mesh.vertex_count();
+  std::vector<std::uint8_t> degree(n, 0);
+  std::vector<std::array<VertexId, 2>> far(n, {kNone, kNone});
   for (const Subsegment& sub : mesh.subsegments) {
-    of_subsegment.push_back({sub.a, sub.b});
-    keys.push_back(piece_key(sub.a, sub.b));
+    if (sub.a >= n || sub.b >= n || sub.a == sub.b) continue;
+    for (const auto& [v, w] : {std::pair{sub.a, sub.b}, std::pair{sub.b, sub.a}}) {
+      if (degree[v] < 2) far[v][degree[v]] = w;
+      if (degree[v] < 3) ++degree[v];
+    }
+  }
+  std::vector<char> straight(n, 0);
+  for (VertexId v{0}; v < n; ++v) {
+    if (degree[v] != 2 || far[v][0] == far[v][1]) continue;
+    const Point& p = mesh.point(v);
+    const Point& u = mesh.point(far[v][0]);
+    const Point& w = mesh.point(far[v][1]);
+    const double ux = u.x - p.x, uy = u.y - p.y, wx = w.x - p.x, wy = w.y - p.y;
+    if (!(ux * wx + uy * wy < 0.0)) continue;  // not opposite directions
+    if (at_bottom_scale(ux * ux + uy * uy, p) || at_bottom_scale(wx * wx + wy * wy, p)) continue;
+    const double lx = w.x - u.x, ly = w.y - u.y;
+    const double off = std::fabs(lx * (p.y - u.y) - ly * (p.x - u.x)) / std::hypot(lx, ly);  // p's distance to line uw
+    straight[v] = off <= ulps_at(magnitude(p), kStraightChainUlps);
+  }
+  return straight;
+}
+
+SegmentPieces::SegmentPieces(const Mesh& mesh, bool straight_chains) {
+  const std::vector<char> straight =
+      straight_chains ? straight_chain_vertices(mesh) : std::vector<char>(mesh.vertex_count(), 0);
+  // A chain's ends, walked from a subsegment record through straight vertices; a vertex's two
+  // records are found through the records at each vertex.
+  const std::size_t n = mesh.vertex_count();
+  std::vector<std::array<std::uint32_t, 2>> at(n, {UINT32_MAX, UINT32_MAX});
+  const std::uint32_t records = static_cast<std::uint32_t>(mesh.subsegments.size());
+  for (std::uint32_t r = 0; r < records; ++r) {
+    const Subsegment& sub = mesh.subsegments[r];
+    for (VertexId v : {sub.a, sub.b})
+      if (v < n && straight[v]) at[v][at[v][0] == UINT32_MAX ? 0 : 1] = r;
+  }
+  of_subsegment.assign(records, {kNone, kNone});
+  std::vector<char> done(records, 0);
+  std::vector<std::uint64_t> keys;
+  keys.reserve(records);
+  std::vector<std::uint32_t> chain;
+  for (std::uint32_t r = 0; r < records; ++r) {
+    if (done[r]) continue;
+    const Subsegment& sub = mesh.subsegments[r];
+    chain.assign(1, r);
+    done[r] = 1;
+    PieceEnds ends{sub.a, sub.b};
+    for (int side = 0; side < 2; ++side) {  // walk on beyond each end while it is straight
+      VertexId v = ends[side];
+      std::uint32_t from = r;
+      while (v < n && straight[v]) {
+        const std::uint32_t next = at[v][0] == from ? at[v][1] : at[v][0];
+        if (next == UINT32_MAX || done[next]) break;  // a closed loop of straight vertices ends here
+        done[next] = 1;
+        chain.push_back(next);
+        const Subsegment& s = mesh.subsegments[next];
+        v = s.a == v ? s.b : s.a;
+        from = next;
+      }
+      ends[side] = v;
+    }
+    for (std::uint32_t c : chain) of_subsegment[c] = ends;
+    keys.push_back(piece_key(ends[0], ends[1]));
+  }
+  for (VertexId v{0}; v < n; ++v) {
+    if (!straight[v] || at[v][0] == UINT32_MAX) continue;
+    const PieceEnds& piece = of_subsegment[at[v][0]];
+    if (piece[0] != v && piece[1] != v) splits.push_back({v, piece});  // else a loop's end
   }
   set_initial(std::move(keys));
 }

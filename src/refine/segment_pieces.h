@@ -20,9 +20,26 @@ using PieceEnds = std::array<VertexId, 2>;
 // The end two different pieces share, or kNone (none, or the same piece).
 VertexId shared_end(const PieceEnds& mine, const PieceEnds& other);
 
+// The vertices of `mesh` (by id, 1 for such a vertex) where a segment goes straight on: the end of
+// exactly two subsegments that leave it in opposite directions, it lying within
+// kStraightChainUlps units in the last place of the line through their far ends, and neither
+// subsegment at the bottom of double precision (bottom_scale.h). Such a vertex is where an earlier
+// run split a segment (the output of -q, -r of it, -p of its .poly), not a corner: its segment
+// pieces continue through it as the earlier run's did. Without that, the pieces met at such a
+// vertex at 180 degrees, and splits on two segments crossing at a tiny angle no longer shared the
+// crossing as their pieces' end: the thin wedge's triangles, left alone by the first run (equal
+// shells, shell_exempt), were refined again in the second down the whole wedge (a crossing at
+// 1e-7 degrees: -pq30 ended in 0.01 s, -rpq30 of its output ran past the memory). Only for -r
+// (RefineOptions::straight_chains): a first run's pieces stay its subsegments, and its meshes as
+// they were (GIS outlines such as water.poly have collinear vertices whose pieces shape the splits).
+inline constexpr double kStraightChainUlps = 16.0;
+std::vector<char> straight_chain_vertices(const Mesh& mesh);
+
 struct SegmentPieces {
   SegmentPieces() = default;
-  explicit SegmentPieces(const Mesh& mesh);  // every subsegment of `mesh` an initial piece
+  // Every subsegment of `mesh` an initial piece; with straight_chains, every straight chain of
+  // subsegments one piece (straight_chain_vertices), its inner vertices splits of it.
+  explicit SegmentPieces(const Mesh& mesh, bool straight_chains = false);
 
   // v split a subsegment of `piece`; mesh's vertex and subsegment records now include the split.
   void record_split(const Mesh& mesh, VertexId v, const PieceEnds& piece);

@@ -110,6 +110,9 @@ class Terminator {
   // --- the policies (terminator_policies.cpp): a point, or a refusal ---
   std::optional<Outcome> choose_point(TriangleId t, const Assessment& a, Candidate& c);  // l.13
   std::optional<Outcome> guard_insertion(const Assessment& a, const Candidate& c, double radius) const;
+  // The bottom-of-precision rule for strips: s, longer than the bottom scale (bottom_scale.h), is
+  // encroached upon by the apex of a triangle on it that is narrower than an ulp.
+  bool in_strip_below_an_ulp(EdgeRef s) const;
   struct SplitRadius {
     double now, after_chew;  // the shortest edge a split at p would make, before and after Chew's step
     VertexId nearest = kNone;  // the vertex after_chew is measured to, when Chew's step is planned

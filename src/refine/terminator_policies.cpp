@@ -51,6 +51,38 @@ std::optional<Outcome> Terminator::guard_insertion(const Assessment& a, const Ca
   return std::nullopt;
 }
 
+// A subsegment s encroached upon by the apex of a triangle on it whose width (the apex's distance
+// to s) is below one ulp of their coordinates, s itself longer than the bottom scale: a strip
+// between two segments a fraction of an ulp apart (two segments meeting at an angle of 1e-15
+// radians, a segment rounded off a collinear chain). No double lies inside such a strip, so no
+// triangle there can meet the bound, and the vertices of each side encroach upon the other's
+// subsegments: each split made the halves encroached upon again, down to subsegments of two ulps
+// along the whole strip, about 1e16 splits, with the feature floor near 1e-35 (the strip's width
+// times its angle) and the Steiner cap from its work far above the memory. The split is refused as
+// hopeless, as a short edge that no double can give a good triangle is (choose_point), and the
+// triangles are counted. Ordinary meshes have no triangle narrower than an ulp, and splits owed to
+// a size bound and subsegments at the bottom scale keep their rules (bottom_scale.h).
+// Not where an initial edge is hopeless (precision_scale_ above 1): the coarse floor holds there,
+// and robustness2.node, whose hull chains have such strips, kept its mesh only without the rule.
+bool Terminator::in_strip_below_an_ulp(EdgeRef s) const {
+  if (precision_scale_ != 1.0) return false;
+  const Point& a = mesh_.point(mesh_.org(s));
+  const Point& b = mesh_.point(mesh_.dest(s));
+  const double length2 = squared_distance(a, b);
+  if (at_bottom_scale(length2, a)) return false;
+  for (EdgeRef e : {s, mesh_.link[s]}) {
+    if (e == kNone) continue;
+    const Point& c = mesh_.point(mesh_.apex(e));
+    // A vertex at the bottom scale from an end is a flush neighbour (bottom_scale_split's case),
+    // not the far side of a strip.
+    if (at_bottom_scale(squared_distance(a, c), a) || at_bottom_scale(squared_distance(b, c), b)) continue;
+    const double twice_area = std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    const double ulp = ulps_at(std::max({magnitude(a), magnitude(b), magnitude(c)}), 1.0);
+    if (twice_area * twice_area < ulp * ulp * length2 && encroaches(pred_, a, b, c, rule_)) return true;
+  }
+  return false;
+}
+
 // Fig. 39 l.39: the split point of s (split_point). Out of precision (it rounds onto an end, or a
 // neighbour is flush with s there, unless it is one that Chew's step deletes; checked again after
 // the step) and at the bottom of double precision the doubles near it are tried
@@ -453,9 +485,13 @@ Assessment Terminator::assess_with(TriangleId t, const QualityRules& rules) cons
 // for any other triangle (Fig. 38 l.21). Equal within 0.1%: split points are rounded.
 bool Terminator::shell_exempt(EdgeRef shortest) const {
   const VertexId a = mesh_.org(shortest), b = mesh_.dest(shortest);
-  // Only segment splits have pieces; the kinds, a byte per vertex, stay in cache where the
-  // pieces would be a miss.
-  if (mesh_.kind[a] != VertexKind::Segment || mesh_.kind[b] != VertexKind::Segment) return false;
+  // Only segment splits have pieces, and with -r the straight vertices of the earlier run's
+  // segments (input vertices now, RefineOptions::straight_chains); the kinds, a byte per vertex,
+  // stay in cache where the pieces would be a miss.
+  const auto on_piece = [&](VertexId v) {
+    return mesh_.kind[v] == VertexKind::Segment || (opt_.straight_chains && mesh_.kind[v] == VertexKind::Input);
+  };
+  if (!on_piece(a) || !on_piece(b)) return false;
   const PieceEnds* piece_a = pieces_.piece_of(a);
   const PieceEnds* piece_b = pieces_.piece_of(b);
   if (piece_a == nullptr || piece_b == nullptr) return false;

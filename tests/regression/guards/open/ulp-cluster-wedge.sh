@@ -1,0 +1,53 @@
+#!/bin/sh
+# Twenty vertices an ulp or a few apart around (0.5, 0.5) in a unit square, the diagonal
+# (0,0)-(1,1) across the cluster and a segment from a cluster vertex to (1,1) (issue 47, item 6).
+# The second segment leaves the cluster a few ulps off the diagonal and meets it at (1,1) at about
+# 1e-15 radians: beyond the cluster the two bound a wedge narrower than an ulp over a length of 0.5.
+# -pq30, -pq33.5 and -pq34 ran without end (1.4 GB in 30 s), splitting the wedge's subsegments down
+# to two ulps along its length; the splits in a strip narrower than an ulp are refused now
+# (Terminator::in_strip_below_an_ulp). Each run must end (CTest's timeout), exit 0, pass
+# deltri_mesh_verify and count its misses. Open (registered disabled): the runs end with their
+# misses counted, but the meshes fail deltri_mesh_verify (the diagonal not a chain of edges after
+# the cluster at -pq30, an edge not locally Delaunay at -pq33.5 and -pq34); see
+# docs/refinement.md, "Strips narrower than an ulp".
+#   ulp-cluster-wedge.sh DELTRI VERIFY
+. "$(dirname "$0")/../lib.sh"
+cat >cluster.poly <<'POLY'
+24 2 0 0
+1 0 0
+2 1 0
+3 1 1
+4 0 1
+5 0.49999999999999972 0.49999999999999989
+6 0.5 0.49999999999999994
+7 0.49999999999999961 0.50000000000000011
+8 0.49999999999999967 0.50000000000000022
+9 0.49999999999999978 0.50000000000000011
+10 0.49999999999999944 0.50000000000000022
+11 0.49999999999999978 0.49999999999999994
+12 0.5 0.50000000000000022
+13 0.50000000000000056 0.49999999999999989
+14 0.50000000000000022 0.49999999999999989
+15 0.50000000000000089 0.49999999999999989
+16 0.49999999999999961 0.49999999999999989
+17 0.500000000000001 0.50000000000000022
+18 0.49999999999999989 0.49999999999999994
+19 0.50000000000000111 0.49999999999999989
+20 0.49999999999999961 0.49999999999999994
+21 0.5 0.50000000000000011
+22 0.50000000000000111 0.50000000000000022
+23 0.50000000000000011 0.50000000000000022
+24 0.49999999999999978 0.5
+6 0
+1 1 2
+2 2 3
+3 3 4
+4 4 1
+5 1 3
+6 19 3
+0
+POLY
+for q in -pq30 -pq33.5 -pq34; do
+  run 0 $q cluster.poly && counted_misses && verified cluster.poly cluster.1
+done
+echo "ok"
