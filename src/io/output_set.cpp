@@ -91,7 +91,7 @@ long temporary_owner(const std::string& name, const std::string& final_name, std
   std::size_t digits_at = random_at - 1;
   while (digits_at > 0 && name[digits_at - 1] >= '0' && name[digits_at - 1] <= '9') --digits_at;
   const std::size_t digits = random_at - 1 - digits_at;
-  static const std::string kTmp = ".tmp.";
+  constexpr std::string_view kTmp = ".tmp.";
   if (digits == 0 || digits > 10 || digits_at < kTmp.size() + 1 ||
       name.compare(digits_at - kTmp.size(), kTmp.size(), kTmp) != 0)
     return -1;

@@ -46,6 +46,29 @@ std::vector<char> straight_chain_vertices(const Mesh& mesh) {
   return straight;
 }
 
+namespace {
+
+// Walks on from vertex v beyond subsegment record `from` while the vertices are straight, marking
+// and collecting the records passed; returns the chain's end on that side (a closed loop of
+// straight vertices ends where it meets a record already done).
+VertexId walk_straight(const Mesh& mesh, const std::vector<char>& straight,
+                       const std::vector<std::array<std::uint32_t, 2>>& at, VertexId v, std::uint32_t from,
+                       std::vector<char>& done, std::vector<std::uint32_t>& chain) {
+  const std::size_t n = mesh.vertex_count();
+  while (v < n && straight[v]) {
+    const std::uint32_t next = at[v][0] == from ? at[v][1] : at[v][0];
+    if (next == UINT32_MAX || done[next]) break;
+    done[next] = 1;
+    chain.push_back(next);
+    const Subsegment& s = mesh.subsegments[next];
+    v = s.a == v ? s.b : s.a;
+    from = next;
+  }
+  return v;
+}
+
+}  // namespace
+
 SegmentPieces::SegmentPieces(const Mesh& mesh, bool straight_chains) {
   const std::vector<char> straight =
       straight_chains ? straight_chain_vertices(mesh) : std::vector<char>(mesh.vertex_count(), 0);
@@ -70,20 +93,7 @@ SegmentPieces::SegmentPieces(const Mesh& mesh, bool straight_chains) {
     chain.assign(1, r);
     done[r] = 1;
     PieceEnds ends{sub.a, sub.b};
-    for (int side = 0; side < 2; ++side) {  // walk on beyond each end while it is straight
-      VertexId v = ends[side];
-      std::uint32_t from = r;
-      while (v < n && straight[v]) {
-        const std::uint32_t next = at[v][0] == from ? at[v][1] : at[v][0];
-        if (next == UINT32_MAX || done[next]) break;  // a closed loop of straight vertices ends here
-        done[next] = 1;
-        chain.push_back(next);
-        const Subsegment& s = mesh.subsegments[next];
-        v = s.a == v ? s.b : s.a;
-        from = next;
-      }
-      ends[side] = v;
-    }
+    for (int side = 0; side < 2; ++side) ends[side] = walk_straight(mesh, straight, at, ends[side], r, done, chain);
     for (std::uint32_t c : chain) of_subsegment[c] = ends;
     keys.push_back(piece_key(ends[0], ends[1]));
   }
