@@ -43,11 +43,12 @@ check-sanitize:
 # The end-to-end and regression tests (the program on every sample and case, checked by
 # deltri_mesh_verify) on a checked build: optimised but without NDEBUG, so every run also checks the
 # mesh after each stage (api/pipeline.cpp) and the invariants of src/util/invariant.h. Only the
-# program, the checker and the workload generator (e2e.writer_threads) are built; the unit tests
+# program, the checker, the workload generator (e2e.writer_threads) and the rename hook preloaded
+# by e2e.outputs.* are built; the unit tests
 # run in `make test` and `make check-sanitize`.
 check-debug:
 	@cmake -S . -B build-debug -DDELTRI_CHECKED=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-	@cmake --build build-debug -j $(JOBS) --target deltri deltri_mesh_verify deltri_bench_gen
+	@cmake --build build-debug -j $(JOBS) --target deltri deltri_mesh_verify deltri_bench_gen deltri_rename_hook
 	@cd build-debug && ctest --output-on-failure -j $(JOBS) -R '^(e2e|regression)\.'
 
 # The library's thread test (8 threads calling the C++ API at once, tests/api/test_threads.cpp)
