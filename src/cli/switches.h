@@ -22,7 +22,7 @@ struct Switches {
   bool caller_size_test = false; // a bare u in a library switch string: the caller's size function
   double max_edge_length = -1.0;
   bool circumcenters_only = false;  // -k: Steiner points at circumcentres, no off-centres
-  QueueOrder queue_order = QueueOrder::Ratio;  // --queue=
+  QueueOrder queue_order = QueueOrder::ShortestEdge;  // --queue=
   bool decline_cluster_splits = false;               // --decline-cluster-splits
   RefinementAlgorithm refinement = RefinementAlgorithm::Terminator;  // --algorithm=terminator|ruppert|chew
   int interior_bound = 0;                            // --interior-bound=1|2 (Sec. 7.2)

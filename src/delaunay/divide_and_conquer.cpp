@@ -53,7 +53,7 @@ constexpr std::uint32_t kParallelThreshold = 1u << 15;
 // Runs body(from, to) over [0, n), split in two halves on two threads if `parallel`. The stage
 // keeps this beside run_halves: with run_halves in these loops the 1M points' stage measured 4-5%
 // slower in several builds, the time going to the recursion, whose code had not changed (code
-// layout; benchmarks.md, 2026-12-05).
+// layout; benchmarks.md).
 template <class Body>
 void split_in_two(std::size_t n, bool parallel, const Body& body) {
   if (!parallel) return body(std::size_t{0}, n);

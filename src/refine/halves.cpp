@@ -416,7 +416,7 @@ bool halves_apply(const Mesh& mesh, const RefineOptions& opt) {
   if (!opt.in_halves || !mesh.has_subsegments()) return false;
   const bool bounded = opt.angle.asked() || opt.size.any();
   if (!bounded || opt.size_test || opt.max_steiner >= 0 || opt.no_steiner_on_segments != 0 || opt.conforming_delaunay ||
-      opt.decline_cluster_splits || opt.queue_order != QueueOrder::Ratio || opt.lopped_apices)
+      opt.decline_cluster_splits || opt.queue_order != QueueOrder::ShortestEdge || opt.lopped_apices)
     return false;
   if (opt.angle.cascades()) return false;
   if (part_depth(mesh, opt) < 1) return false;

@@ -48,7 +48,7 @@ unsigned QualityQueue::window_bucket(unsigned level) const {
 
 void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
   switch (order_) {
-    case QueueOrder::Ratio: {
+    case QueueOrder::ShortestEdge: {
       if (!why.skinny) return push_to_bucket(entry, 0);
       const unsigned level = edge_level(why.shortest2, reference2_, level_bits_);
       if (static_cast<int>(level) > window_base_ + static_cast<int>(kWindowBuckets - 1)) raise_window(level);
@@ -61,8 +61,8 @@ void QualityQueue::push(const QueuedTriangle& entry, const Badness& why) {
       return push_to_bucket(entry, why.skinny ? edge_bucket(why.shortest2, reference2_) : 0u);
     case QueueOrder::Fifo:
       return push_to_bucket(entry, 0u);
-    case QueueOrder::RatioHeap: {
-      // The Ratio order's key, exactly.
+    case QueueOrder::ShortestEdgeHeap: {
+      // The ShortestEdge order's key, exactly.
       if (!why.skinny) return push_keyed(entry, 0, 0.0);
       return push_keyed(entry, 1, reference2_ / why.shortest2);
     }
@@ -234,7 +234,7 @@ std::optional<QueuedTriangle> QualityQueue::pop() {
     return entry;
   }
   if (nonempty_ == 0) return std::nullopt;
-  if (top_bucket() == 1 && order_ == QueueOrder::Ratio) move_window();
+  if (top_bucket() == 1 && order_ == QueueOrder::ShortestEdge) move_window();
   const unsigned bucket = top_bucket();
   --size_;
   return take_front(bucket);

@@ -6,24 +6,23 @@
 // or size test): ordering those does not pay (Sec. 7).
 //
 // The key (QueueOrder; measured on the corpus in docs/refinement.md):
-// - Ratio, the default (the name is kept from when slivers were served worst ratio first): every
-//   skinny triangle by the length l of its shortest edge, shortest first. Its edge level
-//   (edge_level, eight levels per octave of l, 32 above 30 degrees) picks a bucket among 1..63 in a window of 62 levels
-//   that slides towards longer edges as refinement works its way up (below). With off-centres the
-//   paper's order refines 1.4 times as much as Triangle 1.6 at -q33: mildly skinny triangles are
-//   split large ones first, each split a little finer than the last when B < 1 (theta > 30), and
-//   the cascades spread through the domain; served smallest first they settle where they start,
-//   and the finer the levels the better (one bucket per factor sqrt(2) in l, over the whole range
-//   at once, made 2.1 % more triangles at -q33 on the corpus). Slivers (r >= 16B) were once served
-//   first, worst ratio first: their off-centres, 1.6 shortest edges from that edge, went in before
-//   the grading around them and fixed points that the finer triangles served first would have
-//   placed better (a plate with a 1e-4 wide slit at -q30: 564 triangles against 444).
+// - ShortestEdge, the default: every skinny triangle by the length l of its shortest edge,
+//   shortest first. Its edge level (edge_level, eight levels per octave of l, 32 above 30
+//   degrees) picks a bucket among 1..63 in a window of 62 levels that slides towards longer edges
+//   as refinement works its way up (below). Served smallest first, the cascades of splits settle
+//   where they start: when B < 1 (theta > 30) each split of a mildly skinny triangle is a little
+//   finer than the last, so serving large ones first (the paper's order) spreads cascades through
+//   the domain and refines 1.4 times as much as Triangle 1.6 at -q33. The finer the levels the
+//   better (one bucket per factor sqrt(2) in l made 2.1 % more triangles at -q33 on the corpus).
+//   Slivers are not served first either: their off-centres, 1.6 shortest edges from that edge,
+//   would go in before the grading around them and fix points that finer triangles served first
+//   place better (a plate with a 1e-4 wide slit at -q30: 564 triangles against 444).
 // - Paper: the ratio over the whole range, as Sec. 7 describes it (buckets 1..63, two per octave
 //   of (r/B)^2, worst first).
 // - Edge: the shortest edge over the whole range, one bucket per factor sqrt(2) (Triangle 1.6's
 //   key).
-// - Fifo: one bucket for everything. RatioHeap and PaperHeap: exact max-heaps of the Ratio and
-//   Paper keys (oldest first among equal keys), what their buckets approximate.
+// - Fifo: one bucket for everything. ShortestEdgeHeap and PaperHeap: exact max-heaps of the
+//   ShortestEdge and Paper keys (oldest first among equal keys), what their buckets approximate.
 //
 // The window: bucket 1 holds every level at or below the window's base, and
 // buckets 2..63 one level each above it. When bucket 1 is the worst non-empty bucket left, the
@@ -53,15 +52,25 @@
 
 namespace deltri {
 
-// 16 bytes: the Ratio order's edge level is not kept in the entry (the bucket implies it, and
-// bucket 1's entries keep theirs beside their block), which took the entries from 20 bytes to 16.
+// 16 bytes: the ShortestEdge order's edge level is not kept in the entry (the bucket implies it, and
+// bucket 1's entries keep theirs beside their block), not 20.
 struct QueuedTriangle {
   TriangleId triangle;
   VertexId a, b, c;  // the corners when queued
 };
 static_assert(sizeof(QueuedTriangle) == 16);
 
-enum class QueueOrder { Ratio, Paper, Edge, Fifo, RatioHeap, PaperHeap };
+enum class QueueOrder {
+  ShortestEdge,
+  Paper,
+  Edge,
+  Fifo,
+  ShortestEdgeHeap,
+  PaperHeap,
+  // The names the switch table (cli/switch_table.cpp) still spells; to go when it says ShortestEdge.
+  Ratio = ShortestEdge,
+  RatioHeap = ShortestEdgeHeap
+};
 
 // Why a triangle is queued, as refinement measured it.
 struct Badness {
@@ -111,8 +120,8 @@ class QualityQueue {
   static constexpr unsigned kBuckets = 64;
 
   // reference2: the squared diameter of the domain, the scale of the edge keys; level_bits: the
-  // edge levels' resolution (edge_level_bits) in the Ratio order.
-  explicit QualityQueue(QueueOrder order = QueueOrder::Ratio, double reference2 = 1.0,
+  // edge levels' resolution (edge_level_bits) in the ShortestEdge order.
+  explicit QualityQueue(QueueOrder order = QueueOrder::ShortestEdge, double reference2 = 1.0,
                         unsigned level_bits = kCoarseLevelBits)
       : order_(order), reference2_(reference2), level_bits_(level_bits) {}
 
@@ -161,12 +170,12 @@ class QualityQueue {
   // The most urgent non-empty bucket (nonempty_ must not be 0): the mask's highest set bit.
   unsigned top_bucket() const { return 63u - static_cast<unsigned>(std::countl_zero(nonempty_)); }
   void append(const QueuedTriangle& entry, unsigned bucket);  // push_to_bucket, not counted
-  // The Ratio order: appends an entry of edge level `level` to `bucket`, keeping the level beside
+  // The ShortestEdge order: appends an entry of edge level `level` to `bucket`, keeping the level beside
   // its block when that is bucket 1.
   void append_leveled(const QueuedTriangle& entry, unsigned level, unsigned bucket);
   std::uint16_t level_at(std::uint32_t block, std::uint32_t i) const { return (*levels_[block])[i]; }
   QueuedTriangle take_front(unsigned bucket);                 // the oldest entry of a non-empty bucket
-  // The Ratio order's bucket for a skinny triangle of edge level `level` in the current window.
+  // The ShortestEdge order's bucket for a skinny triangle of edge level `level` in the current window.
   unsigned window_bucket(unsigned level) const;
   void move_window();
   void raise_window(unsigned level);

@@ -40,7 +40,7 @@ struct RefineOptions {
   // A caller's size test (refine/size_test.h), or null. Its wishes are unknown in advance, so only
   // the memory budget caps the Steiner points, and refinement stays on one thread (halves.h).
   const SizeTest* size_test = nullptr;
-  QueueOrder queue_order = QueueOrder::Ratio;  // which bad triangle goes first (quality_queue.h)
+  QueueOrder queue_order = QueueOrder::ShortestEdge;  // which bad triangle goes first (quality_queue.h)
   // Fig. 38 l.21: let SPLITPERMITTED decline cluster splits. That is the Terminator's proof of
   // termination, but a declined triangle keeps its angle (up to Theorem 12's bound) wherever it
   // is, even far out along a long cluster subsegment. Off (the default), every encroached

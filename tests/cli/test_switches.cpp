@@ -135,13 +135,13 @@ TEST(long_options_with_and_without_a_file) {
 }
 
 TEST(queue_orders_by_name_and_the_ratio_default) {
-  CHECK(parse({"x"}).queue_order == QueueOrder::Ratio);
+  CHECK(parse({"x"}).queue_order == QueueOrder::ShortestEdge);
   CHECK(parse({"--queue=paper", "x"}).queue_order == QueueOrder::Paper);
   CHECK(parse({"--queue=edge", "x"}).queue_order == QueueOrder::Edge);
   CHECK(parse({"--queue=fifo", "x"}).queue_order == QueueOrder::Fifo);
-  CHECK(parse({"--queue=heap", "x"}).queue_order == QueueOrder::RatioHeap);
+  CHECK(parse({"--queue=heap", "x"}).queue_order == QueueOrder::ShortestEdgeHeap);
   CHECK(parse({"--queue=paper-heap", "x"}).queue_order == QueueOrder::PaperHeap);
-  CHECK(parse({"--queue=edge", "--queue=ratio", "x"}).queue_order == QueueOrder::Ratio);
+  CHECK(parse({"--queue=edge", "--queue=ratio", "x"}).queue_order == QueueOrder::ShortestEdge);
   CHECK(usage_error({"--queue=worst", "x"}).find("ratio, paper, edge, fifo, heap or paper-heap") != std::string::npos);
 }
 

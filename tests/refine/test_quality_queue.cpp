@@ -157,11 +157,11 @@ TEST(keyed_queue_serves_higher_tiers_first_whatever_the_key) {
   expect_pops(q, {4, 2, 3, 1});
 }
 
-// Through the queue: the Ratio order serves skinny triangles by their shortest edge, shortest
+// Through the queue: the ShortestEdge order serves skinny triangles by their shortest edge, shortest
 // first, whatever their ratio: a sliver as long as the domain waits behind a mildly skinny
 // triangle with a tiny edge; triangles that are only too large come last.
 TEST(ratio_order_serves_slivers_by_their_shortest_edge_like_the_rest) {
-  QualityQueue q(QueueOrder::Ratio, 1.0);
+  QualityQueue q(QueueOrder::ShortestEdge, 1.0);
   q.push(entry(1), {true, 255.9, 1e-20});  // mildly skinny, tiny edge
   q.push(entry(2), {false, 0.5, 1e-30});   // too large only
   q.push(entry(3), {true, 256.0, 1.0});    // a sliver as long as the domain
@@ -215,13 +215,13 @@ TEST(edge_level_ranks_shorter_edges_higher) {
     check_rises_as_edges_shorten([bits](double l2, double r2) { return edge_level(l2, r2, bits); }, 1e-200, 0.93);
 }
 
-// The Ratio order through the queue: size-only last, and every pop takes the shortest edge present (an exact order by level, FIFO within a level),
+// The ShortestEdge order through the queue: size-only last, and every pop takes the shortest edge present (an exact order by level, FIFO within a level),
 // across levels spread over 60 octaves, which takes several moves of the window. Checked against
 // a plain sorted model, not against the buckets.
 void check_ratio_order_across_window_moves(unsigned bits) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0.0, 120.0);
-  QualityQueue q(QueueOrder::Ratio, 1.0, bits);
+  QualityQueue q(QueueOrder::ShortestEdge, 1.0, bits);
   struct Model { unsigned level; TriangleId id; };
   std::vector<Model> model;
   for (TriangleId t{0}; t < 20000; ++t) {
@@ -255,7 +255,7 @@ void check_ratio_order_while_pushing_shorter_edges(unsigned bits) {
   std::mt19937_64 rng(6);
   std::uniform_real_distribution<double> start(0.0, 60.0);
   std::uniform_int_distribution<int> offset(-40, static_cast<int>(kWindowHeadroom) - 1);
-  QualityQueue q(QueueOrder::Ratio, 1.0, bits);
+  QualityQueue q(QueueOrder::ShortestEdge, 1.0, bits);
   const unsigned per_octave = 1u << bits;  // levels per octave of the squared length ratio
   std::vector<std::pair<unsigned, TriangleId>> live;  // the model: levels of the queued triangles
   TriangleId next{0};

@@ -2,7 +2,7 @@
 //
 // Everything here is written for the tests and shares nothing with deltri but the exact predicates
 // (src/geometry/predicates.h): the files are read by our own parser so that deltri's readers and
-// writers are checked too. The checks mirror /work/shared/tools/MESHCHECK.md (items 1-8, 12, and
+// writers are checked too. The checks are those of an independent mesh checker's list (items 1-8, 12, and
 // the quality item with --min-angle / --max-area).
 #pragma once
 
