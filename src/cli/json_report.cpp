@@ -35,10 +35,6 @@ class Json {
     field(key);
     out_ += std::to_string(v);
   }
-  void boolean(const char* key, bool v) {
-    field(key);
-    out_ += v ? "true" : "false";
-  }
   // v, or null when there is none (a bound that was not asked for).
   void optional_number(const char* key, bool present, double v) {
     if (present) return number(key, v);

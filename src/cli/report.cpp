@@ -33,11 +33,6 @@ std::string conformity_warning(const ConformityMisses& c, bool guard_stopped) {
 
 }  // namespace
 
-std::vector<const char*> unsupported_switches(const Switches&) {  // none today (-s landed in issue 23)
-  std::vector<const char*> list;
-  return list;
-}
-
 void Messages::notice(const std::string& text) const {
   if (!sw_.quiet) std::fprintf(stderr, "deltri: %s\n", text.c_str());
 }

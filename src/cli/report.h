@@ -52,9 +52,6 @@ struct RunReport {
   double total_seconds = 0.0;
 };
 
-// Switches that are parsed but whose work belongs to later stages of the project.
-std::vector<const char*> unsupported_switches(const Switches& sw);
-
 // The warnings about the input and the result, one line each, without the "deltri: warning:"
 // prefix (the JSON report lists the same lines).
 std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& report);

@@ -262,8 +262,6 @@ int run(const Switches& sw) {
   StageTimer timer(report);
   const auto start = std::chrono::steady_clock::now();
   Messages messages(sw);
-  for (const char* unsupported : unsupported_switches(sw))
-    messages.notice(std::string(unsupported) + " is not available yet and is ignored");
 
   const InputFiles in = input_files(sw);
   const int threads = threads_to_use(sw);  // --threads reads too

@@ -82,7 +82,6 @@ struct MshContent {
   bool attributes;  // surfaces are triangle attributes rather than the one "domain"
 
   int type(const ElementSet& set) const { return set.dim == 1 ? (mid ? 8 : 1) : (mid ? 9 : 2); }
-  int nodes_per_element(const ElementSet& set) const { return set.dim == 1 ? (mid ? 3 : 2) : (mid ? 6 : 3); }
   // The element's nodes in Gmsh order.
   template <class F>
   void element_nodes(const ElementSet& set, EdgeRef e, F&& f) const {

@@ -25,32 +25,7 @@ TEST(flip_replaces_the_diagonal) {
   CHECK_EQ(all_faults(m), 0);
 }
 
-// flip's precondition is an invariant check (util/invariant.h), on in the sanitizer and checked
-// builds: a boundary edge, or one carrying a subsegment, throws before anything is written. In a
-// release build the checks are compiled out and this test has nothing to check.
-TEST(flip_of_a_boundary_edge_or_a_subsegment_is_refused_where_checks_are_on) {
-#if !defined(NDEBUG) || defined(DELTRI_ASSERTS)
-  Mesh m = unit_square();
-  const Mesh before = m;
-  const auto refused = [&](EdgeRef e) {
-    try {
-      flip(m, e);
-    } catch (const std::logic_error&) {
-      return true;
-    }
-    return false;
-  };
-  CHECK(refused(find_edge(m, 0, 1)));  // on the boundary: no twin
-  m.enable_subsegments();
-  m.subsegments.push_back({0_v, 2_v, 1, 0});
-  m.set_subsegment(find_edge(m, 0, 2), 0_s);
-  const Mesh constrained = m;
-  CHECK(refused(find_edge(m, 0, 2)));
-  CHECK(refused(find_edge(m, 2, 0)));
-  CHECK(triangle_set(m) == triangle_set(before));
-  CHECK(m.link == constrained.link && m.subseg == constrained.subseg);
-#endif
-}
+// flip's refusal of a boundary edge or a subsegment: tests/mesh_checked (built with the checks on).
 
 TEST(flip_inside_a_mesh_keeps_outer_links_and_subsegments) {
   // A hexagon fan around a centre vertex 6; flipping a spoke touches four outer neighbours.

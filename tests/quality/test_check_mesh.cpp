@@ -1,6 +1,7 @@
 // The -C checker against hand-made meshes: correct ones must pass, and each injected fault must be
 // reported as exactly its own kind, with the expected count and example, and nothing else.
 #include <map>
+#include <set>
 #include <string>
 
 #include <cmath>
@@ -306,12 +307,58 @@ TEST(grid_with_a_pushed_vertex_loses_delaunay_edges) {
   CHECK_EQ(r.total_faults(), r.count(FaultKind::NotLocallyDelaunay));
 }
 
+// Each kind's layer and subject as check_mesh.h documents them (the enum's layer groups and the
+// subject in each kind's comment), and a name of its own: the tables in check_mesh.cpp must agree
+// with the header kind by kind, so a row out of place or a copied name fails.
 TEST(fault_tables_are_complete) {
-  for (std::size_t k = 0; k < kFaultKinds; ++k) {
-    const auto kind = static_cast<FaultKind>(k);
-    CHECK(std::string(fault_name(kind)).size() > 5);
-    CHECK(static_cast<std::size_t>(fault_layer(kind)) < kCheckLayers);
+  using L = CheckLayer;
+  using K = FaultKind;
+  struct Documented {
+    FaultKind kind;
+    CheckLayer layer;
+    const char* subject;
+  };
+  const std::vector<Documented> documented{
+      {K::ArraySize, L::Storage, ""},
+      {K::CornerOutOfRange, L::Storage, "triangle"},
+      {K::RepeatedCorner, L::Storage, "triangle"},
+      {K::BadFreeListEntry, L::Storage, "triangle"},
+      {K::UnlistedDeadSlot, L::Storage, "triangle"},
+      {K::LinkOutOfRange, L::Storage, "edge"},
+      {K::SubsegmentOutOfRange, L::Storage, "edge"},
+      {K::LinkToDeadTriangle, L::Topology, "edge"},
+      {K::LinkNotInvolution, L::Topology, "edge"},
+      {K::LinkEndpoints, L::Topology, "edge"},
+      {K::DuplicateEdge, L::Topology, "edge"},
+      {K::SubsegmentMismatch, L::Topology, "edge"},
+      {K::SubsegmentEndpoints, L::Topology, "edge"},
+      {K::DeadVertexUsed, L::Topology, "vertex"},
+      {K::ClockwiseTriangle, L::Orientation, "triangle"},
+      {K::FlatTriangle, L::Orientation, "triangle"},
+      {K::OpenBoundary, L::Boundary, "vertex"},
+      {K::NotLocallyDelaunay, L::Delaunay, "edge"},
+      {K::ReflexBoundaryTurn, L::ConvexHull, "edge"},
+      {K::ExtraBoundaryLoop, L::ConvexHull, "edge"},
+      {K::UnusedVertex, L::ConvexHull, "vertex"},
+      {K::OverlappingTriangles, L::Orientation, "triangle"},
+  };
+  CHECK_EQ(documented.size(), kFaultKinds);
+  std::set<std::string> names;
+  for (std::size_t k = 0; k < documented.size(); ++k) {
+    const Documented& d = documented[k];
+    CHECK_EQ(static_cast<std::size_t>(d.kind), k);  // the list follows the enum
+    CHECK(fault_layer(d.kind) == d.layer);
+    CHECK_EQ(std::string(fault_subject(d.kind)), std::string(d.subject));
+    const std::string name = fault_name(d.kind);
+    CHECK(!name.empty());
+    CHECK(names.insert(name).second);  // no two kinds share a description
   }
+  // The names that say what the kind is in the header's own words.
+  CHECK(std::string(fault_name(K::ClockwiseTriangle)).find("clockwise") != std::string::npos);
+  CHECK(std::string(fault_name(K::FlatTriangle)).find("collinear") != std::string::npos);
+  CHECK(std::string(fault_name(K::LinkNotInvolution)).find("involution") != std::string::npos);
+  CHECK(std::string(fault_name(K::NotLocallyDelaunay)).find("Delaunay") != std::string::npos);
+  CHECK(std::string(fault_name(K::OverlappingTriangles)).find("overlap") != std::string::npos);
   CHECK_EQ(std::string(layer_name(CheckLayer::Delaunay)), std::string("Delaunay"));
   CHECK_EQ(std::string(fault_subject(FaultKind::ClockwiseTriangle)), std::string("triangle"));
 }

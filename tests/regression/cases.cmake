@@ -1,9 +1,11 @@
-# Regression inputs (fuzzer findings and the like): one CTest each, see regression/run.sh.
+# Regression inputs (fuzzer findings and the like): one CTest each, see regression/run.sh; the
+# outcome due for each (a mesh, or an error matching a pattern) is in regression/expected.txt.
 file(GLOB REGRESSION_INPUTS CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/regression/inputs/*)
 foreach(input IN LISTS REGRESSION_INPUTS)
   get_filename_component(rname ${input} NAME)
   add_test(NAME regression.${rname}
-           COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/regression/run.sh $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify> ${input})
+           COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/regression/run.sh $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify> ${input}
+                   ${CMAKE_CURRENT_SOURCE_DIR}/regression/expected.txt)
   # A guard for a hang, not a measure: the slowest input (fuzz-crossing-slivers) takes 3 s of CPU in
   # a quiet Release run and 13 s at load 19 on 2 cores; the sanitizers multiply that.
   set_tests_properties(regression.${rname} PROPERTIES TIMEOUT 300)
@@ -16,7 +18,8 @@ file(GLOB OPEN_REGRESSION_INPUTS CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/r
 foreach(input IN LISTS OPEN_REGRESSION_INPUTS)
   get_filename_component(rname ${input} NAME)
   add_test(NAME regression.open.${rname}
-           COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/regression/run.sh $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify> ${input})
+           COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/regression/run.sh $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify> ${input}
+                   ${CMAKE_CURRENT_SOURCE_DIR}/regression/expected.txt)
   set_tests_properties(regression.open.${rname} PROPERTIES TIMEOUT 300 DISABLED TRUE)
 endforeach()
 

@@ -1,15 +1,22 @@
 #!/bin/sh
 # One regression input (called by CTest, see CMakeLists.txt in this directory):
-#   run.sh DELTRI VERIFY INPUT
-# The input's first line is "# deltri SWITCHES". deltri must either fail cleanly (exit 1, first
-# line of stderr "NAME:LINE: message" or "NAME: message", no output file) or succeed with -C and
-# give a mesh that passes deltri_mesh_verify. Anything else (a crash, exit 5 or 6, a hang up to
-# CTest's timeout) fails the test. An input whose second line is "# check: exact" is also checked,
+#   run.sh DELTRI VERIFY INPUT EXPECTED
+# The input's first line is "# deltri SWITCHES". EXPECTED (expected.txt) gives the outcome due:
+# "mesh": deltri succeeds with -C and gives a mesh that passes deltri_mesh_verify; "error REGEX":
+# it fails cleanly (exit 1, first line of stderr "NAME:LINE: message" or "NAME: message" with the
+# message matching REGEX, no output file). Anything else (the other outcome, a crash, exit 3, 5
+# or 6, a hang up to CTest's timeout, an input missing from EXPECTED) fails the test. An input whose second line is "# check: exact" is also checked,
 # on success, by tests/tools/exact_delaunay_check.py (exact rationals, none of deltri's predicates);
 # with "# check: exact only", by that checker alone.
 set -u
-deltri=$1 verify=$2 input=$3
+deltri=$1 verify=$2 input=$3 expected=$4
 name=$(basename "$input") base=${name%.*}
+outcome=$(awk -v n="$name" '$1 == n { sub(/[ \t]+#.*$/, ""); $1 = ""; sub(/^ /, ""); print; exit }' "$expected")
+case $outcome in
+  mesh) want_status=0 ;;
+  "error "?*) want_status=1 pattern=${outcome#error } ;;
+  *) echo "FAIL: $name has no expected outcome ('mesh' or 'error REGEX') in $expected"; exit 1 ;;
+esac
 switches=$(sed -n '1s/^# deltri //p' "$input")
 [ -n "$switches" ] || { echo "FAIL: $name lacks a '# deltri SWITCHES' first line"; exit 1; }
 work=$(mktemp -d) || exit 1
@@ -19,6 +26,9 @@ cp "$input" "$work/"
 status=$?
 echo "deltri $switches -C $name: exit $status"
 sed 's/^/  stderr: /' "$work/stderr"
+echo "expected: $outcome"
+[ "$status" = "$want_status" ] || [ "$status" != 0 -a "$status" != 1 ] ||
+  { echo "FAIL: exit $status where the outcome due is '$outcome'"; exit 1; }
 case $status in
   0)
     case $switches in *q*|*a*|*u*) refined=--refined ;; *) refined= ;; esac
@@ -37,7 +47,9 @@ case $status in
     fi ;;
   1)
     [ -z "$(cd "$work" && ls | grep -v -x -F -e "$name" -e stderr)" ] || { echo "FAIL: output files left"; exit 1; }
-    head -n 1 "$work/stderr" | grep -q "^$name:\([0-9][0-9]*:\)\{0,1\} " || { echo "FAIL: not a 'file:line: message' error"; exit 1; } ;;
+    head -n 1 "$work/stderr" | grep -q "^$name:\([0-9][0-9]*:\)\{0,1\} " || { echo "FAIL: not a 'file:line: message' error"; exit 1; }
+    head -n 1 "$work/stderr" | sed "s/^$name:\([0-9][0-9]*:\)\{0,1\} //" | grep -q -E -- "$pattern" ||
+      { echo "FAIL: the error does not match /$pattern/"; exit 1; } ;;
   *) echo "FAIL: exit status $status"; exit 1 ;;
 esac
 exit 0
