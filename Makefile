@@ -5,7 +5,7 @@ CMAKE_FLAGS ?=
 PREFIX ?= /usr/local
 DESTDIR ?=
 
-.PHONY: all build configure demo test bench bench-large clean check-sanitize check-debug check-tsan check-fresh fuzz install uninstall
+.PHONY: all build configure demo test test-fast bench bench-large clean check-sanitize check-debug check-tsan check-fresh fuzz install uninstall
 
 all: build
 
@@ -27,6 +27,10 @@ test: build
 	@sh tests/setup/install_test_deps.sh $(BUILD)/test-deps-missing
 	@cd $(BUILD) && status=0 && ctest --output-on-failure -j $(JOBS) || status=$$?; \
 	  sh "$(CURDIR)/tests/setup/install_test_deps.sh" --hint test-deps-missing; exit $$status
+
+# The `fast` tier only (tests/CMakeLists.txt: the labels fast, slow and solvers), for every push.
+test-fast: build
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L fast
 
 # BENCH_THREADS="1 2 4 8" (default "1 2") sets the thread counts of the threads table, BENCH_REPEAT the rounds.
 bench: build

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """-r with an .area file: every triangle of the result must meet the bound of the input triangle its
-centroid lies in (the input triangle is found with exact rational arithmetic, independent of
-deltri's predicates).
+centroid lies in (the input triangle is found with exact signs: a floating-point filter with an
+error bound, exact rational arithmetic where it cannot decide; independent of deltri's predicates).
 
     area_inheritance.py DELTRI WORKDIR INPUT.poly SWITCHES MODE
 
@@ -62,9 +62,10 @@ run('-rqaQ', '--json=report.json', base + '.1')
 out_pts, out_tris = read(base + '.2')
 
 # A grid of the input triangles' boxes for lookups.
-F = [(Fraction(x), Fraction(y)) for x, y in (pts[i] for i in range(len(pts)))]
 xs = [p[0] for p in pts.values()]; ys = [p[1] for p in pts.values()]
-lo_x, lo_y, size = min(xs), min(ys), max(max(xs) - min(xs), max(ys) - min(ys)) / 64 or 1.0
+# About one input triangle per cell (at least 64 cells a side), so that a lookup tests a few.
+cells = max(64, int(len(tris) ** 0.5))
+lo_x, lo_y, size = min(xs), min(ys), max(max(xs) - min(xs), max(ys) - min(ys)) / cells or 1.0
 grid = {}
 for i, t in enumerate(tris):
     bx = [pts[v][0] for v in t]; by = [pts[v][1] for v in t]
@@ -77,15 +78,33 @@ def orient(a, b, c):
     return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
 
 
+# The sign of orient(a, b, centroid of t) for input vertices a, b and an output triangle t = (p,
+# q, r), exactly: 3 orient(a, b, g) = (bx-ax)(py+qy+ry-3ay) - (by-ay)(px+qx+rx-3ax). Evaluated in
+# doubles, its rounding error is at most a few units of 2^-52 times the sum of the magnitudes of
+# its terms (mag); a value beyond 1e-12 mag has its sign, and only the rest (points within a hair
+# of the input edge's line, or magnitudes near underflow) are decided with exact rationals.
+def side(a, b, t):
+    (ax, ay), (bx, by) = a, b
+    sx = t[0][0] + t[1][0] + t[2][0] - 3 * ax
+    sy = t[0][1] + t[1][1] + t[2][1] - 3 * ay
+    det = (bx - ax) * sy - (by - ay) * sx
+    mag = ((abs(bx) + abs(ax)) * (abs(t[0][1]) + abs(t[1][1]) + abs(t[2][1]) + 3 * abs(ay)) +
+           (abs(by) + abs(ay)) * (abs(t[0][0]) + abs(t[1][0]) + abs(t[2][0]) + 3 * abs(ax)))
+    if abs(det) > 1e-12 * mag and mag > 1e-250:
+        return det
+    g = tuple(sum(Fraction(q[k]) for q in t) / 3 for k in (0, 1))
+    return orient((Fraction(ax), Fraction(ay)), (Fraction(bx), Fraction(by)), g)
+
+
 bad = checked = 0
 for t in out_tris:
     p = [out_pts[v] for v in t]
-    g = tuple(sum(Fraction(q[k]) for q in p) / 3 for k in (0, 1))
-    cell = (int((float(g[0]) - lo_x) / size), int((float(g[1]) - lo_y) / size))
+    g = tuple(sum(q[k] for q in p) / 3 for k in (0, 1))  # rounded: only to pick the grid cell
+    cell = (int((g[0] - lo_x) / size), int((g[1] - lo_y) / size))
     owners = [i for i in grid.get(cell, [])
-              if all(orient(F[tris[i][k]], F[tris[i][(k + 1) % 3]], g) >= 0 for k in range(3))]
+              if all(side(pts[tris[i][k]], pts[tris[i][(k + 1) % 3]], p) >= 0 for k in range(3))]
     if not owners:
-        sys.exit(f"centroid {tuple(map(float, g))} lies in no input triangle")
+        sys.exit(f"centroid {g} lies in no input triangle")
     bound = min((bounds[i] for i in owners if bounds[i] > 0), default=-1.0)
     if bound <= 0: continue
     checked += 1
