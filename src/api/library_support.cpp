@@ -5,7 +5,7 @@
 #include <system_error>
 #include <vector>
 
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 namespace deltri {
 namespace {

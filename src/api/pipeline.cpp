@@ -15,7 +15,7 @@
 #include "cdt/rebuild_mesh.h"
 #include "delaunay/triangulate.h"
 #include "io/midpoints.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 #include "quality/bound_misses.h"
 #include "quality/conformity.h"
 #include "quality/check_mesh.h"

@@ -3,7 +3,7 @@
 // numbering. The one facade over the core that the command line (src/cli/run.cpp: files in,
 // files out, messages) and the library (src/api/library.cpp: arrays in, arrays out) both use.
 // It reads and writes no file, prints nothing and never exits: errors are exceptions
-// (pslg/errors.h).
+// (util/errors.h).
 #pragma once
 
 #include <cstdint>

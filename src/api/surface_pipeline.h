@@ -3,7 +3,7 @@
 // and -C (surface/check_surface.h). The one facade that the command line
 // (src/cli/surface_run.cpp: files in, files out, messages) and the library (src/api/surface_library.cpp:
 // arrays in, arrays out) both use. It reads and writes no file, prints nothing and never exits:
-// errors are exceptions (pslg/errors.h; a facet that is not planar is an InputError naming it).
+// errors are exceptions (util/errors.h; a facet that is not planar is an InputError naming it).
 #pragma once
 
 #include <optional>

@@ -6,7 +6,7 @@
 #include "mesh/constrained_editor.h"
 #include "mesh/overlap.h"
 #include "mesh/subsegments.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 namespace deltri {
 namespace {

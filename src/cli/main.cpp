@@ -7,7 +7,7 @@
 #include "cli/run.h"
 #include "cli/switches.h"
 #include "cli/version.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 int main(int argc, char** argv) {
   using namespace deltri;

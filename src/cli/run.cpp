@@ -27,7 +27,7 @@
 #include "io/svg_file.h"
 #include "io/voronoi_file.h"
 #include "io/vtu_file.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 #include "refine/size_field.h"
 
 namespace deltri {

@@ -4,7 +4,7 @@
 #include <fstream>
 
 #include "io/line_reader.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 namespace deltri {
 namespace {

@@ -9,7 +9,7 @@
 #include <system_error>
 #include <utility>
 
-#include "pslg/errors.h"
+#include "util/errors.h"
 #include "util/run_both.h"
 
 

@@ -7,7 +7,7 @@
 
 #include "io/decimal_parse.h"
 #include "io/file_text.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 namespace deltri {
 namespace {

@@ -5,7 +5,7 @@
 #include <exception>
 
 #include "io/output_numbering.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 #include "util/run_both.h"
 
 namespace deltri {

@@ -14,7 +14,7 @@
 #include <tuple>
 
 #include "io/range_pool.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 #if __has_include(<sys/file.h>) && __has_include(<unistd.h>)
 #include <fcntl.h>

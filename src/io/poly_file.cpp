@@ -6,7 +6,7 @@
 #include "io/line_reader.h"
 #include "io/node_file.h"
 #include "io/output_numbering.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 namespace deltri {
 namespace {

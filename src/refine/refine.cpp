@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "pslg/errors.h"
+#include "util/errors.h"
 #include "refine/area_field.h"
 #include "refine/halves.h"
 #include "refine/termination_guard.h"

@@ -161,7 +161,7 @@ struct RefineReport : RefineWork {
   std::uint64_t seam_seeds = 0;
 };
 
-// Throws MemoryError (pslg/errors.h) when the size bounds ask for more triangles than
+// Throws MemoryError (util/errors.h) when the size bounds ask for more triangles than
 // opt.memory_budget can hold.
 RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& opt);
 

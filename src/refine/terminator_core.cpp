@@ -7,7 +7,7 @@
 #include <algorithm>
 
 #include "mesh/operations.h"
-#include "refine/lawson.h"
+#include "refine/restore_delaunay.h"
 #include "refine/terminator.h"
 #include "util/invariant.h"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 namespace deltri {
 namespace {

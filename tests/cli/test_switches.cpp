@@ -6,7 +6,7 @@
 #include "cli/switch_table.h"
 #include "cli/switches.h"
 #include "harness/check.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 using namespace deltri;
 

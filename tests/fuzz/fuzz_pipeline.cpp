@@ -22,7 +22,7 @@
 #include "fuzz_common.h"
 #include "io/node_file.h"
 #include "io/poly_file.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include "io/ele_file.h"
 #include "io/node_file.h"
 #include "io/poly_file.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 namespace {
 

@@ -8,7 +8,7 @@
 
 #include "harness/id_literals.h"
 #include "mesh/mesh.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 namespace iotest {
 

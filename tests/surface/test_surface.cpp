@@ -6,7 +6,7 @@
 
 #include "harness/check.h"
 #include "io/facet_file.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 #include "surface/check_surface.h"
 #include "surface/surface_mesher.h"
 

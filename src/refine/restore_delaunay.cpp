@@ -1,4 +1,4 @@
-#include "refine/lawson.h"
+#include "refine/restore_delaunay.h"
 
 
 #include "mesh/lawson.h"
