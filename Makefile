@@ -56,7 +56,7 @@ check-debug:
 	@cd build-debug && ctest --output-on-failure -j $(JOBS) -R '^(e2e|regression)\.'
 
 # The library's thread test (8 threads calling the C++ API at once, tests/api/test_threads.cpp)
-# and refinement in 8 parts on 2 to 8 threads (tests/refine/test_halves.cpp, the test named
+# and refinement in 8 parts on 2 to 8 threads (tests/refine/test_parts.cpp, the test named
 # halves_give_the_same_mesh_on_one_to_eight_threads) under ThreadSanitizer, which must report
 # nothing: its own build, of those tests only.
 check-tsan:

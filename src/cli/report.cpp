@@ -185,7 +185,7 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
     else std::fprintf(out_, "(edge floor %.6g)\n", q->guard_length);
     std::fprintf(out_, "  peak bad-triangle queue: %zu; triangles still bad: %llu\n", q->peak_queue,
                 static_cast<unsigned long long>(q->bad_triangles_left));
-    if (q->in_halves)
+    if (q->in_parts)
       std::fprintf(out_, "  refined in %u parts apart, then seams of %llu edges: %llu Steiner points from %llu triangles\n",
                   q->parts, static_cast<unsigned long long>(q->seam_edges), static_cast<unsigned long long>(q->seam_steiner),
                   static_cast<unsigned long long>(q->seam_seeds));

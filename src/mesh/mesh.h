@@ -178,7 +178,7 @@ struct Mesh {
   // Moves live triangles over dead slots so that every slot is live (ids change).
   void compact_triangles();
 
-  // --- sub-meshes (refine/halves.cpp cuts a mesh in two and joins the halves again) ---
+  // --- sub-meshes (refine/refine_in_parts.cpp cuts a mesh in two and joins the halves again) ---
   // A mesh with the given vertices of this one (every per-vertex array), the given subsegment
   // records (their endpoints renumbered alike) and the attribute layouts, and no triangles, into
   // which part of the triangles can be moved: its vertex i is vertices[i] and its record i is

@@ -1,4 +1,4 @@
-// Cutting a mesh into parts that are refined apart, and joining them again (refine/halves.h): the
+// Cutting a mesh into parts that are refined apart, and joining them again (refine/refine_in_parts.h): the
 // kernel operations that move triangles between meshes, so that every per-triangle and per-vertex
 // array is carried here and in mesh.cpp, and no caller copies a field of Mesh by name.
 //

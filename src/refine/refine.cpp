@@ -7,7 +7,7 @@
 
 #include "util/errors.h"
 #include "refine/area_field.h"
-#include "refine/halves.h"
+#include "refine/refine_in_parts.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"
 
@@ -31,7 +31,7 @@ void refuse_impossible_size_bounds(const Mesh& mesh, const RefineOptions& opt) {
 }
 
 RefineReport refine_within_reach(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
-  if (halves_apply(mesh, opt)) return refine_in_halves(mesh, pred, opt);
+  if (parts_apply(mesh, opt)) return refine_in_parts(mesh, pred, opt);
   Terminator terminator(mesh, pred, opt);
   return terminator.run();
 }

@@ -38,7 +38,7 @@ struct RefineOptions {
   long max_steiner = -1;                // -S; -1 unlimited
   bool off_centers = true;              // Ungor's off-centres instead of circumcentres
   // A caller's size test (refine/size_test.h), or null. Its wishes are unknown in advance, so only
-  // the memory budget caps the Steiner points, and refinement stays on one thread (halves.h).
+  // the memory budget caps the Steiner points, and refinement stays on one thread (refine_in_parts.h).
   const SizeTest* size_test = nullptr;
   QueueOrder queue_order = QueueOrder::ShortestEdge;  // which bad triangle goes first (quality_queue.h)
   // Fig. 38 l.21: let SPLITPERMITTED decline cluster splits. That is the Terminator's proof of
@@ -72,10 +72,10 @@ struct RefineOptions {
   // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h) and the halves
   // run at once. The mesh does not depend on it.
   int threads = 1;
-  // Refine a large mesh as two halves and the seam between them (refine/halves.h), on one thread
+  // Refine a large mesh as two halves and the seam between them (refine/refine_in_parts.h), on one thread
   // or two: a rule of the input and this switch, so the mesh is the same for every thread count.
-  bool in_halves = true;
-  // The rule for the number of parts (refine/halves.h, part_depth): a mesh with this many live
+  bool in_parts = true;
+  // The rule for the number of parts (refine/refine_in_parts.h, part_depth): a mesh with this many live
   // triangles is cut once, one with 8 times as many twice (4 parts), 64 times three times, ...
   // Tests lower it to cut small meshes deeply; the program keeps the default.
   std::uint32_t part_min_triangles = 20000;
@@ -152,9 +152,9 @@ struct RefineReport : RefineWork {
   double worst_size_excess = 0.0;         // the largest size_excess (refine/bad_triangles.h)
   Point worst_size_location;              // that triangle's centroid
   std::size_t peak_queue = 0;             // bad-triangle queue
-  // Refined in two halves at once (refine/halves.h): the seam's edges (none when the halves do not
+  // Refined in two halves at once (refine/refine_in_parts.h): the seam's edges (none when the halves do not
   // touch), its Terminator's Steiner points and the triangles it started from.
-  bool in_halves = false;
+  bool in_parts = false;
   std::uint32_t parts = 0;                // the parts refined apart (2^d, fewer where a part could not be cut)
   std::uint64_t seam_edges = 0;
   std::uint64_t seam_steiner = 0;

@@ -62,7 +62,7 @@ struct SegmentPieces {
   };
   std::vector<Split> splits;
   // piece_key of every initial subsegment, sorted; never changed once made, so the Terminators of
-  // two halves (refine/halves.h) share one.
+  // two halves (refine/refine_in_parts.h) share one.
   std::shared_ptr<const std::vector<std::uint64_t>> initial;
   void set_initial(std::vector<std::uint64_t> keys);  // sorts them
 };

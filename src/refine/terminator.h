@@ -32,12 +32,12 @@
 
 namespace deltri {
 
-// The subsegment id of a seam edge (refine/halves.h): an edge that refinement treats as a
+// The subsegment id of a seam edge (refine/refine_in_parts.h): an edge that refinement treats as a
 // subsegment it may neither split nor cross, and which has no subsegment record.
 inline constexpr SubsegmentId kSeamEdge{0xFFFFFFFEu};  // just below kNone
 
 // What a Terminator takes from the initial mesh: the guard's edge floor and Steiner cap, the
-// segment pieces, and the subsegments to leave whole. of() derives them; refine/halves.cpp computes
+// segment pieces, and the subsegments to leave whole. of() derives them; refine/refine_in_parts.cpp computes
 // them once on the whole mesh, hands them to the Terminators of its two halves, and hands theirs
 // on to the one that refines the seam.
 struct TerminatorStart {
@@ -77,7 +77,7 @@ class Terminator {
   void refine_all();
   void split_initial_encroachments();
   // Fig. 38 l.3-10 with Q_s and Q_t filled from `triangles` and their subsegments only: the rest of
-  // the mesh is known to meet the bounds (refine/halves.cpp).
+  // the mesh is known to meet the bounds (refine/refine_in_parts.cpp).
   void refine_around(std::span<const TriangleId> triangles);
   // The closing survey of the triangles still bad.
   RefineReport finish();

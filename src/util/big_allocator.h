@@ -25,7 +25,7 @@ void release_big(void* p, std::size_t bytes) noexcept;
 // again before it is freed (a block being copied elsewhere piece by piece); nothing elsewhere.
 void release_pages(void* p, std::size_t bytes) noexcept;
 
-// Asks that the pages of [p, p + bytes) not yet touched be small ones (refine/halves.cpp: two
+// Asks that the pages of [p, p + bytes) not yet touched be small ones (refine/refine_in_parts.cpp: two
 // meshes growing at once, whose last, partly used huge pages would add to the peak).
 void prefer_small_pages(const void* p, std::size_t bytes) noexcept;
 
@@ -80,7 +80,7 @@ class BigBytes {
 
 // Appends f(x) for every x of `from` from index `first` on to `to` and frees `from`, giving its
 // pages back as they are copied, so that the two arrays never hold their whole size at once (that
-// set the peak memory of refine/halves.cpp's join). `to` grows a block at a time from a buffer on
+// set the peak memory of refine/refine_in_parts.cpp's join). `to` grows a block at a time from a buffer on
 // this thread's stack, not an element at a time: its size, rewritten at every element, sits in
 // the mesh beside the arrays that another thread appends to at once (mesh/parts.cpp).
 template <class T, class U, class F>

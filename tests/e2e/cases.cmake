@@ -186,7 +186,7 @@ foreach(area 0.01 0.003 0.001)
 endforeach()
 e2e_case(guitar.pa0.003 ${E2E_DATA}/guitar.poly -pa0.003 --no-warning --verify "--refined --max-area 0.003")
 set_tests_properties(e2e.guitar.pa0.003 PROPERTIES TIMEOUT 600)  # a guard: 3 s in a quiet Release run
-# Refined in two parts (refine/halves.h; -V says "refined in 2 parts apart, then seams of 376 edges" for -pq30):
+# Refined in two parts (refine/refine_in_parts.h; -V says "refined in 2 parts apart, then seams of 376 edges" for -pq30):
 # the seam must leave no trace, and both runs the same mesh whatever the threads' timing.
 e2e_case(halves.holes24.pq30 gen:holes24.poly -pq30C --no-warning --verify "--refined --min-angle 30")
 e2e_case(halves.holes24.pq33a gen:holes24.poly -pq33a0.0001C --no-warning --verify "--refined --min-angle 33 --max-area 0.0001")

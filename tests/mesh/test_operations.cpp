@@ -134,7 +134,7 @@ TEST(split_boundary_edge) {
   CHECK_EQ(m.area_bound[m.triangle_slots() - 1], 0.5);
 }
 
-// refine/halves.cpp refines parts cut off with part_with: the part holds only the vertices and
+// refine/refine_in_parts.cpp refines parts cut off with part_with: the part holds only the vertices and
 // subsegment records it is given, renumbered in their order (record endpoints too), and keeps room
 // for what the part adds (the whole mesh's reserved vertex room, a quarter more records), since a
 // copy of exactly its size reallocated at the first addition and the abandoned copy stayed

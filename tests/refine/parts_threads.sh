@@ -1,5 +1,5 @@
 #!/bin/sh
-# Refinement in parts (refine/halves.h) gives the same files for every thread count (issue 24):
+# Refinement in parts (refine/refine_in_parts.h) gives the same files for every thread count (issue 24):
 # the 50x50 holes at -pq30 (165,002 initial triangles: 4 parts) with --threads=1, 2, 3, 4, 8 and 16
 # (oversubscribed on a small machine, which is fine), byte for byte, the N=1 mesh checked by -C and
 # by the independent checker of the end-to-end tests, and -V saying that it was cut into 4 parts.

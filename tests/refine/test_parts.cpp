@@ -1,4 +1,4 @@
-// Refinement in two halves (refine/halves.h), judged by independent facts about the result and
+// Refinement in two halves (refine/refine_in_parts.h), judged by independent facts about the result and
 // against one Terminator on the whole mesh.
 #include <cmath>
 #include <cstdint>
@@ -6,7 +6,7 @@
 
 #include "harness/check.h"
 #include "harness/id_literals.h"
-#include "refine/halves.h"
+#include "refine/refine_in_parts.h"
 #include "refine/refine.h"
 #include "refine_fixtures.h"
 
@@ -46,11 +46,11 @@ Mesh scattered_square_with_chain() {
 
 // part_min: RefineOptions::part_min_triangles; 20,000 (the program's) cuts the test meshes once,
 // 300 three times (8 parts).
-RefineOptions bounds_with(int threads, bool in_halves = true, std::uint32_t part_min = 20000) {
+RefineOptions bounds_with(int threads, bool in_parts = true, std::uint32_t part_min = 20000) {
   RefineOptions opt = quality(30);
   opt.size.triangle_bounds = true;
   opt.threads = threads;
-  opt.in_halves = in_halves;
+  opt.in_parts = in_parts;
   opt.part_min_triangles = part_min;
   return opt;
 }
@@ -86,26 +86,26 @@ std::uint32_t vertices_in_triangles(const Mesh& m) {
 
 }  // namespace
 
-TEST(halves_apply_only_where_they_cannot_disagree) {
+TEST(parts_apply_only_where_they_cannot_disagree) {
   const Mesh m = scattered_square_with_chain();
   CHECK_EQ(part_depth(m, bounds_with(2)), 1);  // 28,000 triangles: 20,000 or more, under 160,000
   CHECK_EQ(part_depth(m, bounds_with(2, true, 300)), 3);  // 19,200 or more, under 153,600
-  CHECK(halves_apply(m, bounds_with(2)));
-  CHECK(halves_apply(m, bounds_with(1)));  // the thread count does not decide
-  CHECK(!halves_apply(m, bounds_with(2, false)));
+  CHECK(parts_apply(m, bounds_with(2)));
+  CHECK(parts_apply(m, bounds_with(1)));  // the thread count does not decide
+  CHECK(!parts_apply(m, bounds_with(2, false)));
   RefineOptions opt = bounds_with(2);
   opt.max_steiner = 1000;
-  CHECK(!halves_apply(m, opt));
+  CHECK(!parts_apply(m, opt));
   opt = bounds_with(2);
   opt.no_steiner_on_segments = 1;
-  CHECK(!halves_apply(m, opt));
+  CHECK(!parts_apply(m, opt));
   opt = bounds_with(2);
   opt.conforming_delaunay = true;
-  CHECK(!halves_apply(m, opt));
+  CHECK(!parts_apply(m, opt));
   opt = bounds_with(2);
   opt.angle = AngleBound(40);  // can cascade (termination_guard.h)
-  CHECK(!halves_apply(m, opt));
-  CHECK(!halves_apply(unit_square(), bounds_with(2)));  // too small to pay
+  CHECK(!parts_apply(m, opt));
+  CHECK(!parts_apply(unit_square(), bounds_with(2)));  // too small to pay
 }
 
 // Two parts and eight: every seam's triangles and subsegments meet the bounds too.
@@ -160,7 +160,7 @@ TEST(halves_are_deterministic_and_close_to_the_whole) {
   const RefineReport rw = refine_mesh(whole, pw, bounds_with(2, false));
   const double n = a.live_triangles(), w = whole.live_triangles();
   std::printf("  halves %u triangles, whole %u\n", a.live_triangles(), whole.live_triangles());
-  CHECK(ra.in_halves && !rw.in_halves);  // the halves did run, and only where asked
+  CHECK(ra.in_parts && !rw.in_parts);  // the halves did run, and only where asked
   CHECK(std::fabs(n - w) <= 0.01 * w);
 }
 
@@ -173,7 +173,7 @@ TEST(halves_give_the_same_mesh_on_one_to_eight_threads) {
     const Mesh input = one;
     Predicates p1;
     const RefineReport r1 = refine_mesh(one, p1, bounds_with(1, true, part_min));
-    CHECK(r1.in_halves);
+    CHECK(r1.in_parts);
     for (int threads : {2, 3, 4, 8}) {
       Mesh other = input;
       Predicates p;
@@ -212,7 +212,7 @@ TEST(halves_keep_random_segments_and_the_constrained_delaunay_property) {
     RefineOptions opt = quality(28);
     opt.threads = 2;
     if (seed >= 3) opt.part_min_triangles = 300;  // 8 parts: seams across seams
-    REQUIRE(halves_apply(m, opt));
+    REQUIRE(parts_apply(m, opt));
     Predicates pred;
     const RefineReport r = refine_mesh(m, pred, opt);
     const Facts f = facts_of(m);

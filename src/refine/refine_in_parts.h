@@ -21,8 +21,8 @@
 // and whenever; with RefineOptions::threads = N the two sides of a cut run at once while threads
 // are left (the threads shared out between them), else one after the other.
 //
-// Used only where it pays and where the parts cannot disagree (halves_apply): RefineOptions::
-// in_halves (the default), a large initial mesh, and none of the options that make refinement depend on more than the
+// Used only where it pays and where the parts cannot disagree (parts_apply): RefineOptions::
+// in_parts (the default), a large initial mesh, and none of the options that make refinement depend on more than the
 // triangles it changes (-S, -Y, -D, declined cluster splits, angle bounds that can cascade, edges
 // no double can give a good triangle).
 #pragma once
@@ -42,8 +42,8 @@ namespace deltri {
 inline constexpr int kMaxPartDepth = 6;
 int part_depth(const Mesh& mesh, const RefineOptions& opt);
 
-bool halves_apply(const Mesh& mesh, const RefineOptions& opt);
+bool parts_apply(const Mesh& mesh, const RefineOptions& opt);
 
-RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions& opt);
+RefineReport refine_in_parts(Mesh& mesh, Predicates& pred, const RefineOptions& opt);
 
 }  // namespace deltri

@@ -1,4 +1,4 @@
-#include "refine/halves.h"
+#include "refine/refine_in_parts.h"
 
 #include <algorithm>
 #include <iterator>
@@ -82,7 +82,7 @@ PartResult refine_whole_part(Mesh& mesh, Predicates& pred, const RefineOptions& 
 TerminatorStart split_initial_encroachments(Mesh& mesh, Predicates& pred, const RefineOptions& opt,
                                             RefineReport& counts) {
   TerminatorStart start = TerminatorStart::of(mesh, opt);
-  start.hopeless_edges = 0;  // halves_apply
+  start.hopeless_edges = 0;  // parts_apply
   Terminator terminator(mesh, pred, opt, std::move(start));
   terminator.split_initial_encroachments();
   counts = terminator.report();
@@ -412,8 +412,8 @@ int part_depth(const Mesh& mesh, const RefineOptions& opt) {
   return depth;
 }
 
-bool halves_apply(const Mesh& mesh, const RefineOptions& opt) {
-  if (!opt.in_halves || !mesh.has_subsegments()) return false;
+bool parts_apply(const Mesh& mesh, const RefineOptions& opt) {
+  if (!opt.in_parts || !mesh.has_subsegments()) return false;
   const bool bounded = opt.angle.asked() || opt.size.any();
   if (!bounded || opt.size_test || opt.max_steiner >= 0 || opt.no_steiner_on_segments != 0 || opt.conforming_delaunay ||
       opt.decline_cluster_splits || opt.queue_order != QueueOrder::ShortestEdge || opt.lopped_apices)
@@ -423,7 +423,7 @@ bool halves_apply(const Mesh& mesh, const RefineOptions& opt) {
   return count_hopeless_edges(mesh, opt.angle.sin2(), opt.threads) == 0;
 }
 
-RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
+RefineReport refine_in_parts(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
   RefineOptions one_thread = opt;
   one_thread.threads = 1;
   const int depth = part_depth(mesh, opt);
@@ -439,7 +439,7 @@ RefineReport refine_in_halves(Mesh& mesh, Predicates& pred, const RefineOptions&
     return report;
   }
   RefineReport report = refine_cut(mesh, pred, plan, std::move(whole), moves).report;
-  report.in_halves = true;
+  report.in_parts = true;
   add_counts(report, initial);
   report.steiner_cap = cap;
   return report;
