@@ -72,7 +72,7 @@ bool within_proven_range(double smallest_input_angle, double angle_bound_deg, Sp
 // floor is local: a hole 2e-6 wide at the origin of a square 2e6 wide is meshed at its own scale.
 inline constexpr int kPrecisionOctaves = 54;
 double precision_floor_at(const Point& p);
-// The floor before the bottom scale was meshed: 2^-36 relative, about 2^16 ulps. It still applies
+// The coarse floor, 2^-36 relative (about 2^16 ulps), where the bottom scale is not meshed. It applies
 // everywhere when the initial mesh has an edge that no double can give a good triangle
 // (hopeless_edge in geometry/lattice.h): the bound cannot be met there, and grading the mesh down
 // to the ulp scale at every other close pair would cost dozens of triangles per octave for
