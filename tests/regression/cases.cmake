@@ -11,6 +11,16 @@ foreach(input IN LISTS REGRESSION_INPUTS)
   set_tests_properties(regression.${rname} PROPERTIES TIMEOUT 300)
 endforeach()
 
+# Every line of expected.txt names an input that exists (in inputs/ or open/), so none is stale.
+file(STRINGS ${CMAKE_CURRENT_SOURCE_DIR}/regression/expected.txt REGRESSION_EXPECTED REGEX "^[^# ]")
+foreach(line IN LISTS REGRESSION_EXPECTED)
+  string(REGEX MATCH "^[^ ]+" rname "${line}")
+  if(NOT EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/regression/inputs/${rname} AND
+     NOT EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/regression/open/${rname})
+    message(FATAL_ERROR "tests/regression/expected.txt names ${rname}, which is in neither inputs/ nor open/")
+  endif()
+endforeach()
+
 # Reproducers of bugs found but not fixed yet (see docs/reliability.md, "Open findings"): registered
 # but disabled, so that CTest lists them as "Not Run (Disabled)" until the fix lands; then the file
 # moves to inputs/.
