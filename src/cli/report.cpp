@@ -223,15 +223,22 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
   if (r.check) std::fprintf(out_, "Consistency check (-C): %s", r.check->summary().c_str());
 }
 
+// An angle as the reports print bounds: "34", "33.5".
+std::string degrees_text(double deg) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", deg);
+  return text;
+}
+
 std::string cap_explanation(const RefineReport& q) {
   const std::string stopped = "refinement stopped after " + std::to_string(q.interior_steiner + q.segment_steiner) +
                               " Steiner points, the termination guard's cap";
   switch (q.cap_kind) {
     case CapKind::Cascade:
-      return "refinement cannot reach this angle bound here: beyond " + std::to_string(static_cast<int>(kCascadeAngleDeg)) +
+      return "refinement cannot reach this angle bound here: beyond " + degrees_text(q.first_stage_angle_deg) +
              " degrees it ran on for " + std::to_string(q.cascade_steiner_taken_back) +
              " Steiner points, the termination guard's cap, without converging; the mesh is the one that meets " +
-             std::to_string(static_cast<int>(kCascadeAngleDeg)) + " degrees (" + std::to_string(q.first_stage_steiner) +
+             degrees_text(q.first_stage_angle_deg) + " degrees (" + std::to_string(q.first_stage_steiner) +
              " Steiner points)";
     case CapKind::Memory:
       return stopped + " from the memory available: a finer mesh would not fit";

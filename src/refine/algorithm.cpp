@@ -1,5 +1,8 @@
 #include "refine/algorithm.h"
 
+#include "geometry/mesh_bounds.h"
+#include "refine/termination_guard.h"
+
 namespace deltri {
 
 const char* refused_combination(RefinementAlgorithm algorithm, int interior_bound, bool quality,
@@ -17,6 +20,11 @@ const char* refused_combination(RefinementAlgorithm algorithm, int interior_boun
     return "--interior-bound: give -q, the bound near segments (at most 20.7 with ruppert, 26.5 with chew for "
            "the paper's guarantee)";
   return nullptr;
+}
+
+StagePlan stage_plan(RefinementAlgorithm algorithm) {
+  if (algorithm == RefinementAlgorithm::Terminator) return {kCascadeAngleDeg, kCascadeAllowance};
+  return {kPaperModeReachDeg, kPaperModeAllowance};
 }
 
 }  // namespace deltri

@@ -16,6 +16,23 @@ enum class RefinementAlgorithm : std::uint8_t {
                // midpoint after the free vertices in its diametral circle are deleted
 };
 
+// How refinement goes past what an algorithm reaches (refine/refine.cpp, refine_in_stages): up to
+// reach_deg in one stage; above it, first to reach_deg, then on at the asked bound with at most
+// allowance Steiner points per vertex of that mesh, taken back if the allowance runs out. The
+// Terminator reaches kCascadeAngleDeg (34 degrees) on every input measured, with an allowance of
+// kCascadeAllowance (refine/termination_guard.h). Ruppert's and Chew's algorithms, with no shells or
+// lenses at small input angles and proven only to 20.7 and 26.6 degrees, reach 33 on the whole
+// corpus but ran to the Steiner cap at 34 on 11 of its 51 smaller files, and where they do go on
+// past 33 they cascade (Chew on river: 3 times its -q33 triangles at -q34), so their allowance is one
+// point per vertex (docs/refinement.md, "The paper's modes near their limits").
+struct StagePlan {
+  double reach_deg;
+  double allowance;
+};
+inline constexpr double kPaperModeReachDeg = 33.0;
+inline constexpr double kPaperModeAllowance = 1.0;
+StagePlan stage_plan(RefinementAlgorithm algorithm);
+
 // Sec. 7.2: B = 1, that is 30 degrees, away from segments.
 inline constexpr double kInteriorBoundDeg = 30.0;
 

@@ -45,11 +45,11 @@ RefineOptions after(const RefineOptions& opt, std::uint64_t used) {
   return rest;
 }
 
-// On at opt's bound from a mesh that meets kCascadeAngleDeg, with at most kCascadeAllowance Steiner
-// points per vertex.
+// On at opt's bound from a mesh that meets the algorithm's reach, with at most its allowance of Steiner
+// points per vertex (stage_plan).
 RefineReport refine_beyond_reach(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
   TerminatorStart start = TerminatorStart::of(mesh, opt);
-  const auto allowance = static_cast<std::uint64_t>(kCascadeAllowance * mesh.vertex_count());
+  const auto allowance = static_cast<std::uint64_t>(stage_plan(opt.algorithm).allowance * mesh.vertex_count());
   if (allowance < start.steiner_cap) {
     start.steiner_cap = allowance;
     start.cap_kind = CapKind::Cascade;
@@ -58,17 +58,19 @@ RefineReport refine_beyond_reach(Mesh& mesh, Predicates& pred, const RefineOptio
 }
 
 // Above kCascadeAngleDeg refinement can cascade (Sec. 7.3, Fig. 37): each generation of vertices
-// closer together than the last. So the mesh is first refined to kCascadeAngleDeg, which refinement
-// reaches, then on at the asked bound with at most kCascadeAllowance Steiner points per vertex of
-// that mesh: where the bound can be met that is room enough. Where the cap stops it, the cascade
+// closer together than the last (Ruppert's and Chew's algorithms from kPaperModeReachDeg). So the
+// mesh is first refined to that reach (stage_plan), which refinement reaches, then on at the asked
+// bound with at most its allowance of Steiner points per vertex of that mesh: where the bound can be
+// met that is room enough. Where the cap stops it, the cascade
 // was cut short somewhere in the middle, with triangles far worse than those it started from; a
 // higher bound must not give a worse mesh, so the first stage's mesh is taken back, and the report
 // counts its triangles that miss the asked bound. Either way the run ends within a small multiple
 // of the first stage's size, time and memory (the copy kept is one more first-stage mesh).
 RefineReport refine_in_stages(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
-  if (!opt.angle.cascades()) return refine_within_reach(mesh, pred, opt);
+  const double reach_deg = stage_plan(opt.algorithm).reach_deg;
+  if (!(opt.angle.degrees() > reach_deg)) return refine_within_reach(mesh, pred, opt);
   RefineOptions reach = opt;
-  reach.angle = AngleBound(kCascadeAngleDeg);
+  reach.angle = AngleBound(reach_deg);
   const RefineReport first = refine_within_reach(mesh, pred, reach);
   Mesh first_mesh = mesh;
   RefineReport report = refine_beyond_reach(mesh, pred, after(opt, steiner_of(first)));
@@ -86,6 +88,7 @@ RefineReport refine_in_stages(Mesh& mesh, Predicates& pred, const RefineOptions&
   }
   report.in_two_stages = true;
   report.first_stage_steiner = steiner_of(first);
+  report.first_stage_angle_deg = reach_deg;
   return report;
 }
 

@@ -133,12 +133,13 @@ struct RefineReport : RefineWork {
   bool stopped_by_cap = false;            // the guard's Steiner point cap was reached
   std::uint64_t steiner_cap = 0;
   CapKind cap_kind = CapKind::Work;
-  // Refined to kCascadeAngleDeg first, then on at the asked bound (refine.cpp): the Steiner points
+  // Refined to the algorithm's single-stage reach first, then on at the asked bound (refine.cpp): the Steiner points
   // of that first stage.
   // If the cap stopped the second stage, its mesh was dropped for the first's: the Steiner points
   // it had inserted.
   bool in_two_stages = false;
   std::uint64_t first_stage_steiner = 0;
+  double first_stage_angle_deg = 0.0;  // the bound of that first stage
   std::uint64_t cascade_steiner_taken_back = 0;
   double guard_length = 0.0;              // the edge-length floor used (0: none)
   bool proven_range = false;              // the guard was off: the paper's theorems cover the run

@@ -16,6 +16,9 @@ deltri's output files with nothing deltri reports about quality.
                                                           Ruppert's triangles, no edge under 1/4 of Ruppert's
                                                           (the second segment LEN long, 0.9 by default)
     paper_algorithms.py chew_crossing DELTRI DEG Q        the same for two segments crossing at DEG degrees
+    paper_algorithms.py near_limit DELTRI INPUT ALG       ALG at -pq34, past what it reaches: no worse than
+                                                          its -pq30 mesh, at most 10 times its triangles,
+                                                          every miss warned of
 
 Every mode first checks that the input has no two segments meeting at an angle under 60 degrees and
 no segments that cross or touch inside (the paper's condition), from the input file itself; each run
@@ -57,9 +60,15 @@ is made twice and must give the same bytes; the run must exit 0.
   (0.5, 0) at DEG degrees, their ends paired at x = 0 and 1 (as in tests/e2e/inputs/tiny_crossing.poly):
   each thin wedge at the crossing is such a strip; Chew made 2,686 and 356,966 triangles at 1 and 0.01
   degrees, -pq20 (Ruppert 120 and 246).
+- near_limit (issue 42): Ruppert's and Chew's algorithms at -pq34 used to run to the Steiner cap on river
+  and airfoil_exterior (708,018 and 251,157 triangles, smallest angles 0.54 and 0.24 degrees). A mode run
+  past what it reaches must stop with a mesh no worse than its -pq30 one: the -pq34 mesh's smallest angle
+  at least the -pq30 mesh's, at most 10 times its triangles, and if any triangle is under 34 degrees the
+  run (without -Q) prints a warning that counts the triangles that miss the bound (the same number).
 Angles are computed in doubles with a tolerance of 1e-9 degrees.
 """
 import json
+import re
 import math
 import os
 import resource
@@ -447,6 +456,31 @@ def compare_chew_ruppert(deltri, inp, label, q, work):
               shortest['ruppert']))
 
 
+def check_near_limit(deltri, inp, algorithm, work):
+    switches = ['--algorithm=' + algorithm]
+    pts, tris, _ = read_mesh(run(deltri, inp, ['-pq30'] + switches, work))
+    low_count, low_worst = len(tris), min(min_angle(pts, t) for t in tris)
+    pts, tris, _ = read_mesh(run(deltri, inp, ['-pq34'] + switches, work))
+    worst = min(min_angle(pts, t) for t in tris)
+    misses = sum(1 for t in tris if min_angle(pts, t) < 34.0 - TOLERANCE)
+    faults = []
+    if worst < low_worst - TOLERANCE:
+        faults.append('-pq34: smallest angle %.4f below the -pq30 mesh\'s %.4f' % (worst, low_worst))
+    if len(tris) > 10 * low_count:
+        faults.append('-pq34: %d triangles, more than 10 times the -pq30 mesh\'s %d' % (len(tris), low_count))
+    d = os.path.join(work, 'loud')
+    os.makedirs(d)
+    shutil.copy(inp, d)
+    r = subprocess.run([deltri, '-pq34'] + switches + [os.path.basename(inp)], cwd=d, capture_output=True,
+                       text=True, timeout=900)
+    warned = re.search(r'warning: .*?(\d+) triangles? miss', r.stderr)
+    if misses and (warned is None or int(warned.group(1)) != misses):
+        faults.append('-pq34: %d triangles under 34 degrees, but the warning says %s' %
+                      (misses, warned.group(0) if warned else 'nothing'))
+    report(faults, '%s %s -pq34: %d triangles (-pq30: %d), smallest angle %.4f (-pq30: %.4f), %d under 34, warned' %
+           (inp, algorithm, len(tris), low_count, worst, low_worst, misses))
+
+
 def report(faults, summary):
     for f in faults[:10]:
         print('FAIL:', f)
@@ -482,6 +516,8 @@ def main(argv):
             check_chew_wedge(argv[2], argv[3], argv[4], argv[5] if len(argv) > 5 else '0.9', work)
         elif mode == 'chew_crossing':
             check_chew_crossing(argv[2], argv[3], argv[4], work)
+        elif mode == 'near_limit':
+            check_near_limit(argv[2], argv[3], argv[4], work)
         elif mode == 'sure_fire':
             check_sure_fire(argv[2], argv[3], argv[4:], work)
         else:
