@@ -24,6 +24,16 @@ bool has_regional_area_bounds(const Pslg* pslg) {
 }
 
 // -D: the subsegments that are not Delaunay (quality/conformity.h), by cause.
+// Where the guard stopped refinement, and why when the sure-fire rule did (Ruppert, Chew and
+// --range-restricted refuse splits through a small input angle, Sec. 6.2: the triangles there are
+// left as the rule leaves them, not forced by the angle as the Terminator's shells would be).
+std::string guard_clause(const RefineReport& q) {
+  if (!q.stopped_by_guard) return "";
+  if (q.sure_fire_refusals == 0) return ", where the termination guard stopped refinement";
+  return ", where the termination guard stopped refinement (" + plural(q.sure_fire_refusals, "split", "splits") +
+         " through a small input angle refused by the sure-fire rule of Sec. 6.2)";
+}
+
 std::string conformity_warning(const ConformityMisses& c, bool guard_stopped) {
   return plural(c.total, "subsegment is", "subsegments are") +
          " not Delaunay: -D asked for a conforming Delaunay mesh, and it is only constrained Delaunay there (" +
@@ -80,7 +90,7 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
                       q->worst_size_excess, q->worst_size_location.x, q->worst_size_location.y);
       const std::string both = std::string(angle) + (*angle && *size ? "; " : "") + size;
       warn(plural(q->bad_triangles_left, "triangle misses", "triangles miss") + " the requested bounds" +
-           (q->stopped_by_guard ? ", where the termination guard stopped refinement" : "") + " (" + both + ")");
+           guard_clause(*q) + " (" + both + ")");
     }
   }
   if (const auto& q = r.refine; q && q->interior_bound_refusals > 0)
