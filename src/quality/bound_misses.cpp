@@ -200,15 +200,22 @@ bool in_small_sector(const Mesh& m, const SegmentVertices& s, VertexId v, Vertex
   return false;
 }
 
-// The smallest angle at junction j between a piece of segment a and a piece of segment b.
+// The smallest angle at junction j between a piece of segment a and a piece of segment b. Each
+// segment has at most two pieces at j, picked out in one pass: a vertex where hundreds of segments
+// meet (spokes from a centre) is asked this for every miss near it.
 double junction_angle(const SegmentVertices& s, VertexId j, std::uint32_t a, std::uint32_t b) {
+  double along_a[2], along_b[2];
+  int na = 0, nb = 0;
+  for (const Spoke& x : s.spokes[j]) {
+    if (x.segment == a && na < 2) along_a[na++] = x.direction;
+    if (x.segment == b && nb < 2) along_b[nb++] = x.direction;
+  }
   double smallest = std::numbers::pi;
-  for (const Spoke& x : s.spokes[j])
-    for (const Spoke& y : s.spokes[j])
-      if (x.segment == a && y.segment == b) {
-        const double d = angle_between(x.direction, y.direction);
-        smallest = std::min({smallest, d, 2 * std::numbers::pi - d});
-      }
+  for (int i = 0; i < na; ++i)
+    for (int k = 0; k < nb; ++k) {
+      const double d = angle_between(along_a[i], along_b[k]);
+      smallest = std::min({smallest, d, 2 * std::numbers::pi - d});
+    }
   return smallest;
 }
 
