@@ -74,8 +74,7 @@ def mesh_figures(path):
         a, b, c = (pts[int(v)] for v in r[1:4])
         for p, q, s in ((a, b, c), (b, c, a), (c, a, b)):
             u, v = (q[0] - p[0], q[1] - p[1]), (s[0] - p[0], s[1] - p[1])
-            cos = (u[0] * v[0] + u[1] * v[1]) / (math.hypot(*u) * math.hypot(*v))
-            worst = min(worst, math.degrees(math.acos(max(-1.0, min(1.0, cos)))))
+            worst = min(worst, math.degrees(math.atan2(abs(u[0] * v[1] - u[1] * v[0]), u[0] * v[0] + u[1] * v[1])))
     return int(rows[0][0]), worst
 
 
@@ -97,8 +96,8 @@ def limits_table(deltri, corpus, work):
             n, worst = mesh_figures(path)
             note = ' cap' if "termination guard's cap" in err else ''
             note = ' taken back' if 'cannot reach this angle bound' in err else note
-            row.append(f'{n:,}, {worst:.2f}°{note}')
-        if not all(c.startswith('exit') for c in row):
+            row.append(f'{n:,}, {worst:.2f}°{note}' if n else 'no triangles')
+        if not all(c.startswith('exit') or c == 'no triangles' for c in row):
             print(f'| {os.path.relpath(src, corpus)} | ' + ' | '.join(row) + ' |', flush=True)
 
 
