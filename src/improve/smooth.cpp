@@ -12,7 +12,7 @@ namespace {
 
 // Angles are measured in doubles (atan2 of a cross and a dot product, a few ulps off); a move must
 // raise the star's smallest angle by more than this, far beyond that rounding, so that "not lower"
-// holds for the exact angles too. The -q test keeps the same distance from the bound.
+// holds for the exact angles too (the same for the sum of a star's smallest angles). The -q test keeps the same distance from the bound.
 constexpr double kAngleSlackDeg = 1e-9;
 
 // The ODT point may lie far off; shorter steps towards it are tried when it is refused.
@@ -36,6 +36,15 @@ double smallest_angle(const Point& a, const Point& b, const Point& c) {
 double area_of(const Point& a, const Point& b, const Point& c) {
   return 0.5 * std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
 }
+
+// A star's smallest angle, and the sum over its triangles of each one's smallest angle (the star's
+// share of the mesh's mean). A move must raise both, each by more than the rounding of its measure:
+// then neither the mesh's smallest angle nor its mean smallest angle can fall.
+struct StarQuality {
+  double least = 180.0;
+  double sum = 0.0;
+  bool better_than(const StarQuality& o) const { return least > o.least + kAngleSlackDeg && sum > o.sum + kAngleSlackDeg; }
+};
 
 // v's star: the edges leaving v, counter-clockwise; triangle i is (v, ring[i], ring[i + 1]).
 struct Star {
@@ -68,7 +77,7 @@ class Smoother {
     if (!gather_star(m_, first, star_)) return false;
     const Point old = m_.points[v];
     if (!meets_bounds(old)) return false;
-    const double before = star_smallest_angle(old);
+    const StarQuality before = quality(old);
     const Point target = odt_point(old);
     if (std::isfinite(target.x) && std::isfinite(target.y))
       for (const double step : kSteps) {
@@ -102,10 +111,15 @@ class Smoother {
     return {sx / total, sy / total};
   }
 
-  double star_smallest_angle(const Point& p) const {
-    double least = 180.0;
-    for (std::size_t i = 0; i < size(); ++i) least = std::min(least, smallest_angle(p, ring(i), ring(i + 1)));
-    return least;
+  // The star's smallest angle and the sum of its triangles' smallest angles, with v at p.
+  StarQuality quality(const Point& p) const {
+    StarQuality q;
+    for (std::size_t i = 0; i < size(); ++i) {
+      const double a = smallest_angle(p, ring(i), ring(i + 1));
+      q.least = std::min(q.least, a);
+      q.sum += a;
+    }
+    return q;
   }
 
   bool triangle_meets_bounds(TriangleId t, const Point& a, const Point& b, const Point& c) const {
@@ -145,32 +159,30 @@ class Smoother {
     return true;
   }
 
-  bool acceptable(const Point& p, double before) {
-    if (!valid_and_delaunay(p)) return false;
-    if (!(star_smallest_angle(p) > before + kAngleSlackDeg)) return false;
-    return meets_bounds(p);
+  bool acceptable(const Point& p, const StarQuality& before) {
+    return quality(p).better_than(before) && valid_and_delaunay(p) && meets_bounds(p);
   }
 
   // Where the ODT point lowers the star's smallest angle: a compass search on that angle (the
   // max-min angle objective of optimisation-based smoothing), eight directions at a step that
   // starts at a tenth of the shortest spoke and halves when no direction gains; each step taken
   // passes every check, so the search can stop anywhere.
-  Point raise_smallest_angle(const Point& old, double before) {
+  Point raise_smallest_angle(const Point& old, const StarQuality& before) {
     double h = 0.1 * shortest_spoke(old);
     Point at = old;
-    double best = before;
+    StarQuality best = before;
     for (int k = 0; k < kSearchSteps && h > 0.0; ++k) {
       Point pick = at;
-      double gain = best;
+      StarQuality gain = best;
       for (const auto& d : kDirections) {
-        const Point q{at.x + h * d[0], at.y + h * d[1]};
-        const double a = star_smallest_angle(q);
-        if (a > gain) {
-          gain = a;
-          pick = q;
+        const Point p{at.x + h * d[0], at.y + h * d[1]};
+        const StarQuality q = quality(p);
+        if (q.better_than(best) && q.least > gain.least) {
+          gain = q;
+          pick = p;
         }
       }
-      if (pick != at && gain > best + kAngleSlackDeg && acceptable(pick, best)) {
+      if (pick != at && valid_and_delaunay(pick) && meets_bounds(pick)) {
         at = pick;
         best = gain;
       } else {
