@@ -433,3 +433,11 @@ set_tests_properties(e2e.outputs.names PROPERTIES TIMEOUT 300)
 # junctions, where Triangle 1.6 meets 30 ----
 add_test(NAME e2e.shells.guitar.pq30a0.054 COMMAND ${QUALITY_BOUND} ${E2E_DATA}/guitar.poly -pq30a0.054 30 0.054)
 e2e_case(shells.guitar.pq30a0.054.verify ${E2E_DATA}/guitar.poly -pq30a0.054 --no-warning --verify "--refined --min-angle 30 --max-area 0.054")
+
+# ---- --smooth (docs/refinement.md, "Mesh improvement (--smooth)"): samples and generated polygons
+# meshed without and with the pass; -C, deltri_mesh_verify with the bounds, --threads=1 and 2 the
+# same files, the smallest angle not lower and the mean smallest angle higher. ----
+add_test(NAME e2e.smooth
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/smooth.sh $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify>
+                 ${E2E_DATA} ${E2E_INPUTS})
+set_tests_properties(e2e.smooth PROPERTIES TIMEOUT 300)
