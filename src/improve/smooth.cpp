@@ -22,15 +22,40 @@ constexpr double kSteps[] = {1.0, 0.5, 0.25};
 constexpr double kDiagonal = 0.70710678118654752;
 constexpr double kDirections[8][2] = {{1, 0}, {kDiagonal, kDiagonal}, {0, 1}, {-kDiagonal, kDiagonal},
                                       {-1, 0}, {-kDiagonal, -kDiagonal}, {0, -1}, {kDiagonal, -kDiagonal}};
-constexpr int kSearchSteps = 12;
+constexpr int kSearchSteps = 6;
 
 double angle_at(const Point& a, const Point& b, const Point& c) {
   const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
   return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * (180.0 / std::numbers::pi);
 }
 
+
+
+// atan(t) for t in [0, 1] to about 1e-5 radians (a minimax polynomial): the compass search only
+// ranks its candidates with it; what is kept is judged by atan2.
+double atan_unit(double t) {
+  const double t2 = t * t;
+  return t * (0.9998660 + t2 * (-0.3302995 + t2 * (0.1801410 + t2 * (-0.0851330 + t2 * 0.0208351))));
+}
+
+// The angle at a, in degrees, to about 1e-3 degrees.
+double rough_angle_at(const Point& a, const Point& b, const Point& c) {
+  const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
+  const double cross = std::fabs(ux * vy - uy * vx), dot = ux * vx + uy * vy, run = std::fabs(dot);
+  const double r = run >= cross ? atan_unit(cross / run) : 0.5 * std::numbers::pi - atan_unit(run / cross);
+  return (dot < 0.0 ? std::numbers::pi - r : r) * (180.0 / std::numbers::pi);
+}
+
+enum class Measure { Exact, Rough };
+
+// The smallest angle is the one opposite the shortest edge (law of sines): one angle, not three.
+// Where two edges are within rounding of equal, so are their angles.
+template <Measure measure = Measure::Exact>
 double smallest_angle(const Point& a, const Point& b, const Point& c) {
-  return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)});
+  const auto at = measure == Measure::Exact ? angle_at : rough_angle_at;
+  const double ab = squared_distance(a, b), bc = squared_distance(b, c), ca = squared_distance(c, a);
+  if (ab <= bc && ab <= ca) return at(c, a, b);
+  return bc <= ca ? at(a, b, c) : at(b, c, a);
 }
 
 double area_of(const Point& a, const Point& b, const Point& c) {
@@ -74,7 +99,7 @@ class Smoother {
 
   // One vertex: true when it moved.
   bool improve(VertexId v, EdgeRef first) {
-    if (!gather_star(m_, first, star_)) return false;
+    if (!gather_star(m_, first, star_) || !changed_since_last_look(v)) return false;
     const Point old = m_.points[v];
     if (!meets_bounds(old)) return false;
     const StarQuality before = quality(old);
@@ -84,19 +109,40 @@ class Smoother {
         const Point p{old.x + step * (target.x - old.x), old.y + step * (target.y - old.y)};
         if (p == old) break;
         if (acceptable(p, before)) {
-          m_.points[v] = p;
+          move(v, p);
           return true;
         }
       }
     const Point p = raise_smallest_angle(old, before);
     if (p == old) return false;
-    m_.points[v] = p;
+    move(v, p);
     return true;
   }
 
  private:
   std::size_t size() const { return star_.out.size(); }
   const Point& ring(std::size_t i) const { return m_.points[star_.ring[i]]; }
+
+  // A vertex whose star has not moved since it was last looked at would be refused again: the
+  // pass is deterministic. Every accepted move is numbered; each vertex keeps the number of the
+  // last move at its last look, and the number of its own last move.
+  bool changed_since_last_look(VertexId v) {
+    if (looked_at_.empty()) {
+      looked_at_.assign(m_.vertex_count(), kNever);
+      moved_at_.assign(m_.vertex_count(), 0);
+    }
+    const std::uint64_t last = looked_at_[v];
+    looked_at_[v] = moves_;
+    if (last == kNever || moved_at_[v] > last) return true;
+    for (std::size_t i = 0; i < size(); ++i)
+      if (moved_at_[star_.ring[i]] > last) return true;
+    return false;
+  }
+
+  void move(VertexId v, const Point& p) {
+    m_.points[v] = p;
+    moved_at_[v] = ++moves_;
+  }
 
   // The area-weighted mean of the star's circumcentres (Chen and Xu's ODT update for a uniform density).
   Point odt_point(const Point& p) const {
@@ -112,10 +158,11 @@ class Smoother {
   }
 
   // The star's smallest angle and the sum of its triangles' smallest angles, with v at p.
+  template <Measure measure = Measure::Exact>
   StarQuality quality(const Point& p) const {
     StarQuality q;
     for (std::size_t i = 0; i < size(); ++i) {
-      const double a = smallest_angle(p, ring(i), ring(i + 1));
+      const double a = smallest_angle<measure>(p, ring(i), ring(i + 1));
       q.least = std::min(q.least, a);
       q.sum += a;
     }
@@ -165,26 +212,28 @@ class Smoother {
 
   // Where the ODT point lowers the star's smallest angle: a compass search on that angle (the
   // max-min angle objective of optimisation-based smoothing), eight directions at a step that
-  // starts at a tenth of the shortest spoke and halves when no direction gains; each step taken
-  // passes every check, so the search can stop anywhere.
+  // starts at a tenth of the shortest spoke and halves when no direction gains. The directions are
+  // ranked by rough angles; the one picked must pass every check with atan2's, so each step taken
+  // is a move that could be kept on its own, and the search can stop anywhere.
   Point raise_smallest_angle(const Point& old, const StarQuality& before) {
     double h = 0.1 * shortest_spoke(old);
     Point at = old;
     StarQuality best = before;
     for (int k = 0; k < kSearchSteps && h > 0.0; ++k) {
       Point pick = at;
-      StarQuality gain = best;
+      const StarQuality here = quality<Measure::Rough>(at);
+      StarQuality gain = here;
       for (const auto& d : kDirections) {
         const Point p{at.x + h * d[0], at.y + h * d[1]};
-        const StarQuality q = quality(p);
-        if (q.better_than(best) && q.least > gain.least) {
+        const StarQuality q = quality<Measure::Rough>(p);
+        if (q.better_than(here) && q.least > gain.least) {
           gain = q;
           pick = p;
         }
       }
-      if (pick != at && valid_and_delaunay(pick) && meets_bounds(pick)) {
+      if (pick != at && acceptable(pick, best)) {
         at = pick;
-        best = gain;
+        best = quality(pick);
       } else {
         h *= 0.5;
       }
@@ -202,6 +251,9 @@ class Smoother {
   Predicates& pred_;
   const SmoothOptions& opt_;
   Star star_;
+  static constexpr std::uint64_t kNever = ~std::uint64_t{0};
+  std::vector<std::uint64_t> looked_at_, moved_at_;
+  std::uint64_t moves_ = 0;
 };
 
 // An edge leaving each free vertex (kNone for the others), in vertex id order.
