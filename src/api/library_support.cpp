@@ -18,9 +18,9 @@ std::string without_suffix(std::string text, const std::string& suffix) {
 
 // The long options the library takes: how many threads, and the paper's refinement policies.
 bool is_library_option(const std::string& word) {
-  for (const char* prefix : {"--threads=", "--algorithm=", "--interior-bound="})
+  for (const char* prefix : {"--threads=", "--algorithm=", "--interior-bound=", "--smooth="})
     if (word.rfind(prefix, 0) == 0) return true;
-  return word == "--range-restricted" || word == "--corner-lopping";
+  return word == "--range-restricted" || word == "--corner-lopping" || word == "--smooth";
 }
 
 // The switches may end with words of the options the library takes beyond Triangle's letters
@@ -39,7 +39,7 @@ std::vector<std::string> long_options_of(const std::string& switches, std::strin
     } else if (word.rfind("--", 0) == 0 || !letters.empty()) {
       throw api::Error(DELTRI_USAGE_ERROR, word + ": the switches are one word of letters, then optionally "
                                                   "--threads=N, --algorithm=NAME, --interior-bound=N, "
-                                                  "--range-restricted, --corner-lopping");
+                                                  "--range-restricted, --corner-lopping, --smooth[=N]");
     } else {
       letters = word;
     }

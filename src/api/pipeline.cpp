@@ -20,6 +20,7 @@
 #include "quality/conformity.h"
 #include "quality/check_mesh.h"
 #include "refine/area_field.h"
+#include "improve/smooth.h"
 #include "refine/refine.h"
 #include "util/memory_budget.h"
 
@@ -185,6 +186,20 @@ BoundRequest bound_request(const Switches& sw, const PipelineSource& source, con
   return r;
 }
 
+// --smooth: after refinement (and its -D account), on one thread in vertex order, so that the
+// mesh is the same for every --threads.
+void smooth(Mesh& mesh, const Switches& sw, const PipelineSource& source, RunReport& report) {
+  SmoothOptions opt;
+  opt.rounds = sw.smooth_rounds;
+  opt.angle = angle_bound(sw);
+  opt.size = size_bounds(sw, area_bounds_read(source));
+  opt.size_test = source.size_test;
+  opt.conforming = conforming_expected(sw, report);
+  Predicates pred;
+  report.smooth = smooth_mesh(mesh, pred, opt);
+  report.counters.add(pred.counters);
+}
+
 }  // namespace
 
 RefineOptions refine_options(const Switches& sw, bool area_file) {
@@ -279,6 +294,11 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     // counted (and warned of), and the checks then hold the mesh to the constrained property.
     if (sw.conforming_delaunay) report.conformity = count_conformity_misses(mesh);
     check_stage(mesh, "refinement", conforming_expected(sw, report));
+  }
+  if (sw.smooth_rounds > 0) {
+    smooth(mesh, sw, source, report);
+    stage("smoothing");
+    check_stage(mesh, "smoothing", conforming_expected(sw, report));
   }
   // Once, at the end: every marker follows from input markers, subsegments and the boundary.
   assign_boundary_markers(mesh, pslg.has_markers, threads_to_use(sw));

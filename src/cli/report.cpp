@@ -216,6 +216,10 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
       std::fprintf(out_, "  subsegments left whole because doubles cannot split them: %llu\n",
                   static_cast<unsigned long long>(q->locked_subsegments));
   }
+  if (const auto& s = r.smooth)
+    std::fprintf(out_, "Smoothing (--smooth): %s, %llu of %llu vertex moves kept\n",
+                plural(static_cast<std::size_t>(s->rounds), "round", "rounds").c_str(),
+                static_cast<unsigned long long>(s->moved), static_cast<unsigned long long>(s->tried));
   if (const auto& b = r.misses) {
     std::fprintf(out_, "Bounds (final mesh): %llu triangles miss them (%llu below the angle, %llu above the size)\n",
                 static_cast<unsigned long long>(b->total), static_cast<unsigned long long>(b->below_angle),

@@ -17,6 +17,7 @@
 #include "quality/bound_misses.h"
 #include "quality/check_mesh.h"
 #include "quality/conformity.h"
+#include "improve/smooth.h"
 #include "refine/refine.h"
 
 namespace deltri {
@@ -39,6 +40,7 @@ struct RunReport {
   std::optional<RegionReport> regions;
   std::optional<CheckReport> check;
   std::optional<RefineReport> refine;
+  std::optional<SmoothReport> smooth;  // --smooth
   bool area_file = false;         // per-triangle area bounds were read (-r with a bare -a, or a .area)
   std::optional<BoundMisses> misses;  // the final mesh against the -q/-a/-u bounds, when any was asked
   std::optional<ConformityMisses> conformity;  // -D: the subsegments that are not Delaunay

@@ -161,6 +161,17 @@ void set_interior_bound(S& s, const std::string* v) {
   s.interior_bound = *v == "1" ? 1 : 2;
 }
 
+void set_smooth(S& s, const std::string* v) {
+  if (!v) {
+    s.smooth_rounds = 3;
+    return;
+  }
+  const bool digits = !v->empty() && v->size() <= 4 && v->find_first_not_of("0123456789") == std::string::npos;
+  const int rounds = digits ? std::stoi(*v) : 0;
+  if (rounds < 1) throw UsageError("--smooth=" + *v + ": give a whole number of rounds from 1 to 9999");
+  s.smooth_rounds = rounds;
+}
+
 constexpr std::array kLongOptions = {
     LongOption{"msh", "FILE", true, "also write the mesh as Gmsh MSH (version and encoding: --msh-format); FILE - is standard output",
                [](S& s, const std::string* v) { request(s.msh, v, "msh"); }},
@@ -220,6 +231,11 @@ constexpr std::array kLongOptions = {
                "with -p: corner-lopping (Shewchuk 2001, Sec. 6.1): shield each input angle under 60 degrees at "
                "radius lfs/3, refine around the shields, fill the lopped corners with fans",
                [](S& s, const std::string*) { s.corner_lopping = true; }},
+    LongOption{"smooth", "N", true,
+               "after refinement, N rounds (default 3) of moving the free interior vertices towards their optimal "
+               "Delaunay position, each move kept only if its star's smallest angle rises and every bound and the "
+               "constrained Delaunay property still hold",
+               set_smooth},
     LongOption{"threads", "N", false,
                "refine large meshes (and build the triangulation, write the files) on up to N threads (default: all cores); "
                "the output is the same for every N",

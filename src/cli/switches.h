@@ -28,6 +28,7 @@ struct Switches {
   int interior_bound = 0;                            // --interior-bound=1|2 (Sec. 7.2)
   bool range_restricted = false;                     // --range-restricted (Sec. 7.3)
   bool corner_lopping = false;                       // --corner-lopping (Sec. 6.1)
+  int smooth_rounds = 0;                             // --smooth[=N]: N rounds of the improvement pass (0: none)
   bool regional_attributes = false;  // -A
   bool convex_hull = false;      // -c
   bool conforming_delaunay = false;  // -D

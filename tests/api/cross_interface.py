@@ -42,6 +42,8 @@ CASES = [
     ('chew, interior bound', 'pq30 --algorithm=chew --interior-bound=1', {}, 'mesh'),
     ('region, threads', 'pq30aA --threads=2', {'regions': REGION}, 'mesh'),
     ('region, range-restricted', 'pq30aA --range-restricted', {'regions': REGION}, 'mesh'),
+    ('region, smooth', 'pq30aA --smooth=2', {'regions': REGION}, 'mesh'),
+    ('smooth=0', 'pq30 --smooth=0', {}, 2),
     ('NaN hole, threads', 'pq30 --threads=2', {'holes': [[float('nan'), 1.5]]}, 1),
     ('NaN region, ruppert', 'pq30A --algorithm=ruppert', {'regions': [[0.5, float('nan'), 7, 0]]}, 1),
     ('infinite vertex', 'pq30 --range-restricted', {'vertices': POINTS[:2] + [[float('inf'), 3]] + POINTS[3:]}, 1),

@@ -307,15 +307,13 @@ endforeach()
 
 # ---- small input angles force only the triangles inside them (issue 42): the unit square with 360
 # spokes from its centre, one degree apart (tests/e2e/spokes.py draws it and checks every triangle
-# away from the centre against the bound with its own angles) ----
+# outside the 1-degree angles against the bound with its own angles) ----
 foreach(q 20 30)
   add_test(NAME e2e.spokes.pq${q}
            COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/e2e/spokes.py $<TARGET_FILE:deltri>
                    $<TARGET_FILE:deltri_mesh_verify> ${CMAKE_CURRENT_BINARY_DIR}/spokes.pq${q} ${q})
   set_tests_properties(e2e.spokes.pq${q} PROPERTIES TIMEOUT 300)
 endforeach()
-add_test(NAME e2e.shells.guitar.pq30a0.054 COMMAND ${QUALITY_BOUND} ${E2E_DATA}/guitar.poly -pq30a0.054 30 0.054)
-e2e_case(shells.guitar.pq30a0.054.verify ${E2E_DATA}/guitar.poly -pq30a0.054 --no-warning --verify "--refined --min-angle 30 --max-area 0.054")
 
 # ---- --strict: exit 3 when triangles miss the bounds for reasons other than a small input angle,
 # and on an empty mesh; the mesh is still written ----
@@ -448,3 +446,13 @@ set_tests_properties(e2e.outputs.names PROPERTIES TIMEOUT 300)
 # ---- small input angles force only the triangles inside them (issue 42): guitar.poly at
 # -q30a0.054 kept three triangles of 28.7-29.3 degrees across equal-shell edges beside 45-degree
 # junctions, where Triangle 1.6 meets 30 ----
+add_test(NAME e2e.shells.guitar.pq30a0.054 COMMAND ${QUALITY_BOUND} ${E2E_DATA}/guitar.poly -pq30a0.054 30 0.054)
+e2e_case(shells.guitar.pq30a0.054.verify ${E2E_DATA}/guitar.poly -pq30a0.054 --no-warning --verify "--refined --min-angle 30 --max-area 0.054")
+
+# ---- --smooth (docs/refinement.md, "Mesh improvement (--smooth)"): samples and generated polygons
+# meshed without and with the pass; -C, deltri_mesh_verify with the bounds, --threads=1 and 2 the
+# same files, the smallest angle not lower and the mean smallest angle higher. ----
+add_test(NAME e2e.smooth
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/smooth.sh $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify>
+                 ${E2E_DATA} ${E2E_INPUTS})
+set_tests_properties(e2e.smooth PROPERTIES TIMEOUT 300)
