@@ -1,6 +1,7 @@
 #include "cli/progress_meter.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 
 namespace deltri {
@@ -19,6 +20,7 @@ bool shows_rate(const char* stage) {
 ProgressMeter::ProgressMeter(const Switches& sw, std::FILE* out, bool terminal)
     : on_(sw.progress > 0 || (sw.progress == 0 && !sw.quiet)), forced_(sw.progress > 0), terminal_(terminal),
       out_(out) {
+  if (const char* tick = std::getenv(kTickVariable)) tick_ = std::chrono::milliseconds(std::clamp(std::atoi(tick), 1, 10000));
   // Without a terminal there is no line to rewrite: the stage lines need no thread of their own
   // unless some are held back for kDelay.
   if (on_ && (terminal_ || !forced_)) thread_ = std::thread([this] { watch(); });
@@ -71,7 +73,7 @@ std::string ProgressMeter::meter_line(double seconds) const {
 
 void ProgressMeter::watch() {
   std::unique_lock lock(mutex_);
-  while (!wake_.wait_for(lock, kTick, [this] { return stopping_; })) {
+  while (!wake_.wait_for(lock, tick_, [this] { return stopping_; })) {
     const auto now = std::chrono::steady_clock::now();
     const std::uint32_t stage = progress_.stage_number.load(std::memory_order_acquire);
     if (stage != stage_seen_) {  // a new stage: its counts start afresh

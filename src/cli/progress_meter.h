@@ -25,6 +25,9 @@ class ProgressMeter {
  public:
   static constexpr std::chrono::milliseconds kDelay{2000};
   static constexpr std::chrono::milliseconds kTick{250};
+  // Test hook: DELTRI_PROGRESS_TICK_MS=n in the environment rewrites the meter line every n ms
+  // instead of kTick, so that a test's short run shows the line updating (docs/manual.md).
+  static constexpr const char* kTickVariable = "DELTRI_PROGRESS_TICK_MS";
 
   // Off with -Q or --no-progress; on from the start with --progress; else on after kDelay.
   ProgressMeter(const Switches& sw, std::FILE* out, bool terminal);
@@ -64,6 +67,7 @@ class ProgressMeter {
   std::int64_t last_triangles_ = -1;     // for the rate: triangles at last_tick_
   std::chrono::steady_clock::time_point last_tick_ = start_;
   double rate_ = 0;
+  std::chrono::milliseconds tick_ = kTick;
   std::thread thread_;
 };
 

@@ -145,11 +145,20 @@ MarkedEdges marked_edges(const Mesh& mesh, bool markers) {
   return m;
 }
 
+// 3 pixels wide where few, thinner where thousands would cover the triangles between them.
+long long edge_width(std::size_t edges) {
+  const double width = 30.0 * std::sqrt(2000.0 / static_cast<double>(std::max<std::size_t>(edges, 1)));
+  return std::llround(std::clamp(width, 6.0, 30.0));
+}
+
 void write_edges(TextWriter& out, const Mesh& mesh, const Canvas& canvas, const MarkedEdges& edges, bool markers) {
-  std::size_t rank = 0;
+  std::size_t rank = 0, total = 0;
+  for (const auto& entry : edges.by_marker) total += entry.second.size();
+  const std::string width = std::to_string(edge_width(total));
   for (const auto& [marker, list] : edges.by_marker) {
     const char* colour = markers && marker != 0 ? MarkedEdges::colour(rank++) : "black";
-    out.text(std::string("<path fill=\"none\" stroke=\"") + colour + "\" stroke-width=\"30\" stroke-linecap=\"round\" class=\"marker\" data-marker=\"");
+    out.text(std::string("<path fill=\"none\" stroke=\"") + colour + "\" stroke-width=\"" + width +
+             "\" stroke-linecap=\"round\" class=\"marker\" data-marker=\"");
     out.integer(markers ? marker : -1);
     out.text("\" d=\"");
     for (EdgeRef e : list) {
