@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <string_view>
 
 #include "geometry/box.h"
 
@@ -24,12 +25,12 @@ constexpr std::array<const char*, 10> kMarkerColour = {"#1b3a8c", "#c51b7d", "#0
                                                        "#8c2d04", "#2e7d32", "#ff00ff", "#5a5a5a", "#00bfff"};
 constexpr std::size_t kMarkersListed = 30;  // beyond: one legend entry, "other markers"
 
-// The legend's type: its font size and line height in canvas units, and the width given to each
-// character (DejaVu Sans, the usual fallback for sans-serif, has digits of 0.64 em and most letters narrower).
+// The legend's type: its font size and line height in canvas units, and the width given to a
+// digit or an ordinary letter (DejaVu Sans, the usual fallback for sans-serif: digits 0.64 em).
 constexpr long long kFont = 150;
 constexpr long long kRow = 300;
 constexpr long long kSwatch = 250;
-constexpr double kCharWidth = 0.68;
+constexpr double kCharWidth = 0.65;
 
 double angle_at(const Point& p, const Point& q, const Point& r) {
   const double ux = q.x - p.x, uy = q.y - p.y, vx = r.x - p.x, vy = r.y - p.y;
@@ -75,10 +76,16 @@ struct LegendEntry {
   long long x = 0, y = 0;        // the swatch's top left corner (the heading's text box's)
 };
 
+// An upper bound on a legend text's width: each character at its class's widest advance in DejaVu
+// Sans (digits 0.64 em, most letters under that, m and w wider, narrow letters and punctuation far narrower).
 long long text_width(const std::string& text) {
-  long long chars = 0;
-  for (unsigned char c : text) chars += (c & 0xc0) != 0x80;  // UTF-8: count characters, not bytes
-  return static_cast<long long>(std::ceil(static_cast<double>(chars) * kCharWidth * kFont));
+  double em = 0;
+  for (unsigned char c : text) {
+    if ((c & 0xc0) == 0x80) continue;  // a UTF-8 continuation byte: the character is counted once
+    em += c == 'm' ? 0.98 : c == 'w' ? 0.82 : std::string_view(" :;,.-()").find(static_cast<char>(c)) != std::string_view::npos ? 0.4
+        : std::string_view("fijlrt").find(static_cast<char>(c)) != std::string_view::npos ? 0.42 : kCharWidth;
+  }
+  return static_cast<long long>(std::ceil(em * kFont));
 }
 
 long long entry_width(const LegendEntry& e) { return (e.colour ? kSwatch + 60 : 0) + text_width(e.text); }
