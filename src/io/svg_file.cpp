@@ -102,10 +102,19 @@ std::array<long long, 2> lay_out(std::vector<LegendEntry>& entries, long long wi
   // Filled a column at a time, so that the entries read in order down each column.
   const long long columns = below ? std::max(1LL, (room + 200) / column) : 0;
   const long long per_column = below ? (n + columns - 1) / columns : std::max(1LL, room / kRow);
+  // Below the mesh, each group (a heading and its entries) gets a column of its own where there are enough.
+  std::vector<long long> group_of(entries.size(), 0), row_in_group(entries.size(), 0);
+  long long groups = 0;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (i > 0 && !entries[i].colour) ++groups;
+    group_of[i] = groups;
+    row_in_group[i] = i > 0 && group_of[i - 1] == groups ? row_in_group[i - 1] + 1 : 0;
+  }
+  const bool by_group = below && groups + 1 <= columns;
   long long far_x = x0, far_y = y0;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const long long k = static_cast<long long>(i);
-    const long long col = k / per_column, row = k % per_column;
+    const long long col = by_group ? group_of[i] : k / per_column, row = by_group ? row_in_group[i] : k % per_column;
     entries[i].x = x0 + col * column;
     entries[i].y = y0 + row * kRow;
     far_x = std::max(far_x, entries[i].x + entry_width(entries[i]));
