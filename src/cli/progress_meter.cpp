@@ -18,8 +18,8 @@ bool shows_rate(const char* stage) {
 }  // namespace
 
 ProgressMeter::ProgressMeter(const Switches& sw, std::FILE* out, bool terminal)
-    : on_(sw.progress > 0 || (sw.progress == 0 && !sw.quiet)), forced_(sw.progress > 0), terminal_(terminal),
-      out_(out) {
+    : on_(sw.progress > 0 || (sw.progress == 0 && !sw.quiet && !std::getenv(kOffVariable))), forced_(sw.progress > 0),
+      terminal_(terminal), out_(out) {
   if (const char* tick = std::getenv(kTickVariable)) tick_ = std::chrono::milliseconds(std::clamp(std::atoi(tick), 1, 10000));
   // Without a terminal there is no line to rewrite: the stage lines need no thread of their own
   // unless some are held back for kDelay.

@@ -28,6 +28,9 @@ class ProgressMeter {
   // Test hook: DELTRI_PROGRESS_TICK_MS=n in the environment rewrites the meter line every n ms
   // instead of kTick, so that a test's short run shows the line updating (docs/manual.md).
   static constexpr const char* kTickVariable = "DELTRI_PROGRESS_TICK_MS";
+  // DELTRI_NO_PROGRESS set (to anything) makes --no-progress the default: the test suite sets it,
+  // so that a run slowed past kDelay by a busy machine writes the same standard error as before.
+  static constexpr const char* kOffVariable = "DELTRI_NO_PROGRESS";
 
   // Off with -Q or --no-progress; on from the start with --progress; else on after kDelay.
   ProgressMeter(const Switches& sw, std::FILE* out, bool terminal);

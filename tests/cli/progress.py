@@ -18,6 +18,7 @@ import sys
 import tempfile
 
 DELTRI, SOURCE = sys.argv[1], sys.argv[2]
+os.environ.pop("DELTRI_NO_PROGRESS", None)  # the suite's default off; this test checks the real default
 STAGE = re.compile(r"^deltri: (read|Delaunay|segments and holes|refinement|check|write) \d+\.\d\d s"
                    r"(, (\d+) triangles(, \d+ triangles/s)?)?$")
 METER = re.compile(r"^deltri: [a-zA-Z ]+\.\.\. \d+\.\d s(, about \d+ triangles, -?\d+ triangles/s, "
@@ -99,6 +100,10 @@ try:
         check(run_pipe(args + flags, env) == "", f"{flags} off a terminal wrote to standard error")
     # Without a switch a short run (well under 2 s of work) shows nothing.
     check(run_pipe(["-pq", "guitar.poly"]) == "", "a short run without --progress wrote progress")
+    # DELTRI_NO_PROGRESS turns the default off, not an explicit --progress.
+    quiet_env = dict(os.environ, DELTRI_NO_PROGRESS="1", DELTRI_PROGRESS_TICK_MS="5")
+    check(run_pty(["-Q", "-pq30a0.0005", "guitar.poly"], quiet_env) == "", "DELTRI_NO_PROGRESS: the meter still shown")
+    check(len(run_pipe(args + ["--progress"], quiet_env).splitlines()) == 5, "DELTRI_NO_PROGRESS silenced --progress")
 finally:
     shutil.rmtree(work, ignore_errors=True)
 
