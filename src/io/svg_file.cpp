@@ -290,6 +290,21 @@ void write_vertex_numbers(TextWriter& out, const Mesh& mesh, const Canvas& canva
   out.text("</g>\n");
 }
 
+// A mesh without triangles (every input vertex outside the domain, or collinear): its vertices as
+// dots, so that the picture shows what was read rather than a blank frame.
+void write_vertex_dots(TextWriter& out, const Mesh& mesh, const Canvas& canvas, const VertexNumbering& number) {
+  out.text("<g fill=\"#444\">\n");
+  for (VertexId v{0}; v < mesh.vertex_count(); ++v) {
+    if (!number.written(v) || mesh.kind[v] == VertexKind::Duplicate || mesh.kind[v] == VertexKind::Dead) continue;
+    out.text("<circle r=\"40\" cx=\"");
+    out.integer(canvas.x(mesh.points[v]));
+    out.text("\" cy=\"");
+    out.integer(canvas.y(mesh.points[v]));
+    out.text("\"/>\n");
+  }
+  out.text("</g>\n");
+}
+
 }  // namespace
 
 double smallest_angle_degrees(const Point& a, const Point& b, const Point& c) {
@@ -315,6 +330,7 @@ void write_svg_file(ByteSink& sink, const Mesh& mesh, const SvgOptions& options)
   TextWriter out(sink);
   write_header(out, std::max(canvas.width(), far_x), std::max(canvas.height(), far_y));
   write_triangles(out, mesh, canvas, shade);
+  if (mesh.live_triangles() == 0) write_vertex_dots(out, mesh, canvas, number);
   write_edges(out, mesh, canvas, edges, markers);
   for (const Point& p : options.holes) {
     if (!canvas.inside(p)) continue;
