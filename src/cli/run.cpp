@@ -301,9 +301,13 @@ int run(const Switches& sw) {
   });
   meter.begin("write");
   const Mesh& mesh = result.mesh;
-  if (report.sweepline_fell_back) messages.notice("-F: rounding broke the sweepline on this input; divide and conquer was used");
+  // Messages wait until the meter has stopped, so that none is written into its line.
+  const auto sweepline_notice = [&] {
+    if (report.sweepline_fell_back) messages.notice("-F: rounding broke the sweepline on this input; divide and conquer was used");
+  };
   if (result.check_failed) {
     meter.stop();
+    sweepline_notice();
     messages.check_failed(*report.check);
     return kExitCheck;
   }
@@ -321,9 +325,10 @@ int run(const Switches& sw) {
   refuse_overwriting_inputs(report, in, pslg);
   refuse_vertices_in_no_file(sw, in, pslg, &mesh, report.input_vertices);
   const CommitNotes notes = outputs.commit(interrupt_listener());
-  report_commit_notes(notes);
   timer.stage("write", -1);
   meter.stop();
+  sweepline_notice();
+  report_commit_notes(notes);
   report.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   messages.finished(mesh, report);
   return status;
