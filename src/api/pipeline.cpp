@@ -228,7 +228,14 @@ bool refinement_wanted(const Switches& sw, const PipelineSource& source) {
 
 PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Switches& sw, RunReport& report,
                             const StageListener& stage_listener) {
+  Progress* const progress = source.progress;
+  const auto begin = [progress](const char* name) {
+    if (progress) progress->begin(name);
+  };
+  PipelineResult result;
+  Mesh& mesh = result.mesh;
   const auto stage = [&](const char* name) {
+    if (progress) progress->set_triangles(mesh.live_triangles());
     if (stage_listener) stage_listener(name);
   };
   const bool rebuilding = source.previous != nullptr;
@@ -241,17 +248,17 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
   report.input_segments = pslg.segments.size();
   stage("read");
 
-  PipelineResult result;
-  Mesh& mesh = result.mesh;
   CornerLopping lopping;
   if (sw.corner_lopping && source.is_poly && !rebuilding) lopping = lop_corners_of(pslg, sw);
   mesh = mesh_from_pslg(pslg);
   AreaField area_field;
   if (rebuilding) {
+    begin("mesh reconstruction");
     rebuild(mesh, pslg, source, sw, report, area_field);
     stage("mesh reconstruction");
     check_stage(mesh, "mesh reconstruction");
   } else {
+    begin("Delaunay");
     const DelaunayReport dt = delaunay_triangulate(mesh, sw.algorithm, threads_to_use(sw));
     report.duplicates = dt.duplicates.size();
     // As for a header of one or two vertices: duplicates merged, nothing could be triangulated.
@@ -265,6 +272,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     stage("Delaunay");
     check_stage(mesh, "Delaunay");
     if (source.is_poly) {
+      begin("segments and holes");
       constrain(mesh, pslg, dt, sw, report);
       std::vector<Pslg::Segment>().swap(pslg.segments);  // in the mesh now; refinement's peak is later
       stage("segments and holes");
@@ -282,6 +290,9 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     opt.size_test = source.size_test;
     opt.area_field = &area_field;
     opt.straight_chains = rebuilding;
+    opt.progress = progress;
+    if (progress) progress->refine_start_triangles.store(mesh.live_triangles(), std::memory_order_relaxed);
+    begin("refinement");
     if (lopping.apices > 0) {
       opt.lopped_apices = &lopping.apex;
       opt.lopped_sectors = &lopping.sectors;
@@ -296,10 +307,12 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     check_stage(mesh, "refinement", conforming_expected(sw, report));
   }
   if (sw.smooth_rounds > 0) {
+    begin("smoothing");
     smooth(mesh, sw, source, report);
     stage("smoothing");
     check_stage(mesh, "smoothing", conforming_expected(sw, report));
   }
+  begin("boundary markers");
   // Once, at the end: every marker follows from input markers, subsegments and the boundary.
   assign_boundary_markers(mesh, pslg.has_markers, threads_to_use(sw));
 
@@ -308,6 +321,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     opt.conforming = conforming_expected(sw, report);
     // Split points on hull edges are rounded, so a refined hull is convex only up to rounding.
     opt.convex_hull_expected = !source.is_poly && !report.refine && !rebuilding;
+    begin("check");
     report.check = check_mesh(mesh, opt);
     stage("check");
     if (!report.check->ok()) {

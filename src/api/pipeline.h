@@ -18,6 +18,7 @@
 #include "pslg/pslg.h"
 #include "refine/refine.h"
 #include "refine/size_test.h"
+#include "util/progress.h"
 
 namespace deltri {
 
@@ -35,6 +36,7 @@ struct PipelineSource {
   bool is_poly = false;                    // segments, holes and regions apply
   const PreviousMesh* previous = nullptr;  // -r, else nullptr
   const SizeTest* size_test = nullptr;     // a caller's size test (-u's callback), else nullptr
+  Progress* progress = nullptr;            // a meter's counts (util/progress.h), else nullptr
 };
 
 struct PipelineResult {

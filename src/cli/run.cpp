@@ -8,8 +8,11 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "api/pipeline.h"
 #include "cli/json_report.h"
+#include "cli/progress_meter.h"
 #include "cli/report.h"
 #include "cli/surface_run.h"
 #include "io/area_file.h"
@@ -33,17 +36,22 @@
 namespace deltri {
 namespace {
 
+// Times the stages for the report and tells the progress meter of each.
 class StageTimer {
  public:
-  explicit StageTimer(RunReport& report) : report_(report), last_(std::chrono::steady_clock::now()) {}
-  void stage(const char* name) {
+  StageTimer(RunReport& report, ProgressMeter& meter)
+      : report_(report), meter_(meter), last_(std::chrono::steady_clock::now()) {}
+  void stage(const char* name, std::int64_t triangles) {
     const auto now = std::chrono::steady_clock::now();
-    report_.stages.push_back({name, std::chrono::duration<double>(now - last_).count()});
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    report_.stages.push_back({name, seconds});
+    meter_.stage_ended(name, seconds, triangles);
     last_ = now;
   }
 
  private:
   RunReport& report_;
+  ProgressMeter& meter_;
   std::chrono::steady_clock::time_point last_;
 };
 
@@ -259,17 +267,20 @@ int run(const Switches& sw) {
   if (const auto facets = surface_input(sw)) return run_surface(sw, *facets);  // facets in 3-D
   RunReport report;
   report.switches = &sw;
-  StageTimer timer(report);
+  ProgressMeter meter(sw, stderr, isatty(fileno(stderr)) != 0);
+  StageTimer timer(report, meter);
   const auto start = std::chrono::steady_clock::now();
   Messages messages(sw);
 
   const InputFiles in = input_files(sw);
   const int threads = threads_to_use(sw);  // --threads reads too
+  meter.begin("read");
   Pslg pslg = in.is_poly ? read_poly_file(in.path, threads) : read_node_file(in.path, threads);
   refuse_vertices_in_no_file(sw, in, pslg, nullptr);
   PipelineSource source;
   source.name = in.path == "-" ? kStandardInputName : in.path;
   source.is_poly = in.is_poly;
+  source.progress = meter.progress();
   PreviousMesh previous;
   if (in.refine) {
     previous = read_previous_mesh(in, pslg, threads);
@@ -282,10 +293,19 @@ int run(const Switches& sw) {
     size_test = size_field->test();
     source.size_test = &size_test;
   }
-  PipelineResult result = run_pipeline(pslg, source, sw, report, [&timer](const char* name) { timer.stage(name); });
+  PipelineResult result = run_pipeline(pslg, source, sw, report, [&timer, &meter](const char* name) {
+    const Progress* p = meter.progress();
+    timer.stage(name, p ? p->triangles.load(std::memory_order_relaxed) : -1);
+  });
+  meter.begin("write");
   const Mesh& mesh = result.mesh;
-  if (report.sweepline_fell_back) messages.notice("-F: rounding broke the sweepline on this input; divide and conquer was used");
+  // Messages wait until the meter has stopped, so that none is written into its line.
+  const auto sweepline_notice = [&] {
+    if (report.sweepline_fell_back) messages.notice("-F: rounding broke the sweepline on this input; divide and conquer was used");
+  };
   if (result.check_failed) {
+    meter.stop();
+    sweepline_notice();
     messages.check_failed(*report.check);
     return kExitCheck;
   }
@@ -303,8 +323,10 @@ int run(const Switches& sw) {
   refuse_overwriting_inputs(report, in, pslg);
   refuse_vertices_in_no_file(sw, in, pslg, &mesh, report.input_vertices);
   const CommitNotes notes = outputs.commit(interrupt_listener());
+  timer.stage("write", -1);
+  meter.stop();
+  sweepline_notice();
   report_commit_notes(notes);
-  timer.stage("write");
   report.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   messages.finished(mesh, report);
   return status;

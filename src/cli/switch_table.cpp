@@ -240,6 +240,12 @@ constexpr std::array kLongOptions = {
                "refine large meshes (and build the triangulation, write the files) on up to N threads (default: all cores); "
                "the output is the same for every N",
                set_threads},
+    LongOption{"progress", "", false,
+               "show progress on standard error from the start, also with -Q (by default: after 2 s of work, "
+               "not with -Q); in place on a terminal, else one line per stage",
+               [](S& s, const std::string*) { s.progress = 1; }},
+    LongOption{"no-progress", "", false, "show no progress on standard error",
+               [](S& s, const std::string*) { s.progress = -1; }},
     LongOption{"man", "", false, "print the manual page (roff) and exit",
                [](S& s, const std::string*) { s.man = true; }},
     LongOption{"version", "", false, "print the version and exit",

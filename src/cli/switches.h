@@ -78,6 +78,7 @@ struct Switches {
   int verbose = 0;               // -V, -VV, ...
   bool help = false;             // -h
   int threads = 0;               // --threads=N; 0: all cores (threads_to_use)
+  int progress = 0;              // --progress 1, --no-progress -1; 0: after 2 s of work, not with -Q
 
   std::string input;             // the input file as given
   std::string command_line;      // every argument, space-separated (for the JSON report)

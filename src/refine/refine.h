@@ -28,6 +28,7 @@
 namespace deltri {
 
 class AreaField;
+struct Progress;
 
 struct RefineOptions {
   AngleBound angle;                     // theta (-q), and what refinement derives from it
@@ -87,6 +88,9 @@ struct RefineOptions {
   // the caller read it (-r: before it was made constrained Delaunay); if null or empty,
   // refine_mesh builds one from the mesh it is given.
   const AreaField* area_field = nullptr;
+  // Where refinement publishes its counts for a progress meter (util/progress.h), or null: the
+  // library's default. Publishing never changes the mesh.
+  Progress* progress = nullptr;
 };
 
 // What set the Steiner cap (termination_guard.h).

@@ -326,13 +326,24 @@ void Terminator::refine_around(std::span<const TriangleId> triangles) {
 
 void Terminator::drain_queue() {
   for (unsigned pops = 0; !bad_triangles_.empty(); ++pops) {  // Fig. 38 l.10
-    if (pops % kWarmInterval == 0) warm_pages();
+    if (pops % kWarmInterval == 0) {
+      warm_pages();
+      publish_progress();
+    }
     prefetch_queued();
     const QueuedTriangle entry = *bad_triangles_.pop();  // Fig. 38 l.11
     count(split_bad_triangle(entry), report_);            // Fig. 38 l.12-25
     if (track_unsplit_ && is_current(mesh_, entry)) unsplit_.push_back(entry.triangle);
   }
   report_.peak_queue = std::max(report_.peak_queue, bad_triangles_.peak_size());
+  publish_progress();
+}
+
+// Every kWarmInterval pops: two relaxed atomic adds, no lock and no clock.
+void Terminator::publish_progress() {
+  const auto vertices = static_cast<std::int64_t>(report_.interior_steiner + report_.segment_steiner) -
+                        static_cast<std::int64_t>(report_.vertices_deleted);
+  progress_share_.publish(opt_.progress, vertices, static_cast<std::int64_t>(bad_triangles_.size()));
 }
 
 RefineReport Terminator::finish() {

@@ -26,6 +26,7 @@
 #include "refine/mirrored_split.h"
 #include "refine/outcome.h"
 #include "refine/quality_queue.h"
+#include "util/progress.h"
 #include "refine/refine.h"
 #include "util/page_warmer.h"
 #include "util/prefetch.h"
@@ -194,6 +195,7 @@ class Terminator {
   std::vector<EdgeRef> initially_encroached();  // Fig. 38 l.3-4
   // Fig. 38 l.10-11: serve Q_t until it is empty.
   void drain_queue();
+  void publish_progress();  // to opt_.progress, if the caller asked for one
   void prefetch_queued() const;
   static constexpr std::size_t kPrefetchDistance = 8;  // queue entries ahead
   // Tells the page warmer how far the mesh arrays are used (every kWarmInterval pops).
@@ -248,6 +250,7 @@ class Terminator {
   QualityQueue bad_triangles_;       // Q_t
   EncroachedQueue encroached_;       // Q_s
   RefineReport report_;
+  ProgressShare progress_share_;  // this Terminator's part of opt_.progress
   std::vector<char> locked_;  // by subsegment record: a split failed for want of precision
   // Ruppert, Chew: by vertex id, the insertion radius of each refinement split this Terminator
   // made, 0 for every other vertex (refused_by_sure_fire_rule).
