@@ -152,7 +152,11 @@ void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
   if (sw.neighbors) add(out + ".neigh", [&mesh, first](ByteSink& s) { write_neigh_file(s, mesh, first); });
   if (sw.geomview) add(out + ".off", [&mesh, numbering](ByteSink& s) { write_off_file(s, mesh, numbering); });
   const ExportOptions exp{numbering, c.midpoints, markers};
-  const MshFormat msh_format{sw.msh_version, sw.msh_binary};
+  const MshFormat msh_format{sw.msh_version, sw.msh_binary, sw.domain_tag != 0 ? sw.domain_tag : kDomainTag};
+  if (sw.msh.wanted && sw.domain_tag != 0)
+    if (const std::string clash = msh_tag_clash(mesh, exp, msh_format); !clash.empty())
+      throw UsageError("--domain-tag=" + std::to_string(sw.domain_tag) + ": " + clash +
+                       "; choose a tag no marker uses (no files written)");
   if (sw.msh.wanted)
     add(requested_path(sw.msh, out, "msh"), [&mesh, exp, msh_format](ByteSink& s) { write_msh_file(s, mesh, exp, msh_format); });
   const bool vtu_binary = sw.vtu_binary;

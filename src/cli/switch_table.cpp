@@ -130,6 +130,14 @@ void set_msh_format(S& s, const std::string* v) {
   s.msh_binary = encoding == "binary";
 }
 
+void set_domain_tag(S& s, const std::string* v) {
+  const std::string& n = *v;
+  const bool digits = !n.empty() && n.size() <= 10 && n.find_first_not_of("0123456789") == std::string::npos;
+  const long long tag = digits ? std::stoll(n) : 0;
+  if (tag < 1 || tag > 2147483647) throw UsageError("--domain-tag=" + n + ": give a whole number from 1 to 2147483647");
+  s.domain_tag = tag;
+}
+
 void set_vtu_format(S& s, const std::string* v) {
   if (*v != "ascii" && *v != "binary") throw UsageError("--vtu-format=" + *v + ": give ascii or binary");
   s.vtu_binary = *v == "binary";
@@ -168,6 +176,10 @@ constexpr std::array kLongOptions = {
                "the --msh version and encoding: 2.2 (default; GetDP and FreeFem++ read it), 4.1, "
                "2.2,binary or 4.1,binary",
                set_msh_format},
+    LongOption{"domain-tag", "N", false,
+               "the --msh physical tag of the domain (default 1000000000, which no marker's tag can be); with -A "
+               "attribute a is tag N + a. Refused when a marker's tag is the same",
+               set_domain_tag},
     LongOption{"vtu", "FILE", true, "also write the mesh as VTK XML unstructured grid (.vtu); FILE - is standard output",
                [](S& s, const std::string* v) { request(s.vtu, v, "vtu"); }},
     LongOption{"vtu-format", "ENCODING", false, "the --vtu encoding: ascii (default) or binary (raw appended data)",

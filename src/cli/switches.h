@@ -62,6 +62,7 @@ struct Switches {
   FileRequest stl;               // --stl: ASCII STL of a surface mesh (facets in 3-D only)
   int msh_version = 22;          // --msh-format=2.2|4.1[,binary]
   bool msh_binary = false;
+  long long domain_tag = 0;      // --domain-tag=N; 0: the rule's own (io/physical_groups.h)
   bool vtu_binary = false;       // --vtu-format=ascii|binary
   bool svg_numbers = false;      // --svg-numbers: vertex numbers in the picture
   bool strict = false;           // --strict: exit status 3 when triangles miss the bounds not forced by the input, or none exist
