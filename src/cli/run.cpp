@@ -65,8 +65,10 @@ InputFiles input_files(const Switches& sw) {
   in.base = input_base(sw.input, &extension);
   in.refine = sw.refine || extension == "ele" || extension == "area";
   in.area_file = in.refine && (sw.variable_area || extension == "area");
-  in.is_poly = extension == "poly" || ((extension.empty() || in.refine) && sw.poly);
-  const bool named_vertex_file = extension == "poly" || extension == "node";
+  // As Triangle: -p name.node strips the extension and reads name.poly (only -r reads the .node).
+  const bool poly_for_node = sw.poly && !in.refine && extension == "node";
+  in.is_poly = extension == "poly" || ((extension.empty() || in.refine || poly_for_node) && sw.poly);
+  const bool named_vertex_file = extension == "poly" || (extension == "node" && !poly_for_node);
   in.path = named_vertex_file ? sw.input : in.base + (in.is_poly ? ".poly" : ".node");
   return in;
 }
@@ -210,7 +212,7 @@ void refuse_vertices_in_no_file(const Switches& sw, const InputFiles& in, const 
   // Refinement with -S0 adds no vertex.
   const bool refines = sw.max_steiner != 0;
   const char* cause = refines && sw.quality ? "-q" : refines && (sw.fixed_area || sw.variable_area) ? "-a"
-                    : refines && sw.user_test ? "-u" : refines && !sw.size_field.empty() ? "--size-field"
+                    : refines && (sw.user_test || sw.stock_size_test) ? "-u" : refines && !sw.size_field.empty() ? "--size-field"
                     : refines && sw.conforming_delaunay ? "-D" : sw.order == 2 ? "-o2" : nullptr;
   if (!cause && mesh && mesh->vertex_count() > input_vertices) cause = "the repair of the input";
   if (!cause) return;
@@ -266,6 +268,7 @@ int run(const Switches& sw) {
   StageTimer timer(report);
   const auto start = std::chrono::steady_clock::now();
   Messages messages(sw);
+  for (const std::string& notice : sw.notices) messages.notice(notice);
   for (const char* unsupported : unsupported_switches(sw))
     messages.notice(std::string(unsupported) + " is not available yet and is ignored");
 
@@ -286,6 +289,13 @@ int run(const Switches& sw) {
   if (!sw.size_field.empty()) {
     size_field.emplace(read_size_field(sw.size_field, threads));
     size_test = size_field->test();
+    source.size_test = &size_test;
+  }
+  if (sw.stock_size_test) {  // bare -u, alongside a --size-field if both are given
+    size_test = size_test ? SizeTest([field = size_test](const Point& a, const Point& b, const Point& c, double area) {
+      return field(a, b, c, area) || stock_size_test(a, b, c, area);
+    })
+                          : SizeTest(stock_size_test);
     source.size_test = &size_test;
   }
   PipelineResult result = run_pipeline(pslg, source, sw, report, [&timer](const char* name) { timer.stage(name); });

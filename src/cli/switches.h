@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "delaunay/triangulate.h"
 #include "refine/algorithm.h"
@@ -19,6 +20,7 @@ struct Switches {
   double max_area = -1.0;
   bool variable_area = false;    // -a  bare: regional or per-triangle areas
   bool user_test = false;        // -u<length>: no edge longer than length
+  bool stock_size_test = false;  // bare -u on the command line: Triangle's stock triunsuitable (refine/stock_size_test.h)
   bool caller_size_test = false; // a bare u in a library switch string: the caller's size function
   double max_edge_length = -1.0;
   bool circumcenters_only = false;  // -k: Steiner points at circumcentres, no off-centres
@@ -81,6 +83,7 @@ struct Switches {
 
   std::string input;             // the input file as given
   std::string command_line;      // every argument, space-separated (for the JSON report)
+  std::vector<std::string> notices;  // letters Triangle accepts that deltri reads its own way (-L, -w, -o3, ...)
 };
 
 // The threads a run may use: --threads=N, or every core the machine reports (at least one).

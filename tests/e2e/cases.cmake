@@ -433,3 +433,9 @@ set_tests_properties(e2e.outputs.names PROPERTIES TIMEOUT 300)
 # junctions, where Triangle 1.6 meets 30 ----
 add_test(NAME e2e.shells.guitar.pq30a0.054 COMMAND ${QUALITY_BOUND} ${E2E_DATA}/guitar.poly -pq30a0.054 30 0.054)
 e2e_case(shells.guitar.pq30a0.054.verify ${E2E_DATA}/guitar.poly -pq30a0.054 --no-warning --verify "--refined --min-angle 30 --max-area 0.054")
+
+# ---- issue 46: Triangle's command line where scripts notice (tests/e2e/triangle_cli.py) ----
+foreach(item stock_u poly_for_node ignorable_letters dimension3 messages)
+  add_test(NAME e2e.triangle_cli.${item}
+           COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/e2e/triangle_cli.py $<TARGET_FILE:deltri> ${E2E_INPUTS} ${E2E_DATA} ${item})
+endforeach()
