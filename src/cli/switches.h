@@ -20,7 +20,7 @@ struct Switches {
   double max_area = -1.0;
   bool variable_area = false;    // -a  bare: regional or per-triangle areas
   bool user_test = false;        // -u<length>: no edge longer than length
-  bool stock_size_test = false;  // bare -u on the command line: Triangle's stock triunsuitable (refine/stock_size_test.h)
+  bool stock_size_test = false;  // bare -u on the command line: Triangle's stock triunsuitable (refine/size_test.h)
   bool caller_size_test = false; // a bare u in a library switch string: the caller's size function
   double max_edge_length = -1.0;
   bool circumcenters_only = false;  // -k: Steiner points at circumcentres, no off-centres
@@ -89,7 +89,7 @@ struct Switches {
 // The threads a run may use: --threads=N, or every core the machine reports (at least one).
 int threads_to_use(const Switches& sw);
 
-// Who gives the switches: the command line refuses a bare -u (it has no compiled-in size test);
+// Who gives the switches: on the command line a bare -u is Triangle's stock size test;
 // the library takes it as asking for the caller's size function (caller_size_test).
 enum class SwitchSource { CommandLine, Library };
 
