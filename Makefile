@@ -16,9 +16,12 @@ build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
 # Only the program (the test binaries are built by `make test`), then every sample in data/ meshed
-# with quality into $(BUILD)/demo/, one line and one SVG picture per file.
-demo: configure
-	@cmake --build $(BUILD) -j $(JOBS) --target deltri
+# with quality into $(BUILD)/demo/, one table row and one SVG picture per file. Configure and build
+# output go to $(BUILD)/demo-build.log; only a failure shows it (its last 40 lines).
+demo:
+	@mkdir -p $(BUILD)
+	@{ cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) && cmake --build $(BUILD) -j $(JOBS) --target deltri; } \
+	  >$(BUILD)/demo-build.log 2>&1 || { tail -n 40 $(BUILD)/demo-build.log; echo "demo: the build failed (all of it in $(BUILD)/demo-build.log)"; exit 1; }
 	@sh tests/demo.sh $(BUILD)/deltri data $(BUILD)/demo
 
 # The test readers and solvers are installed first where possible (tests/setup/install_test_deps.sh);

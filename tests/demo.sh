@@ -3,9 +3,9 @@
 #   demo.sh DELTRI DATA_DIR [OUT_DIR]
 # Quality meshing with no angle below 30 degrees (-pq30 for a .poly, -q30 for a .node, which is
 # meshed inside its convex hull), plus an area bound for the samples that are otherwise only a
-# handful of triangles; -C checks every mesh exactly. One line per file: the triangles, the smallest
-# angle reached and the SVG picture; where the mesh is empty, deltri's one-line reason. Warnings
-# about repaired input are kept in NAME.log next to the outputs and counted on the line.
+# handful of triangles; -C checks every mesh exactly. One table row per file: triangles, smallest
+# angle, and a note only where there is something to say. Warnings about repaired input are kept
+# in NAME.log next to the outputs, and a row names the log only when it has something in it.
 exe=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 data=$2
 out=${3:-build/demo}
@@ -25,13 +25,39 @@ area_bound() {
   esac
 }
 
+# Samples whose segments enclose no region: with -p alone every triangle is outside them and the
+# mesh is empty, in Triangle too; -c keeps the convex hull so that there is a mesh to show.
+hull() {
+  case $1 in
+    corner_cases.poly | crossing-edges.poly) echo c ;;
+  esac
+}
+
+# A JSON report's number field (the first one of that name).
+field() { sed -n "s/.*\"$2\":\([0-9.e+-]*\).*/\1/p" "$1" | head -n 1; }
+
+# What the row says about triangles below the angle bound: how many, and why, from the report's
+# causes (input angles: between input segments, which refinement keeps, as Triangle does).
+misses_note() {
+  missing=$(field "$1" triangles_missing_bounds)
+  [ "${missing:-0}" = 0 ] && return
+  why=""
+  for cause in small_input_angle:"input angles" repaired_crossing_or_overlap:"repaired crossings" \
+               double_precision:"double precision" steiner_limits:"Steiner limits" other:other; do
+    n=$(field "$1" "${cause%%:*}")
+    [ "${n:-0}" != 0 ] && why="${why:+$why, }$n ${cause#*:}"
+  done
+  echo "$missing < 30: $why"
+}
+
+printf '%-36s %-15s %9s %9s  %s\n' sample switches triangles "min angle" "note (angles in degrees)"
 for f in "$data"/*.poly "$data"/*.node; do
   [ -f "$f" ] || continue
   cp "$f" "$out/"
   name=$(basename "$f")
   base=${name%.*}
   case "$name" in
-    *.poly) switches=-pq30$(area_bound "$name")C ;;
+    *.poly) switches=-pq30$(area_bound "$name")$(hull "$name")C ;;
     *) switches=-q30$(area_bound "$name")C ;;
   esac
   log=$out/$base.log
@@ -39,30 +65,24 @@ for f in "$data"/*.poly "$data"/*.node; do
     report=$out/$base.1.json
     triangles=$(sed -n 's/.*"mesh":{[^}]*"triangles":\([0-9]*\).*/\1/p' "$report")
     angle=$(sed -n 's/.*"quality":{[^}]*"smallest_angle":\([^,]*\),.*/\1/p' "$report")
-    line=$(printf '%-38s %-14s %7s triangles' "$name" "$switches" "$triangles")
+    notes=""
+    [ -n "$(hull "$name")" ] && notes="-c: no closed region (empty with -p alone)"
     if [ "$triangles" = 0 ]; then
       reason=$(grep -m 1 -E 'the mesh is empty|no triangles' "$log" | sed 's/^deltri: warning: [^:]*: //')
-      line="$line: ${reason:-no reason given}"
+      notes="${reason:-empty mesh}"
+      angle=-
     else
-      line="$line, smallest angle $(printf '%.3g' "$angle") degrees"
-      missing=$(sed -n 's/.*"triangles_missing_bounds":\([0-9]*\).*/\1/p' "$report")
-      # Below 30 with every triangle meeting the bound: the angle is one between input segments,
-      # which refinement keeps (as Triangle does).
-      if [ "$missing" != 0 ]; then
-        line="$line ($missing triangles miss the bound, see the log)"
-      elif awk "BEGIN { exit !($angle < 29.9) }"; then
-        line="$line (between input segments)"
-      fi
-      line="$line, picture $base.1.svg"
+      angle=$(printf '%.3g' "$angle")
+      m=$(misses_note "$report")
+      [ -n "$m" ] && notes="${notes:+$notes; }$m"
     fi
     warnings=$(grep -c "warning" "$log")
-    [ "$triangles" = 0 ] && warnings=$((warnings - 1))
-    if [ "$warnings" -eq 1 ]; then
-      line="$line [1 warning in $base.log]"
-    elif [ "$warnings" -gt 1 ]; then
-      line="$line [$warnings warnings in $base.log]"
+    if [ "$warnings" -gt 0 ]; then
+      notes="${notes:+$notes; }$warnings warning$([ "$warnings" -gt 1 ] && echo s): $base.log"
+    elif [ ! -s "$log" ]; then
+      rm -f "$log"  # nothing to read there
     fi
-    echo "$line"
+    printf '%-36s %-15s %9s %9s  %s\n' "$name" "$switches" "$triangles" "$angle" "$notes"
     count=$((count + 1))
   else
     echo "demo: $name failed:" >&2
@@ -70,5 +90,5 @@ for f in "$data"/*.poly "$data"/*.node; do
     status=1
   fi
 done
-echo "demo: $count meshes, each checked by -C, in $(($(date +%s) - started)) s; in $out: the pictures (NAME.1.svg), the meshes, JSON reports (NAME.1.json) and logs"
+echo "demo: $count meshes, each checked by -C, in $(($(date +%s) - started)) s; pictures (NAME.1.svg), meshes and JSON reports in $out"
 exit $status

@@ -46,9 +46,39 @@ std::string negative_number_message(char letter) {
   }
 }
 
+// Letters Triangle 1.6 accepts that have no row of their own: true when `letter` was one.
+bool triangle_only_letter(char letter, Switches& s) {
+  switch (letter) {
+    case 'L':  // Triangle's undocumented synonym of -D
+      s.conforming_delaunay = true;
+      s.notices.push_back("-L: read as -D (conforming Delaunay), as Triangle 1.6 does");
+      return true;
+    case 'w':
+    case 'W':
+      s.notices.push_back(std::string("-") + letter + ": weighted triangulations are not supported; ignored");
+      return true;
+    case 'H':
+    case '?':
+      s.help = true;
+      return true;
+    default: return false;
+  }
+}
+
+// Triangle reads a switch's number with atof/atoi: a lone "." is 0, and an integer switch stops at
+// the point, the rest of the number being ignored. Returns the characters after the number that
+// Triangle ignores (-S2.5: ".5").
+std::size_t ignored_fraction(std::string_view rest, const SwitchRow& row) {
+  if (row.arg != ArgKind::OptionalInt || rest.empty() || rest[0] != '.') return 0;
+  std::size_t k = 1;
+  while (k < rest.size() && std::isdigit(static_cast<unsigned char>(rest[k]))) ++k;
+  return k;
+}
+
 void parse_word(std::string_view word, Switches& s, SwitchSource source) {
   for (std::size_t i = 1; i < word.size();) {
     const char letter = word[i++];
+    if (triangle_only_letter(letter, s)) continue;
     const SwitchRow* row = find_row(letter);
     if (!row) throw UsageError(std::string("-") + letter + ": unknown switch (see deltri -h)");
     bool has_value = false;
@@ -66,19 +96,27 @@ void parse_word(std::string_view word, Switches& s, SwitchSource source) {
         s.caller_size_test = true;
         continue;
       }
-      if (n == 0 && letter == 'u')
-        throw UsageError(
-            "-u: a bare -u runs the size test compiled into Triangle, which deltri does not have; write the "
-            "test as -u<length> (no edge longer than length, e.g. -u0.05), or bound areas with -a<area>, "
-            "regional areas (bare -a) or a .area file with -r");
+      if (n == 0 && letter == 'u') {
+        s.stock_size_test = true;  // Triangle's stock triunsuitable (-u<length> is deltri's own test)
+        continue;
+      }
       if (n == 0 && row->arg == ArgKind::RequiredReal)
         throw UsageError(std::string("-") + letter + ": a number must follow, e.g. -" + letter + "0.05");
-      if (n > 0) {
+      if (n == 1 && word[i] == '.') {
+        s.notices.push_back(std::string("-") + letter + ".: read as -" + letter + "0, as Triangle reads a lone point");
+        has_value = true;
+        i += 1;
+      } else if (n > 0) {
         const auto res = std::from_chars(word.data() + i, word.data() + i + n, value);
         if (res.ec != std::errc() || res.ptr != word.data() + i + n)
           throw UsageError(std::string("-") + letter + ": malformed number '" + std::string(word.substr(i, n)) + "'");
         has_value = true;
         i += n;
+        if (const std::size_t f = ignored_fraction(word.substr(i), *row); f > 0) {
+          s.notices.push_back(std::string("-") + letter + std::string(word.substr(i - n, n + f)) + ": read as -" + letter +
+                              std::string(word.substr(i - n, n)) + ", as Triangle does (a whole number)");
+          i += f;
+        }
       }
     }
     row->apply(s, has_value, value);

@@ -73,8 +73,10 @@ InputFiles input_files(const Switches& sw) {
   in.base = input_base(sw.input, &extension);
   in.refine = sw.refine || extension == "ele" || extension == "area";
   in.area_file = in.refine && (sw.variable_area || extension == "area");
-  in.is_poly = extension == "poly" || ((extension.empty() || in.refine) && sw.poly);
-  const bool named_vertex_file = extension == "poly" || extension == "node";
+  // As Triangle: -p name.node strips the extension and reads name.poly (only -r reads the .node).
+  const bool poly_for_node = sw.poly && !in.refine && extension == "node";
+  in.is_poly = extension == "poly" || ((extension.empty() || in.refine || poly_for_node) && sw.poly);
+  const bool named_vertex_file = extension == "poly" || (extension == "node" && !poly_for_node);
   in.path = named_vertex_file ? sw.input : in.base + (in.is_poly ? ".poly" : ".node");
   return in;
 }
@@ -160,7 +162,11 @@ void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
   if (sw.neighbors) add(out + ".neigh", [&mesh, first](ByteSink& s) { write_neigh_file(s, mesh, first); });
   if (sw.geomview) add(out + ".off", [&mesh, numbering](ByteSink& s) { write_off_file(s, mesh, numbering); });
   const ExportOptions exp{numbering, c.midpoints, markers};
-  const MshFormat msh_format{sw.msh_version, sw.msh_binary};
+  const MshFormat msh_format{sw.msh_version, sw.msh_binary, sw.domain_tag != 0 ? sw.domain_tag : kDomainTag};
+  if (sw.msh.wanted && sw.domain_tag != 0)
+    if (const std::string clash = msh_tag_clash(mesh, exp, msh_format); !clash.empty())
+      throw UsageError("--domain-tag=" + std::to_string(sw.domain_tag) + ": " + clash +
+                       "; choose a tag no marker uses (no files written)");
   if (sw.msh.wanted)
     add(requested_path(sw.msh, out, "msh"), [&mesh, exp, msh_format](ByteSink& s) { write_msh_file(s, mesh, exp, msh_format); });
   const bool vtu_binary = sw.vtu_binary;
@@ -214,7 +220,7 @@ void refuse_vertices_in_no_file(const Switches& sw, const InputFiles& in, const 
   // Refinement with -S0 adds no vertex.
   const bool refines = sw.max_steiner != 0;
   const char* cause = refines && sw.quality ? "-q" : refines && (sw.fixed_area || sw.variable_area) ? "-a"
-                    : refines && sw.user_test ? "-u" : refines && !sw.size_field.empty() ? "--size-field"
+                    : refines && (sw.user_test || sw.stock_size_test) ? "-u" : refines && !sw.size_field.empty() ? "--size-field"
                     : refines && sw.conforming_delaunay ? "-D" : sw.order == 2 ? "-o2" : nullptr;
   if (!cause && mesh && mesh->vertex_count() > input_vertices) cause = "the repair of the input";
   if (!cause) return;
@@ -271,6 +277,7 @@ int run(const Switches& sw) {
   StageTimer timer(report, meter);
   const auto start = std::chrono::steady_clock::now();
   Messages messages(sw);
+  for (const std::string& notice : sw.notices) messages.notice(notice);
 
   const InputFiles in = input_files(sw);
   const int threads = threads_to_use(sw);  // --threads reads too
@@ -291,6 +298,13 @@ int run(const Switches& sw) {
   if (!sw.size_field.empty()) {
     size_field.emplace(read_size_field(sw.size_field, threads));
     size_test = size_field->test();
+    source.size_test = &size_test;
+  }
+  if (sw.stock_size_test) {  // bare -u, alongside a --size-field if both are given
+    size_test = size_test ? SizeTest([field = size_test](const Point& a, const Point& b, const Point& c, double area) {
+      return field(a, b, c, area) || stock_size_test(a, b, c, area);
+    })
+                          : SizeTest(stock_size_test);
     source.size_test = &size_test;
   }
   PipelineResult result = run_pipeline(pslg, source, sw, report, [&timer, &meter](const char* name) {

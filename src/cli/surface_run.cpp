@@ -34,6 +34,9 @@ void note_ignored_switches(const Switches& sw) {
   if (sw.svg.wanted) note("--svg");
   if (sw.json.wanted) note("--json");
   if (sw.strict) note("--strict");
+  if (sw.stock_size_test) note("-u without a number (Triangle's stock test)");
+  if (sw.domain_tag != 0) note("--domain-tag (a surface's groups are its facet markers)");
+  for (const std::string& notice : sw.notices) std::fprintf(stderr, "deltri: %s\n", notice.c_str());
 }
 
 double smallest_angle(const SurfaceMesh& m) {

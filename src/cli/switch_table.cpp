@@ -25,14 +25,20 @@ void set_a(S& s, bool has, double v) {
   s.max_area = v;
 }
 void set_u(S& s, bool has, double v) {
-  if (!has || !(v > 0.0)) throw UsageError("-u: give the maximum edge length, e.g. -u0.05");
+  if (!has) return;  // bare -u: the parser has chosen the stock or the caller's test
+  if (!(v > 0.0)) throw UsageError("-u: give the maximum edge length, e.g. -u0.05");
   s.user_test = true;
   s.max_edge_length = v;
 }
 void set_S(S& s, bool has, double v) { s.max_steiner = has ? static_cast<long>(v) : 0; }
 void set_o(S& s, bool has, double v) {
-  if (!has || v != 2.0) throw UsageError("-o: only -o2 (six-node triangles) exists");
-  s.order = 2;
+  if (has && v == 2.0) {
+    s.order = 2;
+    return;
+  }
+  // Triangle ignores any other -o; so does deltri, saying so.
+  s.notices.push_back("-o" + (has ? std::to_string(static_cast<long long>(v)) : std::string()) +
+                      ": only -o2 (six-node triangles) exists; ignored (three-node triangles)");
 }
 
 constexpr std::array kTable = {
@@ -42,7 +48,9 @@ constexpr std::array kTable = {
               [](S& s, bool, double) { s.refine = true; }},
     SwitchRow{'q', ArgKind::OptionalReal, "angle", "quality mesh: no angle below `angle` degrees (default 20)", set_q},
     SwitchRow{'a', ArgKind::OptionalReal, "area", "maximum triangle area; bare: regional or .area constraints", set_a},
-    SwitchRow{'u', ArgKind::RequiredReal, "length", "size test: no edge longer than `length`", set_u},
+    SwitchRow{'u', ArgKind::OptionalReal, "length",
+              "size test: no edge longer than `length`; bare: Triangle's stock test (split while the longest edge squared "
+              "exceeds 0.05 (x^2 + y^2) + 0.02 at every corner (x, y))", set_u},
     SwitchRow{'k', ArgKind::None, "", "Steiner points at circumcentres only (no off-centres)",
               [](S& s, bool, double) { s.circumcenters_only = true; }},
     SwitchRow{'A', ArgKind::None, "", "give each triangle the attribute of its region",
@@ -130,6 +138,14 @@ void set_msh_format(S& s, const std::string* v) {
   s.msh_binary = encoding == "binary";
 }
 
+void set_domain_tag(S& s, const std::string* v) {
+  const std::string& n = *v;
+  const bool digits = !n.empty() && n.size() <= 10 && n.find_first_not_of("0123456789") == std::string::npos;
+  const long long tag = digits ? std::stoll(n) : 0;
+  if (tag < 1 || tag > 2147483647) throw UsageError("--domain-tag=" + n + ": give a whole number from 1 to 2147483647");
+  s.domain_tag = tag;
+}
+
 void set_vtu_format(S& s, const std::string* v) {
   if (*v != "ascii" && *v != "binary") throw UsageError("--vtu-format=" + *v + ": give ascii or binary");
   s.vtu_binary = *v == "binary";
@@ -179,6 +195,10 @@ constexpr std::array kLongOptions = {
                "the --msh version and encoding: 2.2 (default; GetDP and FreeFem++ read it), 4.1, "
                "2.2,binary or 4.1,binary",
                set_msh_format},
+    LongOption{"domain-tag", "N", false,
+               "the --msh physical tag of the domain (default 1000000000, which no marker's tag can be); with -A "
+               "attribute a is tag N + a. Refused when a marker's tag is the same",
+               set_domain_tag},
     LongOption{"vtu", "FILE", true, "also write the mesh as VTK XML unstructured grid (.vtu); FILE - is standard output",
                [](S& s, const std::string* v) { request(s.vtu, v, "vtu"); }},
     LongOption{"vtu-format", "ENCODING", false, "the --vtu encoding: ascii (default) or binary (raw appended data)",

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "delaunay/triangulate.h"
 #include "refine/algorithm.h"
@@ -19,6 +20,7 @@ struct Switches {
   double max_area = -1.0;
   bool variable_area = false;    // -a  bare: regional or per-triangle areas
   bool user_test = false;        // -u<length>: no edge longer than length
+  bool stock_size_test = false;  // bare -u on the command line: Triangle's stock triunsuitable (refine/size_test.h)
   bool caller_size_test = false; // a bare u in a library switch string: the caller's size function
   double max_edge_length = -1.0;
   bool circumcenters_only = false;  // -k: Steiner points at circumcentres, no off-centres
@@ -63,6 +65,7 @@ struct Switches {
   FileRequest stl;               // --stl: ASCII STL of a surface mesh (facets in 3-D only)
   int msh_version = 22;          // --msh-format=2.2|4.1[,binary]
   bool msh_binary = false;
+  long long domain_tag = 0;      // --domain-tag=N; 0: the rule's own (io/physical_groups.h)
   bool vtu_binary = false;       // --vtu-format=ascii|binary
   bool svg_numbers = false;      // --svg-numbers: vertex numbers in the picture
   bool strict = false;           // --strict: exit status 3 when triangles miss the bounds not forced by the input, or none exist
@@ -82,12 +85,13 @@ struct Switches {
 
   std::string input;             // the input file as given
   std::string command_line;      // every argument, space-separated (for the JSON report)
+  std::vector<std::string> notices;  // letters Triangle accepts that deltri reads its own way (-L, -w, -o3, ...)
 };
 
 // The threads a run may use: --threads=N, or every core the machine reports (at least one).
 int threads_to_use(const Switches& sw);
 
-// Who gives the switches: the command line refuses a bare -u (it has no compiled-in size test);
+// Who gives the switches: on the command line a bare -u is Triangle's stock size test;
 // the library takes it as asking for the caller's size function (caller_size_test).
 enum class SwitchSource { CommandLine, Library };
 

@@ -40,6 +40,23 @@ NodeHeader3 read_header(LineReader& in) {
   return h;
 }
 
+// A 2-D .poly whose header says dimension 3 by a typo: its first point has exactly the fields of a
+// planar point (two coordinates), one fewer than the header asks for. Said so, rather than
+// failing on whichever later field is then missing.
+void refuse_planar_point(LineReader& in, const NodeHeader3& h, long long index) {
+  const LineReader::Mark start = in.mark();
+  int fields = 0;
+  try {
+    for (; in.has_field(); ++fields) in.read_double({"point", index, "field"});
+  } catch (const InputError&) {
+    fields = -1;  // not all numbers: the reading proper will say what is wrong
+  }
+  in.reset(start);
+  if (fields == 2 + h.attributes + (h.markers ? 1 : 0))
+    in.fail("the node header says dimension 3, but point " + std::to_string(index) +
+            " has 2 coordinates (x y), as a 2-D file has: for a planar .poly the dimension must be 2");
+}
+
 void read_points(LineReader& in, const NodeHeader3& h, FacetInput& out) {
   for (std::uint32_t k = 0; k < h.count; ++k) {
     if (!in.next_line())
@@ -48,6 +65,7 @@ void read_points(LineReader& in, const NodeHeader3& h, FacetInput& out) {
     const long long index = in.read_int({"point", expected, "index"}, LLONG_MIN, LLONG_MAX);
     if (k == 0) {
       if (index != 0 && index != 1) in.fail("first point: index must be 0 or 1, not " + std::to_string(index));
+      refuse_planar_point(in, h, index);
       out.first_index = static_cast<int>(index);
     } else if (index != expected) {
       in.fail("point index " + std::to_string(index) + " is out of sequence: expected " + std::to_string(expected));

@@ -273,12 +273,10 @@ void write_data_view(MshOut& out, const std::string& name, const MshContent& c,
   out.end_section("$EndNodeData\n");
 }
 
-}  // namespace
-
-void write_msh_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& options, MshFormat format) {
+// The edges and triangles the file holds, and their groups.
+void collect_groups(MshContent& c, const ExportOptions& options, long long domain_tag) {
+  const Mesh& mesh = c.mesh;
   const int na = mesh.num_triangle_attributes;
-  MshContent c{mesh, VertexNumbering{options.numbering, 1}, options.midpoints, 0, {}, {}, {}, na > 0};
-  c.node_count = c.number.written_count(mesh.vertex_count());
   std::vector<double> line_values, surface_values;
   if (options.markers) {
     c.lines.items = boundary_and_segment_edges(mesh);
@@ -287,10 +285,25 @@ void write_msh_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& optio
   for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
     if (!mesh.is_live(t)) continue;
     c.triangles.items.push_back(edge_of(t, 0));
-    surface_values.push_back(na > 0 ? mesh.triangle_attributes[static_cast<std::size_t>(t) * na] : 1.0);
+    surface_values.push_back(na > 0 ? mesh.triangle_attributes[static_cast<std::size_t>(t) * na] : 0.0);
   }
-  if (surface_values.empty()) surface_values.push_back(1.0);  // the surface the nodes belong to exists even when empty
-  c.groups = physical_groups(line_values, surface_values);
+  if (surface_values.empty()) surface_values.push_back(0.0);  // the surface the nodes belong to exists even when empty
+  c.groups = physical_groups(line_values, surface_values, na > 0, domain_tag);
+}
+
+}  // namespace
+
+std::string msh_tag_clash(const Mesh& mesh, const ExportOptions& options, MshFormat format) {
+  MshContent c{mesh, VertexNumbering{options.numbering, 1}, options.midpoints, 0, {}, {}, {}, mesh.num_triangle_attributes > 0};
+  collect_groups(c, options, format.domain_tag);
+  return c.groups.clash;
+}
+
+void write_msh_file(ByteSink& sink, const Mesh& mesh, const ExportOptions& options, MshFormat format) {
+  const int na = mesh.num_triangle_attributes;
+  MshContent c{mesh, VertexNumbering{options.numbering, 1}, options.midpoints, 0, {}, {}, {}, na > 0};
+  c.node_count = c.number.written_count(mesh.vertex_count());
+  collect_groups(c, options, format.domain_tag);
   if (c.triangles.items.empty()) c.groups.surfaces.group.clear();
   c.lines.groups = &c.groups.lines;
   c.triangles.groups = &c.groups.surfaces;

@@ -14,14 +14,22 @@
 
 #include "io/output_numbering.h"
 #include "io/text_writer.h"
+#include "io/physical_groups.h"
 #include "mesh/mesh.h"
+
+#include <string>
 
 namespace deltri {
 
 struct MshFormat {
   int version = 22;  // 22 or 41
   bool binary = false;
+  long long domain_tag = kDomainTag;  // --domain-tag: the domain's surface tag (the base of -A's tags)
 };
+
+// Empty, or which two physical groups format.domain_tag would make share a tag
+// ("tag 5 would be both marker 5's and the domain's"): such a file is not to be written.
+std::string msh_tag_clash(const Mesh& mesh, const ExportOptions& options, MshFormat format);
 
 void write_msh_file(ByteSink& out, const Mesh& mesh, const ExportOptions& options, MshFormat format = {});
 

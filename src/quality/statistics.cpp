@@ -69,6 +69,8 @@ void add_shape(const TriangleShape& s, Extremes& x, MeshStatistics& stats) {
   if (longest > 0.0) x.min_altitude = std::min(x.min_altitude, s.cross / longest);
   x.max_aspect = std::max(x.max_aspect, aspect);
   ++stats.aspect_histogram[aspect_bin(aspect)];
+  ++stats.aspect_histogram_triangle[static_cast<std::size_t>(
+      std::lower_bound(kAspectBinBounds.begin(), kAspectBinBounds.end(), aspect) - kAspectBinBounds.begin())];
   for (const double a : s.angle) {
     x.min_angle = std::min(x.min_angle, a);
     x.max_angle = std::max(x.max_angle, a);

@@ -43,6 +43,9 @@ struct MeshStatistics {
   std::array<std::uint64_t, 18> angle_histogram{};       // 10-degree bins over 0-180
   std::array<std::uint64_t, 180> angle_histogram_fine{};  // 1-degree bins over 0-180
   std::array<std::uint64_t, kAspectBins> aspect_histogram{};  // one count per triangle
+  // The same bins closed above, (bound[i-1], bound[i]], as Triangle's -V counts them: an isosceles
+  // right triangle (ratio exactly 2) is in 1.5 - 2 here, in 2 - 2.5 above.
+  std::array<std::uint64_t, kAspectBins> aspect_histogram_triangle{};
 };
 
 // Expects a mesh whose storage is sound (check_mesh finds no storage faults); orientation and

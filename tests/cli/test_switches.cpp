@@ -91,10 +91,29 @@ TEST(errors_name_the_switch) {
   CHECK(usage_error({"-px", "x"}).rfind("-x:", 0) == 0);
   CHECK(usage_error({"-a0", "x"}).rfind("-a:", 0) == 0);
   CHECK(usage_error({"-q75", "x"}).rfind("-q:", 0) == 0);
-  CHECK(usage_error({"-o3", "x"}).rfind("-o:", 0) == 0);
-  CHECK(usage_error({"-u", "x"}).rfind("-u:", 0) == 0);
+  CHECK(usage_error({"-u0", "x"}).rfind("-u:", 0) == 0);
   CHECK(usage_error({"-rI", "x"}).rfind("-I:", 0) == 0);
   CHECK(usage_error({"-p", "x"}).empty());
+}
+
+// Issue 46: what Triangle 1.6 accepts runs, with a notice where deltri reads it its own way.
+TEST(letters_triangle_accepts_run_with_a_notice) {
+  const Switches u = parse({"-pqu", "x"});
+  CHECK(u.stock_size_test && !u.user_test && u.notices.empty());  // bare -u: Triangle's stock test
+  const Switches length = parse({"-pqu0.05", "x"});
+  CHECK(!length.stock_size_test && length.user_test && length.max_edge_length == 0.05);  // deltri's -u<length>
+  const Switches l = parse({"-pL", "x"});
+  CHECK(l.conforming_delaunay && l.notices.size() == 1);  // Triangle 1.6's synonym of -D
+  CHECK_EQ(parse({"-pw", "x"}).notices.size(), std::size_t{1});
+  CHECK_EQ(parse({"-pW", "x"}).notices.size(), std::size_t{1});
+  const Switches o3 = parse({"-po3", "x"});
+  CHECK(o3.order == 1 && o3.notices.size() == 1);
+  const Switches s25 = parse({"-pS2.5q", "x"});
+  CHECK(s25.max_steiner == 2 && s25.quality && s25.notices.size() == 1);
+  CHECK_EQ(s25.notices[0], std::string("-S2.5: read as -S2, as Triangle does (a whole number)"));
+  const Switches qdot = parse({"-pq.", "x"});
+  CHECK(qdot.quality && qdot.min_angle == 0.0 && qdot.notices.size() == 1);
+  CHECK(parse({"-H"}).help && parse({"-?"}).help);
 }
 
 // The library's switch strings go through this parser too: there a bare u asks for the caller's

@@ -21,7 +21,8 @@ set(E2E_POLY_FILES Constrained_Sweden corner_cases crossing-edges eberly-6 guita
 foreach(name IN LISTS E2E_NODE_FILES)
   e2e_case(${name}.default ${E2E_DATA}/${name}.node none)
   e2e_case(${name}.FC ${E2E_DATA}/${name}.node -FC)
-  e2e_case(${name}.p ${E2E_DATA}/${name}.node -p)
+  # -p name.node reads name.poly, as in Triangle (issue 46), so the point set's own case is -c.
+  e2e_case(${name}.c ${E2E_DATA}/${name}.node -c)
 endforeach()
 foreach(name IN LISTS E2E_POLY_FILES)
   e2e_case(${name}.p ${E2E_DATA}/${name}.poly -p)
@@ -204,15 +205,16 @@ add_test(NAME e2e.area_bound.robustness1.a0.93
 # near_hull.node has vertices 1e-11 inside a hull edge and others a fraction of an ulp inside.
 # With the precision floor at 2^-36 of the coordinates all of these had kept 1e-13 degree angles.
 set(QUALITY_BOUND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/quality_bound.sh $<TARGET_FILE:deltri>)
-add_test(NAME e2e.bottom_scale.robustness1.pq20 COMMAND ${QUALITY_BOUND} ${E2E_DATA}/robustness1.node -pq20 20)
-add_test(NAME e2e.bottom_scale.robustness3.pq20 COMMAND ${QUALITY_BOUND} ${E2E_DATA}/robustness3.node -pq20 20)
+# (Point sets, so -q: -p name.node would read name.poly, as in Triangle.)
+add_test(NAME e2e.bottom_scale.robustness1.q20 COMMAND ${QUALITY_BOUND} ${E2E_DATA}/robustness1.node -q20 20)
+add_test(NAME e2e.bottom_scale.robustness3.q20 COMMAND ${QUALITY_BOUND} ${E2E_DATA}/robustness3.node -q20 20)
 foreach(q 30 33)
-  add_test(NAME e2e.bottom_scale.robustness4.pq${q} COMMAND ${QUALITY_BOUND} ${E2E_DATA}/robustness4.node -pq${q} ${q})
+  add_test(NAME e2e.bottom_scale.robustness4.q${q} COMMAND ${QUALITY_BOUND} ${E2E_DATA}/robustness4.node -q${q} ${q})
 endforeach()
-add_test(NAME e2e.bottom_scale.robustness4.pq30a0.0019
-         COMMAND ${QUALITY_BOUND} ${E2E_DATA}/robustness4.node -pq30a0.0019 30 0.0019)
+add_test(NAME e2e.bottom_scale.robustness4.q30a0.0019
+         COMMAND ${QUALITY_BOUND} ${E2E_DATA}/robustness4.node -q30a0.0019 30 0.0019)
 foreach(q 20 30)
-  add_test(NAME e2e.bottom_scale.near_hull.pq${q} COMMAND ${QUALITY_BOUND} ${E2E_INPUTS}/near_hull.node -pq${q} ${q})
+  add_test(NAME e2e.bottom_scale.near_hull.q${q} COMMAND ${QUALITY_BOUND} ${E2E_INPUTS}/near_hull.node -q${q} ${q})
 endforeach()
 # Stopped by -S, an area-only run reports its worst triangle by size, not by an angle it never asked for.
 e2e_case(plate.pa0.001S10 ${E2E_INPUTS}/plate.poly -pa0.001S10 --verify --refined
@@ -456,3 +458,9 @@ add_test(NAME e2e.smooth
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/smooth.sh $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify>
                  ${E2E_DATA} ${E2E_INPUTS})
 set_tests_properties(e2e.smooth PROPERTIES TIMEOUT 300)
+
+# ---- Triangle's command line where scripts notice (tests/e2e/triangle_cli.py) ----
+foreach(item stock_u poly_for_node ignorable_letters dimension3 messages)
+  add_test(NAME e2e.triangle_cli.${item}
+           COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/e2e/triangle_cli.py $<TARGET_FILE:deltri> ${E2E_INPUTS} ${E2E_DATA} ${item})
+endforeach()

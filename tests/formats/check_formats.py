@@ -165,22 +165,24 @@ def expected_cells(r):
 
 
 def expected_tags(r, markers):
-    """The documented rule (docs/formats.md): positive integer markers are their own tags, other
-    markers the next tags in ascending order, then the surfaces (domain or attributes ascending)."""
+    """The documented rule (docs/formats.md, "Physical groups"): a marker from 1 to 999999999 is its
+    own tag, a marker m from -147483647 to 0 is 2000000000 - m; the domain is 1000000000 and, with
+    -A, an integer attribute a from 0 to 899999999 is 1000000000 + a; any other value the next tag
+    from 1900000000 up, markers first, each in ascending order."""
     values = sorted(set(r.lines.values())) if markers else []
-    own = [v for v in values if v >= 1]
-    next_tag = max(own, default=0) + 1
-    tags = {}
-    for v in values:
-        if v >= 1:
-            tags[("marker", v)] = v
-        else:
-            tags[("marker", v)] = next_tag
-            next_tag += 1
     attrs = sorted({a[0] for _, a in r.tris if a}) or [None]
+    whole = lambda v, lo, hi: v == int(v) and lo <= v <= hi
+    tags, other = {}, 1900000000
+    for v in values:
+        tag = v if whole(v, 1, 999999999) else 2000000000 - v if whole(v, -147483647, 0) else None
+        if tag is None:
+            tag, other = other, other + 1
+        tags[("marker", v)] = int(tag)
     for a in attrs:
-        tags[("attribute", a)] = next_tag
-        next_tag += 1
+        tag = 1000000000 if a is None else 1000000000 + a if whole(a, 0, 899999999) else None
+        if tag is None:
+            tag, other = other, other + 1
+        tags[("attribute", a)] = int(tag)
     return tags
 
 

@@ -79,32 +79,55 @@ TEST(midpoints_one_per_edge_opposite_the_corners) {
 }
 
 TEST(physical_groups_keep_positive_integer_markers_and_never_share_a_tag) {
-  const MeshPhysicalGroups m = physical_groups({5, 0, 7, 5, 2.5, -1, 7}, {3, 1, 3});
+  const MeshPhysicalGroups m = physical_groups({5, 0, 7, 5, 2.5, -1, 7}, {3, 1, 3}, true);
   const PhysicalGroups& g = m.lines;
   CHECK(g.values == (std::vector<double>{-1, 0, 2.5, 5, 7}));
-  CHECK(g.tags == (std::vector<long long>{8, 9, 10, 5, 7}));
+  // -1 and 0 by rule 2 (2000000000 - m), 2.5 by rule 4 (the first tag from 1900000000).
+  CHECK(g.tags == (std::vector<long long>{2000000001, 2000000000, 1900000000, 5, 7}));
   CHECK(g.group == (std::vector<std::uint32_t>{3, 1, 4, 3, 2, 0, 4}));
-  // Surfaces come after every line tag, even when their attribute is a positive integer.
+  // Attribute a is 1000000000 + a, apart from every marker's range.
   CHECK(m.surfaces.values == (std::vector<double>{1, 3}));
-  CHECK(m.surfaces.tags == (std::vector<long long>{11, 12}));
+  CHECK(m.surfaces.tags == (std::vector<long long>{1000000001, 1000000003}));
   CHECK(m.surfaces.group == (std::vector<std::uint32_t>{1, 0, 1}));
+  CHECK(m.clash.empty());
   CHECK_EQ(value_text(2.5), std::string("2.5"));
   CHECK_EQ(value_text(10), std::string("10"));
-  // The default marker 1 on every boundary edge: the domain must not be 1 too (GetDP's Region[1]).
-  const MeshPhysicalGroups plain = physical_groups({1, 1, 1}, {1});
+  // The default marker 1 on every boundary edge: the domain is not 1 too (GetDP's Region[1]).
+  const MeshPhysicalGroups plain = physical_groups({1, 1, 1}, {0});
   CHECK(plain.lines.tags == (std::vector<long long>{1}));
-  CHECK(plain.surfaces.tags == (std::vector<long long>{2}));
-  const MeshPhysicalGroups zeros = physical_groups({0, 0}, {1});
-  CHECK(zeros.lines.tags == (std::vector<long long>{1}));
-  CHECK(zeros.surfaces.tags == (std::vector<long long>{2}));
-  const MeshPhysicalGroups no_lines = physical_groups({}, {1});
-  CHECK(no_lines.surfaces.tags == (std::vector<long long>{1}));
+  CHECK(plain.surfaces.tags == (std::vector<long long>{1000000000}));
+  const MeshPhysicalGroups no_lines = physical_groups({}, {0});
+  CHECK(no_lines.surfaces.tags == (std::vector<long long>{1000000000}));
+}
+
+TEST(physical_tags_do_not_move_when_another_marker_changes) {
+  // Issue 46: a hole's marker 5 becomes 7; the domain and every other group keep their tags.
+  const MeshPhysicalGroups before = physical_groups({1, 2, 3, 4, 5, 0}, {0});
+  const MeshPhysicalGroups after = physical_groups({1, 2, 3, 4, 7, 0}, {0});
+  CHECK(before.lines.tags == (std::vector<long long>{2000000000, 1, 2, 3, 4, 5}));
+  CHECK(after.lines.tags == (std::vector<long long>{2000000000, 1, 2, 3, 4, 7}));
+  CHECK(before.surfaces.tags == after.surfaces.tags);
+  // With -A, attribute 10 is 1000000010 whatever the markers.
+  CHECK(physical_groups({1, 5}, {10, 20}, true).surfaces.tags == (std::vector<long long>{1000000010, 1000000020}));
+  CHECK(physical_groups({1, 9}, {10, 20}, true).surfaces.tags == (std::vector<long long>{1000000010, 1000000020}));
+}
+
+TEST(a_chosen_domain_tag_is_used_or_its_clash_named) {
+  const MeshPhysicalGroups six = physical_groups({1, 2, 5}, {0}, false, 6);
+  CHECK(six.surfaces.tags == (std::vector<long long>{6}));
+  CHECK(six.clash.empty());
+  const MeshPhysicalGroups five = physical_groups({1, 2, 5}, {0}, false, 5);
+  CHECK_EQ(five.clash, std::string("tag 5 would be both marker 5's and the domain's"));
+  // Under -A the chosen tag is the base: attributes 0 and 2 are 100 and 102.
+  const MeshPhysicalGroups base = physical_groups({1, 102}, {0, 2}, true, 100);
+  CHECK(base.surfaces.tags == (std::vector<long long>{100, 102}));
+  CHECK_EQ(base.clash, std::string("tag 102 would be both marker 102's and attribute 2's"));
 }
 
 TEST(marker_groups_are_the_line_rule_alone) {
-  // A surface in 3-D: facet markers -3, 0, 6, 5 (0 and -3 are no Gmsh tags: 7 and 8 after 6).
+  // A surface in 3-D: facet markers -3, 0, 6, 5 (0 and -3 are no Gmsh tags: 2000000003 and 2000000000).
   const PhysicalGroups g = marker_groups({6, -3, 0, 5, 6});
   CHECK(g.values == (std::vector<double>{-3, 0, 5, 6}));
-  CHECK(g.tags == (std::vector<long long>{7, 8, 5, 6}));
+  CHECK(g.tags == (std::vector<long long>{2000000003, 2000000000, 5, 6}));
   CHECK(g.group == (std::vector<std::uint32_t>{3, 0, 1, 2, 3}));
 }

@@ -7,7 +7,7 @@
 segment marker 1 and Neumann on markers 2 and 3, meshed by deltri -pq30a<A> at four successively
 halved area bounds. Asserted, from the solver's own output:
   * every marker arrived as its own boundary region: the lengths the solver integrates over
-    regions 1, 2, 3 are 4, 2, 2 (the true lengths), and the domain, region 4, has area 3;
+    regions 1, 2, 3 are 4, 2, 2 (the true lengths), and the domain, region 1000000000, has area 3;
   * the observed L2 convergence rate of P1 elements lies in [1.8, 2.2];
   * P2 gives a rate above 2.6: GetDP on deltri's -o2 (6-node) meshes, FreeFem++ (whose gmshload
     reads 3-node triangles only) with its P2 space on the linear meshes.
@@ -98,7 +98,7 @@ def freefem(work, msh, order):
     lengths = dict(zip(LENGTHS, (float(x) for x in lengths.split())))
     # Every boundary edge carries exactly one of the labels: the three add up to the whole boundary.
     if abs(sum(lengths.values()) - float(total)) > 1e-9 or abs(area - total_area) > 1e-9:
-        fail(f"FreeFem++ on {msh}: labels do not cover the boundary / region 4 is not the whole domain: {found}", regions=True)
+        fail(f"FreeFem++ on {msh}: labels do not cover the boundary / region 1000000000 is not the whole domain: {found}", regions=True)
     return float(found["err2"]), area, lengths
 
 
@@ -114,7 +114,7 @@ def study(work, label, switches, msh_format, solve):
         msh, triangles = mesh(work, area, switches, msh_format)
         err2, domain, lengths = solve(msh)
         if abs(domain - AREA) > 1e-9 or any(abs(lengths[k] - LENGTHS[k]) > 1e-9 for k in LENGTHS):
-            fail(f"{label} -a{area}: regions arrived wrong: domain (region 4) area {domain}, marker lengths {lengths}, expected {AREA} and {LENGTHS}", regions=True)
+            fail(f"{label} -a{area}: regions arrived wrong: domain (region 1000000000) area {domain}, marker lengths {lengths}, expected {AREA} and {LENGTHS}", regions=True)
         hs.append(math.sqrt(AREA / triangles))
         errors.append(math.sqrt(err2))
         print(f"  {label} -pq30a{area}{switches} --msh-format={msh_format}: {triangles} triangles, L2 error {errors[-1]:.4e}")

@@ -293,13 +293,17 @@ def check_run(deltri, inp, work, sw, q, amax):
 
 
 def rule_tags(markers):
-    """The physical tag of each marker by the documented rule."""
-    values = sorted(set(markers))
-    next_tag = max([v for v in values if v >= 1], default=0) + 1
-    tags = {}
-    for v in values:
-        tags[v] = v if v >= 1 else next_tag
-        next_tag += v < 1
+    """The physical tag of each marker by the documented rule (docs/formats.md, "Physical groups"):
+    a marker from 1 to 999999999 is its own tag, a marker m from -147483647 to 0 is 2000000000 - m,
+    any other the next tag from 1900000000 up in ascending order."""
+    tags, other = {}, 1900000000
+    for v in sorted(set(markers)):
+        if 1 <= v <= 999999999:
+            tags[v] = v
+        elif -147483647 <= v <= 0:
+            tags[v] = 2000000000 - v
+        else:
+            tags[v], other = other, other + 1
     return tags
 
 
