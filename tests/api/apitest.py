@@ -80,7 +80,7 @@ def write_poly(path, d):
 
 def write_files(stem, d):
     """d's vertices (and triangles, segments, holes, regions where it has them) as STEM.node,
-    STEM.ele and STEM.poly, numbered from 0, coordinates exact (repr)."""
+    STEM.ele and, where d has segments, STEM.poly, numbered from 0, coordinates exact (repr)."""
     v = np.asarray(d['vertices'], dtype=np.float64).reshape(-1, 2)
     rows = ['%d 2 0 0' % len(v)] + ['%d %r %r' % (k, x, y) for k, (x, y) in enumerate(v.tolist())]
     with open(stem + '.node', 'w') as f:
@@ -89,7 +89,9 @@ def write_files(stem, d):
         t = np.asarray(d['triangles'])[:, :3]
         with open(stem + '.ele', 'w') as f:
             f.write('%d 3 0\n' % len(t) + ''.join('%d %d %d %d\n' % (k, a, b, c) for k, (a, b, c) in enumerate(t.tolist())))
-    s = np.asarray(d.get('segments', np.zeros((0, 2))), dtype=np.int64).reshape(-1, 2)
+    if 'segments' not in d:
+        return
+    s = np.asarray(d['segments'], dtype=np.int64).reshape(-1, 2)
     h = np.asarray(d.get('holes', np.zeros((0, 2))), dtype=np.float64).reshape(-1, 2)
     r = np.asarray(d.get('regions', np.zeros((0, 4))), dtype=np.float64).reshape(-1, 4)
     with open(stem + '.poly', 'w') as f:
