@@ -263,6 +263,9 @@ def sample_examples():
           "get_data('A'): 11 vertices and segments numbered from 0, the hole")
     tr.plot(plt.axes(), **A)
     saved('PSLG')
+    ax = tr.plot(None, labels=True, **tr.get_data('box'))
+    check(sorted(t.get_text() for t in ax.texts) == sorted(str(k) for k in range(8)), 'plot(None, labels=True): new axes, the 8 vertices numbered')
+    plt.close('all')
     for name, opts, extra in (('constrained_delaunay', 'p', []), ('conforming_delaunay', 'pq0D', ['--refined', '--delaunay']),
                               ('constrained_conforming_delaunay', 'pq30', ['--refined', '--min-angle', '30'])):
         t = tr.triangulate(A, opts)

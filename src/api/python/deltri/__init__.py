@@ -637,12 +637,19 @@ def _lines(ax, vertices, pairs, **style):
 def plot(ax=None, **kw):
     """Draws a dict with the `triangle` package's keys on the matplotlib axes `ax` (new axes when
     None): vertices as dots, segments in red, triangles' edges, holes as crosses, edges with the
-    Voronoi rays (ray_origins, ray_directions), region points and triangle attributes labelled."""
+    Voronoi rays (ray_origins, ray_directions), region points and triangle attributes labelled;
+    labels=True numbers the vertices, markers=True writes their vertex_markers."""
     if ax is None:
         ax = _pyplot().axes()
     ax.set_aspect('equal')
     vertices = np.asarray(kw['vertices'], dtype=np.float64).reshape(-1, 2)
     ax.scatter(vertices[:, 0], vertices[:, 1], s=8, color='k', zorder=3)
+    # labels=True numbers the vertices, markers=True writes their markers, as in the package.
+    texts = (range(len(vertices)) if kw.get('labels') else
+             np.asarray(kw['vertex_markers']).reshape(-1) if kw.get('markers') and 'vertex_markers' in kw else None)
+    if texts is not None:
+        for (x, y), text in zip(vertices.tolist(), texts):
+            ax.text(x, y, str(text))
     if 'triangles' in kw and len(kw['triangles']):
         corners = np.asarray(kw['triangles'])[:, :3]
         _lines(ax, vertices, np.concatenate([corners[:, [0, 1]], corners[:, [1, 2]], corners[:, [2, 0]]]),
