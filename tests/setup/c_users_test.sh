@@ -5,10 +5,11 @@
 # with LD_LIBRARY_PATH there (ldconfig is for a real system prefix only) and its meshes must cover
 # the unit square: 4 triangles first (2n - 2 - h for 5 points, 4 on the hull), areas summing to 1,
 # none above 0.01 after the refinement. Then `make uninstall` must leave DESTDIR as it was, empty.
-#   c_users_test.sh SOURCE_DIR BUILD_DIR
+#   c_users_test.sh SOURCE_DIR BUILD_DIR [SANITIZER_FLAGS]
+# (SANITIZER_FLAGS: a sanitizer build's library needs their runtime in the client as well.)
 set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES GNUMAKEFLAGS
-src=$1 build=$2
+src=$1 build=$2 sanitize=${3:-}
 command -v pkg-config >/dev/null && command -v cc >/dev/null ||
   { echo "SKIP: missing pkg-config or cc; install with: sudo apt-get install -y pkg-config gcc"; exit 77; }
 work=$(mktemp -d) || exit 1
@@ -26,11 +27,11 @@ for flag in $cflags; do
 done
 [ -n "$found" ] || fail "pkg-config --cflags deltri gives '$cflags', without $root/include/deltri"
 cp "$src/tests/setup/triangle_h_client.c" "$work/client.c"
-(cd "$work" && cc client.c $(pkg-config --cflags --libs deltri) -o client) >"$work/log" 2>&1 ||
+(cd "$work" && cc $sanitize client.c $(pkg-config --cflags --libs deltri) -o client) >"$work/log" 2>&1 ||
   fail "cc client.c \$(pkg-config --cflags --libs deltri): $(cat "$work/log")"
 # <deltri/triangle.h> still works as well.
 printf '#include <deltri/triangle.h>\nint main(void) { trifree(0); return 0; }\n' >"$work/old.c"
-(cd "$work" && cc old.c $(pkg-config --cflags --libs deltri) -o old) >"$work/log" 2>&1 || fail "#include <deltri/triangle.h>: $(cat "$work/log")"
+(cd "$work" && cc $sanitize old.c $(pkg-config --cflags --libs deltri) -o old) >"$work/log" 2>&1 || fail "#include <deltri/triangle.h>: $(cat "$work/log")"
 if [ -x "$work/client" ]; then
   out=$(LD_LIBRARY_PATH="$root/lib" "$work/client") || fail "the client failed: $out"
   echo "$out"
