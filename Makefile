@@ -83,21 +83,17 @@ check-fresh:
 # deltri in $(PREFIX)/bin and its man page in $(PREFIX)/share/man/man1, the libraries
 # (libdeltri.so.0 and libdeltri.a) in $(PREFIX)/lib, the headers in $(PREFIX)/include/deltri, the
 # CMake package, the pkg-config file and the Python module (CMake's install rules; the list is
-# build/install_manifest.txt).
+# build/install_manifest.txt). ldconfig runs after it for /usr and /usr/local as root (install.sh).
 # (An existing build is installed as configured, e.g. build-sanitize; a new one is a Release build.)
 install:
 	@test -f $(BUILD)/CMakeCache.txt || cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target deltri deltri_shared deltri_static
-	@DESTDIR="$(DESTDIR)" cmake --install $(BUILD) --prefix "$(PREFIX)"
+	@sh src/api/packaging/install.sh install $(BUILD) "$(DESTDIR)" "$(PREFIX)"
 
 # Removes exactly what `make install` with the same PREFIX and DESTDIR put there, and the folders
-# of its own it leaves empty.
+# it created that are empty then (install.sh keeps their list in lib/cmake/deltri).
 uninstall:
-	rm -f "$(DESTDIR)$(PREFIX)/bin/deltri" "$(DESTDIR)$(PREFIX)/share/man/man1/deltri.1"
-	rm -f "$(DESTDIR)$(PREFIX)"/lib/libdeltri.so "$(DESTDIR)$(PREFIX)"/lib/libdeltri.so.* "$(DESTDIR)$(PREFIX)/lib/libdeltri.a"
-	rm -f "$(DESTDIR)$(PREFIX)/lib/pkgconfig/deltri.pc"
-	rm -rf "$(DESTDIR)$(PREFIX)/include/deltri" "$(DESTDIR)$(PREFIX)/lib/cmake/deltri"
-	rm -rf "$(DESTDIR)$(PREFIX)"/lib/python3*/dist-packages/deltri
+	@sh src/api/packaging/install.sh uninstall "$(DESTDIR)" "$(PREFIX)"
 
 # libFuzzer with clang, separate from the g++ build; see docs/reliability.md. Not part of CI.
 FUZZ_SECONDS ?= 60

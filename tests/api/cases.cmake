@@ -78,3 +78,9 @@ add_test(NAME api.cross_interface COMMAND sh -c "${API_NEEDS_NUMPY}" sh
          ${API_DIR}/cross_interface.py $<TARGET_FILE:deltri> $<TARGET_FILE:test_api_cross_c>
          $<TARGET_FILE:test_api_cross_cpp>)
 set_tests_properties(api.cross_interface PROPERTIES ENVIRONMENT "${API_PYTHON_ENV}" SKIP_RETURN_CODE 77 TIMEOUT 300)
+# The `triangle` package's documented examples with `import deltri as tr` (issue 46): every mesh
+# through deltri_mesh_verify and the exact checker, plots through matplotlib's Agg backend.
+# Skipped (77) without python3-numpy or python3-matplotlib, saying what installs them.
+add_test(NAME api.triangle_package COMMAND sh -c "${API_NEEDS_NUMPY}" sh
+         ${API_DIR}/triangle_package.py $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify> ${CMAKE_SOURCE_DIR})
+set_tests_properties(api.triangle_package PROPERTIES ENVIRONMENT "${API_PYTHON_ENV};MPLBACKEND=Agg" SKIP_RETURN_CODE 77 TIMEOUT 600)

@@ -25,6 +25,7 @@ import tempfile
 import numpy as np
 
 import deltri
+from apitest import check, finish, read_output, write_poly
 
 POINTS = [[0, 0], [3, 0], [3, 3], [0, 3], [1, 1], [2, 1], [2, 2], [1, 2]]
 SEGMENTS = [[0, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 7], [7, 4]]
@@ -51,35 +52,6 @@ CASES = [
     ('threads=0', 'pq30 --threads=0', {}, 2),
     ('unknown option', 'pq30 --no-such-option', {}, 2),
 ]
-
-failures = []
-
-
-def check(condition, what):
-    print(('ok   ' if condition else 'FAIL ') + what)
-    if not condition:
-        failures.append(what)
-
-
-def lines(path):
-    return [l for l in (raw.split('#')[0].split() for raw in open(path)) if l]
-
-
-def write_poly(path, d):
-    with open(path, 'w') as f:
-        f.write('%d 2 0 0\n' % len(d['vertices']))
-        for k, (x, y) in enumerate(d['vertices']):
-            f.write('%d %r %r\n' % (k, float(x), float(y)))
-        f.write('%d 0\n' % len(d['segments']))
-        for k, (a, b) in enumerate(d['segments']):
-            f.write('%d %d %d\n' % (k, a, b))
-        f.write('%d\n' % len(d['holes']))
-        for k, (x, y) in enumerate(d['holes']):
-            f.write('%d %r %r\n' % (k, float(x), float(y)))
-        f.write('%d\n' % len(d.get('regions', [])))
-        for k, r in enumerate(d.get('regions', [])):
-            f.write('%d %s\n' % (k, ' '.join(repr(float(x)) for x in r)))
-
 
 def write_flat(path, d):
     with open(path, 'w') as f:
@@ -108,13 +80,9 @@ def from_cli(deltri_path, d, switches, work):
                          capture_output=True, text=True)
     if run.returncode != 0:
         return ('status', run.returncode, run.stderr.strip())
-    node, ele, poly = (lines(os.path.join(work, 'square.1.' + e)) for e in ('node', 'ele', 'poly'))
-    n, t, na = int(node[0][0]), int(ele[0][0]), int(ele[0][2])
-    ns = int(poly[1][0])
-    return mesh([[float(x) for x in f[1:3]] for f in node[1:1 + n]],
-                [[int(x) for x in f[1:4]] for f in ele[1:1 + t]],
-                [[float(x) for x in f[4:4 + na]] for f in ele[1:1 + t]],
-                [[int(x) for x in f[1:3]] for f in poly[2:2 + ns]])
+    m = read_output(os.path.join(work, 'square.1'))
+    t = m['triangles']
+    return mesh(m['vertices'], t, m.get('triangle_attributes', np.zeros((len(t), 0))), m['segments'])
 
 
 def from_client(client, d, switches, work):
@@ -204,9 +172,7 @@ def main():
                       '%s: the four interfaces give the same mesh' % label)
     finally:
         shutil.rmtree(work)
-    if failures:
-        print('%d failures' % len(failures))
-        sys.exit(1)
+    finish()
 
 
 main()

@@ -12,19 +12,7 @@ import tempfile
 import numpy as np
 
 import deltri
-
-failures = []
-
-
-def check(condition, what):
-    print(('ok   ' if condition else 'FAIL ') + what)
-    if not condition:
-        failures.append(what)
-
-
-def lines(path):
-    return [l for l in (raw.split('#')[0].split() for raw in open(path)) if l]
-
+from apitest import check, finish, lines, read_output
 
 def read_poly(path):
     """A .poly as the `triangle` package's dict (numbered from 0)."""
@@ -57,33 +45,7 @@ def cli(deltri_path, source, switches, work):
     shutil.copy(source, work)
     name = os.path.basename(source)
     subprocess.run([deltri_path, '-' + switches, name], cwd=work, check=True, capture_output=True)
-    stem = os.path.join(work, name.rsplit('.', 1)[0] + '.1')
-    node, ele = lines(stem + '.node'), lines(stem + '.ele')
-    n, _, na, nm = (int(x) for x in node[0][:4])
-    f0 = int(node[1][0])  # as in Triangle, the input's first index numbers the files, -z or not
-
-    def ix(x):
-        return int(x) - f0 if int(x) >= 0 else int(x)
-    t, c, ta = (int(x) for x in ele[0][:3])
-    out = {'vertices': np.array([[float(f[1]), float(f[2])] for f in node[1:1 + n]]),
-           'triangles': np.array([[ix(x) for x in f[1:1 + c]] for f in ele[1:1 + t]])}
-    if na:
-        out['vertex_attributes'] = np.array([[float(x) for x in f[3:3 + na]] for f in node[1:1 + n]])
-    if nm:
-        out['vertex_markers'] = np.array([[int(f[3 + na])] for f in node[1:1 + n]])
-    if ta:
-        out['triangle_attributes'] = np.array([[float(x) for x in f[1 + c:1 + c + ta]] for f in ele[1:1 + t]])
-    poly = lines(stem + '.poly')
-    ns = int(poly[1][0])
-    out['segments'] = np.array([[ix(f[1]), ix(f[2])] for f in poly[2:2 + ns]])
-    out['segment_markers'] = np.array([[int(f[3])] for f in poly[2:2 + ns]])
-    if os.path.exists(stem + '.edge'):
-        edge = lines(stem + '.edge')
-        out['edges'] = np.array([[ix(f[1]), ix(f[2])] for f in edge[1:]])
-        out['edge_markers'] = np.array([[int(f[3])] for f in edge[1:]])
-    if os.path.exists(stem + '.neigh'):
-        out['neighbors'] = np.array([[ix(x) for x in f[1:4]] for f in lines(stem + '.neigh')[1:]])
-    return out
+    return read_output(os.path.join(work, name.rsplit('.', 1)[0] + '.1'))
 
 
 def areas(m):
@@ -274,9 +236,7 @@ def main():
 
     finally:
         shutil.rmtree(work)
-    if failures:
-        print('%d failures' % len(failures))
-        sys.exit(1)
+    finish()
 
 
 main()

@@ -15,6 +15,7 @@ PY=/usr/bin/python3
 # package|how to tell it is there
 PACKAGES='python3-meshio|py:meshio
 python3-numpy|py:numpy
+python3-matplotlib|py:matplotlib
 pkg-config|cmd:pkg-config
 binutils|cmd:objdump
 gmsh|cmd:gmsh

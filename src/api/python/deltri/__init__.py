@@ -387,3 +387,323 @@ def mesh_surface(d, opts=''):
             result[key] = a.reshape(-1) if key == 'triangle_facets' else a
     _lib.deltri_surface_free(ctypes.byref(io_out))
     return result
+
+
+# The rest of the `triangle` package's interface (drufat's Python wrapper of Triangle), so that code
+# written for it runs with `import deltri as triangle`: delaunay, convex_hull, voronoi, loads, load,
+# get_data, show_data, plot, compare and comparev, with its argument forms and results
+# (docs/library.md, "The triangle package's other functions").
+
+__version__ = version()
+__all__ += ['delaunay', 'convex_hull', 'voronoi', 'loads', 'load', 'get_data', 'get_data_dir', 'show_data',
+            'plot', 'compare', 'comparev', '__version__']
+
+
+def _points(pts):
+    return {'vertices': pts}
+
+
+def delaunay(pts):
+    """The Delaunay triangulation of the points pts ((n, 2)): its triangles, (t, 3) vertex numbers
+    from 0, counter-clockwise."""
+    return triangulate(_points(pts), '')['triangles']
+
+
+def convex_hull(pts):
+    """The convex hull of the points pts ((n, 2)): its edges as segments, (h, 2) vertex numbers."""
+    return triangulate(_points(pts), 'c')['segments']
+
+
+def voronoi(pts):
+    """The Voronoi diagram of the points pts: (points, edges, ray_origins, ray_directions), the
+    Voronoi vertices (m, 2), the finite edges (k, 2), and for each infinite edge (ray) the Voronoi
+    vertex it starts at (r,) and its direction (r, 2)."""
+    m = triangulate(_points(pts), 'v')
+    points = m.get('voronoi_vertices', np.zeros((0, 2)))
+    edges = m.get('voronoi_edges', np.zeros((0, 2), dtype=np.intc))
+    directions = m.get('voronoi_ray_directions', np.zeros((0, 2)))
+    ray = edges[:, 1] == -1
+    return points, edges[~ray], edges[ray][:, 0], directions[ray]
+
+
+class _Table:
+    """The numbers of one Triangle file (.node, .ele, .poly, ...), line by line without comments, read
+    the way the `triangle` package reads them; an error names the file and the line."""
+
+    def __init__(self, kind, text):
+        self.kind, self.rows = kind, []
+        for number, line in enumerate(text.splitlines(), 1):
+            words = line.split('#', 1)[0].split()
+            if words:
+                self.rows.append((number, words))
+        self.at = 0
+
+    def fail(self, what, number=None):
+        where = '%s: line %d' % (self.kind, number) if number else self.kind
+        _fail('%s: %s' % (where, what))
+
+    def take(self, count, least):
+        """The next `count` rows, each with at least `least` numbers."""
+        if self.at + count > len(self.rows):
+            self.fail('the file ends after %d of %d items' % (len(self.rows) - self.at, count))
+        rows = self.rows[self.at:self.at + count]
+        self.at += count
+        for number, words in rows:
+            if len(words) < least:
+                self.fail('%d numbers, at least %d expected' % (len(words), least), number)
+        return rows
+
+    def header(self, least, defaults):
+        """The header line's numbers (missing trailing ones from defaults); None at the end."""
+        if self.at >= len(self.rows):
+            return None
+        number, words = self.take(1, least)[0]
+        try:
+            values = [int(w) for w in words[:len(defaults)]]
+        except ValueError:
+            self.fail('the header "%s" is not a list of whole numbers' % ' '.join(words), number)
+        if any(v < 0 for v in values):
+            self.fail('a negative count in the header "%s"' % ' '.join(words), number)
+        return values + defaults[len(values):]
+
+    def numbers(self, rows, first, last, dtype):
+        try:
+            return np.array([[float(w) for w in words[first:last]] for _, words in rows]).astype(dtype)
+        except ValueError as e:
+            self.fail(str(e), rows[0][0])
+
+
+def _loads_vertices(table, data, numbering):
+    head = table.header(1, [0, 2, 0, 0])
+    if head is None or head[0] == 0:
+        return
+    n, dimension, attributes, markers = head
+    rows = table.take(n, 1 + dimension + attributes + markers)
+    numbering[0] = int(float(rows[0][1][0]))
+    data['vertices'] = table.numbers(rows, 1, 3, np.float64)
+    if attributes:
+        data['vertex_attributes'] = table.numbers(rows, 1 + dimension, 1 + dimension + attributes, np.float64)
+    if markers:
+        start = 1 + dimension + attributes
+        data['vertex_markers'] = table.numbers(rows, start, start + 1, np.intc)
+
+
+def _loads_poly(table, data, numbering):
+    _loads_vertices(table, data, numbering)
+    head = table.header(1, [0, 0])
+    if head is None:
+        return
+    rows = table.take(head[0], 3 + head[1])
+    if rows:
+        data['segments'] = table.numbers(rows, 1, 3, np.intc) - numbering[0]
+        if head[1]:
+            data['segment_markers'] = table.numbers(rows, 3, 4, np.intc)
+    head = table.header(1, [0])
+    rows = table.take(head[0], 3) if head else []
+    if rows:
+        data['holes'] = table.numbers(rows, 1, 3, np.float64)
+    head = table.header(1, [0])
+    rows = table.take(head[0], 4) if head else []
+    if rows:
+        # x, y, attribute, area; a line with one value after x and y (la.poly) gives its area bound and
+        # attribute 0, as the `triangle` package reads it.
+        data['regions'] = np.array([[float(w) for w in words[1:3]] +
+                                    ([float(w) for w in words[3:5]] if len(words) >= 5 else [0.0, float(words[3])])
+                                    for _, words in rows])
+
+
+def _loads_ele(table, data, numbering):
+    head = table.header(1, [0, 3, 0])
+    if head is None or head[0] == 0:
+        return
+    t, corners, attributes = head
+    rows = table.take(t, 1 + corners + attributes)
+    data['triangles'] = table.numbers(rows, 1, 1 + corners, np.intc) - numbering[0]
+    if attributes:
+        data['triangle_attributes'] = table.numbers(rows, 1 + corners, 1 + corners + attributes, np.float64)
+
+
+def _loads_edge(table, data, numbering):
+    head = table.header(1, [0, 0])
+    if head is None or head[0] == 0:
+        return
+    rows = table.take(head[0], 3)
+    rays = [r for r in rows if int(float(r[1][2])) == -1]
+    finite = [r for r in rows if int(float(r[1][2])) != -1]
+    if finite:
+        data['edges'] = table.numbers(finite, 1, 3, np.intc) - numbering[0]
+        if head[1]:
+            data['edge_markers'] = table.numbers(finite, 3, 4, np.intc)
+    if rays:
+        bad = [number for number, words in rays if len(words) < 5]
+        if bad:
+            table.fail('a ray (second end -1) without its direction', bad[0])
+        data['ray_origins'] = table.numbers(rays, 1, 2, np.intc) - numbering[0]
+        data['ray_directions'] = table.numbers(rays, 3, 5, np.float64)
+
+
+def _loads_area(table, data, numbering):
+    head = table.header(1, [0])
+    if head and head[0]:
+        data['triangle_max_area'] = table.numbers(table.take(head[0], 2), 1, 2, np.float64)
+
+
+def _loads_neigh(table, data, numbering):
+    head = table.header(1, [0, 3])
+    if head and head[0]:
+        neighbors = table.numbers(table.take(head[0], 1 + head[1]), 1, 1 + head[1], np.intc)
+        data['triangle_neighbors'] = np.where(neighbors >= 0, neighbors - numbering[0], neighbors)
+
+
+def loads(node=None, ele=None, poly=None, area=None, edge=None, neigh=None):
+    """The dict of Triangle files given as strings (.node, .ele, .poly, .area, .edge, .neigh), with
+    the `triangle` package's keys, numbered from 0 (files that number from 1 are renumbered, as the
+    first vertex's number says). Raises DeltriError (a ValueError) naming the file and line."""
+    data, numbering = {}, [0]
+    for kind, text, reader in (('node', node, _loads_vertices), ('poly', poly, _loads_poly), ('ele', ele, _loads_ele),
+                               ('area', area, _loads_area), ('edge', edge, _loads_edge),
+                               ('neigh', neigh, _loads_neigh)):
+        if text:
+            reader(_Table(kind, text), data, numbering)
+    return data
+
+
+def load(directory, name):
+    """loads() on the files directory/name.node, .ele, .poly, .area, .edge and .neigh that exist."""
+    texts = {}
+    for kind in ('node', 'ele', 'poly', 'area', 'edge', 'neigh'):
+        path = os.path.join(directory, name + '.' + kind)
+        if os.path.exists(path):
+            with open(path) as f:
+                texts[kind] = f.read()
+    return loads(**texts)
+
+
+def _data_dirs():
+    """Where get_data looks: $DELTRI_TRIANGLE_DATA (folders separated by ':'), then the data folder
+    of the `triangle` package where it is installed. deltri ships none of its samples (their
+    licences are not deltri's; docs/library.md)."""
+    dirs = [d for d in os.environ.get('DELTRI_TRIANGLE_DATA', '').split(os.pathsep) if d]
+    try:
+        import importlib.util
+        spec = importlib.util.find_spec('triangle')
+    except (ImportError, ValueError):
+        spec = None
+    if spec is not None and spec.submodule_search_locations:
+        dirs += [os.path.join(location, 'data') for location in spec.submodule_search_locations]
+    return [d for d in dirs if os.path.isdir(d)]
+
+
+def get_data_dir():
+    """The first folder get_data looks in (None when there is none)."""
+    dirs = _data_dirs()
+    return dirs[0] if dirs else None
+
+
+def get_data(name):
+    """The sample `name` ('A', 'dots', 'face.1', ...) as a dict, from the first folder that has one of
+    its files: $DELTRI_TRIANGLE_DATA, else the installed `triangle` package's data folder."""
+    dirs = _data_dirs()
+    for d in dirs:
+        if any(os.path.exists(os.path.join(d, name + '.' + k)) for k in ('node', 'ele', 'poly', 'area', 'edge', 'neigh')):
+            return load(d, name)
+    _fail("get_data: no sample '%s' in %s; deltri ships none of the triangle package's samples: set "
+          "DELTRI_TRIANGLE_DATA to a folder of Triangle files (docs/library.md)" %
+          (name, ', '.join(dirs) if dirs else 'any folder (DELTRI_TRIANGLE_DATA is not set and the triangle package is not installed)'))
+
+
+def _pyplot():
+    try:
+        import matplotlib.pyplot as plt
+    except ImportError as e:
+        raise ImportError('deltri: plotting needs matplotlib (Debian: apt-get install python3-matplotlib; '
+                          'or pip install matplotlib): %s' % e) from e
+    return plt
+
+
+def show_data(name):
+    """Plots the sample `name` (get_data) with matplotlib and shows it."""
+    plt = _pyplot()
+    plot(plt.axes(), **get_data(name))
+    plt.show()
+
+
+def _lines(ax, vertices, pairs, **style):
+    from matplotlib.collections import LineCollection
+    if len(pairs):
+        ax.add_collection(LineCollection(vertices[np.asarray(pairs)], **style))
+
+
+def plot(ax=None, **kw):
+    """Draws a dict with the `triangle` package's keys on the matplotlib axes `ax` (new axes when
+    None): vertices as dots, segments in red, triangles' edges, holes as crosses, edges with the
+    Voronoi rays (ray_origins, ray_directions), region points and triangle attributes labelled;
+    labels=True numbers the vertices, markers=True writes their vertex_markers."""
+    if ax is None:
+        ax = _pyplot().axes()
+    ax.set_aspect('equal')
+    vertices = np.asarray(kw['vertices'], dtype=np.float64).reshape(-1, 2)
+    ax.scatter(vertices[:, 0], vertices[:, 1], s=8, color='k', zorder=3)
+    # labels=True numbers the vertices, markers=True writes their markers, as in the package.
+    texts = (range(len(vertices)) if kw.get('labels') else
+             np.asarray(kw['vertex_markers']).reshape(-1) if kw.get('markers') and 'vertex_markers' in kw else None)
+    if texts is not None:
+        for (x, y), text in zip(vertices.tolist(), texts):
+            ax.text(x, y, str(text))
+    if 'triangles' in kw and len(kw['triangles']):
+        corners = np.asarray(kw['triangles'])[:, :3]
+        _lines(ax, vertices, np.concatenate([corners[:, [0, 1]], corners[:, [1, 2]], corners[:, [2, 0]]]),
+               colors='k', linewidths=0.5, zorder=1)
+    if 'segments' in kw:
+        _lines(ax, vertices, kw['segments'], colors='r', linewidths=2.5, zorder=2)
+    if 'edges' in kw:
+        _lines(ax, vertices, kw['edges'], colors='k', linewidths=0.5, zorder=1)
+    ax.autoscale_view()
+    if 'ray_origins' in kw and 'ray_directions' in kw and len(kw['ray_origins']):
+        # A ray is drawn to well past the current view, which is kept.
+        limits = ax.axis()
+        reach = 100.0 * max(limits[1] - limits[0], limits[3] - limits[2], 1.0)
+        start = vertices[np.asarray(kw['ray_origins']).reshape(-1)]
+        direction = np.asarray(kw['ray_directions'], dtype=np.float64).reshape(-1, 2)
+        length = np.maximum(np.hypot(direction[:, 0], direction[:, 1]), 1e-300)
+        from matplotlib.collections import LineCollection
+        ax.add_collection(LineCollection(np.stack([start, start + direction * (reach / length)[:, None]], axis=1),
+                                         colors='k', linewidths=0.5, zorder=1))
+        ax.axis(limits)
+    if 'holes' in kw and len(kw['holes']):
+        holes = np.asarray(kw['holes'], dtype=np.float64).reshape(-1, 2)
+        ax.scatter(holes[:, 0], holes[:, 1], marker='x', color='r', zorder=4)
+    if 'regions' in kw and len(kw['regions']):
+        regions = np.asarray(kw['regions'], dtype=np.float64).reshape(-1, 4)
+        ax.scatter(regions[:, 0], regions[:, 1], marker='*', color='b', zorder=4)
+        for x, y, attribute, _ in regions:
+            ax.text(x, y, ' %g' % attribute, color='b', va='center')
+    if 'triangle_attributes' in kw and 'triangles' in kw and len(kw['triangles']):
+        centres = vertices[np.asarray(kw['triangles'])[:, :3]].mean(axis=1)
+        values = np.asarray(kw['triangle_attributes']).reshape(len(centres), -1)[:, 0]
+        for (x, y), value in zip(centres, values):
+            ax.text(x, y, '%g' % value, color='m', fontsize='x-small', ha='center', va='center')
+    ax.get_xaxis().set_visible(False)
+    ax.get_yaxis().set_visible(False)
+    return ax
+
+
+def _pair(plt, A, B, figsize, first, second, shared):
+    plt.figure(figsize=figsize)
+    left = plt.subplot(first)
+    plot(left, **A)
+    limits = left.axis()
+    right = plt.subplot(second, **{shared: left})
+    plot(right, **B)
+    right.axis(limits)
+    plt.tight_layout()
+
+
+def compare(plt, A, B, figsize=(6, 3)):
+    """A and B side by side (plt is matplotlib.pyplot), B in A's frame."""
+    _pair(plt, A, B, figsize, 121, 122, 'sharey')
+
+
+def comparev(plt, A, B, figsize=(3, 6)):
+    """A above B (plt is matplotlib.pyplot), B in A's frame."""
+    _pair(plt, A, B, figsize, 211, 212, 'sharex')
