@@ -7,8 +7,8 @@ show what the program does, not what an older one did). Not a test; it needs the
 lopping: --corner-lopping against the Terminator at -pq20 and -pq30 (triangles, angles under q over
          every angle of every triangle, shortest edge over the input's shortest segment) on the
          generated inputs of tests/refine/corner_lopping.py and the corpus files below.
-limits:  Ruppert's and Chew's algorithms at -pq30, -pq33 and -pq34 on every .poly of CORPUS_DIR under
-         200 kB (triangles, smallest angle, and whether the Steiner cap or the two-stage take-back
+limits:  Ruppert's and Chew's algorithms at -pq30, -pq33 and -pq34 on every 2-D .poly of CORPUS_DIR
+         under 200 kB (triangles, smallest angle, and whether the Steiner cap or the two-stage take-back
          ended the run: refine/refine.cpp, refine_in_stages).
 Both print Markdown tables; every run has a 120 s limit ("timeout" in the table).
 """
@@ -78,9 +78,19 @@ def mesh_figures(path):
     return int(rows[0][0]), worst
 
 
+def planar(path):
+    """A 2-D .poly: its header's dimension is 2 (a 3-D one is read as facets, not meshed in the plane)."""
+    for line in open(path, errors='replace'):
+        words = line.split('#')[0].split()
+        if words:
+            return len(words) > 1 and words[1] == '2'
+    return False
+
+
 def limits_table(deltri, corpus, work):
     files = sorted(os.path.join(root, f) for root, _, fs in os.walk(corpus) for f in fs
-                   if f.endswith('.poly') and os.path.getsize(os.path.join(root, f)) < 200_000)
+                   if f.endswith('.poly') and os.path.getsize(os.path.join(root, f)) < 200_000
+                   and planar(os.path.join(root, f)))
     cells = ['ruppert -pq30', 'ruppert -pq33', 'ruppert -pq34', 'chew -pq30', 'chew -pq33', 'chew -pq34']
     print('| input | ' + ' | '.join(cells) + ' |')
     print('|---|' + '---|' * len(cells))
