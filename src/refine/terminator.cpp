@@ -9,6 +9,7 @@
 #include "geometry/box.h"
 #include "geometry/constructions.h"
 #include "geometry/lattice.h"
+#include "refine/criteria.h"
 #include "mesh/operations.h"
 #include "refine/bottom_scale.h"
 #include "refine/split_permitted.h"
@@ -227,9 +228,9 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
     : mesh_(mesh),
       pred_(pred),
       opt_(opt),
-      rules_{opt.angle, opt.size, opt.area_field, opt.size_test},
+      rules_{opt.angle, opt.size, opt.max_angle, opt.area_field, opt.size_test},
       interior_rules_{opt.interior_bound != 0 ? AngleBound(std::max(opt.angle.degrees(), kInteriorBoundDeg)) : opt.angle,
-                      opt.size, opt.area_field, opt.size_test},
+                      opt.size, opt.max_angle, opt.area_field, opt.size_test},
       rule_(rule_for(opt)),
       candidate_rule_(candidate_rule_for(opt, rule_)),
       // Ruppert and Chew insert circumcentres (Sec. 3.1, 4.1).
