@@ -150,6 +150,7 @@ struct RefineReport : RefineWork {
   double worst_min_angle_deg = 0.0;       // its smallest angle
   Point worst_location;                   // its centroid
   std::uint64_t oversized_left = 0;       // the ones over a size bound
+  std::uint64_t obtuse_left = 0;          // the ones with an angle above --max-angle
   double worst_size_excess = 0.0;         // the largest size_excess (refine/criteria.h)
   Point worst_size_location;              // that triangle's centroid
   std::size_t peak_queue = 0;             // bad-triangle queue

@@ -163,10 +163,13 @@ EncroachRule rule_for(const RefineOptions& opt) {
 }
 
 // Whether the paper's theorems cover this run (termination_guard.h, within_proven_range): its
-// algorithm as the paper analyses it, the segments split wherever they are encroached upon.
+// algorithm as the paper analyses it, the segments split wherever they are encroached upon. A
+// largest-angle bound A is covered only where -q implies it (every angle below 180 - 2 theta):
+// below that no theorem says that circumcentres of obtuse triangles ever run out.
 bool proven_for(const RefineOptions& opt, double input_angle) {
   if (opt.no_steiner_on_segments != 0 || opt.interior_bound != 0 || opt.range_restricted || opt.lopped_apices)
     return false;
+  if (opt.max_angle.asked() && opt.max_angle.degrees() < 180.0 - 2.0 * opt.angle.degrees()) return false;
   const SplitRule rule = opt.algorithm == RefinementAlgorithm::Chew ? SplitRule::Chew
                          : rule_for(opt).min_apex_angle_deg == 90.0 ? SplitRule::DiametralCircles
                                                                     : SplitRule::DiametralLenses;
