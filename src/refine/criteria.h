@@ -22,7 +22,7 @@ namespace deltri {
 struct Criteria {
   AngleBound angle;  // its sin2() is the angle test; 0 turns it off
   SizeBounds size;   // triangle_bounds: also honour mesh.area_bound[t] when positive
-  LargestAngleBound max_angle;  // --max-angle; not asked(): none
+  LargestAngleBound max_angle = {};  // --max-angle; not asked(): none
   // With bounds that vary within a region (-r with an .area file), the field gives each triangle
   // its bound instead of mesh.area_bound (refine/area_field.h); null or empty: not used.
   const AreaField* area_field = nullptr;
@@ -128,6 +128,12 @@ bool angle_exceeds(const Point& p, const Point& a, const Point& b, const Largest
 
 // The corner (0, 1, 2) of triangle a, b, c whose angle exceeds the bound, or -1. At most one can.
 int corner_above(const Point& a, const Point& b, const Point& c, const LargestAngleBound& bound);
+
+// Whether -q implies the largest-angle bound: a triangle whose smallest angle is at least theta has
+// none above 180 - 2 theta.
+inline bool max_angle_implied(const LargestAngleBound& max_angle, const AngleBound& angle) {
+  return !max_angle.asked() || max_angle.degrees() >= 180.0 - 2.0 * angle.degrees();
+}
 
 // Whether a surface triangle's smallest angle (in degrees, measured in space) is below -q's.
 inline bool below_angle_bound(double smallest_degrees, const AngleBound& angle) {

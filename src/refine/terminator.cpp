@@ -169,7 +169,7 @@ EncroachRule rule_for(const RefineOptions& opt) {
 bool proven_for(const RefineOptions& opt, double input_angle) {
   if (opt.no_steiner_on_segments != 0 || opt.interior_bound != 0 || opt.range_restricted || opt.lopped_apices)
     return false;
-  if (opt.max_angle.asked() && opt.max_angle.degrees() < 180.0 - 2.0 * opt.angle.degrees()) return false;
+  if (!max_angle_implied(opt.max_angle, opt.angle)) return false;
   const SplitRule rule = opt.algorithm == RefinementAlgorithm::Chew ? SplitRule::Chew
                          : rule_for(opt).min_apex_angle_deg == 90.0 ? SplitRule::DiametralCircles
                                                                     : SplitRule::DiametralLenses;
