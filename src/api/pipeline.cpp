@@ -169,17 +169,11 @@ void rebuild(Mesh& mesh, const Pslg& pslg, const PipelineSource& source, const S
 
 bool area_bounds_read(const PipelineSource& source) { return source.previous && source.previous->area_bounds; }
 
-// The bounds asked for, made once from the switches: refinement and the account of misses both take them.
-AngleBound angle_bound(const Switches& sw) { return sw.quality ? AngleBound(sw.min_angle) : AngleBound(); }
-
-SizeBounds size_bounds(const Switches& sw, bool area_file) {
-  return {sw.fixed_area ? sw.max_area : 0.0, sw.variable_area || area_file, sw.user_test ? sw.max_edge_length : 0.0};
-}
-
-BoundRequest bound_request(const Switches& sw, const PipelineSource& source, const RunReport& report) {
+BoundRequest bound_request(const Criteria& criteria, const Switches& sw, const RunReport& report) {
   BoundRequest r;
-  r.angle = angle_bound(sw);
-  r.size = size_bounds(sw, area_bounds_read(source));
+  r.angle = criteria.angle;
+  r.size = criteria.size;
+  r.max_angle = criteria.max_angle;
   r.steiner_limited = report.refine && report.refine->stopped_by_max_steiner;
   r.segments_kept_whole = sw.no_boundary_steiner > 0;
   r.threads = threads_to_use(sw);
@@ -202,10 +196,19 @@ void smooth(Mesh& mesh, const Switches& sw, const PipelineSource& source, RunRep
 
 }  // namespace
 
-RefineOptions refine_options(const Switches& sw, bool area_file) {
+Criteria criteria_of(const Switches& sw, bool area_file) {
+  Criteria c;
+  if (sw.quality) c.angle = AngleBound(sw.min_angle);
+  c.size = {sw.fixed_area ? sw.max_area : 0.0, sw.variable_area || area_file, sw.user_test ? sw.max_edge_length : 0.0};
+  if (sw.max_angle > 0.0) c.max_angle = LargestAngleBound(sw.max_angle);
+  return c;
+}
+
+RefineOptions refine_options(const Switches& sw, const Criteria& criteria) {
   RefineOptions opt;
-  opt.angle = angle_bound(sw);
-  opt.size = size_bounds(sw, area_file);
+  opt.angle = criteria.angle;
+  opt.size = criteria.size;
+  opt.max_angle = criteria.max_angle;
   opt.lenses = !sw.conforming_delaunay;
   opt.conforming_delaunay = sw.conforming_delaunay;
   opt.no_steiner_on_segments = sw.no_boundary_steiner;
@@ -222,7 +225,7 @@ RefineOptions refine_options(const Switches& sw, bool area_file) {
 }
 
 bool refinement_wanted(const Switches& sw, const PipelineSource& source) {
-  return sw.quality || sw.fixed_area || sw.variable_area || area_bounds_read(source) || sw.user_test ||
+  return sw.quality || sw.max_angle > 0.0 || sw.fixed_area || sw.variable_area || area_bounds_read(source) || sw.user_test ||
          sw.conforming_delaunay || source.size_test != nullptr;
 }
 
@@ -243,6 +246,8 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     check_coordinate_range_for_refinement(pslg, pslg.source_name.empty() ? source.name : pslg.source_name);
   report.input_name = source.name;
   report.area_file = area_bounds_read(source);
+  // The bounds, made once from the switches: refinement and the account of misses both read them.
+  const Criteria criteria = criteria_of(sw, report.area_file);
   report.pslg = &pslg;
   report.input_vertices = pslg.points.size();
   report.input_segments = pslg.segments.size();
@@ -286,7 +291,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     if (!source.is_poly && !sw.convex_hull && !rebuilding) enclose_convex_hull(mesh);  // a point set is bounded by its hull
     Predicates pred;
     if (!rebuilding && (sw.convex_hull || !source.is_poly)) report.hull_absorbed = absorb_near_hull_vertices(mesh, pred);
-    RefineOptions opt = refine_options(sw, area_bounds_read(source));
+    RefineOptions opt = refine_options(sw, criteria);
     opt.size_test = source.size_test;
     opt.area_field = &area_field;
     opt.straight_chains = rebuilding;
@@ -333,7 +338,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
   // After -C, which checks the constrained Delaunay triangulation refinement made, with the lopped
   // corners' chords and spokes still constrained: the fans need not be Delaunay without them.
   forget_lopping_edges(mesh, lopping.internal);
-  if (refinement_wanted(sw, source)) report.misses = count_bound_misses(mesh, bound_request(sw, source, report));
+  if (refinement_wanted(sw, source)) report.misses = count_bound_misses(mesh, bound_request(criteria, sw, report));
 
   if (sw.order == 2) result.midpoints = add_edge_midpoints(mesh);
   result.numbering = vertex_numbering(mesh, sw.jettison, result.midpoints);

@@ -16,6 +16,7 @@
 #include "io/ele_file.h"
 #include "mesh/mesh.h"
 #include "pslg/pslg.h"
+#include "refine/criteria.h"
 #include "refine/refine.h"
 #include "refine/size_test.h"
 #include "util/progress.h"
@@ -49,9 +50,13 @@ struct PipelineResult {
 // Told the name of each stage as it ends (the command line's timings).
 using StageListener = std::function<void(const char*)>;
 
-// The refinement options the switches ask for (-q, -a, -u, -D, -Y, -S, -k, --queue, ...); with
-// area_file, per-triangle bounds are honoured (-a bare, or an .area read). Also the facets' (3-D).
-RefineOptions refine_options(const Switches& sw, bool area_file);
+// The bounds the switches ask for (-q, --max-angle, -a, -u), each made once; with area_file,
+// per-triangle bounds are honoured (-a bare, or an .area read).
+Criteria criteria_of(const Switches& sw, bool area_file);
+
+// The refinement options the switches ask for (-D, -Y, -S, -k, --queue, ...), with the criteria's
+// bounds. Also the facets' (3-D).
+RefineOptions refine_options(const Switches& sw, const Criteria& criteria);
 
 // Whether the switches (or a size test) ask for refinement.
 bool refinement_wanted(const Switches& sw, const PipelineSource& source);

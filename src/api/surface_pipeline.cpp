@@ -16,7 +16,7 @@ FacetMeshOptions facet_options(const Switches& sw) {
   o.algorithm = sw.algorithm;
   o.threads = threads_to_use(sw);
   o.refine = sw.quality || sw.fixed_area || sw.user_test || sw.conforming_delaunay;
-  o.refinement = refine_options(sw, false);
+  o.refinement = refine_options(sw, criteria_of(sw, false));
   o.refinement.size.triangle_bounds = false;
   o.steiner_total = sw.max_steiner;
   return o;
@@ -69,11 +69,11 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> merge_duplicates(FacetInput
 }
 
 // The triangles that miss the bounds, counted in the coordinates the facets were meshed in.
-void count_misses(const SurfaceMesh& m, const Switches& sw, double max_area, SurfaceResult& result) {
+void count_misses(const SurfaceMesh& m, const Switches& sw, const AngleBound& angle, double max_area, SurfaceResult& result) {
   for (std::size_t t = 0; t < m.triangle_count(); ++t) {
     const std::array<std::uint32_t, 3>& v = m.triangles[t];
     const Point3 p[3] = {m.points[v[0]], m.points[v[1]], m.points[v[2]]};
-    result.below_angle += sw.quality && surface_smallest_angle(p[0], p[1], p[2]) < sw.min_angle;
+    result.below_angle += below_angle_bound(surface_smallest_angle(p[0], p[1], p[2]), angle);
     result.above_area += sw.fixed_area && 0.5 * norm(cross(p[1] - p[0], p[2] - p[0])) > max_area;
   }
 }
@@ -107,7 +107,7 @@ SurfaceResult run_surface_pipeline(const FacetInput& given, const Switches& sw, 
   result.mesh = mesh_surface(input, options, result.report, kMaxSurfaceRounds, progress);
   if (sw.check) result.check = check_surface(result.mesh);
   if (!result.report.converged || result.report.budget_reached)
-    count_misses(result.mesh, sw, options.refinement.size.max_area, result);
+    count_misses(result.mesh, sw, options.refinement.angle, options.refinement.size.max_area, result);
   if (e != 0) {
     // Back to the input's scale. The copies of merged points, untouched by the scaling, are the
     // input's own coordinates.

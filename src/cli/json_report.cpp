@@ -173,8 +173,10 @@ std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
   j.integer("triangles_missing_bounds", b.total);
   j.integer("triangles_below_angle_bound", b.below_angle);
   j.integer("triangles_above_size_bound", b.above_size);
+  if (sw.max_angle > 0.0) j.integer("triangles_above_max_angle", b.above_max_angle);
   j.open("missing_bounds_by_cause");
   j.integer("small_input_angle", b.small_input_angle);
+  if (sw.max_angle > 0.0) j.integer("large_input_angle", b.large_input_angle);
   j.integer("repaired_crossing_or_overlap", b.repaired_input);
   j.integer("double_precision", b.double_precision);
   j.integer("steiner_limits", b.steiner_limits);

@@ -88,7 +88,9 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
       if (q->oversized_left > 0)
         std::snprintf(size, sizeof size, "largest: %.4g times its size bound near (%.9g, %.9g)",
                       q->worst_size_excess, q->worst_size_location.x, q->worst_size_location.y);
-      const std::string both = std::string(angle) + (*angle && *size ? "; " : "") + size;
+      std::string both = std::string(angle) + (*angle && *size ? "; " : "") + size;
+      if (q->obtuse_left > 0)
+        both += (both.empty() ? "" : "; ") + std::to_string(q->obtuse_left) + " with an angle above --max-angle";
       warn(plural(q->bad_triangles_left, "triangle misses", "triangles miss") + " the requested bounds" +
            guard_clause(*q) + " (" + both + ")");
     }
@@ -221,9 +223,13 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
                 plural(static_cast<std::size_t>(s->rounds), "round", "rounds").c_str(),
                 static_cast<unsigned long long>(s->moved), static_cast<unsigned long long>(s->tried));
   if (const auto& b = r.misses) {
-    std::fprintf(out_, "Bounds (final mesh): %llu triangles miss them (%llu below the angle, %llu above the size)\n",
+    std::fprintf(out_, "Bounds (final mesh): %llu triangles miss them (%llu below the angle, %llu above the size",
                 static_cast<unsigned long long>(b->total), static_cast<unsigned long long>(b->below_angle),
                 static_cast<unsigned long long>(b->above_size));
+    if (r.switches && r.switches->max_angle > 0.0)
+      std::fprintf(out_, ", %llu above the largest angle; %llu of them between input segments at a larger angle",
+                  static_cast<unsigned long long>(b->above_max_angle), static_cast<unsigned long long>(b->large_input_angle));
+    std::fprintf(out_, ")\n");
     std::fprintf(out_, "  by cause: %llu next to a small input angle, %llu next to a repaired crossing or overlap, "
                 "%llu at the limit of double precision, %llu at -S/-Y limits, %llu other\n",
                 static_cast<unsigned long long>(b->small_input_angle), static_cast<unsigned long long>(b->repaired_input),

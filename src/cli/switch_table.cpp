@@ -188,6 +188,18 @@ void set_smooth(S& s, const std::string* v) {
   s.smooth_rounds = rounds;
 }
 
+// A >= 90: below it the bound would forbid right angles that inputs such as a square need, and
+// refinement is not known to reach it.
+void set_max_angle(S& s, const std::string* v) {
+  const std::string& a = *v;
+  const bool number = !a.empty() && a.size() <= 24 && a.find_first_not_of("0123456789.") == std::string::npos &&
+                      a.find('.') == a.rfind('.') && a != ".";
+  const double degrees = number ? std::stod(a) : -1.0;
+  if (!number || !(degrees >= 90.0 && degrees < 180.0))
+    throw UsageError("--max-angle=" + a + ": give the largest angle in degrees, at least 90 and below 180");
+  s.max_angle = degrees;
+}
+
 constexpr std::array kLongOptions = {
     LongOption{"msh", "FILE", true, "also write the mesh as Gmsh MSH (version and encoding: --msh-format); FILE - is standard output",
                [](S& s, const std::string* v) { request(s.msh, v, "msh"); }},
@@ -243,6 +255,10 @@ constexpr std::array kLongOptions = {
                "with ruppert or chew, 30 degrees away from segments (Sec. 7.2): 1 for triangles with no vertex in a "
                "segment interior, 2 by splitting only subsegments whose midpoint is no closer than the triangle's shortest edge",
                set_interior_bound},
+    LongOption{"max-angle", "A", false,
+               "refine until every triangle's largest angle is at most A degrees (90 <= A < 180; with -q, -a, -u), "
+               "apart from angles between two input segments that are larger still",
+               set_max_angle},
     LongOption{"range-restricted", "", false,
                "range-restricted segment splitting (Shewchuk 2001, Sec. 7.3): subsegment lengths c 2^x, "
                "c in [1, sqrt 3) with lenses (with -D or ruppert: [1, sqrt 2)); an illegal length is split once, unevenly",

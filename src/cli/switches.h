@@ -28,6 +28,7 @@ struct Switches {
   bool decline_cluster_splits = false;               // --decline-cluster-splits
   RefinementAlgorithm refinement = RefinementAlgorithm::Terminator;  // --algorithm=terminator|ruppert|chew
   int interior_bound = 0;                            // --interior-bound=1|2 (Sec. 7.2)
+  double max_angle = 0.0;                            // --max-angle=A, 90 <= A < 180; 0: none
   bool range_restricted = false;                     // --range-restricted (Sec. 7.3)
   bool corner_lopping = false;                       // --corner-lopping (Sec. 6.1)
   int smooth_rounds = 0;                             // --smooth[=N]: N rounds of the improvement pass (0: none)

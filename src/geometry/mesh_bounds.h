@@ -1,6 +1,7 @@
 // The bounds a quality mesh is asked to meet, each made once from the switches (api/pipeline.cpp)
-// and passed down to refinement and to the account of misses (quality/bound_misses.h): the
-// smallest angle theta (-q) with every quantity derived from it, and the size bounds (-a, -u).
+// into one Criteria (refine/criteria.h) that refinement and the account of misses
+// (quality/bound_misses.h) both read: the smallest angle theta (-q) with every quantity derived
+// from it, the largest angle (--max-angle), and the size bounds (-a, -u).
 #pragma once
 
 #include <cmath>
@@ -32,7 +33,7 @@ class AngleBound {
   bool asked() const { return asked_; }         // -q was given
   double degrees() const { return degrees_; }   // theta, 0 when there is no angle bound
   // sin^2 theta: a triangle is skinny when its circumradius-to-shortest-edge ratio exceeds
-  // 1 / (2 sin theta) (refine/bad_triangles.h); 0 turns the angle test off.
+  // 1 / (2 sin theta) (refine/criteria.h); 0 turns the angle test off.
   double sin2() const { return sin2_; }
   // 0.475 cot(theta / 2): the off-centre's height over the shortest edge, in edge lengths
   // (geometry/constructions.h). (1/2) cot(theta / 2) makes the new triangle's apex angle exactly
@@ -47,6 +48,31 @@ class AngleBound {
   double degrees_ = 0.0;
   double sin2_ = 0.0;
   double off_center_factor_ = 0.0;
+};
+
+// The largest-angle bound (--max-angle=A, 90 <= A < 180): a triangle whose largest angle exceeds A
+// is bad unless that angle lies between two subsegments (the input forces it). An angle at p
+// between rays to a and b exceeds A exactly when (a - p).(b - p) < |a - p| |b - p| cos A; cos A <= 0,
+// so when the dot product is negative and its square exceeds cos^2 A |a - p|^2 |b - p|^2
+// (refine/criteria.h evaluates it exactly; cos2() is the double that test compares against).
+class LargestAngleBound {
+ public:
+  LargestAngleBound() = default;  // none asked
+  explicit LargestAngleBound(double degrees) : degrees_(degrees) {
+    DELTRI_ASSERT(degrees >= 90.0 && degrees < 180.0);
+    const double c = std::cos(degrees * std::numbers::pi / 180.0);
+    cosine_ = degrees == 90.0 ? 0.0 : c;
+    cos2_ = cosine_ * cosine_;
+  }
+  bool asked() const { return degrees_ > 0.0; }
+  double degrees() const { return degrees_; }  // 0: none
+  double cosine() const { return cosine_; }    // cos A, at most 0; exactly 0 for A = 90
+  double cos2() const { return cos2_; }
+
+ private:
+  double degrees_ = 0.0;
+  double cosine_ = 0.0;
+  double cos2_ = 0.0;
 };
 
 // The size bounds: a triangle is too large when its area exceeds max_area or its own bound, or an

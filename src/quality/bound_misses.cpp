@@ -6,68 +6,18 @@
 #include <numbers>
 #include <vector>
 
+#include "refine/criteria.h"
 #include "util/prefetch.h"
 #include "util/run_both.h"
 
 namespace deltri {
 namespace {
 
-// Measured in doubles, with a relative margin of 1e-12 so that a triangle refinement judged good
-// by the same bound in its own rounding is not counted for a last-bit difference.
-constexpr double kMargin = 1e-12;
-
 // Input angles under this are "small": the region near them is exempt (as in Triangle and in
 // Miller, Pav and Walkington's analysis, refinement cannot be asked to do better there).
 constexpr double kSmallInputAngle = 60.0;
 
 double length(const Point& a, const Point& b) { return std::hypot(b.x - a.x, b.y - a.y); }
-
-double angle_at(const Point& a, const Point& b, const Point& c) {
-  const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
-  return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * (180.0 / std::numbers::pi);
-}
-
-// The angle test without atan2 where the answer is clear: the corner's angle is atan2(cross, dot),
-// so with dot > 0 it is below `limit` degrees exactly when cross < tan(limit) dot. A relative gap
-// of 1e-9, far beyond the rounding of either form, leaves only the near ties to atan2, so every
-// answer is the one atan2 gives (most triangles of a refined mesh are clear of the bound).
-struct AngleTest {
-  static constexpr double kTiny = 1e-250;
-  double limit = 0.0;  // degrees; 0: no angle bound
-  double tangent = 0.0;
-  explicit AngleTest(double bound)
-      : limit(bound * (1.0 - kMargin)), tangent(std::tan(limit * (std::numbers::pi / 180.0))) {}
-  // -1 below the limit, +1 not below, 0 a near tie.
-  int clear_side(const Point& a, const Point& b, const Point& c) const {
-    const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
-    const double cross = std::fabs(ux * vy - uy * vx), dot = ux * vx + uy * vy;
-    if (limit >= 89.0) return 0;
-    if (!(dot > kTiny)) return dot < -kTiny ? 1 : 0;  // obtuse; or tiny, where products lose bits
-    if (cross > tangent * dot * (1.0 + 1e-9)) return 1;
-    if (cross < tangent * dot * (1.0 - 1e-9)) return -1;
-    return 0;
-  }
-  bool below(const Point& a, const Point& b, const Point& c) const {
-    const int side = clear_side(a, b, c);
-    return side != 0 ? side < 0 : angle_at(a, b, c) < limit;
-  }
-};
-
-bool misses_angle(const Point& a, const Point& b, const Point& c, const AngleTest& test) {
-  if (test.limit <= 0.0) return false;
-  return test.below(a, b, c) || test.below(b, c, a) || test.below(c, a, b);
-}
-
-bool misses_size(const Mesh& m, TriangleId t, const Point& a, const Point& b, const Point& c, const BoundRequest& r) {
-  const double area = 0.5 * std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
-  if (r.size.max_area > 0.0 && area > r.size.max_area * (1.0 + kMargin)) return true;
-  if (r.size.triangle_bounds && m.area_bound.size() == m.triangle_slots() && m.area_bound[t] > 0.0 &&
-      area > m.area_bound[t] * (1.0 + kMargin))
-    return true;
-  if (r.size.max_edge_length <= 0.0) return false;
-  const double longest = std::max({length(a, b), length(b, c), length(c, a)});
-  return longest > r.size.max_edge_length * (1.0 + kMargin);
-}
 
 bool at_precision_limit(const Mesh& m, TriangleId t) {
   double shortest = INFINITY, largest = 0.0;
@@ -256,7 +206,28 @@ VertexId explaining_junction(const Mesh& m, const SegmentVertices& s, TriangleId
 }
 
 // What a triangle misses, in its entry of the first pass's `missing`.
-constexpr char kMissesAngle = 1, kMissesSize = 2;
+constexpr char kMissesAngle = 1, kMissesSize = 2, kMissesMaxAngle = 4;
+
+// The corner of t whose angle is above --max-angle between two subsegments (the input's angle
+// there is larger still, and refinement leaves it: refine/criteria.h), or kNone.
+VertexId large_angle_corner(const Mesh& m, TriangleId t, const BoundCheck& test) {
+  const auto [a, b, c] = m.corner_points(t);
+  const int k = test.above_max_angle(a, b, c);
+  if (k < 0 || !angle_between_subsegments(m, edge_of(t, (static_cast<unsigned>(k) + 1) % 3))) return kNone;
+  return m.corner[edge_of(t, static_cast<unsigned>(k))];
+}
+
+// The vertex whose input angles explain every angle t misses, or kNone: a size miss is never
+// explained. With both a small and a large angle, the one made by deltri (a repair) if either is.
+VertexId explaining_vertex(const Mesh& m, const SegmentVertices& s, TriangleId t, char missing, const BoundCheck& test) {
+  if (missing & kMissesSize) return kNone;
+  const VertexId small = (missing & kMissesAngle) ? explaining_junction(m, s, t) : kNone;
+  if (!(missing & kMissesMaxAngle)) return small;
+  const VertexId large = large_angle_corner(m, t, test);
+  if (!(missing & kMissesAngle) || large == kNone) return large;
+  if (small == kNone) return kNone;
+  return m.kind[small] == VertexKind::Input ? large : small;
+}
 
 // Slots from which the first pass takes two threads, as the Terminator's closing survey does.
 constexpr std::uint32_t kParallelSlots = 100000;
@@ -266,34 +237,37 @@ constexpr std::uint32_t kPrefetchSlots = 16;
 // The first pass over slots [from, to): the three first counts into `out` (which starts at zero),
 // missing[t] set to what each triangle misses (kMissesAngle, kMissesSize). Each corner's points are
 // loaded once for both tests.
-void mark_misses(const Mesh& m, const BoundRequest& r, const AngleTest& test, TriangleId from, TriangleId to,
-                 std::vector<char>& missing, BoundMisses& out) {
+void mark_misses(const Mesh& m, const BoundCheck& test, TriangleId from, TriangleId to, std::vector<char>& missing,
+                 BoundMisses& out) {
   for (TriangleId t = from; t < to; ++t) {
     if (const TriangleId ahead{t + kPrefetchSlots}; ahead < to && m.is_live(ahead))
       for (unsigned i = 0; i < 3; ++i) prefetch(&m.points[m.corner[edge_of(ahead, i)]]);
     if (!m.is_live(t)) continue;
     const auto [a, b, c] = m.corner_points(t);
-    const bool angle = misses_angle(a, b, c, test), size = misses_size(m, t, a, b, c, r);
+    const bool angle = test.misses_angle(a, b, c), size = test.misses_size(m, t, a, b, c);
+    const bool obtuse = test.above_max_angle(a, b, c) >= 0;
     out.below_angle += angle;
     out.above_size += size;
-    missing[t] = static_cast<char>((angle ? kMissesAngle : 0) | (size ? kMissesSize : 0));
+    out.above_max_angle += obtuse;
+    missing[t] = static_cast<char>((angle ? kMissesAngle : 0) | (size ? kMissesSize : 0) | (obtuse ? kMissesMaxAngle : 0));
     out.total += missing[t] != 0;
   }
 }
 
 // The first pass, in two halves at once when asked for and worth it: the counts are sums, so the
 // halves' add up to what one pass finds, whatever the thread count.
-BoundMisses first_pass(const Mesh& m, const BoundRequest& r, const AngleTest& test, std::vector<char>& missing) {
+BoundMisses first_pass(const Mesh& m, const BoundRequest& r, const BoundCheck& test, std::vector<char>& missing) {
   const TriangleId slots{m.triangle_slots()};
   BoundMisses half[2];
   run_halves(r.threads >= 2 && slots >= kParallelSlots, TriangleId{0}, slots,
              [&](TriangleId from, TriangleId to, int h) {
                BoundMisses mine;  // counted on each thread's own stack, not side by side
-               mark_misses(m, r, test, from, to, missing, mine);
+               mark_misses(m, test, from, to, missing, mine);
                half[h] = mine;
              });
   half[0].below_angle += half[1].below_angle;
   half[0].above_size += half[1].above_size;
+  half[0].above_max_angle += half[1].above_max_angle;
   half[0].total += half[1].total;
   return half[0];
 }
@@ -301,22 +275,21 @@ BoundMisses first_pass(const Mesh& m, const BoundRequest& r, const AngleTest& te
 }  // namespace
 
 BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
-  const AngleTest angle_test(r.angle.degrees());
+  const BoundCheck test(r.angle, r.size, r.max_angle);
   std::vector<char> missing(m.triangle_slots(), 0);
-  BoundMisses out = first_pass(m, r, angle_test, missing);
+  BoundMisses out = first_pass(m, r, test, missing);
   if (out.total == 0) return out;
   const SegmentVertices s = collect_spokes(m);
   for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t) || !missing[t]) continue;
-    // The input explains a small angle, never a size: a triangle too large is not forced by it.
-    const VertexId j = missing[t] == kMissesAngle ? explaining_junction(m, s, t) : kNone;
+    const VertexId j = explaining_vertex(m, s, t, missing[t], test);
     bool touches_repair = false, touches_segment = false;
     for (int i = 0; i < 3; ++i) {
       const VertexId v = m.corner[edge_of(t, i)];
       touches_repair = touches_repair || repaired_vertex(m, s, v);
       touches_segment = touches_segment || !s.spokes[v].empty();
     }
-    if (j != kNone && m.kind[j] == VertexKind::Input) ++out.small_input_angle;
+    if (j != kNone && m.kind[j] == VertexKind::Input) ++((missing[t] & kMissesAngle) ? out.small_input_angle : out.large_input_angle);
     else if (j != kNone || touches_repair) ++out.repaired_input;
     else if (at_precision_limit(m, t)) ++out.double_precision;
     else if (r.steiner_limited || (r.segments_kept_whole && touches_segment)) ++out.steiner_limits;

@@ -2,8 +2,10 @@
 // user can trust, computed from the output mesh alone (not from what refinement believes), so a
 // triangle refinement exempted or gave up on is counted all the same.
 //
-// A triangle misses the bounds when its smallest angle is below the -q angle, its area is above
-// the -a bound (or its own regional / .area bound), or its longest edge is above the -u length.
+// A triangle misses the bounds when its smallest angle is below the -q angle, its largest angle is
+// above the --max-angle bound, its area is above the -a bound (or its own regional / .area bound),
+// or its longest edge is above the -u length; each measured by the criteria (refine/criteria.h,
+// BoundCheck).
 // Each such triangle gets the first of these causes that applies (docs/manual.md, "Quality
 // accounting"):
 //   small_input_angle  it misses no size bound, and its angle miss is explained by the input, at an
@@ -15,6 +17,8 @@
 //                      (the isosceles triangles of concentric shells). Hull edges (-c, .node inputs)
 //                      count as segments. These are the exemptions of Miller, Pav and Walkington
 //                      and of Triangle; tests/tools/verify_quality.cpp checks meshes by the same rules;
+//   large_input_angle  it misses only --max-angle (or that and a small angle explained as above), and
+//                      its angle above the bound lies between two segments at an input vertex;
 //   repaired_input     the same explanation at a vertex deltri made where input segments cross or
 //                      overlap (not an input vertex, yet on two or more input segments), or a corner
 //                      at such a vertex;
@@ -37,6 +41,7 @@ inline constexpr double kPrecisionUlps = 64.0;
 struct BoundRequest {
   AngleBound angle;                 // degrees() 0: no angle bound
   SizeBounds size;                  // triangle_bounds: also mesh.area_bound[t] where positive
+  LargestAngleBound max_angle;      // --max-angle; not asked(): none
   bool steiner_limited = false;     // -S was reached
   bool segments_kept_whole = false; // -Y or -YY
   unsigned threads = 1;             // from 2, the first pass over the triangles in two halves at once
@@ -45,15 +50,17 @@ struct BoundRequest {
 struct BoundMisses {
   std::uint64_t below_angle = 0;  // triangles with an angle below the -q bound
   std::uint64_t above_size = 0;   // triangles above an area or edge-length bound
-  std::uint64_t total = 0;        // triangles missing either (each counted once)
-  // total split by cause; the five add up to total.
+  std::uint64_t above_max_angle = 0;  // triangles with an angle above the --max-angle bound
+  std::uint64_t total = 0;        // triangles missing any (each counted once)
+  // total split by cause; the six add up to total.
   std::uint64_t small_input_angle = 0;
+  std::uint64_t large_input_angle = 0;  // --max-angle: the angle lies between two input segments
   std::uint64_t repaired_input = 0;
   std::uint64_t double_precision = 0;
   std::uint64_t steiner_limits = 0;
   std::uint64_t other = 0;
-  // What --strict refuses: misses not forced by a small input angle.
-  std::uint64_t not_forced_by_input() const { return total - small_input_angle; }
+  // What --strict refuses: misses not forced by a small (or, --max-angle, large) input angle.
+  std::uint64_t not_forced_by_input() const { return total - small_input_angle - large_input_angle; }
 };
 
 BoundMisses count_bound_misses(const Mesh& mesh, const BoundRequest& request);

@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "geometry/constructions.h"
+#include "refine/criteria.h"  // angle_degrees: the angles the bounds are measured by
 
 namespace deltri {
 namespace {
 
-constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The measures of one triangle that the mesh-wide figures are made of.
@@ -22,19 +22,12 @@ struct TriangleShape {
   std::array<double, 3> angle{};         // degrees, at corner i
 };
 
-// The angle at a between rays to b and c; atan2 stays accurate near 0 and 180 degrees, where
-// acos of a normalised dot product loses half the digits.
-double angle_at(const Point& a, const Point& b, const Point& c) {
-  const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
-  return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * kDegreesPerRadian;
-}
-
 TriangleShape shape_of(const Mesh& mesh, TriangleId t) {
   const auto [p0, p1, p2] = mesh.corner_points(t);
   TriangleShape s;
   s.cross = std::fabs((p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x));
   s.squared_edge = {squared_distance(p0, p1), squared_distance(p1, p2), squared_distance(p2, p0)};
-  s.angle = {angle_at(p0, p1, p2), angle_at(p1, p2, p0), angle_at(p2, p0, p1)};
+  s.angle = {angle_degrees(p0, p1, p2), angle_degrees(p1, p2, p0), angle_degrees(p2, p0, p1)};
   return s;
 }
 

@@ -7,6 +7,7 @@
 
 #include "geometry/constructions.h"
 #include "geometry/lattice.h"
+#include "refine/criteria.h"
 #include "refine/terminator.h"
 #include "refine/termination_guard.h"
 #include "util/run_both.h"
@@ -27,7 +28,7 @@ std::optional<Terminator::BottomScore> Terminator::bottom_score(const Point& c, 
     if (pred_.orient2d(p, q, c) <= 0) return std::nullopt;
     const double s2 = smallest_angle_sine2(p, q, c);
     const double shortest2 = std::min({squared_distance(p, q), squared_distance(p, c), squared_distance(q, c)});
-    if (shortest2 <= l2 && s2 < good2 && !(s2 > t_sine2) && s2 < triangle_sine2(mesh_, triangle_of(e)))
+    if (shortest2 <= l2 && below_angle(s2, good2) && !(s2 > t_sine2) && s2 < triangle_sine2(mesh_, triangle_of(e)))
       return std::nullopt;
     if (shortest2 <= 4.0 * l2) score.near = std::min(score.near, s2);
     score.all = std::min(score.all, s2);

@@ -7,6 +7,7 @@
 
 #include "util/errors.h"
 #include "refine/area_field.h"
+#include "refine/criteria.h"
 #include "refine/refine_in_parts.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"
@@ -92,15 +93,15 @@ RefineReport refine_in_stages(Mesh& mesh, Predicates& pred, const RefineOptions&
   return report;
 }
 
-// Each triangle's entry in mesh.area_bound becomes the bound refinement held it to: that of the
-// initial triangle its centroid lies in (refine/area_field.h). The entries handed on by slot can
-// differ, and the quality account (quality/bound_misses.h) reads them.
+// Each triangle's entry in mesh.area_bound becomes the bound refinement held it to (area_bound_of:
+// that of the initial triangle its centroid lies in, refine/area_field.h). The entries handed on by
+// slot can differ, and the quality account (quality/bound_misses.h) reads them: one bound for both.
 void record_field_bounds(Mesh& mesh, const AreaField& field) {
-  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
-    if (!mesh.is_live(t)) continue;
-    const auto [a, b, c] = mesh.corner_points(t);
-    mesh.area_bound[t] = field.bound_at({(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0});
-  }
+  Criteria held;
+  held.size.triangle_bounds = true;
+  held.area_field = &field;
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
+    if (mesh.is_live(t)) mesh.area_bound[t] = area_bound_of(mesh, t, held);
 }
 
 }  // namespace

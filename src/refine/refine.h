@@ -33,6 +33,7 @@ struct Progress;
 struct RefineOptions {
   AngleBound angle;                     // theta (-q), and what refinement derives from it
   SizeBounds size;                      // -a, -u (mesh.area_bound for -a alone, regions, .area)
+  LargestAngleBound max_angle;          // --max-angle
   bool lenses = true;                   // false with -D: diametral circles
   bool conforming_delaunay = false;     // -D: the result must be Delaunay, not only constrained
   int no_steiner_on_segments = 0;       // 0, 1 = not on boundary segments (-Y), 2 = none (-YY)
@@ -154,7 +155,8 @@ struct RefineReport : RefineWork {
   double worst_min_angle_deg = 0.0;       // its smallest angle
   Point worst_location;                   // its centroid
   std::uint64_t oversized_left = 0;       // the ones over a size bound
-  double worst_size_excess = 0.0;         // the largest size_excess (refine/bad_triangles.h)
+  std::uint64_t obtuse_left = 0;          // the ones with an angle above --max-angle
+  double worst_size_excess = 0.0;         // the largest size_excess (refine/criteria.h)
   Point worst_size_location;              // that triangle's centroid
   std::size_t peak_queue = 0;             // bad-triangle queue
   // Refined in two halves at once (refine/refine_in_parts.h): the seam's edges (none when the halves do not

@@ -9,7 +9,7 @@
 #include "geometry/box.h"
 #include "mesh/operations.h"
 #include "mesh/parts.h"
-#include "refine/bad_triangles.h"
+#include "refine/criteria.h"
 #include "refine/bottom_scale.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"

@@ -1,7 +1,7 @@
 #include "refine/steiner_point.h"
 
 #include "geometry/constructions.h"
-#include "refine/bad_triangles.h"
+#include "refine/criteria.h"
 
 namespace deltri {
 

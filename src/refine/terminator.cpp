@@ -9,6 +9,7 @@
 #include "geometry/box.h"
 #include "geometry/constructions.h"
 #include "geometry/lattice.h"
+#include "refine/criteria.h"
 #include "mesh/operations.h"
 #include "refine/bottom_scale.h"
 #include "refine/split_permitted.h"
@@ -162,10 +163,13 @@ EncroachRule rule_for(const RefineOptions& opt) {
 }
 
 // Whether the paper's theorems cover this run (termination_guard.h, within_proven_range): its
-// algorithm as the paper analyses it, the segments split wherever they are encroached upon.
+// algorithm as the paper analyses it, the segments split wherever they are encroached upon. A
+// largest-angle bound A is covered only where -q implies it (every angle below 180 - 2 theta):
+// below that no theorem says that circumcentres of obtuse triangles ever run out.
 bool proven_for(const RefineOptions& opt, double input_angle) {
   if (opt.no_steiner_on_segments != 0 || opt.interior_bound != 0 || opt.range_restricted || opt.lopped_apices)
     return false;
+  if (!max_angle_implied(opt.max_angle, opt.angle)) return false;
   const SplitRule rule = opt.algorithm == RefinementAlgorithm::Chew ? SplitRule::Chew
                          : rule_for(opt).min_apex_angle_deg == 90.0 ? SplitRule::DiametralCircles
                                                                     : SplitRule::DiametralLenses;
@@ -227,9 +231,9 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
     : mesh_(mesh),
       pred_(pred),
       opt_(opt),
-      rules_{opt.angle, opt.size, opt.area_field, opt.size_test},
+      rules_{opt.angle, opt.size, opt.max_angle, opt.area_field, opt.size_test},
       interior_rules_{opt.interior_bound != 0 ? AngleBound(std::max(opt.angle.degrees(), kInteriorBoundDeg)) : opt.angle,
-                      opt.size, opt.area_field, opt.size_test},
+                      opt.size, opt.max_angle, opt.area_field, opt.size_test},
       rule_(rule_for(opt)),
       candidate_rule_(candidate_rule_for(opt, rule_)),
       // Ruppert and Chew insert circumcentres (Sec. 3.1, 4.1).

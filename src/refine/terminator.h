@@ -17,7 +17,7 @@
 #include "geometry/box.h"
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
-#include "refine/bad_triangles.h"
+#include "refine/criteria.h"
 #include "refine/candidate_probe.h"
 #include "refine/clusters.h"
 #include "refine/edge_finder.h"
@@ -169,8 +169,8 @@ class Terminator {
   // assess_triangle plus the equal-shell exemption (shell_exempt), under t's bound (rules_for);
   // assess_with under the given rules (the closing survey: the -q bound).
   Assessment assess(TriangleId t) const { return assess_with(t, rules_for(t)); }
-  Assessment assess_with(TriangleId t, const QualityRules& rules) const;
-  const QualityRules& rules_for(TriangleId t) const;  // Sec. 7.2: the 30 degrees, or -q
+  Assessment assess_with(TriangleId t, const Criteria& rules) const;
+  const Criteria& rules_for(TriangleId t) const;  // Sec. 7.2: the 30 degrees, or -q
   bool below_asked_bound(const Assessment& a) const;   // under -q, not only under Sec. 7.2's bound
   bool only_for_interior_bound(TriangleId t, const Assessment& a) const;  // bad for Sec. 7.2's bound alone
   bool shell_exempt(EdgeRef shortest) const;
@@ -228,8 +228,8 @@ class Terminator {
   Mesh& mesh_;
   Predicates& pred_;
   const RefineOptions opt_;
-  QualityRules rules_;
-  QualityRules interior_rules_;  // Sec. 7.2 (--interior-bound): rules_ with max(-q, 30 degrees)
+  Criteria rules_;
+  Criteria interior_rules_;  // Sec. 7.2 (--interior-bound): rules_ with max(-q, 30 degrees)
   EncroachRule rule_;            // whether a vertex already in the mesh encroaches
   EncroachRule candidate_rule_;  // whether a candidate Steiner point does (terminator.cpp)
   double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)

@@ -15,6 +15,7 @@
 
 #include "geometry/constructions.h"
 #include "geometry/lattice.h"
+#include "refine/criteria.h"
 #include "refine/terminator.h"
 
 namespace deltri {
@@ -91,7 +92,7 @@ Terminator::MendTally Terminator::tally_replaced() {
     const double sine2 = triangle_sine2(mesh_, u);
     const Assessment a = assess(u);
     tally.worst_sine2 = std::min(tally.worst_sine2, sine2);
-    tally.below_angle += sine2 < kept_bound_sin2_;
+    tally.below_angle += below_angle(sine2, kept_bound_sin2_);
     tally.over_size += a.too_large;
     if (const double bound = area_bound_of(mesh_, u, rules_for(u)); bound > 0.0)
       tally.tightest_area = std::min(tally.tightest_area, bound);
@@ -110,7 +111,7 @@ Terminator::MendTally Terminator::tally_made(const Point& q, double tightest_are
     const Point& b = mesh_.point(mesh_.dest(e));
     const double sine2 = smallest_angle_sine2(a, b, q);
     tally.worst_sine2 = std::min(tally.worst_sine2, sine2);
-    tally.below_angle += sine2 < kept_bound_sin2_;
+    tally.below_angle += below_angle(sine2, kept_bound_sin2_);
     const double area = std::abs(triangle_area(a, b, q));
     const double longest2 = std::max({squared_distance(a, b), squared_distance(b, q), squared_distance(q, a)});
     tally.over_size += area > tightest_area ||

@@ -10,6 +10,7 @@
 #include "geometry/constructions.h"
 #include "geometry/encroachment.h"
 #include "geometry/lattice.h"
+#include "refine/criteria.h"
 #include "refine/bottom_scale.h"
 #include "refine/concentric_shells.h"
 #include "refine/mirrored_split.h"
@@ -263,7 +264,7 @@ bool Terminator::meets_at_small_angle(const PieceEnds& piece, VertexId w) const 
 
 // Sec. 7.2: strategy 1 holds the triangles with no vertex in a segment interior (none of kind
 // Segment: input vertices on a segment are its ends) to 30 degrees, strategy 2 every triangle.
-const QualityRules& Terminator::rules_for(TriangleId t) const {
+const Criteria& Terminator::rules_for(TriangleId t) const {
   if (opt_.interior_bound == 0) return rules_;
   if (opt_.interior_bound == 2) return interior_rules_;
   for (const VertexId v : mesh_.corners(t))
@@ -282,7 +283,7 @@ bool Terminator::only_for_interior_bound(TriangleId t, const Assessment& a) cons
 
 // a was assessed under interior_rules_ (ratio2_over_bound2 against its sin^2): is it under -q?
 bool Terminator::below_asked_bound(const Assessment& a) const {
-  return a.skinny && a.shape.ratio2_over_bound2 * opt_.angle.sin2() > interior_rules_.angle.sin2();
+  return a.skinny && below_other_bound(a.shape, interior_rules_.angle.sin2(), opt_.angle.sin2());
 }
 
 // The length of the shortest edge that splitting s at p would make, now and once Chew's step (with
@@ -357,9 +358,9 @@ bool Terminator::refused_by_kept_boundary(const Point& c, TriangleId t) {
   if (opt_.no_steiner_on_segments == 0) return false;
   const double made = smallest_made_sine2(c);
   const double replaced = smallest_replaced_sine2();
-  if (made < floor_sin2_ && made < replaced) return true;  // (0)
+  if (below_angle(made, floor_sin2_) && made < replaced) return true;  // (0)
   const double worse = std::min(kept_bound_sin2_, replaced);
-  if (made < worse && would_strand(c, worse)) return true;  // (1)
+  if (below_angle(made, worse) && would_strand(c, worse)) return true;  // (1)
   bool touches = false;
   for (EdgeRef e : marks_.boundary_subsegments()) {
     if (!kept_by_switch(e)) continue;
@@ -369,7 +370,7 @@ bool Terminator::refused_by_kept_boundary(const Point& c, TriangleId t) {
     if (encroaches(pred_, a, b, c, rule_)) return true;  // (2)
   }
   if (!touches || assess(t).skinny) return false;
-  return made < worse;  // (3)
+  return below_angle(made, worse);  // (3)
 }
 
 // Would one of the triangles c makes with the cavity's boundary, with a smallest angle whose sin^2
@@ -381,7 +382,7 @@ bool Terminator::would_strand(const Point& c, double below) {
   for (EdgeRef e : marks_.boundary()) {
     const Point& a = mesh_.point(mesh_.org(e));
     const Point& b = mesh_.point(mesh_.dest(e));
-    if (!(smallest_angle_sine2(a, b, c) < below)) continue;
+    if (!below_angle(smallest_angle_sine2(a, b, c), below)) continue;
     const Point p = steiner_point_of(a, b, c, off_center_factor_);
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || stranded_point(triangle_of(e), p)) return true;
   }
@@ -466,7 +467,7 @@ bool Terminator::budget_left() {
 
 // The equal-shell exemption is the Terminator's (Ruppert's and Chew's algorithms split every skinny
 // triangle); the fans of lopped corners stay as they are (Sec. 6.1).
-Assessment Terminator::assess_with(TriangleId t, const QualityRules& rules) const {
+Assessment Terminator::assess_with(TriangleId t, const Criteria& rules) const {
   Assessment a = assess_triangle(mesh_, t, rules);
   if (opt_.lopped_apices && in_lopped_corner(t)) a.skinny = a.too_large = false;
   if (a.skinny && opt_.algorithm == RefinementAlgorithm::Terminator && shell_exempt(a.shape.shortest)) a.skinny = false;

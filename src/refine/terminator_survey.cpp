@@ -20,6 +20,7 @@ void Terminator::survey(TriangleId from, TriangleId to, RefineReport& into) cons
     const Assessment a = assess_with(t, rules_);  // the -q bound, also with Sec. 7.2's
     if (!a.bad()) continue;
     ++into.bad_triangles_left;
+    into.obtuse_left += a.too_obtuse;
     if (a.too_large) {
       ++into.oversized_left;
       const double excess = size_excess(mesh_, t, a.shape, rules_);
@@ -55,6 +56,7 @@ void Terminator::survey_remaining() {
   report_.bad_triangles_left += upper.bad_triangles_left;
   report_.oversized_left += upper.oversized_left;
   report_.skinny_left += upper.skinny_left;
+  report_.obtuse_left += upper.obtuse_left;
   if (upper.worst_size_excess > report_.worst_size_excess) {
     report_.worst_size_excess = upper.worst_size_excess;
     report_.worst_size_location = upper.worst_size_location;

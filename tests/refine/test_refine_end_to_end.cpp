@@ -6,7 +6,7 @@
 
 #include "harness/check.h"
 #include "harness/id_literals.h"
-#include "refine/bad_triangles.h"
+#include "refine/criteria.h"
 #include "refine/refine.h"
 #include "refine/termination_guard.h"
 #include "refine_fixtures.h"

@@ -11,7 +11,7 @@
 #include "mesh/mesh_checks.h"
 #include "mesh/operations.h"
 #include "mesh/topology_writer.h"
-#include "refine/bad_triangles.h"
+#include "refine/criteria.h"
 #include "refine/candidate_probe.h"
 #include "refine/clusters.h"
 #include "refine/concentric_shells.h"
@@ -30,7 +30,7 @@ using namespace refine_test;
 namespace {
 constexpr double kPi = std::numbers::pi;
 double rad(double deg) { return deg * kPi / 180.0; }
-QualityRules rules_of(AngleBound angle, SizeBounds size) { return {angle, size}; }
+Criteria rules_of(AngleBound angle, SizeBounds size) { return {angle, size}; }
 }  // namespace
 
 TEST(subsegment_encroached_by_either_apex) {
@@ -84,8 +84,8 @@ TEST(bad_triangle_test) {
   // Isosceles triangle with apex angle 20 degrees: skinny at 30, fine at 19.
   const double h = 1.0 / std::tan(rad(10));
   Mesh m = triangulated({{-1, 0}, {1, 0}, {0, h}});
-  const QualityRules q30 = rules_of(AngleBound(30), {0, false, 0});
-  const QualityRules q19 = rules_of(AngleBound(19), {0, false, 0});
+  const Criteria q30 = rules_of(AngleBound(30), {0, false, 0});
+  const Criteria q19 = rules_of(AngleBound(19), {0, false, 0});
   CHECK(assess_triangle(m, 0_t, q30).skinny);
   CHECK(!assess_triangle(m, 0_t, q19).skinny);
   // (r / B)^2: r / l = 1 / (2 sin 20deg), B = 1 / (2 sin 30deg).
@@ -113,7 +113,7 @@ TEST(small_angle_between_two_subsegments_is_not_split) {
   Mesh m = triangulated({{0, 0}, {1, 0}, {1, 0.1}, {0, 1}});
   mark_boundary(m);
   CHECK(mark_segment(m, 0, 2));
-  const QualityRules q = rules_of(AngleBound(20), {0, false, 0});
+  const Criteria q = rules_of(AngleBound(20), {0, false, 0});
   for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     const Assessment a = assess_triangle(m, t, q);
     if (min_angle_deg(m, t) < 10) {

@@ -1,0 +1,166 @@
+// The quality criteria, the one place that says whether a triangle is bad, by how much and why:
+// for refinement (Fig. 38 l.8, Fig. 39 l.42/l.54: an angle below theta, unless that angle separates
+// two subsegments, which nothing can improve; too large for the user, delta(t); with --max-angle a
+// largest angle above A, unless it lies between two subsegments), and for every report of the
+// finished mesh (quality/bound_misses.h, -V, --json, --strict, the surface mode), which measure
+// against the same bounds with a margin (BoundCheck). tests/refine/criteria_only_here.py fails
+// when an angle is compared against a bound anywhere else.
+#pragma once
+
+#include <vector>
+
+#include "geometry/point.h"
+
+#include "geometry/mesh_bounds.h"
+#include "mesh/mesh.h"
+#include "refine/area_field.h"
+#include "refine/quality_queue.h"
+#include "refine/size_test.h"
+
+namespace deltri {
+
+struct Criteria {
+  AngleBound angle;  // its sin2() is the angle test; 0 turns it off
+  SizeBounds size;   // triangle_bounds: also honour mesh.area_bound[t] when positive
+  LargestAngleBound max_angle = {};  // --max-angle; not asked(): none
+  // With bounds that vary within a region (-r with an .area file), the field gives each triangle
+  // its bound instead of mesh.area_bound (refine/area_field.h); null or empty: not used.
+  const AreaField* area_field = nullptr;
+  const SizeTest* size_test = nullptr;  // a caller's test (refine/size_test.h), or null
+};
+
+// The area bound that applies to t (<= 0: none), as rules say: the field's at t's centroid when
+// there is one, else mesh.area_bound[t]. Refinement ends by writing the field's into
+// mesh.area_bound (refine.cpp), so the reports, which have no field, read the same bound.
+double area_bound_of(const Mesh& mesh, TriangleId t, const Criteria& rules);
+
+struct TriangleShape {
+  EdgeRef shortest = kNone;  // the triangle's shortest edge
+  double shortest_length2 = 0.0;
+  // (r / B)^2 with r the circumradius-to-shortest-edge ratio and B = 1 / (2 sin theta); > 1 means
+  // the smallest angle is below theta. Equals l1^2 l2^2 sin^2(theta) / (2 area)^2 with l1, l2
+  // the two other edges, since r = l1 l2 l3 / (4 area).
+  double ratio2_over_bound2 = 0.0;
+  double area = 0.0;
+  double length2[3] = {0.0, 0.0, 0.0};  // squared length of side i (corner i to corner i+1)
+};
+
+TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta);
+
+// The side (0, 1, 2) with the least of the squared lengths len2, the first of tied ones: the edge
+// whose Steiner point a triangle gets (measure_triangle, steiner_point_of).
+inline unsigned shortest_side(const double len2[3]) {
+  unsigned s = 0;
+  if (len2[1] < len2[s]) s = 1;
+  if (len2[2] < len2[s]) s = 2;
+  return s;
+}
+
+// The side with the greatest squared length, the first of tied ones.
+inline unsigned longest_side(const double len2[3]) {
+  unsigned s = 0;
+  if (len2[1] > len2[s]) s = 1;
+  if (len2[2] > len2[s]) s = 2;
+  return s;
+}
+
+struct Assessment {
+  bool skinny = false;     // smallest angle below theta and not between two subsegments
+  bool too_large = false;  // delta(t)
+  bool too_obtuse = false; // largest angle above --max-angle and not between two subsegments
+  bool bad() const { return skinny || too_large || too_obtuse; }
+  TriangleShape shape;
+};
+
+// Fig. 38 l.8: "delta(t) or t has an angle less than theta (but not separating two subsegments)",
+// or (--max-angle) an angle above A not separating two subsegments.
+Assessment assess_triangle(const Mesh& mesh, TriangleId t, const Criteria& rules);
+
+// How many times its size bounds t exceeds: area over the smallest area bound that applies, or
+// (longest edge over the -u edge length) squared; at most 1 when t meets them.
+double size_excess(const Mesh& mesh, TriangleId t, const TriangleShape& shape, const Criteria& rules);
+
+// Whether a queue entry still names a triangle of the mesh: its slot is live and holds the three
+// vertices the entry remembers (in any rotation). A slot reused or rewritten by a flip since holds
+// other vertices, and the entry is stale (Fig. 38 l.12: "if t still exists").
+bool is_current(const Mesh& mesh, const QueuedTriangle& entry);
+
+// sin^2 of the smallest angle of triangle t.
+double triangle_sine2(const Mesh& mesh, TriangleId t);
+
+// True when the angle opposite edge e (at apex(e)) lies between two subsegments.
+bool angle_between_subsegments(const Mesh& mesh, EdgeRef e);
+
+// The squared sine of the smallest angle of triangle a, b, c: (twice its area)^2 over the product
+// of the squared lengths of the two longer sides; 0 if a, b, c are clockwise or collinear by the
+// plain cross product. For points a few thousand ulps apart the coordinate differences, and their
+// products, are exact, so the measure is as good as the exact angle for comparisons.
+double smallest_angle_sine2(const Point& a, const Point& b, const Point& c);
+
+// Whether a smallest-angle measure sine2 (smallest_angle_sine2) meets the bound whose sin2() is
+// sin2_theta (at or above it), or falls below it. Not quite each other's negation: a NaN does neither.
+inline bool meets_angle(double sine2, double sin2_theta) { return sine2 >= sin2_theta; }
+inline bool below_angle(double sine2, double sin2_theta) { return sine2 < sin2_theta; }
+
+// Whether a triangle measured against the bound measured_sin2 (its ratio2_over_bound2) is below the
+// bound other_sin2 as well.
+inline bool below_other_bound(const TriangleShape& shape, double measured_sin2, double other_sin2) {
+  return shape.ratio2_over_bound2 * other_sin2 > measured_sin2;
+}
+
+// True when no double r to the left of p -> q makes a triangle p, q, r whose smallest angle has
+// squared sine at least sin2_theta: then the triangles on edge pq can never meet the angle bound,
+// whatever else is inserted (pq is the shortest edge at p and q, so Delaunay refinement keeps
+// it). Such an r lies within |pq| / sin theta of p and q, so only the doubles in that box around
+// the middle of pq are tried; false (not proven) when the box holds more than kHopelessSteps
+// doubles on either side of the middle along an axis, or when sin2_theta is not positive.
+inline constexpr int kHopelessSteps = 24;
+bool hopeless_edge(const Point& p, const Point& q, double sin2_theta);
+
+// The angle at a between rays to b and c, in degrees; atan2 stays accurate near 0 and 180
+// degrees, where acos of a normalised dot product loses half the digits.
+double angle_degrees(const Point& a, const Point& b, const Point& c);
+
+// Whether the angle at p between rays to a and b exceeds bound A, decided exactly: a double filter,
+// then expansion arithmetic (geometry/expansion.h) on the rare near ties. For A = 90, (a - p).(b - p)
+// < 0 (geometry/encroachment.h). False when the bound is not asked.
+bool angle_exceeds(const Point& p, const Point& a, const Point& b, const LargestAngleBound& bound);
+
+// The corner (0, 1, 2) of triangle a, b, c whose angle exceeds the bound, or -1. At most one can.
+int corner_above(const Point& a, const Point& b, const Point& c, const LargestAngleBound& bound);
+
+// Whether -q implies the largest-angle bound: a triangle whose smallest angle is at least theta has
+// none above 180 - 2 theta.
+inline bool max_angle_implied(const LargestAngleBound& max_angle, const AngleBound& angle) {
+  return !max_angle.asked() || max_angle.degrees() >= 180.0 - 2.0 * angle.degrees();
+}
+
+// Whether a surface triangle's smallest angle (in degrees, measured in space) is below -q's.
+inline bool below_angle_bound(double smallest_degrees, const AngleBound& angle) {
+  return angle.degrees() > 0.0 && smallest_degrees < angle.degrees();
+}
+
+// The criteria as the reports apply them to a finished mesh: measured in doubles with a relative
+// margin of 1e-12, so that a triangle refinement judged good by the same bound in its own rounding
+// is not counted for a last-bit difference. The largest angle is exact (angle_exceeds): the same
+// answer refinement had. Its area bound is area_bound_of's, read from mesh.area_bound.
+class BoundCheck {
+ public:
+  BoundCheck(const AngleBound& angle, const SizeBounds& size, const LargestAngleBound& max_angle);
+  bool misses_angle(const Point& a, const Point& b, const Point& c) const;  // below -q
+  bool misses_size(const Mesh& m, TriangleId t, const Point& a, const Point& b, const Point& c) const;
+  int above_max_angle(const Point& a, const Point& b, const Point& c) const {  // corner_above
+    return corner_above(a, b, c, max_angle_);
+  }
+
+ private:
+  // -1 below the limit, +1 not below, 0 a near tie.
+  int clear_side(const Point& a, const Point& b, const Point& c) const;
+  bool below(const Point& a, const Point& b, const Point& c) const;
+  double limit_ = 0.0;  // degrees; 0: no angle bound
+  double tangent_ = 0.0;
+  SizeBounds size_;
+  LargestAngleBound max_angle_;
+};
+
+}  // namespace deltri

@@ -1,0 +1,123 @@
+// The criteria (refine/criteria.h): the smallest-angle measure, edges no double can give a good
+// triangle, and the exact largest-angle test against independent facts.
+#include <cmath>
+#include <cstdlib>
+#include <cstdint>
+#include <numbers>
+
+#include "geometry/exact_integer.h"
+#include "harness/check.h"
+#include "refine/criteria.h"
+
+namespace {
+
+using deltri::Point;
+
+double up(double x, int k) {  // k steps up (negative: down)
+  for (int i = 0; i < std::abs(k); ++i) x = std::nextafter(x, k > 0 ? HUGE_VAL : -HUGE_VAL);
+  return x;
+}
+
+double sin2(double degrees) {
+  const double s = std::sin(degrees * 3.14159265358979323846 / 180.0);
+  return s * s;
+}
+
+// A small deterministic generator (the tests need no randomness of quality).
+std::uint64_t next(std::uint64_t& state) {
+  state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+  return state >> 11;
+}
+
+}  // namespace
+
+TEST(smallest_angle_sine2_of_known_triangles) {
+  CHECK_NEAR(deltri::smallest_angle_sine2({0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2}), 0.75, 1e-15);
+  CHECK_NEAR(deltri::smallest_angle_sine2({0, 0}, {1, 0}, {0, 1}), 0.5, 1e-15);
+  CHECK_EQ(deltri::smallest_angle_sine2({0, 0}, {0, 1}, {1, 0}), 0.0);  // clockwise
+  CHECK_EQ(deltri::smallest_angle_sine2({0, 0}, {1, 1}, {2, 2}), 0.0);  // collinear
+  // One ulp across, far from the origin: the differences and products are exact.
+  const double x = 41.77377931209348, y = 55.45235951180828;
+  CHECK_EQ(deltri::smallest_angle_sine2({x, y}, {up(x, 1), y}, {x, up(y, 1)}), 0.5);
+  // 1 by 2 ulps: the angle opposite the short side is atan(1/2).
+  CHECK_NEAR(deltri::smallest_angle_sine2({x, y}, {up(x, 2), y}, {x, up(y, 1)}), 0.2, 1e-15);
+}
+
+TEST(hopeless_edge_finds_pairs_no_double_can_mesh) {
+  // robustness1.node: a pair one ulp apart where both axes have the same ulp; the right
+  // isosceles triangle on it is representable.
+  const Point a{41.77377931209348, 55.45235951180828}, b{41.77377931209348, 55.45235951180829};
+  CHECK(!deltri::hopeless_edge(a, b, sin2(30)));
+  CHECK(!deltri::hopeless_edge(a, b, sin2(44)));
+  CHECK(deltri::hopeless_edge(a, b, sin2(46)));
+  // robustness1.node: one y-ulp apart where an x-ulp is two y-ulps; the best apex makes
+  // atan(1/2) = 26.57 degrees.
+  const Point c{137.24095128280055, 112.24095128280054}, d{137.24095128280055, 112.24095128280055};
+  CHECK(!deltri::hopeless_edge(c, d, sin2(20)));
+  CHECK(!deltri::hopeless_edge(c, d, sin2(26.5)));
+  CHECK(deltri::hopeless_edge(c, d, sin2(30)));
+  // robustness2.node: one x-ulp apart where a y-ulp is 512 x-ulps: every double within reach
+  // lies on the pair's line.
+  const Point e{0.001739080834353146, 0.7050842932559666}, f{0.0017390808343531463, 0.7050842932559666};
+  CHECK(deltri::hopeless_edge(e, f, sin2(5)));
+  // Not proven: an ordinary edge (too many doubles to try), or no angle bound.
+  CHECK(!deltri::hopeless_edge({0, 0}, {1, 0}, sin2(30)));
+  CHECK(!deltri::hopeless_edge(e, f, 0.0));
+}
+
+// At 90 degrees the test is the sign of the dot product, which exact_integer computes in integers:
+// points a few ulps from a right angle, where doubles cannot tell.
+TEST(largest_angle_at_90_degrees_is_the_exact_sign_of_the_dot_product) {
+  const deltri::LargestAngleBound right(90.0);
+  std::uint64_t state = 7;
+  int obtuse = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const double x = 0.1 + 1e-3 * static_cast<double>(next(state) % 1000);
+    const Point p{x, 0.3}, a{up(x, static_cast<int>(next(state) % 9) - 4), 1.7};
+    const Point b{x + 2.0 + 1e-3 * static_cast<double>(next(state) % 7), up(0.3, static_cast<int>(next(state) % 9) - 4)};
+    const bool expected = deltri::exact_integer::dot_sign(a, b, p) < 0;
+    CHECK_EQ(deltri::angle_exceeds(p, a, b, right), expected);
+    obtuse += expected;
+  }
+  CHECK(obtuse > 0 && obtuse < 2000);  // both answers occur
+  // A right angle exactly does not exceed 90.
+  CHECK(!deltri::angle_exceeds({0, 0}, {3, 4}, {-4, 3}, right));
+  CHECK(deltri::angle_exceeds({0, 0}, {3, 4}, {-4, 2.9999999999}, right));
+}
+
+// Above 90 degrees: angles of known size, the corner found, and near ties decided as the
+// integer-exact comparison decides them. cos(120) = -1/2, so the angle at p between (1, 0) and
+// (-1, s) is 120 degrees exactly when s = sqrt 3; doubles either side of sqrt 3 are on either side.
+TEST(largest_angle_above_90_degrees_near_ties) {
+  const deltri::LargestAngleBound bound(120.0);
+  CHECK(deltri::angle_exceeds({0, 0}, {1, 0}, {-1, 1.7}, bound));   // 120.5 degrees
+  CHECK(!deltri::angle_exceeds({0, 0}, {1, 0}, {-1, 1.8}, bound));  // 119.05 degrees
+  // On integer points every quantity is an integer, and cos2() = M 2^(e - 53) exactly, so
+  // dot^2 > cos2() |u|^2 |v|^2 is an integer comparison in 128 bits: the test's answer must be it.
+  std::uint64_t state = 11;
+  int yes = 0;
+  for (const double degrees : {100.0, 120.0, 135.0, 150.0}) {
+    const deltri::LargestAngleBound b(degrees);
+    int e = 0;
+    const double m = std::frexp(b.cos2(), &e);
+    const auto mantissa = static_cast<__int128>(std::ldexp(m, 53));
+    for (int i = 0; i < 3000; ++i) {
+      const auto coordinate = [&] { return static_cast<double>(static_cast<int>(next(state) % 33) - 16); };
+      const Point p{coordinate(), coordinate()}, a{coordinate(), coordinate()}, q{coordinate(), coordinate()};
+      const auto dx = [&](const Point& r) { return static_cast<__int128>(r.x - p.x); };
+      const auto dy = [&](const Point& r) { return static_cast<__int128>(r.y - p.y); };
+      const __int128 dot = dx(a) * dx(q) + dy(a) * dy(q);
+      const __int128 uu = dx(a) * dx(a) + dy(a) * dy(a), vv = dx(q) * dx(q) + dy(q) * dy(q);
+      if (uu == 0 || vv == 0) continue;
+      const bool expected = dot < 0 && ((dot * dot) << (53 - e)) > mantissa * uu * vv;
+      CHECK_EQ(deltri::angle_exceeds(p, a, q, b), expected);
+      yes += expected;
+    }
+  }
+  CHECK(yes > 0);
+  // The corner is the one with the large angle, whichever corner it is.
+  CHECK_EQ(deltri::corner_above({0, 0}, {10, 0}, {5, 1}, deltri::LargestAngleBound(100.0)), 2);
+  CHECK_EQ(deltri::corner_above({5, 1}, {0, 0}, {10, 0}, deltri::LargestAngleBound(100.0)), 0);
+  CHECK_EQ(deltri::corner_above({5, 1}, {0, 0}, {10, 0}, deltri::LargestAngleBound(170.0)), -1);
+  CHECK_EQ(deltri::corner_above({5, 1}, {0, 0}, {10, 0}, deltri::LargestAngleBound()), -1);
+}
