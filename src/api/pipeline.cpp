@@ -196,6 +196,7 @@ RefineOptions refine_options(const Switches& sw, bool area_file) {
   opt.no_steiner_on_segments = sw.no_boundary_steiner;
   opt.max_steiner = sw.max_steiner;
   opt.off_centers = !sw.circumcenters_only;
+  opt.steiner = sw.steiner;
   opt.queue_order = sw.queue_order;
   opt.decline_cluster_splits = sw.decline_cluster_splits;
   opt.algorithm = sw.refinement;

@@ -234,6 +234,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       candidate_rule_(candidate_rule_for(opt, rule_)),
       // Ruppert and Chew insert circumcentres (Sec. 3.1, 4.1).
       off_center_factor_(opt.off_centers && opt.algorithm == RefinementAlgorithm::Terminator ? opt.angle.off_center_factor() : 0.0),
+      optimal_points_(off_center_factor_ > 0.0 && opt.steiner == SteinerPolicy::Optimal),
       kept_bound_sin2_(AngleBound(std::max(opt.angle.degrees(), kLeastLensDeg)).sin2()),
       guard_floor_(start.guard_floor),
       proven_range_(start.proven_range),

@@ -27,6 +27,7 @@
 #include "refine/outcome.h"
 #include "refine/quality_queue.h"
 #include "refine/refine.h"
+#include "refine/steiner_point.h"
 #include "util/page_warmer.h"
 #include "util/prefetch.h"
 
@@ -231,6 +232,8 @@ class Terminator {
   EncroachRule rule_;            // whether a vertex already in the mesh encroaches
   EncroachRule candidate_rule_;  // whether a candidate Steiner point does (terminator.cpp)
   double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
+  bool optimal_points_ = false;     // locally optimal Steiner points (--steiner=optimal; steiner_point.h)
+  PetalSearch petal_;               // their search's scratch
   double kept_bound_sin2_ = 0.0;    // -Y/-YY: sin^2 of the angle bound, of the least lens without -q
   double floor_sin2_ = 0.0;         // sin^2 of min(that angle, the initial mesh's smallest), of half that
                                     // angle without a size bound, where -Y/-YY keep every subsegment, else 0
