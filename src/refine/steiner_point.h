@@ -22,7 +22,7 @@ Point steiner_point_of(const Point& a, const Point& b, const Point& c, double of
 // How much better than the bound theta the new triangle on the shortest edge is made: the petal is
 // that of theta + kPetalMarginDeg, and a candidate is taken when that triangle's smallest angle is
 // at least theta + kPetalMarginDeg / 2 (rounding cannot bring it below theta).
-inline constexpr double kPetalMarginDeg = 0.5;
+inline constexpr double kPetalMarginDeg = 0.1;
 
 // Erten and Ungor's locally optimal Steiner points ("Quality triangulations with locally optimal
 // Steiner points", SIAM J. Sci. Comput. 31(3), 2009). For a bad triangle pqr with shortest edge pq,
