@@ -238,7 +238,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       kept_bound_sin2_(AngleBound(std::max(opt.angle.degrees(), kLeastLensDeg)).sin2()),
       guard_floor_(start.guard_floor),
       proven_range_(start.proven_range),
-      edge_floor_(start.proven_range ? 0.0 : start.guard_floor),
+      edge_floor_(start.proven_range && !optimal_points_ ? 0.0 : start.guard_floor),
       steiner_cap_(start.steiner_cap),
       cap_kind_(start.cap_kind),
       pieces_(std::move(start.pieces)),

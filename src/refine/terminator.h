@@ -239,7 +239,9 @@ class Terminator {
                                     // angle without a size bound, where -Y/-YY keep every subsegment, else 0
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   bool proven_range_ = false;          // the paper's theorems cover the run
-  double edge_floor_ = 0.0;            // the floor applied: guard_floor_, or 0 within the proven range
+  // The floor applied: guard_floor_, or 0 within the proven range, whose proofs are for circumcentres
+  // and off-centres (locally optimal points keep the floor).
+  double edge_floor_ = 0.0;
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;
   SegmentPieces pieces_;  // the piece of each subsegment and refinement split

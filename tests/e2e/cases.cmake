@@ -433,3 +433,12 @@ set_tests_properties(e2e.outputs.names PROPERTIES TIMEOUT 300)
 # junctions, where Triangle 1.6 meets 30 ----
 add_test(NAME e2e.shells.guitar.pq30a0.054 COMMAND ${QUALITY_BOUND} ${E2E_DATA}/guitar.poly -pq30a0.054 30 0.054)
 e2e_case(shells.guitar.pq30a0.054.verify ${E2E_DATA}/guitar.poly -pq30a0.054 --no-warning --verify "--refined --min-angle 30 --max-area 0.054")
+
+# ---- locally optimal Steiner points (issue 44; docs/refinement.md, "Locally optimal Steiner points"):
+# past the off-centres' ceiling (34-36 degrees on these, where they stop with a warning), every
+# triangle meets the bound, checked by deltri_mesh_verify; the cascade guard is the same ----
+e2e_case(ceiling.annulus.pq39 gen:annulus.poly -pq39 --no-warning --verify "--refined --min-angle 39")
+e2e_case(ceiling.holes3.pq38 gen:holes3.poly -pq38 --no-warning --verify "--refined --min-angle 38")
+e2e_case(ceiling.hexhole.pq38 gen:hexhole.poly "-pq38 --steiner=optimal" --no-warning --verify "--refined --min-angle 38")
+e2e_case(ceiling.annulus.offcentre.pq39 gen:annulus.poly "-pq39 --steiner=offcentre" --verify "--refined --min-angle 34"
+         --warning "refinement cannot reach this angle bound here")
