@@ -15,6 +15,7 @@ namespace {
 // dozen triangles. The cap bounds the work where the mesh is much finer than pq (next to a short
 // feature), where the off-centre is the candidate that matters anyway.
 constexpr std::size_t kGatherLimit = 96;
+static_assert(PetalSearch::kSlots > 2 * kGatherLimit);
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
@@ -72,9 +73,12 @@ Point PetalSearch::choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, 
   Point best = fallback;
   Score best_score = score(fallback, petal.sin2_min);
   for (const Point& x : candidates_) {
+    const bool best_good = best_score.shape >= petal.sin2_min;
+    // Behind a good point only a farther one can win: the distance is the cheap test.
+    if (best_good && !(clearance2(x) > best_score.clearance2)) continue;
     if (!admissible(pred, petal, x) || !in_gathered(x)) continue;
     const Score s = score(x, petal.sin2_min);
-    const bool good = s.shape >= petal.sin2_min, best_good = best_score.shape >= petal.sin2_min;
+    const bool good = s.shape >= petal.sin2_min;
     if ((good && !best_good) || (good == best_good && s.clearance2 > best_score.clearance2))
       best = x, best_score = s;
   }
@@ -152,25 +156,47 @@ bool PetalSearch::in_gathered(const Point& x) const {
 
 double PetalSearch::clearance2(const Point& x) const {
   double nearest = HUGE_VAL;
-  for (const Point& v : corners_) nearest = std::min(nearest, squared_distance(x, v));
+  for (const Point& v : vertices_) nearest = std::min(nearest, squared_distance(x, v));
   return nearest;
+}
+
+// A small open-addressed table from triangle to its place in triangles_ (kSlots is more than twice
+// kGatherLimit, so probes are short and it never fills).
+std::size_t PetalSearch::slot_of(TriangleId t) const {
+  std::size_t slot = (static_cast<std::uint32_t>(t) * 2654435761u) >> 24;
+  while (slots_[slot] != kNone && slots_[slot] != t) slot = (slot + 1) % kSlots;
+  return slot;
+}
+
+int PetalSearch::index_of(TriangleId t) const {
+  const std::size_t slot = slot_of(t);
+  return slots_[slot] == kNone ? -1 : slot_index_[slot];
+}
+
+void PetalSearch::remember(TriangleId t) {
+  const std::size_t slot = slot_of(t);
+  slots_[slot] = t;
+  slot_index_[slot] = static_cast<int>(triangles_.size());
+  triangles_.push_back(t);
 }
 
 // The triangles reachable from t without crossing a subsegment whose bounding boxes meet the disk
 // of radius `reach` around `centre`.
 void PetalSearch::gather(const Mesh& mesh, TriangleId t, const Point& centre, double reach) {
-  triangles_.assign(1, t);
+  triangles_.clear();
+  slots_.assign(kSlots, kNone);
+  remember(t);
   for (std::size_t next = 0; next < triangles_.size() && triangles_.size() < kGatherLimit; ++next) {
     for (unsigned side = 0; side < 3; ++side) {
       const EdgeRef e = edge_of(triangles_[next], side);
       const EdgeRef across = mesh.link[e];
       if (across == kNone || (mesh.has_subsegments() && mesh.subseg.has(e))) continue;
       const TriangleId u = triangle_of(across);
-      if (std::find(triangles_.begin(), triangles_.end(), u) != triangles_.end()) continue;
+      if (index_of(u) >= 0) continue;
       const auto [a, b, c] = mesh.corner_points(u);
       const double dx = std::max({std::min({a.x, b.x, c.x}) - centre.x, 0.0, centre.x - std::max({a.x, b.x, c.x})});
       const double dy = std::max({std::min({a.y, b.y, c.y}) - centre.y, 0.0, centre.y - std::max({a.y, b.y, c.y})});
-      if (dx * dx + dy * dy <= reach * reach) triangles_.push_back(u);
+      if (dx * dx + dy * dy <= reach * reach) remember(u);
     }
   }
   describe_gathered(mesh);
@@ -181,6 +207,7 @@ void PetalSearch::describe_gathered(const Mesh& mesh) {
   centres_.clear();
   radii2_.clear();
   corners_.clear();
+  vertex_ids_.clear();
   neighbours_.assign(3 * triangles_.size(), -1);
   for (std::size_t i = 0; i < triangles_.size(); ++i) {
     const auto [a, b, c] = mesh.corner_points(triangles_[i]);
@@ -188,14 +215,18 @@ void PetalSearch::describe_gathered(const Mesh& mesh) {
     centres_.push_back(centre);
     radii2_.push_back(squared_distance(centre, a));
     corners_.insert(corners_.end(), {a, b, c});
+    for (unsigned k = 0; k < 3; ++k) vertex_ids_.push_back(mesh.corner[edge_of(triangles_[i], k)]);
     for (unsigned side = 0; side < 3; ++side) {
       const EdgeRef e = edge_of(triangles_[i], side);
       const EdgeRef across = mesh.link[e];
       if (across == kNone || (mesh.has_subsegments() && mesh.subseg.has(e))) continue;
-      const auto found = std::find(triangles_.begin(), triangles_.end(), triangle_of(across));
-      if (found != triangles_.end()) neighbours_[3 * i + side] = static_cast<int>(found - triangles_.begin());
+      neighbours_[3 * i + side] = index_of(triangle_of(across));
     }
   }
+  std::sort(vertex_ids_.begin(), vertex_ids_.end());
+  vertex_ids_.erase(std::unique(vertex_ids_.begin(), vertex_ids_.end()), vertex_ids_.end());
+  vertices_.clear();
+  for (const VertexId v : vertex_ids_) vertices_.push_back(mesh.point(v));
 }
 
 }  // namespace deltri

@@ -4,6 +4,7 @@
 // Erten and Ungor's locally optimal one (PetalSearch below).
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "geometry/point.h"
@@ -38,6 +39,7 @@ inline constexpr double kPetalMarginDeg = 0.1;
 // must also lie inside pqr's circumcircle (exact incircle), or its insertion would leave pqr.
 class PetalSearch {
  public:
+  static constexpr std::size_t kSlots = 256;  // the gathered triangles' index table (steiner_point.cpp)
   Point choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, double theta_deg, double off_center_factor);
 
  private:
@@ -63,6 +65,9 @@ class PetalSearch {
   bool in_gathered(const Point& x) const;
   Score score(const Point& x, double bound_sin2);
   double clearance2(const Point& x) const;
+  std::size_t slot_of(TriangleId t) const;
+  int index_of(TriangleId t) const;  // in triangles_, or -1
+  void remember(TriangleId t);
 
   std::vector<TriangleId> triangles_;
   std::vector<Point> centres_;  // the circumcentres of triangles_: the Voronoi vertices near pq
@@ -70,6 +75,10 @@ class PetalSearch {
   std::vector<Point> corners_;  // three a triangle, counter-clockwise
   std::vector<int> neighbours_;  // three a triangle: the index of the gathered one across each side, or -1
   std::vector<char> in_cavity_;
+  std::vector<VertexId> vertex_ids_;  // the gathered triangles' corners, each once
+  std::vector<Point> vertices_;       // and their points
+  std::vector<TriangleId> slots_;     // index_of's table: kSlots triangles or kNone
+  std::vector<int> slot_index_ = std::vector<int>(kSlots, -1);
   std::vector<Point> candidates_;
 };
 
