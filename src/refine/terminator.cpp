@@ -224,8 +224,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
     : Terminator(mesh, pred, opt, TerminatorStart::of(mesh, opt)) {}
 
 Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, TerminatorStart start)
-    : mesh_(mesh),
-      pred_(pred),
+    : mesh_(mesh), pred_(pred),
       opt_(opt),
       rules_{opt.angle, opt.size, opt.area_field, opt.size_test},
       interior_rules_{opt.interior_bound != 0 ? AngleBound(std::max(opt.angle.degrees(), kInteriorBoundDeg)) : opt.angle,
