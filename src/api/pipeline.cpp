@@ -182,11 +182,12 @@ BoundRequest bound_request(const Criteria& criteria, const Switches& sw, const R
 
 // --smooth: after refinement (and its -D account), on one thread in vertex order, so that the
 // mesh is the same for every --threads.
-void smooth(Mesh& mesh, const Switches& sw, const PipelineSource& source, RunReport& report) {
+void smooth(Mesh& mesh, const Switches& sw, const Criteria& criteria, const PipelineSource& source, RunReport& report) {
   SmoothOptions opt;
   opt.rounds = sw.smooth_rounds;
-  opt.angle = angle_bound(sw);
-  opt.size = size_bounds(sw, area_bounds_read(source));
+  opt.angle = criteria.angle;
+  opt.size = criteria.size;
+  opt.max_angle = criteria.max_angle;
   opt.size_test = source.size_test;
   opt.conforming = conforming_expected(sw, report);
   Predicates pred;
@@ -214,6 +215,7 @@ RefineOptions refine_options(const Switches& sw, const Criteria& criteria) {
   opt.no_steiner_on_segments = sw.no_boundary_steiner;
   opt.max_steiner = sw.max_steiner;
   opt.off_centers = !sw.circumcenters_only;
+  opt.steiner = sw.steiner;
   opt.queue_order = sw.queue_order;
   opt.decline_cluster_splits = sw.decline_cluster_splits;
   opt.algorithm = sw.refinement;
@@ -313,7 +315,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
   }
   if (sw.smooth_rounds > 0) {
     begin("smoothing");
-    smooth(mesh, sw, source, report);
+    smooth(mesh, sw, criteria, source, report);
     stage("smoothing");
     check_stage(mesh, "smoothing", conforming_expected(sw, report));
   }

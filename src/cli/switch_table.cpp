@@ -200,6 +200,19 @@ void set_max_angle(S& s, const std::string* v) {
   s.max_angle = degrees;
 }
 
+void set_steiner(S& s, const std::string* v) {
+  static constexpr std::pair<std::string_view, SteinerPolicy> kNames[] = {
+      {"offcentre", SteinerPolicy::OffCentre}, {"circumcentre", SteinerPolicy::Circumcentre},
+      {"optimal", SteinerPolicy::Optimal}};
+  for (const auto& [name, policy] : kNames)
+    if (*v == name) {
+      s.steiner = policy;
+      s.circumcenters_only = s.circumcenters_only || policy == SteinerPolicy::Circumcentre;
+      return;
+    }
+  throw UsageError("--steiner=" + *v + ": the policy is offcentre, circumcentre or optimal");
+}
+
 constexpr std::array kLongOptions = {
     LongOption{"msh", "FILE", true, "also write the mesh as Gmsh MSH (version and encoding: --msh-format); FILE - is standard output",
                [](S& s, const std::string* v) { request(s.msh, v, "msh"); }},
@@ -272,6 +285,11 @@ constexpr std::array kLongOptions = {
                "Delaunay position, each move kept only if its star's smallest angle rises and every bound and the "
                "constrained Delaunay property still hold",
                set_smooth},
+    LongOption{"steiner", "POLICY", false,
+               "where a skinny triangle's new vertex goes: offcentre (Ungor's off-centre; the default up to -q34), "
+               "circumcentre (as -k) or optimal (Erten and Ungor's locally optimal point in the petal of the shortest "
+               "edge; the default above -q34)",
+               set_steiner},
     LongOption{"threads", "N", false,
                "refine large meshes (and build the triangulation, write the files) on up to N threads (default: all cores); "
                "the output is the same for every N",

@@ -7,6 +7,7 @@
 #include "delaunay/triangulate.h"
 #include "refine/algorithm.h"
 #include "refine/quality_queue.h"
+#include "refine/steiner_policy.h"
 
 namespace deltri {
 
@@ -24,6 +25,7 @@ struct Switches {
   bool caller_size_test = false; // a bare u in a library switch string: the caller's size function
   double max_edge_length = -1.0;
   bool circumcenters_only = false;  // -k: Steiner points at circumcentres, no off-centres
+  SteinerPolicy steiner = SteinerPolicy::Automatic;  // --steiner=offcentre|circumcentre|optimal
   QueueOrder queue_order = QueueOrder::ShortestEdge;  // --queue=
   bool decline_cluster_splits = false;               // --decline-cluster-splits
   RefinementAlgorithm refinement = RefinementAlgorithm::Terminator;  // --algorithm=terminator|ruppert|chew

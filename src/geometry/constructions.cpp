@@ -124,6 +124,30 @@ Point intersection_in_range(const Point& a, const Point& b, const Point& c, cons
 
 }  // namespace
 
+int segment_circle_crossings(const Point& a, const Point& b, const Point& o, double radius, Point out[2]) {
+  // |a + t (b - a) - o|^2 = radius^2, a quadratic in t; the crossings are its roots in [0, 1].
+  const double dx = b.x - a.x, dy = b.y - a.y, fx = a.x - o.x, fy = a.y - o.y;
+  const double qa = dx * dx + dy * dy, qb = 2.0 * (fx * dx + fy * dy), qc = fx * fx + fy * fy - radius * radius;
+  const double discriminant = qb * qb - 4.0 * qa * qc;
+  if (!(qa > 0.0) || !(discriminant >= 0.0)) return 0;
+  const double root = std::sqrt(discriminant);
+  int n = 0;
+  for (const double t : {(-qb - root) / (2.0 * qa), (-qb + root) / (2.0 * qa)})
+    if (t >= 0.0 && t <= 1.0) out[n++] = Point{a.x + t * dx, a.y + t * dy};
+  return n;
+}
+
+bool segment_crossing(const Point& a, const Point& b, const Point& c, const Point& d, Point& out) {
+  const double rx = b.x - a.x, ry = b.y - a.y, sx = d.x - c.x, sy = d.y - c.y;
+  const double denominator = rx * sy - ry * sx;
+  if (!(std::fabs(denominator) > 0.0)) return false;
+  const double qx = c.x - a.x, qy = c.y - a.y;
+  const double t = (qx * sy - qy * sx) / denominator, u = (qx * ry - qy * rx) / denominator;
+  if (!(t >= 0.0 && t <= 1.0 && u >= 0.0 && u <= 1.0)) return false;
+  out = Point{a.x + t * rx, a.y + t * ry};
+  return true;
+}
+
 double triangle_area(const Point& a, const Point& b, const Point& c) {
   return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
 }

@@ -32,6 +32,16 @@ Point off_center(const Point& p, const Point& q, const Point& r, double factor);
 // segments it returns a.
 Point segment_intersection(const Point& a, const Point& b, const Point& c, const Point& d);
 
+// Where segment ab crosses the circle of centre o and radius `radius`: writes 0, 1 or 2 points
+// to out (in order from a) and returns how many. Plain floating point: the locally optimal Steiner
+// points (refine/steiner_point.h) use the crossings as candidates and check each one afterwards.
+int segment_circle_crossings(const Point& a, const Point& b, const Point& o, double radius, Point out[2]);
+
+// Where segment ab crosses segment cd, in plain floating point; false when they are parallel or
+// do not cross. For candidates that are checked afterwards, as above; segment_intersection is the
+// accurate one.
+bool segment_crossing(const Point& a, const Point& b, const Point& c, const Point& d, Point& out);
+
 // Signed area: positive when a, b, c are counter-clockwise. Plain floating point.
 double triangle_area(const Point& a, const Point& b, const Point& c);
 

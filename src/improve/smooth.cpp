@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geometry/constructions.h"
+#include "refine/criteria.h"
 
 namespace deltri {
 namespace {
@@ -180,6 +181,7 @@ class Smoother {
         std::max({std::hypot(b.x - a.x, b.y - a.y), std::hypot(c.x - b.x, c.y - b.y), std::hypot(a.x - c.x, a.y - c.y)}) >
             opt_.size.max_edge_length)
       return false;
+    if (corner_above(a, b, c, opt_.max_angle) >= 0) return false;
     return opt_.size_test == nullptr || !(*opt_.size_test)(a, b, c, area);
   }
 

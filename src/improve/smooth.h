@@ -28,6 +28,7 @@ struct SmoothOptions {
   int rounds = 3;                        // passes over the free vertices (a pass that moves none ends early)
   AngleBound angle;                      // -q
   SizeBounds size;                       // -a, bare -a / regions / .area, -u
+  LargestAngleBound max_angle;           // --max-angle
   const SizeTest* size_test = nullptr;   // a caller's size test (-u's callback, --size-field)
   bool conforming = false;               // -D: segment edges must stay Delaunay as well
 };

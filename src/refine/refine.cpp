@@ -111,6 +111,7 @@ RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& aske
   const bool given = asked.area_field != nullptr && !asked.area_field->empty();
   const AreaField field = asked.size.triangle_bounds && !given ? AreaField::of(mesh) : AreaField{};
   RefineOptions opt = asked;
+  opt.steiner = opt.off_centers ? resolved_policy(asked.steiner, asked.angle.degrees()) : SteinerPolicy::Circumcentre;
   if (!given) opt.area_field = &field;
   const RefineReport report = refine_in_stages(mesh, pred, opt);
   if (!opt.area_field->empty() && mesh.area_bound.size() == mesh.triangle_slots())

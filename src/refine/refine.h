@@ -24,6 +24,7 @@
 #include "refine/algorithm.h"
 #include "refine/quality_queue.h"
 #include "refine/size_test.h"
+#include "refine/steiner_policy.h"
 
 namespace deltri {
 
@@ -39,6 +40,9 @@ struct RefineOptions {
   int no_steiner_on_segments = 0;       // 0, 1 = not on boundary segments (-Y), 2 = none (-YY)
   long max_steiner = -1;                // -S; -1 unlimited
   bool off_centers = true;              // Ungor's off-centres instead of circumcentres
+  // --steiner: off-centres, circumcentres or locally optimal points (refine/steiner_policy.h);
+  // refine_mesh resolves Automatic by the asked angle bound, for every stage alike.
+  SteinerPolicy steiner = SteinerPolicy::Automatic;
   // A caller's size test (refine/size_test.h), or null. Its wishes are unknown in advance, so only
   // the memory budget caps the Steiner points, and refinement stays on one thread (refine_in_parts.h).
   const SizeTest* size_test = nullptr;

@@ -1,9 +1,14 @@
 // Where to split a bad triangle (Fig. 38 l.13): its circumcentre, or Ungor's off-centre when that
 // is nearer the shortest edge (geometry/constructions.h, off_center). Off-centres give fewer
-// triangles for the same bound.
+// triangles for the same bound. Above kOptimalAboveDeg (or with --steiner=optimal) the point is
+// Erten and Ungor's locally optimal one (PetalSearch below).
 #pragma once
 
+#include <cstddef>
+#include <vector>
+
 #include "geometry/point.h"
+#include "geometry/predicates.h"
 #include "mesh/mesh.h"
 
 namespace deltri {
@@ -14,5 +19,67 @@ Point steiner_point(const Mesh& mesh, EdgeRef shortest, double off_center_factor
 
 // The same for a triangle abc (counter-clockwise) that is not in the mesh yet: -Y's look-ahead.
 Point steiner_point_of(const Point& a, const Point& b, const Point& c, double off_center_factor);
+
+// How much better than the bound theta the new triangle on the shortest edge is made: the petal is
+// that of theta + kPetalMarginDeg, and a candidate is taken when that triangle's smallest angle is
+// at least theta + kPetalMarginDeg / 2 (rounding cannot bring it below theta).
+inline constexpr double kPetalMarginDeg = 0.1;
+
+// Erten and Ungor's locally optimal Steiner points ("Quality triangulations with locally optimal
+// Steiner points", SIAM J. Sci. Comput. 31(3), 2009). For a bad triangle pqr with shortest edge pq,
+// the petal of pq is where a point x makes triangle pqx meet the bound: inside the arc through p
+// and q from which pq subtends the bound's angle, and inside the rays from p and q at that angle to
+// pq. Every point of the petal fixes pqr's shortest edge at once; the best of them is the one
+// farthest from the vertices around it, for the new triangles are then as large as the bound
+// allows and the refinement that follows has the least to do. The farthest point of a region from
+// a set of sites is a Voronoi vertex inside it (the paper's Type IV), a crossing of a Voronoi edge
+// with its boundary (Type III; the dual edge of pq gives the off-centre, Types I-II), or a corner
+// of the region. PetalSearch gathers the triangles near pq, takes those points as candidates, and
+// keeps the one whose nearest vertex is farthest; the off-centre when nothing beats it. A candidate
+// must also lie inside pqr's circumcircle (exact incircle), or its insertion would leave pqr.
+class PetalSearch {
+ public:
+  static constexpr std::size_t kSlots = 256;  // the gathered triangles' index table (steiner_point.cpp)
+  Point choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, double theta_deg, double off_center_factor);
+
+ private:
+  struct Petal {
+    Point p, q, r;
+    Point top;                    // the petal's point on pq's bisector, farthest from pq
+    Point arc_centre;             // the arc's circle
+    double arc_radius = 0.0;
+    Point ray_p, ray_q;           // the far ends of the rays from p and q, beyond the arc
+    double reach = 0.0;           // every candidate's nearest vertex is within this of the midpoint of pq
+    double sin2_min = 0.0;        // what triangle pqx must meet
+  };
+  struct Score {
+    double shape = 0.0;       // sin^2 of the smallest angle of the new triangles, at most the bound's
+    double clearance2 = 0.0;  // squared distance to the nearest gathered vertex
+  };
+  static Petal petal_of(const Point& p, const Point& q, const Point& r, double theta_deg);
+  void gather(const Mesh& mesh, TriangleId t, const Point& centre, double reach);
+  void describe_gathered(const Mesh& mesh);
+  void propose_corners(const Petal& petal);
+  void propose_voronoi(const Petal& petal);
+  bool admissible(Predicates& pred, const Petal& petal, const Point& x) const;
+  bool in_gathered(const Point& x) const;
+  Score score(const Point& x, double bound_sin2);
+  double clearance2(const Point& x) const;
+  std::size_t slot_of(TriangleId t) const;
+  int index_of(TriangleId t) const;  // in triangles_, or -1
+  void remember(TriangleId t);
+
+  std::vector<TriangleId> triangles_;
+  std::vector<Point> centres_;  // the circumcentres of triangles_: the Voronoi vertices near pq
+  std::vector<double> radii2_;  // their squared circumradii
+  std::vector<Point> corners_;  // three a triangle, counter-clockwise
+  std::vector<int> neighbours_;  // three a triangle: the index of the gathered one across each side, or -1
+  std::vector<char> in_cavity_;
+  std::vector<VertexId> vertex_ids_;  // the gathered triangles' corners, each once
+  std::vector<Point> vertices_;       // and their points
+  std::vector<TriangleId> slots_;     // index_of's table: kSlots triangles or kNone
+  std::vector<int> slot_index_ = std::vector<int>(kSlots, -1);
+  std::vector<Point> candidates_;
+};
 
 }  // namespace deltri

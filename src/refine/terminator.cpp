@@ -228,8 +228,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
     : Terminator(mesh, pred, opt, TerminatorStart::of(mesh, opt)) {}
 
 Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, TerminatorStart start)
-    : mesh_(mesh),
-      pred_(pred),
+    : mesh_(mesh), pred_(pred),
       opt_(opt),
       rules_{opt.angle, opt.size, opt.max_angle, opt.area_field, opt.size_test},
       interior_rules_{opt.interior_bound != 0 ? AngleBound(std::max(opt.angle.degrees(), kInteriorBoundDeg)) : opt.angle,
@@ -238,10 +237,11 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       candidate_rule_(candidate_rule_for(opt, rule_)),
       // Ruppert and Chew insert circumcentres (Sec. 3.1, 4.1).
       off_center_factor_(opt.off_centers && opt.algorithm == RefinementAlgorithm::Terminator ? opt.angle.off_center_factor() : 0.0),
+      optimal_points_(off_center_factor_ > 0.0 && opt.steiner == SteinerPolicy::Optimal),
       kept_bound_sin2_(AngleBound(std::max(opt.angle.degrees(), kLeastLensDeg)).sin2()),
       guard_floor_(start.guard_floor),
       proven_range_(start.proven_range),
-      edge_floor_(start.proven_range ? 0.0 : start.guard_floor),
+      edge_floor_(start.proven_range && !optimal_points_ ? 0.0 : start.guard_floor),
       steiner_cap_(start.steiner_cap),
       cap_kind_(start.cap_kind),
       pieces_(std::move(start.pieces)),

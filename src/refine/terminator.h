@@ -28,6 +28,7 @@
 #include "refine/quality_queue.h"
 #include "util/progress.h"
 #include "refine/refine.h"
+#include "refine/steiner_point.h"
 #include "util/page_warmer.h"
 #include "util/prefetch.h"
 
@@ -233,12 +234,16 @@ class Terminator {
   EncroachRule rule_;            // whether a vertex already in the mesh encroaches
   EncroachRule candidate_rule_;  // whether a candidate Steiner point does (terminator.cpp)
   double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
+  bool optimal_points_ = false;     // locally optimal Steiner points (--steiner=optimal; steiner_point.h)
+  PetalSearch petal_;               // their search's scratch
   double kept_bound_sin2_ = 0.0;    // -Y/-YY: sin^2 of the angle bound, of the least lens without -q
   double floor_sin2_ = 0.0;         // sin^2 of min(that angle, the initial mesh's smallest), of half that
                                     // angle without a size bound, where -Y/-YY keep every subsegment, else 0
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   bool proven_range_ = false;          // the paper's theorems cover the run
-  double edge_floor_ = 0.0;            // the floor applied: guard_floor_, or 0 within the proven range
+  // The floor applied: guard_floor_, or 0 within the proven range, whose proofs are for circumcentres
+  // and off-centres (locally optimal points keep the floor).
+  double edge_floor_ = 0.0;
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;
   SegmentPieces pieces_;  // the piece of each subsegment and refinement split

@@ -30,7 +30,10 @@ std::optional<Outcome> Terminator::choose_point(TriangleId t, const Assessment& 
   const EdgeRef shortest = a.shape.shortest;
   const Point& g = mesh_.point(mesh_.org(shortest));
   if (std::sqrt(a.shape.shortest_length2) < floor_for(a, g)) return Outcome::BelowFloor;
-  c.point = steiner_point(mesh_, shortest, off_center_factor_);
+  // Locally optimal points are for the angle bound; a triangle bad only for its size keeps the
+  // off-centre (its circumcentre).
+  c.point = optimal_points_ && a.skinny ? petal_.choose(mesh_, pred_, shortest, opt_.angle.degrees(), off_center_factor_)
+                                        : steiner_point(mesh_, shortest, off_center_factor_);
   // A triangle flat to rounding (its measured area 0) has no usable circumcentre: the walk
   // towards a NaN point has no exit side.
   if (!std::isfinite(c.point.x) || !std::isfinite(c.point.y)) return Outcome::NoPoint;

@@ -164,6 +164,19 @@ TEST(queue_orders_by_name_and_the_ratio_default) {
   CHECK(usage_error({"--queue=worst", "x"}).find("ratio, paper, edge, fifo, heap or paper-heap") != std::string::npos);
 }
 
+TEST(steiner_policies_by_name) {
+  CHECK(parse({"x"}).steiner == SteinerPolicy::Automatic);
+  CHECK(parse({"--steiner=optimal", "x"}).steiner == SteinerPolicy::Optimal);
+  CHECK(parse({"--steiner=offcentre", "x"}).steiner == SteinerPolicy::OffCentre);
+  CHECK(!parse({"--steiner=offcentre", "x"}).circumcenters_only);
+  CHECK(parse({"--steiner=circumcentre", "x"}).circumcenters_only);  // as -k
+  CHECK(usage_error({"--steiner=best", "x"}).find("offcentre, circumcentre or optimal") != std::string::npos);
+  // Automatic: the off-centres' meshes up to -q34, locally optimal points above.
+  CHECK(resolved_policy(SteinerPolicy::Automatic, 34.0) == SteinerPolicy::OffCentre);
+  CHECK(resolved_policy(SteinerPolicy::Automatic, 34.5) == SteinerPolicy::Optimal);
+  CHECK(resolved_policy(SteinerPolicy::OffCentre, 40.0) == SteinerPolicy::OffCentre);
+}
+
 TEST(long_option_errors) {
   CHECK_EQ(usage_error({"--mesh", "x"}), std::string("--mesh: unknown option (see deltri -h)"));
   CHECK_EQ(usage_error({"--strict=1", "x"}), std::string("--strict: takes no value"));

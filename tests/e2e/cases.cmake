@@ -464,3 +464,12 @@ foreach(item stock_u poly_for_node ignorable_letters dimension3 messages)
   add_test(NAME e2e.triangle_cli.${item}
            COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/e2e/triangle_cli.py $<TARGET_FILE:deltri> ${E2E_INPUTS} ${E2E_DATA} ${item})
 endforeach()
+
+# ---- locally optimal Steiner points (docs/refinement.md, "Locally optimal Steiner points"):
+# past the off-centres' ceiling (34-36 degrees on these, where they stop with a warning), every
+# triangle meets the bound, checked by deltri_mesh_verify; the cascade guard is the same ----
+e2e_case(ceiling.annulus.pq39 gen:annulus.poly -pq39 --no-warning --verify "--refined --min-angle 39")
+e2e_case(ceiling.holes3.pq38 gen:holes3.poly -pq38 --no-warning --verify "--refined --min-angle 38")
+e2e_case(ceiling.hexhole.pq38 gen:hexhole.poly "-pq38 --steiner=optimal" --no-warning --verify "--refined --min-angle 38")
+e2e_case(ceiling.annulus.offcentre.pq39 gen:annulus.poly "-pq39 --steiner=offcentre" --verify "--refined --min-angle 34"
+         --warning "refinement cannot reach this angle bound here")

@@ -102,8 +102,23 @@ gen_input() {  # gen_input NAME.EXT DIR
     bom.node) printf '\357\273\277# UTF-8 byte order mark\n3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n' >"$2/$1" ;;
     nul.node) printf '3 2 0 0\n1 0 0\n2 1 \0000\n3 0 1\n' >"$2/$1" ;;
     no_newline.node) printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1' >"$2/$1" ;;
-    holes24.poly)  # unit square with 24 x 24 holes, each a 40-gon: large enough to refine in halves
-      awk 'BEGIN { k = 24; n = 40; pi = atan2(0, -1)
+    annulus.poly)  # a 40-gon of radius 2 around a 20-gon hole of radius 1: every input angle above 60 degrees
+      awk 'BEGIN { pi = atan2(0, -1); print 60, 2, 0, 1
+        for (i = 0; i < 40; i++) printf "%d %.17g %.17g 1\n", i + 1, 2 * cos(2 * pi * i / 40), 2 * sin(2 * pi * i / 40)
+        for (i = 0; i < 20; i++) printf "%d %.17g %.17g 2\n", i + 41, cos(2 * pi * i / 20), sin(2 * pi * i / 20)
+        print 60, 1
+        for (i = 0; i < 40; i++) printf "%d %d %d 1\n", i + 1, i + 1, (i + 1) % 40 + 1
+        for (i = 0; i < 20; i++) printf "%d %d %d 2\n", i + 41, i + 41, (i + 1) % 20 + 41
+        print 1; print 1, 0, 0 }' >"$2/$1" ;;
+    hexhole.poly)  # a 3 x 2 rectangle around a hexagonal hole: every input angle 90 or 240 degrees
+      awk 'BEGIN { pi = atan2(0, -1); print 10, 2, 0, 1; printf "1 0 0 1\n2 3 0 1\n3 3 2 1\n4 0 2 1\n"
+        for (i = 0; i < 6; i++) printf "%d %.17g %.17g 2\n", i + 5, 1.1 + 0.5 * cos(2 * pi * i / 6 + 0.3), 0.9 + 0.5 * sin(2 * pi * i / 6 + 0.3)
+        print 10, 1
+        for (i = 0; i < 4; i++) printf "%d %d %d 1\n", i + 1, i + 1, (i + 1) % 4 + 1
+        for (i = 0; i < 6; i++) printf "%d %d %d 2\n", i + 5, i + 5, (i + 1) % 6 + 5
+        print 1; print 1, 1.1, 0.9 }' >"$2/$1" ;;
+    holes24.poly|holes3.poly)  # unit square with k x k holes, each a 40-gon (24: large enough to refine in halves)
+      awk -v k="$(printf '%s' "$1" | tr -dc 0-9)" 'BEGIN { n = 40; pi = atan2(0, -1)
         printf "%d 2 0 1\n1 0 0 1\n2 1 0 1\n3 1 1 1\n4 0 1 1\n", 4 + k * k * n
         v = 4
         for (i = 0; i < k; i++) for (j = 0; j < k; j++) for (s = 0; s < n; s++)
