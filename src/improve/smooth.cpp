@@ -171,7 +171,8 @@ class Smoother {
   }
 
   bool triangle_meets_bounds(TriangleId t, const Point& a, const Point& b, const Point& c) const {
-    if (opt_.angle.degrees() > 0.0 && smallest_angle(a, b, c) < opt_.angle.degrees() + kAngleSlackDeg) return false;
+    // Kept kAngleSlackDeg clear of -q, so that the exact angle meets it too.
+    if (below_angle_bound(smallest_angle(a, b, c) - kAngleSlackDeg, opt_.angle)) return false;
     const double area = area_of(a, b, c);
     if (opt_.size.max_area > 0.0 && area > opt_.size.max_area) return false;
     if (opt_.size.triangle_bounds && m_.area_bound.size() == m_.triangle_slots() && m_.area_bound[t] > 0.0 &&

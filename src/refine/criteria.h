@@ -135,6 +135,10 @@ inline bool max_angle_implied(const LargestAngleBound& max_angle, const AngleBou
   return !max_angle.asked() || max_angle.degrees() >= 180.0 - 2.0 * angle.degrees();
 }
 
+// Whether -q asks for more than reach_deg degrees (refinement past an algorithm's single-stage reach
+// goes in two stages: refine/refine.cpp).
+inline bool asks_beyond(const AngleBound& angle, double reach_deg) { return angle.degrees() > reach_deg; }
+
 // Whether a surface triangle's smallest angle (in degrees, measured in space) is below -q's.
 inline bool below_angle_bound(double smallest_degrees, const AngleBound& angle) {
   return angle.degrees() > 0.0 && smallest_degrees < angle.degrees();

@@ -69,7 +69,7 @@ RefineReport refine_beyond_reach(Mesh& mesh, Predicates& pred, const RefineOptio
 // of the first stage's size, time and memory (the copy kept is one more first-stage mesh).
 RefineReport refine_in_stages(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
   const double reach_deg = stage_plan(opt.algorithm).reach_deg;
-  if (!(opt.angle.degrees() > reach_deg)) return refine_within_reach(mesh, pred, opt);
+  if (!asks_beyond(opt.angle, reach_deg)) return refine_within_reach(mesh, pred, opt);
   RefineOptions reach = opt;
   reach.angle = AngleBound(reach_deg);
   const RefineReport first = refine_within_reach(mesh, pred, reach);

@@ -96,10 +96,10 @@ PetalSearch::Score PetalSearch::score(const Point& x, double bound_sin2) {
   for (std::size_t i = 0; i < triangles_.size(); ++i) {
     if (!in_cavity_[i]) continue;
     for (unsigned side = 0; side < 3; ++side) {
-      const int j = neighbours_[3 * i + side];
+      const int j = neighbours_[i][side];
       if (j >= 0 && in_cavity_[static_cast<std::size_t>(j)]) continue;
-      const Point& a = corners_[3 * i + side];
-      const Point& b = corners_[3 * i + (side + 1) % 3];
+      const Point& a = corners_[i][side];
+      const Point& b = corners_[i][(side + 1) % 3];
       shape = std::min(shape, smallest_angle_sine2(a, b, x));
     }
   }
@@ -123,7 +123,7 @@ void PetalSearch::propose_voronoi(const Petal& petal) {
   Point at;
   for (std::size_t i = 0; i < triangles_.size(); ++i) {
     for (unsigned side = 0; side < 3; ++side) {
-      const int j = neighbours_[3 * i + side];
+      const int j = neighbours_[i][side];
       if (j <= static_cast<int>(i)) continue;  // each edge once, both ends gathered
       const Point& a = centres_[i];
       const Point& b = centres_[static_cast<std::size_t>(j)];
@@ -147,10 +147,8 @@ bool PetalSearch::in_gathered(const Point& x) const {
   const auto left_of = [&](const Point& a, const Point& b) {
     return (b.x - a.x) * (x.y - a.y) - (b.y - a.y) * (x.x - a.x) >= 0.0;
   };
-  for (std::size_t i = 0; i < corners_.size(); i += 3)
-    if (left_of(corners_[i], corners_[i + 1]) && left_of(corners_[i + 1], corners_[i + 2]) &&
-        left_of(corners_[i + 2], corners_[i]))
-      return true;
+  for (const auto& [a, b, c] : corners_)
+    if (left_of(a, b) && left_of(b, c) && left_of(c, a)) return true;
   return false;
 }
 
@@ -208,19 +206,19 @@ void PetalSearch::describe_gathered(const Mesh& mesh) {
   radii2_.clear();
   corners_.clear();
   vertex_ids_.clear();
-  neighbours_.assign(3 * triangles_.size(), -1);
+  neighbours_.assign(triangles_.size(), {-1, -1, -1});
   for (std::size_t i = 0; i < triangles_.size(); ++i) {
     const auto [a, b, c] = mesh.corner_points(triangles_[i]);
     const Point centre = circumcenter(a, b, c);
     centres_.push_back(centre);
     radii2_.push_back(squared_distance(centre, a));
-    corners_.insert(corners_.end(), {a, b, c});
+    corners_.push_back({a, b, c});
     for (unsigned k = 0; k < 3; ++k) vertex_ids_.push_back(mesh.corner[edge_of(triangles_[i], k)]);
     for (unsigned side = 0; side < 3; ++side) {
       const EdgeRef e = edge_of(triangles_[i], side);
       const EdgeRef across = mesh.link[e];
       if (across == kNone || (mesh.has_subsegments() && mesh.subseg.has(e))) continue;
-      neighbours_[3 * i + side] = index_of(triangle_of(across));
+      neighbours_[i][side] = index_of(triangle_of(across));
     }
   }
   std::sort(vertex_ids_.begin(), vertex_ids_.end());

@@ -4,6 +4,7 @@
 // Erten and Ungor's locally optimal one (PetalSearch below).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -72,8 +73,8 @@ class PetalSearch {
   std::vector<TriangleId> triangles_;
   std::vector<Point> centres_;  // the circumcentres of triangles_: the Voronoi vertices near pq
   std::vector<double> radii2_;  // their squared circumradii
-  std::vector<Point> corners_;  // three a triangle, counter-clockwise
-  std::vector<int> neighbours_;  // three a triangle: the index of the gathered one across each side, or -1
+  std::vector<std::array<Point, 3>> corners_;  // per gathered triangle, counter-clockwise
+  std::vector<std::array<int, 3>> neighbours_;  // per gathered triangle: the index across each side, or -1
   std::vector<char> in_cavity_;
   std::vector<VertexId> vertex_ids_;  // the gathered triangles' corners, each once
   std::vector<Point> vertices_;       // and their points
