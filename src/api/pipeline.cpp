@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,28 +31,61 @@ namespace {
 // crossings are constructed at a scale where nothing overflows, so triangulating (-p, -c, holes,
 // regions) takes any finite coordinates. Refinement's constructions (circumcentres, off-centres,
 // split points, lengths and areas) are plain floating point and need their squares and
-// products to stay finite and normal, so refining (-q, -a, -u, -D, .area) keeps these limits.
-// Distinct vertices of magnitude M differ by at least M 2^-52, so M >= 2^-150 keeps their
-// differences above 2^-202.
+// products to stay finite and normal: they are safe for vertices within +-2^200 and not all
+// below 2^-150 (distinct vertices of magnitude M differ by at least M 2^-52, so M >= 2^-150 keeps
+// their differences above 2^-202). An input outside that range is refined scaled by a power of
+// two into [1, 2) and the mesh scaled back: exact whenever every input coordinate survives the
+// round trip, which is checked; an input that does not (its coordinates span more than the
+// doubles' exponent range) is refused.
 constexpr double kLargestCoordinate = 0x1p200;   // about 1.6e60
 constexpr double kSmallestMagnitude = 0x1p-150;  // about 7.0e-46
 
-void check_coordinate_range_for_refinement(const Pslg& pslg, const std::string& path) {
-  double largest = 0.0;
-  const auto look = [&largest](const Point& p) { largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)}); };
-  for (const Point& p : pslg.points) look(p);
+template <class See>
+void each_coordinate(const Pslg& pslg, See see) {
+  for (const Point& p : pslg.points) see(p.x), see(p.y);
+  for (const Point& p : pslg.holes) see(p.x), see(p.y);
+  for (const Pslg::Region& r : pslg.regions) see(r.at.x), see(r.at.y);
+}
+
+// The power of two refinement runs the input at (0: as given); throws when it cannot be exact.
+int refinement_scale(const Pslg& pslg, const std::string& path) {
+  double largest = 0.0, largest_vertex = 0.0;
+  for (const Point& p : pslg.points) largest_vertex = std::max({largest_vertex, std::fabs(p.x), std::fabs(p.y)});
+  each_coordinate(pslg, [&largest](double c) { largest = std::max(largest, std::fabs(c)); });
   // Only the vertices are ever differenced with each other: a tiny input is tiny in them.
-  const double largest_vertex = largest;
-  for (const Point& p : pslg.holes) look(p);
-  for (const Pslg::Region& r : pslg.regions) look(r.at);
-  if (largest > kLargestCoordinate) {
-    char magnitude[32];
-    std::snprintf(magnitude, sizeof magnitude, "%g", largest);
-    throw InputError(path, 0, std::string("a coordinate of magnitude ") + magnitude +
-                                  " is beyond the range supported for refinement, +-2^200 (about 1.6e60); scale the input down");
+  const bool tiny = largest_vertex > 0.0 && largest_vertex < kSmallestMagnitude;
+  if (largest <= kLargestCoordinate && !tiny) return 0;
+  const int e = -std::ilogb(tiny ? largest_vertex : largest);
+  bool exact = true;
+  each_coordinate(pslg, [&exact, e](double c) { exact = exact && std::ldexp(std::ldexp(c, e), -e) == c; });
+  if (exact) return e;
+  char magnitude[32];
+  std::snprintf(magnitude, sizeof magnitude, "%g", tiny ? largest_vertex : largest);
+  throw InputError(path, 0, std::string("coordinates of magnitude ") + magnitude +
+                                " are outside +-2^200 and 2^-150 (the range refinement computes in), and the input "
+                                "cannot be scaled into it exactly: its coordinates span more than the doubles' exponent range");
+}
+
+// An area or length bound at the scale refinement runs at: a positive bound stays positive and finite.
+double scaled_bound(double bound, int e) {
+  if (!(bound > 0.0)) return bound;
+  return std::clamp(std::ldexp(bound, e), std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::max());
+}
+
+void scale_input(Pslg& pslg, int e) {
+  for (Point& p : pslg.points) p = {std::ldexp(p.x, e), std::ldexp(p.y, e)};
+  for (Point& p : pslg.holes) p = {std::ldexp(p.x, e), std::ldexp(p.y, e)};
+  for (Pslg::Region& r : pslg.regions) {
+    r.at = {std::ldexp(r.at.x, e), std::ldexp(r.at.y, e)};
+    r.max_area = scaled_bound(r.max_area, 2 * e);
   }
-  if (largest_vertex > 0.0 && largest_vertex < kSmallestMagnitude)
-    throw InputError(path, 0, "every vertex coordinate is below 2^-150 (about 7.0e-46) in magnitude, too small for refinement; scale the input up");
+}
+
+// The mesh back at the input's scale: the input vertices exactly, new vertices rounded only if
+// they fall below the normal range.
+void unscale_mesh(Mesh& mesh, int e) {
+  for (Point& p : mesh.points) p = {std::ldexp(p.x, -e), std::ldexp(p.y, -e)};
+  for (double& a : mesh.area_bound) a = a > 0.0 ? std::ldexp(a, -2 * e) : a;
 }
 
 // The paper's other algorithms and options (--algorithm=ruppert|chew, --interior-bound,
@@ -150,7 +184,7 @@ std::vector<std::uint32_t> vertex_numbering(const Mesh& mesh, bool jettison, con
 // The .area bounds are kept as a field over the triangles as read (refine/area_field.h), before
 // the flips that make the mesh constrained Delaunay re-cut them.
 void rebuild(Mesh& mesh, const Pslg& pslg, const PipelineSource& source, const Switches& sw, RunReport& report,
-             AreaField& area_field) {
+             AreaField& area_field, int scale) {
   Predicates pred;
   const PreviousMesh& previous = *source.previous;
   rebuild_mesh(mesh, pred, previous.ele, previous.ele_name);
@@ -160,6 +194,7 @@ void rebuild(Mesh& mesh, const Pslg& pslg, const PipelineSource& source, const S
   protect_boundary(mesh);
   if (previous.area_bounds) {
     mesh.area_bound = previous.areas;
+    for (double& a : mesh.area_bound) a = scaled_bound(a, 2 * scale);
     area_field = AreaField::of(mesh);
   }
   make_constrained_delaunay(mesh, pred);
@@ -217,8 +252,10 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     if (stage_listener) stage_listener(name);
   };
   const bool rebuilding = source.previous != nullptr;
-  if (refinement_wanted(sw, source))
-    check_coordinate_range_for_refinement(pslg, pslg.source_name.empty() ? source.name : pslg.source_name);
+  const int scale = refinement_wanted(sw, source)
+                        ? refinement_scale(pslg, pslg.source_name.empty() ? source.name : pslg.source_name)
+                        : 0;
+  if (scale != 0) scale_input(pslg, scale);
   report.input_name = source.name;
   report.area_file = area_bounds_read(source);
   report.pslg = &pslg;
@@ -233,7 +270,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
   mesh = mesh_from_pslg(pslg);
   AreaField area_field;
   if (rebuilding) {
-    rebuild(mesh, pslg, source, sw, report, area_field);
+    rebuild(mesh, pslg, source, sw, report, area_field, scale);
     stage("mesh reconstruction");
     check_stage(mesh, "mesh reconstruction");
   } else {
@@ -265,6 +302,19 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     if (!rebuilding && (sw.convex_hull || !source.is_poly)) report.hull_absorbed = absorb_near_hull_vertices(mesh, pred);
     RefineOptions opt = refine_options(sw, area_bounds_read(source));
     opt.size_test = source.size_test;
+    SizeTest unscaled_test;
+    if (scale != 0) {
+      opt.size.max_area = scaled_bound(opt.size.max_area, 2 * scale);
+      opt.size.max_edge_length = scaled_bound(opt.size.max_edge_length, scale);
+      if (source.size_test) {
+        // The caller's test sees the input's coordinates and areas.
+        unscaled_test = [test = source.size_test, scale](const Point& a, const Point& b, const Point& c, double area) {
+          const auto back = [scale](const Point& p) { return Point{std::ldexp(p.x, -scale), std::ldexp(p.y, -scale)}; };
+          return (*test)(back(a), back(b), back(c), std::ldexp(area, -2 * scale));
+        };
+        opt.size_test = &unscaled_test;
+      }
+    }
     opt.area_field = &area_field;
     opt.straight_chains = rebuilding;
     if (lopping.apices > 0) {
@@ -274,6 +324,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     report.refine = refine_mesh(mesh, pred, opt);
     report.counters.add(pred.counters);
     mesh.compact_triangles();
+    if (scale != 0) unscale_mesh(mesh, scale);
     stage("refinement");
     // -D: the subsegments refinement could not split keep the mesh from being Delaunay; they are
     // counted (and warned of), and the checks then hold the mesh to the constrained property.
