@@ -316,7 +316,9 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
       }
     }
     opt.area_field = &area_field;
-    opt.straight_chains = rebuilding;
+    // A first run's .poly may be an earlier output near a tiny crossing (refine/segment_pieces.h).
+    opt.straight_chains = rebuilding || source.is_poly;
+    opt.straight_chains_at_sharp_junctions_only = !rebuilding;
     if (lopping.apices > 0) {
       opt.lopped_apices = &lopping.apex;
       opt.lopped_sectors = &lopping.sectors;

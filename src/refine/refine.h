@@ -69,6 +69,9 @@ struct RefineOptions {
   // refine/segment_pieces.h), as they were in that run. Off for a first run, whose pieces are its
   // subsegments as given.
   bool straight_chains = false;
+  // With straight_chains: only the chains that end at a sharp junction (a first run's .poly,
+  // SegmentPieces), so that other inputs' collinear vertices keep their own pieces.
+  bool straight_chains_at_sharp_junctions_only = false;
   // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h) and the halves
   // run at once. The mesh does not depend on it.
   int threads = 1;

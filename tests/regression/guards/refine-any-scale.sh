@@ -22,12 +22,12 @@ coordinates() {
   cat "$1.ele"
 }
 scaled 1 guitar.poly
-run 0 -pq30 guitar.poly && verified guitar.poly guitar.1
+ends_verified guitar.poly guitar.1 -pq30 guitar.poly
 coordinates guitar.1 1 >plain.txt
 for e in 232 -200; do
   awk -v e="$e" 'BEGIN { printf "%.17g\n", 2 ^ e }' >factor
   scaled "$(cat factor)" big.poly
-  run 0 -pq30 big.poly && verified big.poly big.1
+  ends_verified big.poly big.1 -pq30 big.poly
   coordinates big.1 "$(awk -v e="$e" 'BEGIN { printf "%.17g\n", 2 ^ -e }')" >big.txt
   cmp -s plain.txt big.txt || fail "the mesh of guitar.poly times 2^$e is not guitar's mesh times 2^$e"
 done
