@@ -78,3 +78,6 @@ add_test(NAME api.cross_interface COMMAND sh -c "${API_NEEDS_NUMPY}" sh
          ${API_DIR}/cross_interface.py $<TARGET_FILE:deltri> $<TARGET_FILE:test_api_cross_c>
          $<TARGET_FILE:test_api_cross_cpp>)
 set_tests_properties(api.cross_interface PROPERTIES ENVIRONMENT "${API_PYTHON_ENV}" SKIP_RETURN_CODE 77 TIMEOUT 300)
+# What a surface mesh is not, reported through the library as the command line warns of it (issue 47).
+add_test(NAME api.surface_report COMMAND sh -c "${API_NEEDS_NUMPY}" sh ${API_DIR}/surface_report.py)
+set_tests_properties(api.surface_report PROPERTIES ENVIRONMENT "${API_PYTHON_ENV}" SKIP_RETURN_CODE 77 TIMEOUT 300)
