@@ -83,9 +83,12 @@ void scale_input(Pslg& pslg, int e) {
 
 // The mesh back at the input's scale: the input vertices exactly, new vertices rounded only if
 // they fall below the normal range.
-void unscale_mesh(Mesh& mesh, int e) {
-  for (Point& p : mesh.points) p = {std::ldexp(p.x, -e), std::ldexp(p.y, -e)};
+void unscale_mesh(Mesh& mesh, RefineReport& report, int e) {
+  const auto back = [e](Point& p) { p = {std::ldexp(p.x, -e), std::ldexp(p.y, -e)}; };
+  for (Point& p : mesh.points) back(p);
   for (double& a : mesh.area_bound) a = a > 0.0 ? std::ldexp(a, -2 * e) : a;
+  back(report.worst_location);
+  back(report.worst_size_location);
 }
 
 // The paper's other algorithms and options (--algorithm=ruppert|chew, --interior-bound,
@@ -210,10 +213,12 @@ SizeBounds size_bounds(const Switches& sw, bool area_file) {
   return {sw.fixed_area ? sw.max_area : 0.0, sw.variable_area || area_file, sw.user_test ? sw.max_edge_length : 0.0};
 }
 
-BoundRequest bound_request(const Switches& sw, const PipelineSource& source, const RunReport& report) {
+BoundRequest bound_request(const Switches& sw, const PipelineSource& source, const RunReport& report, int scale) {
   BoundRequest r;
   r.angle = angle_bound(sw);
   r.size = size_bounds(sw, area_bounds_read(source));
+  r.size.max_area = scaled_bound(r.size.max_area, 2 * scale);
+  r.size.max_edge_length = scaled_bound(r.size.max_edge_length, scale);
   r.steiner_limited = report.refine && report.refine->stopped_by_max_steiner;
   r.segments_kept_whole = sw.no_boundary_steiner > 0;
   r.threads = threads_to_use(sw);
@@ -326,7 +331,6 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     report.refine = refine_mesh(mesh, pred, opt);
     report.counters.add(pred.counters);
     mesh.compact_triangles();
-    if (scale != 0) unscale_mesh(mesh, scale);
     stage("refinement");
     // -D: the subsegments refinement could not split keep the mesh from being Delaunay; they are
     // counted (and warned of), and the checks then hold the mesh to the constrained property.
@@ -352,7 +356,10 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
   // After -C, which checks the constrained Delaunay triangulation refinement made, with the lopped
   // corners' chords and spokes still constrained: the fans need not be Delaunay without them.
   forget_lopping_edges(mesh, lopping.internal);
-  if (refinement_wanted(sw, source)) report.misses = count_bound_misses(mesh, bound_request(sw, source, report));
+  if (refinement_wanted(sw, source)) report.misses = count_bound_misses(mesh, bound_request(sw, source, report, scale));
+  // Misses are counted at the scale refinement ran at: at the input's, angles and areas of a mesh
+  // near 1e-300 underflow.
+  if (scale != 0) unscale_mesh(mesh, *report.refine, scale);
 
   if (sw.order == 2) result.midpoints = add_edge_midpoints(mesh);
   result.numbering = vertex_numbering(mesh, sw.jettison, result.midpoints);
