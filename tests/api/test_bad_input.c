@@ -45,6 +45,9 @@ static void expect_error(const char *row, const char *switches, struct triangula
   if (got != code || status.code != code || strstr(status.message, expect) == NULL) {
     fprintf(report, "FAIL %s: -%s gave %d '%s', expected %d '...%s...'\n", row, switches, got, status.message, code, expect);
     ++failures;
+  } else if (strchr(status.message, '\n') != NULL) {
+    fprintf(report, "FAIL %s: the message is more than one line\n", row);
+    ++failures;
   } else if (memcmp(&out, &out_before, sizeof out) != 0 || memcmp(&vor, &vor_before, sizeof vor) != 0) {
     fprintf(report, "FAIL %s: the output structs were changed by a failing call\n", row);
     ++failures;
@@ -162,6 +165,9 @@ int main(void) {
   base(&in); in.numberoftriangles = 2; in.numberofcorners = 3;
   expect_error("47 r, trianglelist NULL", "rQ", &in, DELTRI_INPUT_ERROR, "trianglelist is NULL but numberoftriangles is 2");
   expect_error("43 unknown switch", "ptQ", &in, DELTRI_USAGE_ERROR, "-t: unknown switch");
+  /* A newline in the switches (found by fuzz_library) was echoed into a two-line message. */
+  expect_error("43b newline in the switches", "pQ\n", &in, DELTRI_USAGE_ERROR,
+               "the switches hold a control character (byte 0x0a) at position 2");
   expect_error("44 angle 60", "pq60Q", &in, DELTRI_USAGE_ERROR, "the minimum angle must be at least 0 and below 60 degrees");
   expect_error("45 area 0", "pa0Q", &in, DELTRI_USAGE_ERROR, "the maximum area must be a positive number");
   expect_error("46 negative angle", "pq-5Q", &in, DELTRI_USAGE_ERROR, "-q-5: the minimum angle must be at least 0");
