@@ -39,6 +39,9 @@ namespace {
 // doubles' exponent range) is refused.
 constexpr double kLargestCoordinate = 0x1p200;   // about 1.6e60
 constexpr double kSmallestMagnitude = 0x1p-150;  // about 7.0e-46
+// Below it the mesh scaled back would round its new vertices to subnormal numbers with fewer than
+// 53 bits across the domain: split points off their segments (-s or refinement at 5e-320).
+constexpr double kSmallestScalable = 0x1p-970;   // about 1.0e-292
 
 template <class See>
 void each_coordinate(const Pslg& pslg, See see) {
@@ -55,6 +58,13 @@ int refinement_scale(const Pslg& pslg, const std::string& path) {
   // Only the vertices are ever differenced with each other: a tiny input is tiny in them.
   const bool tiny = largest_vertex > 0.0 && largest_vertex < kSmallestMagnitude;
   if (largest <= kLargestCoordinate && !tiny) return 0;
+  if (largest_vertex > 0.0 && largest_vertex < kSmallestScalable) {
+    char magnitude[32];
+    std::snprintf(magnitude, sizeof magnitude, "%g", largest_vertex);
+    throw InputError(path, 0, std::string("every vertex coordinate is below ") + magnitude +
+                                  " in magnitude: new vertices there would be subnormal numbers, coarser than the input's "
+                                  "features (below 2^-970, about 1e-292); scale the input up");
+  }
   const int e = -std::ilogb(tiny ? largest_vertex : largest);
   bool exact = true;
   each_coordinate(pslg, [&exact, e](double c) { exact = exact && std::ldexp(std::ldexp(c, e), -e) == c; });
@@ -83,12 +93,13 @@ void scale_input(Pslg& pslg, int e) {
 
 // The mesh back at the input's scale: the input vertices exactly, new vertices rounded only if
 // they fall below the normal range.
-void unscale_mesh(Mesh& mesh, RefineReport& report, int e) {
+void unscale_mesh(Mesh& mesh, RefineReport* report, int e) {
   const auto back = [e](Point& p) { p = {std::ldexp(p.x, -e), std::ldexp(p.y, -e)}; };
   for (Point& p : mesh.points) back(p);
   for (double& a : mesh.area_bound) a = a > 0.0 ? std::ldexp(a, -2 * e) : a;
-  back(report.worst_location);
-  back(report.worst_size_location);
+  if (report == nullptr) return;
+  back(report->worst_location);
+  back(report->worst_size_location);
 }
 
 // The paper's other algorithms and options (--algorithm=ruppert|chew, --interior-bound,
@@ -257,7 +268,8 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     if (stage_listener) stage_listener(name);
   };
   const bool rebuilding = source.previous != nullptr;
-  const int scale = refinement_wanted(sw, source)
+  // -s splits segments at new vertices too (no refinement): the same range applies.
+  const int scale = refinement_wanted(sw, source) || sw.split_segments
                         ? refinement_scale(pslg, pslg.source_name.empty() ? source.name : pslg.source_name)
                         : 0;
   if (scale != 0) scale_input(pslg, scale);
@@ -359,7 +371,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
   if (refinement_wanted(sw, source)) report.misses = count_bound_misses(mesh, bound_request(sw, source, report, scale));
   // Misses are counted at the scale refinement ran at: at the input's, angles and areas of a mesh
   // near 1e-300 underflow.
-  if (scale != 0) unscale_mesh(mesh, *report.refine, scale);
+  if (scale != 0) unscale_mesh(mesh, report.refine ? &*report.refine : nullptr, scale);
 
   if (sw.order == 2) result.midpoints = add_edge_midpoints(mesh);
   result.numbering = vertex_numbering(mesh, sw.jettison, result.midpoints);

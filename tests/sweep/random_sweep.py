@@ -10,7 +10,9 @@ library (the Python module on libdeltri). Every run is judged:
 usage: random_sweep.py DELTRI VERIFY RUNS [SEED]     (prints one line per failure, then a summary;
        exit 1 if any run failed). Not part of CI at full size: see docs/reliability.md.
 """
+import math
 import os
+import shutil
 import random
 import subprocess
 import sys
@@ -75,6 +77,32 @@ def write_poly(path, pts, segs, holes):
             f.write('%d %r %r\n' % (i + 1, x, y))
 
 
+def rescaled(name, out, pts, segs, holes):
+    """deltri_mesh_verify computes in doubles: at 1e-300 or 1e90 its products underflow or
+    overflow. The input and the mesh are multiplied by the power of two 2^k that brings the input
+    into [1, 2), which is exact for every double involved (the scales here keep every coordinate
+    within the exponent range), and verified there. Returns the new input and mesh names."""
+    k = -math.frexp(max(max(abs(x), abs(y)) for x, y in pts))[1] + 1
+    if k == 0:
+        return name, out
+
+    def scale(src, dst, first_data_line, columns):
+        lines = open(src).read().split('\n')
+        n = int(lines[0].split()[0]) if lines[0].split() else 0
+        for i in range(first_data_line, first_data_line + n):
+            t = lines[i].split()
+            if len(t) >= 3 and not t[0].startswith('#'):
+                t[1], t[2] = repr(math.ldexp(float(t[1]), k)), repr(math.ldexp(float(t[2]), k))
+                lines[i] = ' '.join(t)
+        open(dst, 'w').write('\n'.join(lines))
+    def up(p):
+        return (math.ldexp(p[0], k), math.ldexp(p[1], k))
+    write_poly(name[:-5] + '.s.poly', [up(p) for p in pts], segs, [up(h) for h in holes])
+    scale(out + '.node', name[:-5] + '.s.1.node', 1, 2)
+    shutil.copy(out + '.ele', name[:-5] + '.s.1.ele')
+    return name[:-5] + '.s.poly', name[:-5] + '.s.1'
+
+
 def triangles_of(path):
     with open(path) as f:
         return int(f.readline().split()[0])
@@ -103,11 +131,12 @@ def judge(k, pts, segs, holes, s, letters, longs, angle):
             return 'exit %d with outputs left' % r.returncode
         cli = None
     else:
-        args = [VERIFY, '--input', name, '--mesh', out] + (['--refined'] if refining else [])
+        vin, vout = rescaled(name, out, pts, segs, holes)
+        args = [VERIFY, '--input', vin, '--mesh', vout] + (['--refined'] if refining else [])
         if 'c' in letters:
             args.append('--convex-hull')
-        if 'o2' in letters:
-            args = None  # the verifier reads 3-node triangles
+        if 'o2' in letters or 'j' in letters:
+            args = None  # the verifier reads 3-node triangles and the input's own numbering
         if args and subprocess.run(args, capture_output=True).returncode != 0:
             return 'exit 0, deltri_mesh_verify fails'
         if args and angle is not None and 'D' not in letters and \
