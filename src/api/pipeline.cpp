@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -89,6 +90,21 @@ void scale_input(Pslg& pslg, int e) {
     r.at = {std::ldexp(r.at.x, e), std::ldexp(r.at.y, e)};
     r.max_area = scaled_bound(r.max_area, 2 * e);
   }
+}
+
+// About the triangles a size field asks for (refine/size_field.h: the equilateral triangle of
+// edge h, h at each triangle's centroid), in the mesh at scale 2^e.
+double size_field_triangles(const Mesh& mesh, const std::function<double(const Point&)>& length, int e) {
+  double wanted = 0.0;
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    const auto [a, b, c] = mesh.corner_points(t);
+    const Point centroid{std::ldexp((a.x + b.x + c.x) / 3.0, -e), std::ldexp((a.y + b.y + c.y) / 3.0, -e)};
+    const double h = length(centroid);
+    const double area = std::ldexp(0.5 * std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)), -2 * e);
+    if (h > 0.0) wanted += area / (std::sqrt(3.0) / 4.0 * h * h);
+  }
+  return wanted;
 }
 
 // The mesh back at the input's scale: the input vertices exactly, new vertices rounded only if
@@ -333,6 +349,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
       }
     }
     opt.area_field = &area_field;
+    if (source.wanted_length) opt.size_test_triangles = size_field_triangles(mesh, source.wanted_length, scale);
     // A first run's .poly may be an earlier output near a tiny crossing (refine/segment_pieces.h).
     opt.straight_chains = rebuilding || source.is_poly;
     opt.straight_chains_at_sharp_junctions_only = !rebuilding;

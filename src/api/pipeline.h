@@ -35,6 +35,9 @@ struct PipelineSource {
   bool is_poly = false;                    // segments, holes and regions apply
   const PreviousMesh* previous = nullptr;  // -r, else nullptr
   const SizeTest* size_test = nullptr;     // a caller's size test (-u's callback), else nullptr
+  // The wanted edge length at a point, when the size test is a size field (--size-field): only for
+  // the estimate that refuses a field no memory can hold before refinement starts.
+  std::function<double(const Point&)> wanted_length;
 };
 
 struct PipelineResult {

@@ -283,6 +283,7 @@ int run(const Switches& sw) {
     size_field.emplace(read_size_field(sw.size_field, threads));
     size_test = size_field->test();
     source.size_test = &size_test;
+    source.wanted_length = [&field = *size_field](const Point& p) { return field.length_at(p); };
   }
   PipelineResult result = run_pipeline(pslg, source, sw, report, [&timer](const char* name) { timer.stage(name); });
   const Mesh& mesh = result.mesh;

@@ -40,6 +40,9 @@ struct RefineOptions {
   // A caller's size test (refine/size_test.h), or null. Its wishes are unknown in advance, so only
   // the memory budget caps the Steiner points, and refinement stays on one thread (halves.h).
   const SizeTest* size_test = nullptr;
+  // The triangles the size test is known to ask for (a size field's estimate), added to the size
+  // bounds' own in the up-front refusal of bounds beyond the memory (0: unknown).
+  double size_test_triangles = 0.0;
   QueueOrder queue_order = QueueOrder::Ratio;  // which bad triangle goes first (quality_queue.h)
   // Fig. 38 l.21: let SPLITPERMITTED decline cluster splits. That is the Terminator's proof of
   // termination, but a declined triangle keeps its angle (up to Theorem 12's bound) wherever it
