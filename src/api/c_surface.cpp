@@ -84,6 +84,14 @@ void write_surface(const api::Surface& s, deltri_surface& out) {
   copy_out(&r.trianglefacetlist, s.triangle_facets, got);
   copy_out(&r.edgelist, s.edges, got);
   copy_out(&r.edgemarkerlist, s.edge_markers, got);
+  copy_out(&r.mergedpointlist, s.merged_points, got);
+  copy_out(&r.emptiedfacetlist, s.emptied_facets, got);
+  r.numberofmergedpoints = static_cast<int>(s.merged_points.size() / 2);
+  r.numberofemptiedfacets = static_cast<int>(s.emptied_facets.size());
+  r.budgetreached = s.budget_reached;
+  r.roundsexhausted = s.rounds_exhausted;
+  r.numberbelowangle = s.triangles_below_angle;
+  r.numberabovearea = s.triangles_above_area;
   r.numberofpoints = s.point_count;
   r.numberoftriangles = s.triangle_count;
   r.numberofedges = s.edge_count;
@@ -112,6 +120,8 @@ void deltri_surface_free(deltri_surface* surface) {
   std::free(surface->trianglefacetlist);
   std::free(surface->edgelist);
   std::free(surface->edgemarkerlist);
+  std::free(surface->mergedpointlist);
+  std::free(surface->emptiedfacetlist);
   *surface = deltri_surface{};
 }
 

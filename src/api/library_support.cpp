@@ -1,3 +1,4 @@
+#include <cstdio>
 #include "api/library_support.h"
 
 #include <algorithm>
@@ -52,6 +53,16 @@ std::vector<std::string> long_options_of(const std::string& switches, std::strin
 
 Switches parse_library_switches(const std::string& given, bool size_function) {
   try {
+    // A control character (a newline from a caller's buffer) would be echoed into a message of
+    // more than one line; tabs separate words as spaces do.
+    for (std::size_t i = 0; i < given.size(); ++i) {
+      const unsigned char c = static_cast<unsigned char>(given[i]);
+      if ((c < 0x20 && c != '\t') || c == 0x7f) {
+        char what[96];
+        std::snprintf(what, sizeof what, "the switches hold a control character (byte 0x%02x) at position %zu", c, i);
+        throw api::Error(DELTRI_USAGE_ERROR, what);
+      }
+    }
     std::string letters;
     const std::vector<std::string> options = long_options_of(given, letters);
     if (!letters.empty() && letters[0] == '-') letters.erase(0, 1);

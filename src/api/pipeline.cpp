@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -31,28 +33,90 @@ namespace {
 // crossings are constructed at a scale where nothing overflows, so triangulating (-p, -c, holes,
 // regions) takes any finite coordinates. Refinement's constructions (circumcentres, off-centres,
 // split points, lengths and areas) are plain floating point and need their squares and
-// products to stay finite and normal, so refining (-q, -a, -u, -D, .area) keeps these limits.
-// Distinct vertices of magnitude M differ by at least M 2^-52, so M >= 2^-150 keeps their
-// differences above 2^-202.
+// products to stay finite and normal: they are safe for vertices within +-2^200 and not all
+// below 2^-150 (distinct vertices of magnitude M differ by at least M 2^-52, so M >= 2^-150 keeps
+// their differences above 2^-202). An input outside that range is refined scaled by a power of
+// two into [1, 2) and the mesh scaled back: exact whenever every input coordinate survives the
+// round trip, which is checked; an input that does not (its coordinates span more than the
+// doubles' exponent range) is refused.
 constexpr double kLargestCoordinate = 0x1p200;   // about 1.6e60
 constexpr double kSmallestMagnitude = 0x1p-150;  // about 7.0e-46
+// Below it the mesh scaled back would round its new vertices to subnormal numbers with fewer than
+// 53 bits across the domain: split points off their segments (-s or refinement at 5e-320).
+constexpr double kSmallestScalable = 0x1p-970;   // about 1.0e-292
 
-void check_coordinate_range_for_refinement(const Pslg& pslg, const std::string& path) {
-  double largest = 0.0;
-  const auto look = [&largest](const Point& p) { largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)}); };
-  for (const Point& p : pslg.points) look(p);
+template <class See>
+void each_coordinate(const Pslg& pslg, See see) {
+  for (const Point& p : pslg.points) see(p.x), see(p.y);
+  for (const Point& p : pslg.holes) see(p.x), see(p.y);
+  for (const Pslg::Region& r : pslg.regions) see(r.at.x), see(r.at.y);
+}
+
+// The power of two refinement runs the input at (0: as given); throws when it cannot be exact.
+int refinement_scale(const Pslg& pslg, const std::string& path) {
+  double largest = 0.0, largest_vertex = 0.0;
+  for (const Point& p : pslg.points) largest_vertex = std::max({largest_vertex, std::fabs(p.x), std::fabs(p.y)});
+  each_coordinate(pslg, [&largest](double c) { largest = std::max(largest, std::fabs(c)); });
   // Only the vertices are ever differenced with each other: a tiny input is tiny in them.
-  const double largest_vertex = largest;
-  for (const Point& p : pslg.holes) look(p);
-  for (const Pslg::Region& r : pslg.regions) look(r.at);
-  if (largest > kLargestCoordinate) {
+  const bool tiny = largest_vertex > 0.0 && largest_vertex < kSmallestMagnitude;
+  if (largest <= kLargestCoordinate && !tiny) return 0;
+  if (largest_vertex > 0.0 && largest_vertex < kSmallestScalable) {
     char magnitude[32];
-    std::snprintf(magnitude, sizeof magnitude, "%g", largest);
-    throw InputError(path, 0, std::string("a coordinate of magnitude ") + magnitude +
-                                  " is beyond the range supported for refinement, +-2^200 (about 1.6e60); scale the input down");
+    std::snprintf(magnitude, sizeof magnitude, "%g", largest_vertex);
+    throw InputError(path, 0, std::string("every vertex coordinate is below ") + magnitude +
+                                  " in magnitude: new vertices there would be subnormal numbers, coarser than the input's "
+                                  "features (below 2^-970, about 1e-292); scale the input up");
   }
-  if (largest_vertex > 0.0 && largest_vertex < kSmallestMagnitude)
-    throw InputError(path, 0, "every vertex coordinate is below 2^-150 (about 7.0e-46) in magnitude, too small for refinement; scale the input up");
+  const int e = -std::ilogb(tiny ? largest_vertex : largest);
+  bool exact = true;
+  each_coordinate(pslg, [&exact, e](double c) { exact = exact && std::ldexp(std::ldexp(c, e), -e) == c; });
+  if (exact) return e;
+  char magnitude[32];
+  std::snprintf(magnitude, sizeof magnitude, "%g", tiny ? largest_vertex : largest);
+  throw InputError(path, 0, std::string("coordinates of magnitude ") + magnitude +
+                                " are outside +-2^200 and 2^-150 (the range refinement computes in), and the input "
+                                "cannot be scaled into it exactly: its coordinates span more than the doubles' exponent range");
+}
+
+// An area or length bound at the scale refinement runs at: a positive bound stays positive and finite.
+double scaled_bound(double bound, int e) {
+  if (!(bound > 0.0)) return bound;
+  return std::clamp(std::ldexp(bound, e), std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::max());
+}
+
+void scale_input(Pslg& pslg, int e) {
+  for (Point& p : pslg.points) p = {std::ldexp(p.x, e), std::ldexp(p.y, e)};
+  for (Point& p : pslg.holes) p = {std::ldexp(p.x, e), std::ldexp(p.y, e)};
+  for (Pslg::Region& r : pslg.regions) {
+    r.at = {std::ldexp(r.at.x, e), std::ldexp(r.at.y, e)};
+    r.max_area = scaled_bound(r.max_area, 2 * e);
+  }
+}
+
+// About the triangles a size field asks for (refine/size_field.h: the equilateral triangle of
+// edge h, h at each triangle's centroid), in the mesh at scale 2^e.
+double size_field_triangles(const Mesh& mesh, const std::function<double(const Point&)>& length, int e) {
+  double wanted = 0.0;
+  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
+    if (!mesh.is_live(t)) continue;
+    const auto [a, b, c] = mesh.corner_points(t);
+    const Point centroid{std::ldexp((a.x + b.x + c.x) / 3.0, -e), std::ldexp((a.y + b.y + c.y) / 3.0, -e)};
+    const double h = length(centroid);
+    const double area = std::ldexp(0.5 * std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)), -2 * e);
+    if (h > 0.0) wanted += area / (std::sqrt(3.0) / 4.0 * h * h);
+  }
+  return wanted;
+}
+
+// The mesh back at the input's scale: the input vertices exactly, new vertices rounded only if
+// they fall below the normal range.
+void unscale_mesh(Mesh& mesh, RefineReport* report, int e) {
+  const auto back = [e](Point& p) { p = {std::ldexp(p.x, -e), std::ldexp(p.y, -e)}; };
+  for (Point& p : mesh.points) back(p);
+  for (double& a : mesh.area_bound) a = a > 0.0 ? std::ldexp(a, -2 * e) : a;
+  if (report == nullptr) return;
+  back(report->worst_location);
+  back(report->worst_size_location);
 }
 
 // The paper's other algorithms and options (--algorithm=ruppert|chew, --interior-bound,
@@ -151,7 +215,7 @@ std::vector<std::uint32_t> vertex_numbering(const Mesh& mesh, bool jettison, con
 // The .area bounds are kept as a field over the triangles as read (refine/area_field.h), before
 // the flips that make the mesh constrained Delaunay re-cut them.
 void rebuild(Mesh& mesh, const Pslg& pslg, const PipelineSource& source, const Switches& sw, RunReport& report,
-             AreaField& area_field) {
+             AreaField& area_field, int scale) {
   Predicates pred;
   const PreviousMesh& previous = *source.previous;
   rebuild_mesh(mesh, pred, previous.ele, previous.ele_name);
@@ -161,6 +225,7 @@ void rebuild(Mesh& mesh, const Pslg& pslg, const PipelineSource& source, const S
   protect_boundary(mesh);
   if (previous.area_bounds) {
     mesh.area_bound = previous.areas;
+    for (double& a : mesh.area_bound) a = scaled_bound(a, 2 * scale);
     area_field = AreaField::of(mesh);
   }
   make_constrained_delaunay(mesh, pred);
@@ -169,10 +234,27 @@ void rebuild(Mesh& mesh, const Pslg& pslg, const PipelineSource& source, const S
 
 bool area_bounds_read(const PipelineSource& source) { return source.previous && source.previous->area_bounds; }
 
-BoundRequest bound_request(const Criteria& criteria, const Switches& sw, const RunReport& report) {
+// The size bounds as refinement sees them on an input scaled by 2^scale (refinement_scale).
+SizeBounds scaled_size(SizeBounds size, int scale) {
+  size.max_area = scaled_bound(size.max_area, 2 * scale);
+  size.max_edge_length = scaled_bound(size.max_edge_length, scale);
+  return size;
+}
+
+// A caller's size test on a mesh scaled by 2^scale: asked in the input's coordinates and areas.
+// Empty when there is no test or no scale.
+SizeTest size_test_at_scale(const SizeTest* test, int scale) {
+  if (test == nullptr || scale == 0) return {};
+  return [test, scale](const Point& a, const Point& b, const Point& c, double area) {
+    const auto back = [scale](const Point& p) { return Point{std::ldexp(p.x, -scale), std::ldexp(p.y, -scale)}; };
+    return (*test)(back(a), back(b), back(c), std::ldexp(area, -2 * scale));
+  };
+}
+
+BoundRequest bound_request(const Criteria& criteria, const Switches& sw, const RunReport& report, int scale) {
   BoundRequest r;
   r.angle = criteria.angle;
-  r.size = criteria.size;
+  r.size = scaled_size(criteria.size, scale);
   r.max_angle = criteria.max_angle;
   r.steiner_limited = report.refine && report.refine->stopped_by_max_steiner;
   r.segments_kept_whole = sw.no_boundary_steiner > 0;
@@ -182,13 +264,15 @@ BoundRequest bound_request(const Criteria& criteria, const Switches& sw, const R
 
 // --smooth: after refinement (and its -D account), on one thread in vertex order, so that the
 // mesh is the same for every --threads.
-void smooth(Mesh& mesh, const Switches& sw, const Criteria& criteria, const PipelineSource& source, RunReport& report) {
+void smooth(Mesh& mesh, const Switches& sw, const Criteria& criteria, const PipelineSource& source, RunReport& report,
+            int scale) {
   SmoothOptions opt;
   opt.rounds = sw.smooth_rounds;
   opt.angle = criteria.angle;
-  opt.size = criteria.size;
+  opt.size = scaled_size(criteria.size, scale);
   opt.max_angle = criteria.max_angle;
-  opt.size_test = source.size_test;
+  const SizeTest unscaled_test = size_test_at_scale(source.size_test, scale);
+  opt.size_test = unscaled_test ? &unscaled_test : source.size_test;
   opt.conforming = conforming_expected(sw, report);
   Predicates pred;
   report.smooth = smooth_mesh(mesh, pred, opt);
@@ -244,8 +328,11 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     if (stage_listener) stage_listener(name);
   };
   const bool rebuilding = source.previous != nullptr;
-  if (refinement_wanted(sw, source))
-    check_coordinate_range_for_refinement(pslg, pslg.source_name.empty() ? source.name : pslg.source_name);
+  // -s splits segments at new vertices too (no refinement): the same range applies.
+  const int scale = refinement_wanted(sw, source) || sw.split_segments
+                        ? refinement_scale(pslg, pslg.source_name.empty() ? source.name : pslg.source_name)
+                        : 0;
+  if (scale != 0) scale_input(pslg, scale);
   report.input_name = source.name;
   report.area_file = area_bounds_read(source);
   // The bounds, made once from the switches: refinement and the account of misses both read them.
@@ -261,7 +348,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
   AreaField area_field;
   if (rebuilding) {
     begin("mesh reconstruction");
-    rebuild(mesh, pslg, source, sw, report, area_field);
+    rebuild(mesh, pslg, source, sw, report, area_field, scale);
     stage("mesh reconstruction");
     check_stage(mesh, "mesh reconstruction");
   } else {
@@ -295,8 +382,14 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
     if (!rebuilding && (sw.convex_hull || !source.is_poly)) report.hull_absorbed = absorb_near_hull_vertices(mesh, pred);
     RefineOptions opt = refine_options(sw, criteria);
     opt.size_test = source.size_test;
+    opt.size = scaled_size(opt.size, scale);
+    const SizeTest unscaled_test = size_test_at_scale(source.size_test, scale);
+    if (unscaled_test) opt.size_test = &unscaled_test;
     opt.area_field = &area_field;
-    opt.straight_chains = rebuilding;
+    if (source.wanted_length) opt.size_test_triangles = size_field_triangles(mesh, source.wanted_length, scale);
+    // A first run's .poly may be an earlier output near a tiny crossing (refine/segment_pieces.h).
+    opt.straight_chains = rebuilding || source.is_poly;
+    opt.straight_chains_at_sharp_junctions_only = !rebuilding;
     opt.progress = progress;
     if (progress) progress->refine_start_triangles.store(mesh.live_triangles(), std::memory_order_relaxed);
     begin("refinement");
@@ -315,7 +408,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
   }
   if (sw.smooth_rounds > 0) {
     begin("smoothing");
-    smooth(mesh, sw, criteria, source, report);
+    smooth(mesh, sw, criteria, source, report, scale);
     stage("smoothing");
     check_stage(mesh, "smoothing", conforming_expected(sw, report));
   }
@@ -340,7 +433,10 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Swit
   // After -C, which checks the constrained Delaunay triangulation refinement made, with the lopped
   // corners' chords and spokes still constrained: the fans need not be Delaunay without them.
   forget_lopping_edges(mesh, lopping.internal);
-  if (refinement_wanted(sw, source)) report.misses = count_bound_misses(mesh, bound_request(criteria, sw, report));
+  if (refinement_wanted(sw, source)) report.misses = count_bound_misses(mesh, bound_request(criteria, sw, report, scale));
+  // Misses are counted at the scale refinement ran at: at the input's, angles and areas of a mesh
+  // near 1e-300 underflow.
+  if (scale != 0) unscale_mesh(mesh, report.refine ? &*report.refine : nullptr, scale);
 
   if (sw.order == 2) result.midpoints = add_edge_midpoints(mesh);
   result.numbering = vertex_numbering(mesh, sw.jettison, result.midpoints);

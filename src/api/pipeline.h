@@ -38,6 +38,9 @@ struct PipelineSource {
   const PreviousMesh* previous = nullptr;  // -r, else nullptr
   const SizeTest* size_test = nullptr;     // a caller's size test (-u's callback), else nullptr
   Progress* progress = nullptr;            // a meter's counts (util/progress.h), else nullptr
+  // The wanted edge length at a point, when the size test is a size field (--size-field): only for
+  // the estimate that refuses a field no memory can hold before refinement starts.
+  std::function<double(const Point&)> wanted_length;
 };
 
 struct PipelineResult {

@@ -98,7 +98,16 @@ api::Surface run(const api::Facets& facets, const std::string& switches) {
   const SurfaceResult result = run_surface_pipeline(input, sw);
   if (result.check_failed())
     throw api::Error(DELTRI_CHECK_FAILED, "C: the surface mesh is not consistent: " + result.check->summary());
-  return surface_arrays(result.mesh, sw, first_index);
+  api::Surface s = surface_arrays(result.mesh, sw, first_index);
+  for (const auto& [point, earlier] : result.merged)
+    s.merged_points.insert(s.merged_points.end(), {static_cast<int>(point) + first_index, static_cast<int>(earlier) + first_index});
+  for (const std::uint32_t f : result.report.emptied_facets) s.emptied_facets.push_back(static_cast<int>(f) + first_index);
+  s.budget_reached = result.report.budget_reached;
+  s.rounds_exhausted = !result.report.converged && !result.report.budget_reached;
+  s.triangles_below_angle = static_cast<int>(result.below_angle);
+  s.triangles_above_area = static_cast<int>(result.above_area);
+  s.warnings = surface_warnings(result, sw, first_index);
+  return s;
 }
 
 }  // namespace

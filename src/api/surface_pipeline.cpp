@@ -78,7 +78,46 @@ void count_misses(const SurfaceMesh& m, const Switches& sw, const AngleBound& an
   }
 }
 
+std::string numbered(std::uint32_t v, int first) { return std::to_string(static_cast<long long>(v) + first); }
+
+std::string plural(std::size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
+
+// "1 into 2, 3 into 2, ..." (at most 8 named).
+template <class Name>
+std::string first_eight(std::size_t n, Name name) {
+  std::string which;
+  for (std::size_t i = 0; i < n && i < 8; ++i) which += std::string(i ? ", " : "") + name(i);
+  return which + (n > 8 ? ", ..." : "");
+}
+
 }  // namespace
+
+std::vector<std::string> surface_warnings(const SurfaceResult& result, const Switches& sw, int first) {
+  std::vector<std::string> w;
+  const SurfaceReport& report = result.report;
+  if (!result.merged.empty())
+    w.push_back(plural(result.merged.size(), "point repeats", "points repeat") +
+                " the coordinates of an earlier point, merged into it: " +
+                first_eight(result.merged.size(), [&](std::size_t i) {
+                  return numbered(result.merged[i].first, first) + " into " + numbered(result.merged[i].second, first);
+                }));
+  if (!report.emptied_facets.empty())
+    w.push_back(plural(report.emptied_facets.size(), "facet", "facets") +
+                " left with no triangle: a hole point lies in the region of its outer loop, which it carves away whole "
+                "when no inner loop encloses it (facet " +
+                first_eight(report.emptied_facets.size(), [&](std::size_t i) { return numbered(report.emptied_facets[i], first); }) +
+                "); the surface is open there");
+  const std::string misses = std::to_string(result.below_angle) + " of " + std::to_string(result.mesh.triangle_count()) +
+                             " triangles below the -q angle, " + std::to_string(result.above_area) + " above the -a area";
+  if (report.budget_reached)
+    w.push_back("the surface run spent its budget of " + std::to_string(report.steiner_budget) + " Steiner points (" +
+                (sw.max_steiner >= 0 && report.steiner_budget == sw.max_steiner ? "-S" : "the termination guard's") +
+                ", shared by every facet and round): " + misses);
+  else if (!report.converged)
+    w.push_back("the facets did not agree on their shared segments within " + std::to_string(kMaxSurfaceRounds) +
+                " rounds; meshed again with no Steiner points on segments: " + misses);
+  return w;
+}
 
 double surface_smallest_angle(const Point3& a, const Point3& b, const Point3& c) {
   const Point3 p[3] = {a, b, c};

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -36,6 +37,12 @@ struct SurfaceResult {
 // earlier point are merged into it (`merged`); an input whose coordinates are very large or very
 // small is meshed scaled by a power of two, and the mesh scaled back.
 SurfaceResult run_surface_pipeline(const FacetInput& input, const Switches& sw, const SurfaceProgress& progress = {});
+
+// Loud, counted statements of what the result is not, one line each, word for word as the command
+// line prints them after "deltri: warning: " and the library returns them: merged points, facets
+// left empty, and the round cap's or the Steiner budget's misses. Point and facet numbers count
+// from `first`.
+std::vector<std::string> surface_warnings(const SurfaceResult& result, const Switches& sw, int first);
 
 // The smallest angle of a triangle in space, in degrees.
 double surface_smallest_angle(const Point3& a, const Point3& b, const Point3& c);

@@ -80,7 +80,10 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
   if (const auto& q = r.refine) {
     if (q->stopped_by_max_steiner) warn("refinement stopped at the -S limit of Steiner points");
     if (q->stopped_by_cap) warn(cap_explanation(*q));
-    if (q->bad_triangles_left > 0) {
+    // The final mesh's count (quality/bound_misses.h), not the queue's: triangles the guard left
+    // may have been cut again by later insertions, or new ones made beside them.
+    const std::uint64_t left = r.misses ? r.misses->total : q->bad_triangles_left;
+    if (q->bad_triangles_left > 0 && left > 0) {
       char angle[128] = "", size[128] = "";
       if (q->skinny_left > 0)
         std::snprintf(angle, sizeof angle, "worst: smallest angle %.4g degrees near (%.9g, %.9g)",
@@ -91,7 +94,7 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
       std::string both = std::string(angle) + (*angle && *size ? "; " : "") + size;
       if (q->obtuse_left > 0)
         both += (both.empty() ? "" : "; ") + std::to_string(q->obtuse_left) + " with an angle above --max-angle";
-      warn(plural(q->bad_triangles_left, "triangle misses", "triangles miss") + " the requested bounds" +
+      warn(plural(left, "triangle misses", "triangles miss") + " the requested bounds" +
            guard_clause(*q) + " (" + both + ")");
     }
   }

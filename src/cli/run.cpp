@@ -299,6 +299,7 @@ int run(const Switches& sw) {
     size_field.emplace(read_size_field(sw.size_field, threads));
     size_test = size_field->test();
     source.size_test = &size_test;
+    source.wanted_length = [&field = *size_field](const Point& p) { return field.length_at(p); };
   }
   if (sw.stock_size_test) {  // bare -u, alongside a --size-field if both are given
     size_test = size_test ? SizeTest([field = size_test](const Point& a, const Point& b, const Point& c, double area) {

@@ -46,44 +46,8 @@ double smallest_angle(const SurfaceMesh& m) {
   return best;
 }
 
-std::string numbered(std::uint32_t v, int first) { return std::to_string(static_cast<long long>(v) + first); }
-
-// Loud, counted statements of what the result is not: merged points, facets left empty, and the
-// round cap's or the Steiner budget's misses (counted by the pipeline, in the coordinates the
-// facets were meshed in).
 void warn(const SurfaceResult& result, const Switches& sw, int first) {
-  const SurfaceReport& report = result.report;
-  if (!result.merged.empty()) {
-    std::string which;
-    for (std::size_t i = 0; i < result.merged.size() && i < 8; ++i)
-      which += std::string(i ? ", " : "") + numbered(result.merged[i].first, first) + " into " + numbered(result.merged[i].second, first);
-    if (result.merged.size() > 8) which += ", ...";
-    std::fprintf(stderr, "deltri: warning: %s the coordinates of an earlier point, merged into it: %s\n",
-                 plural(result.merged.size(), "point repeats", "points repeat").c_str(), which.c_str());
-  }
-  if (!report.emptied_facets.empty()) {
-    std::string which;
-    for (std::size_t i = 0; i < report.emptied_facets.size() && i < 8; ++i)
-      which += std::string(i ? ", " : "") + numbered(report.emptied_facets[i], first);
-    if (report.emptied_facets.size() > 8) which += ", ...";
-    std::fprintf(stderr,
-                 "deltri: warning: %s left with no triangle: a hole point lies in the region of its outer loop, "
-                 "which it carves away whole when no inner loop encloses it (facet %s); the surface is open there\n",
-                 plural(report.emptied_facets.size(), "facet", "facets").c_str(), which.c_str());
-  }
-  const SurfaceMesh& m = result.mesh;
-  if (report.budget_reached)
-    std::fprintf(stderr,
-                 "deltri: warning: the surface run spent its budget of %ld Steiner points (%s, shared by every facet and "
-                 "round): %zu of %zu triangles below the -q angle, %zu above the -a area\n",
-                 report.steiner_budget,
-                 sw.max_steiner >= 0 && report.steiner_budget == sw.max_steiner ? "-S" : "the termination guard's",
-                 result.below_angle, m.triangle_count(), result.above_area);
-  else if (!report.converged)
-    std::fprintf(stderr,
-                 "deltri: warning: the facets did not agree on their shared segments within %d rounds; meshed again "
-                 "with no Steiner points on segments: %zu of %zu triangles below the -q angle, %zu above the -a area\n",
-                 kMaxSurfaceRounds, result.below_angle, m.triangle_count(), result.above_area);
+  for (const std::string& w : surface_warnings(result, sw, first)) std::fprintf(stderr, "deltri: warning: %s\n", w.c_str());
 }
 
 std::string requested(const Switches::FileRequest& r, const std::string& out, const char* extension) {

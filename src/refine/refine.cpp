@@ -20,7 +20,7 @@ namespace {
 // before it starts, instead of refining until the memory runs out.
 void refuse_impossible_size_bounds(const Mesh& mesh, const RefineOptions& opt) {
   if (!(opt.memory_budget > 0.0)) return;
-  const double wanted = 2.0 * triangles_wanted(mesh, opt.size);
+  const double wanted = 2.0 * (triangles_wanted(mesh, opt.size) + opt.size_test_triangles);
   const double bytes = wanted * kBytesPerTriangle;
   if (!(bytes > opt.memory_budget)) return;
   constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;

@@ -46,6 +46,9 @@ struct RefineOptions {
   // A caller's size test (refine/size_test.h), or null. Its wishes are unknown in advance, so only
   // the memory budget caps the Steiner points, and refinement stays on one thread (refine_in_parts.h).
   const SizeTest* size_test = nullptr;
+  // The triangles the size test is known to ask for (a size field's estimate), added to the size
+  // bounds' own in the up-front refusal of bounds beyond the memory (0: unknown).
+  double size_test_triangles = 0.0;
   QueueOrder queue_order = QueueOrder::ShortestEdge;  // which bad triangle goes first (quality_queue.h)
   // Fig. 38 l.21: let SPLITPERMITTED decline cluster splits. That is the Terminator's proof of
   // termination, but a declined triangle keeps its angle (up to Theorem 12's bound) wherever it
@@ -75,6 +78,9 @@ struct RefineOptions {
   // refine/segment_pieces.h), as they were in that run. Off for a first run, whose pieces are its
   // subsegments as given.
   bool straight_chains = false;
+  // With straight_chains: only the chains that end at a sharp junction (a first run's .poly,
+  // SegmentPieces), so that other inputs' collinear vertices keep their own pieces.
+  bool straight_chains_at_sharp_junctions_only = false;
   // > 1: a second thread faults in the growing arrays' pages (util/page_warmer.h) and the halves
   // run at once. The mesh does not depend on it.
   int threads = 1;

@@ -69,9 +69,76 @@ VertexId walk_straight(const Mesh& mesh, const std::vector<char>& straight,
 
 }  // namespace
 
-SegmentPieces::SegmentPieces(const Mesh& mesh, bool straight_chains) {
-  const std::vector<char> straight =
+namespace {
+
+// The subsegments' far ends at each vertex, in compressed rows: at[first[v]] .. at[first[v + 1]].
+struct SubsegmentNeighbours {
+  std::vector<std::uint32_t> first;
+  std::vector<VertexId> at;
+  explicit SubsegmentNeighbours(const Mesh& mesh) {
+    const std::size_t n = mesh.vertex_count();
+    first.assign(n + 1, 0);
+    for (const Subsegment& s : mesh.subsegments)
+      if (s.a < n && s.b < n && s.a != s.b) ++first[s.a + 1], ++first[s.b + 1];
+    for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+    at.resize(first[n]);
+    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+    for (const Subsegment& s : mesh.subsegments)
+      if (s.a < n && s.b < n && s.a != s.b) at[next[s.a]++] = s.b, at[next[s.b]++] = s.a;
+  }
+};
+
+// Whether another subsegment leaves vertex j within kSharpJunctionDeg of the one from j to p.
+bool sharp_junction(const Mesh& mesh, const SubsegmentNeighbours& nb, VertexId j, VertexId p) {
+  const Point &pj = mesh.point(j), &pp = mesh.point(p);
+  const double ux = pp.x - pj.x, uy = pp.y - pj.y;
+  for (std::uint32_t k = nb.first[j]; k < nb.first[j + 1]; ++k) {
+    if (nb.at[k] == p) continue;
+    const Point& pb = mesh.point(nb.at[k]);
+    const double wx = pb.x - pj.x, wy = pb.y - pj.y;
+    if (std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) < kSharpJunctionDeg * (M_PI / 180.0)) return true;
+  }
+  return false;
+}
+
+// Walks the chain of straight vertices from v towards w, collecting them; whether its end (the
+// first vertex that is not straight) is a sharp junction. A closed loop has no end.
+bool chain_ends_sharp(const Mesh& mesh, const SubsegmentNeighbours& nb, const std::vector<char>& straight, VertexId v,
+                      VertexId w, std::vector<VertexId>& chain) {
+  VertexId prev = v, cur = w;
+  while (cur != v && straight[cur]) {
+    chain.push_back(cur);
+    const VertexId a = nb.at[nb.first[cur]], b = nb.at[nb.first[cur] + 1];
+    const VertexId next = a == prev ? b : a;
+    prev = cur, cur = next;
+  }
+  return cur != v && sharp_junction(mesh, nb, cur, prev);
+}
+
+// Keeps the straight vertices of the chains that end at a sharp junction, and drops the others.
+void keep_chains_into_sharp_junctions(const Mesh& mesh, std::vector<char>& straight) {
+  const SubsegmentNeighbours nb(mesh);
+  std::vector<char> seen(straight.size(), 0);
+  std::vector<VertexId> chain;
+  for (VertexId v{0}; v < straight.size(); ++v) {
+    if (!straight[v] || seen[v]) continue;
+    chain.assign(1, v);
+    const VertexId a = nb.at[nb.first[v]], b = nb.at[nb.first[v] + 1];
+    const bool sharp_a = chain_ends_sharp(mesh, nb, straight, v, a, chain);
+    const bool sharp_b = chain_ends_sharp(mesh, nb, straight, v, b, chain);
+    for (VertexId c : chain) seen[c] = 1;
+    if (!sharp_a && !sharp_b)
+      for (VertexId c : chain) straight[c] = 2;  // dropped once every chain is walked
+  }
+  for (char& s : straight) s = s == 1;
+}
+
+}  // namespace
+
+SegmentPieces::SegmentPieces(const Mesh& mesh, bool straight_chains, bool sharp_junctions_only) {
+  std::vector<char> straight =
       straight_chains ? straight_chain_vertices(mesh) : std::vector<char>(mesh.vertex_count(), 0);
+  if (straight_chains && sharp_junctions_only) keep_chains_into_sharp_junctions(mesh, straight);
   // A chain's ends, walked from a subsegment record through straight vertices; a vertex's two
   // records are found through the records at each vertex.
   const std::size_t n = mesh.vertex_count();

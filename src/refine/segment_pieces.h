@@ -33,13 +33,20 @@ VertexId shared_end(const PieceEnds& mine, const PieceEnds& other);
 // (RefineOptions::straight_chains): a first run's pieces stay its subsegments, and its meshes as
 // they were (GIS outlines such as water.poly have collinear vertices whose pieces shape the splits).
 inline constexpr double kStraightChainUlps = 16.0;
+// A first run (-p of a .poly) takes the straight chains that end at a sharp junction, where
+// another subsegment leaves the chain's end vertex at under kSharpJunctionDeg: the output .poly of
+// a run near a tiny crossing has the crossing as an input vertex and the wedges' sides as chains
+// of the earlier splits, and the wedges were refined down their whole length (a crossing at 1e-7
+// degrees: -pq30 of such a .poly ran past the memory). Chains elsewhere stay pieces of their own.
+inline constexpr double kSharpJunctionDeg = 1.0;
 std::vector<char> straight_chain_vertices(const Mesh& mesh);
 
 struct SegmentPieces {
   SegmentPieces() = default;
   // Every subsegment of `mesh` an initial piece; with straight_chains, every straight chain of
   // subsegments one piece (straight_chain_vertices), its inner vertices splits of it.
-  explicit SegmentPieces(const Mesh& mesh, bool straight_chains = false);
+  // sharp_junctions_only: only the chains that end at a sharp junction (kSharpJunctionDeg).
+  explicit SegmentPieces(const Mesh& mesh, bool straight_chains = false, bool sharp_junctions_only = false);
 
   // v split a subsegment of `piece`; mesh's vertex and subsegment records now include the split.
   void record_split(const Mesh& mesh, VertexId v, const PieceEnds& piece);

@@ -208,7 +208,7 @@ TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) 
   // The segment pieces are made on the second thread: made on this one they raised the 45x45
   // holes' peak by 0.5-0.8 MiB (benchmarks.md, "Serial steps of the parts on two threads").
   run_both(
-      parallel, [&] { start.pieces = SegmentPieces(mesh, opt.straight_chains); },
+      parallel, [&] { start.pieces = SegmentPieces(mesh, opt.straight_chains, opt.straight_chains_at_sharp_junctions_only); },
       [&] {
         if (parallel && may_cap) cap = deltri::steiner_cap(mesh, opt.size, features);
       });

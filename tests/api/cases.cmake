@@ -84,3 +84,6 @@ set_tests_properties(api.cross_interface PROPERTIES ENVIRONMENT "${API_PYTHON_EN
 add_test(NAME api.triangle_package COMMAND sh -c "${API_NEEDS_NUMPY}" sh
          ${API_DIR}/triangle_package.py $<TARGET_FILE:deltri> $<TARGET_FILE:deltri_mesh_verify> ${CMAKE_SOURCE_DIR})
 set_tests_properties(api.triangle_package PROPERTIES ENVIRONMENT "${API_PYTHON_ENV};MPLBACKEND=Agg" SKIP_RETURN_CODE 77 TIMEOUT 600)
+# What a surface mesh is not, reported through the library as the command line warns of it (issue 47).
+add_test(NAME api.surface_report COMMAND sh -c "${API_NEEDS_NUMPY}" sh ${API_DIR}/surface_report.py)
+set_tests_properties(api.surface_report PROPERTIES ENVIRONMENT "${API_PYTHON_ENV}" SKIP_RETURN_CODE 77 TIMEOUT 300)

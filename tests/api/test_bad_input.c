@@ -45,6 +45,9 @@ static void expect_error(const char *row, const char *switches, struct triangula
   if (got != code || status.code != code || strstr(status.message, expect) == NULL) {
     fprintf(report, "FAIL %s: -%s gave %d '%s', expected %d '...%s...'\n", row, switches, got, status.message, code, expect);
     ++failures;
+  } else if (strchr(status.message, '\n') != NULL) {
+    fprintf(report, "FAIL %s: the message is more than one line\n", row);
+    ++failures;
   } else if (memcmp(&out, &out_before, sizeof out) != 0 || memcmp(&vor, &vor_before, sizeof vor) != 0) {
     fprintf(report, "FAIL %s: the output structs were changed by a failing call\n", row);
     ++failures;
@@ -153,15 +156,18 @@ int main(void) {
   expect_error("30 regions missing", "pQ", &in, DELTRI_INPUT_ERROR, "regionlist is NULL but numberofregions is 2");
   regions[0] = 1; regions[1] = 1; regions[2] = INFINITY; regions[3] = 0.1; base(&in); in.regionlist = regions; in.numberofregions = 1;
   expect_error("31 region attribute inf", "pAQ", &in, DELTRI_INPUT_ERROR, "region 1: attribute is not a finite number (inf)");
-  memcpy(p, square, sizeof square); p[2] = 1e77; base(&in); in.pointlist = p;
-  expect_error("40 coordinate 1e77", "pq", &in, DELTRI_INPUT_ERROR, "a coordinate of magnitude 1e+77 is beyond the range supported for refinement");
-  memcpy(p, square, sizeof square); { int k; for (k = 0; k < 8; ++k) p[k] *= 1e-90; } base(&in); in.pointlist = p;
-  expect_error("41 coordinates 1e-90", "pq", &in, DELTRI_INPUT_ERROR, "every vertex coordinate is below 2^-150");
+  /* Refinement scales an input beyond +-2^200 or below 2^-150 by a power of two (exact), unless
+     its coordinates span more than the exponent range: 1e77 beside 1e-300 cannot be scaled. */
+  memcpy(p, square, sizeof square); p[2] = 1e77; p[1] = 1e-300; base(&in); in.pointlist = p;
+  expect_error("40 coordinates 1e77 and 1e-300", "pq", &in, DELTRI_INPUT_ERROR, "cannot be scaled into it exactly");
   base(&in);
   expect_error("42/47 r without triangles", "rQ", &in, DELTRI_INPUT_ERROR, "r: the input lists no triangles: the mesh is empty");
   base(&in); in.numberoftriangles = 2; in.numberofcorners = 3;
   expect_error("47 r, trianglelist NULL", "rQ", &in, DELTRI_INPUT_ERROR, "trianglelist is NULL but numberoftriangles is 2");
   expect_error("43 unknown switch", "ptQ", &in, DELTRI_USAGE_ERROR, "-t: unknown switch");
+  /* A newline in the switches (found by fuzz_library) was echoed into a two-line message. */
+  expect_error("43b newline in the switches", "pQ\n", &in, DELTRI_USAGE_ERROR,
+               "the switches hold a control character (byte 0x0a) at position 2");
   expect_error("44 angle 60", "pq60Q", &in, DELTRI_USAGE_ERROR, "the minimum angle must be at least 0 and below 60 degrees");
   expect_error("45 area 0", "pa0Q", &in, DELTRI_USAGE_ERROR, "the maximum area must be a positive number");
   expect_error("46 negative angle", "pq-5Q", &in, DELTRI_USAGE_ERROR, "-q-5: the minimum angle must be at least 0");

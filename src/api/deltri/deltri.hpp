@@ -110,6 +110,14 @@ struct Surface {
   int edge_count = 0;
   std::vector<int> edges;                  // two ends per subsegment (every piece of every input segment)
   std::vector<int> edge_markers;           // one per subsegment, unless B: the marker of the first facet holding it
+  // What the result is not, as the command line warns of it (docs/surfaces.md):
+  std::vector<int> merged_points;          // two per point that repeats an earlier point's coordinates: it, the earlier one
+  std::vector<int> emptied_facets;         // facets left with no triangle (a hole point and no inner loop about it)
+  bool budget_reached = false;             // the Steiner budget (-S, or the termination guard's) ended the run
+  bool rounds_exhausted = false;           // the facets did not agree on shared segments within the round cap
+  int triangles_below_angle = 0;           // when either of the two above: triangles below the -q angle
+  int triangles_above_area = 0;            //   and above the -a area
+  std::vector<std::string> warnings;       // the command line's warnings, word for word (without "deltri: warning: ")
 };
 
 // Meshes the facets as the switches say ("pq30a0.02", as for deltri -pq30a0.02 on a .poly with a

@@ -131,6 +131,15 @@ struct deltri_surface {
   int *edgelist;                   /* 2 per subsegment (every piece of every input segment) */
   int *edgemarkerlist;             /* 1 per subsegment, unless B: the first facet's marker that holds it */
   int numberofedges;
+  /* What the mesh is not, as the command line warns of it (docs/surfaces.md): */
+  int *mergedpointlist;            /* 2 per point repeating an earlier point's coordinates: it, the earlier one */
+  int numberofmergedpoints;
+  int *emptiedfacetlist;           /* facets left with no triangle (a hole point and no inner loop about it) */
+  int numberofemptiedfacets;
+  int budgetreached;               /* 1: the Steiner budget (-S, or the termination guard's) ended the run */
+  int roundsexhausted;             /* 1: the facets did not agree on shared segments within the round cap */
+  int numberbelowangle;            /* when either of the two above: triangles below the -q angle */
+  int numberabovearea;             /*   and above the -a area */
 };
 
 /* Meshes the facets as the switches say ("pq30a0.02": the same mesh as deltri -pq30a0.02 on a .poly

@@ -30,3 +30,18 @@ counted_misses() {
   grep -Eq "warning: .*: [0-9]+ triangles? miss(es)? the requested bounds" stderr.last ||
     fail "no warning with a count of the triangles that miss the bounds"
 }
+
+# ends_counted INPUT OUTBASE SWITCHES... FILE: deltri SWITCHES... FILE exits 0 and counts its misses,
+# and OUTBASE is a verified refined mesh of INPUT (for -r, INPUT is the earlier run's .poly).
+ends_counted() {
+  input=$1 out=$2
+  shift 2
+  run 0 "$@" && counted_misses && verified "$input" "$out"
+}
+
+# ends_verified INPUT OUTBASE SWITCHES... FILE: as ends_counted, without requiring misses.
+ends_verified() {
+  input=$1 out=$2
+  shift 2
+  run 0 "$@" && verified "$input" "$out"
+}

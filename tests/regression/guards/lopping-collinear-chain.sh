@@ -28,10 +28,10 @@ cat >diamond.poly <<'POLY'
 8 1 3
 0
 POLY
-run 0 -pq20 diamond.poly && verified diamond.poly diamond.1
+ends_verified diamond.poly diamond.1 -pq20 diamond.poly
 cp stderr.last plain.stderr
 for q in -pq20 -pq30; do
-  run 0 $q --corner-lopping diamond.poly && verified diamond.poly diamond.1
+  ends_verified diamond.poly diamond.1 $q --corner-lopping diamond.poly
   ! grep -Eq "duplicate|repeated" stderr.last || fail "$q --corner-lopping warns of duplicates the input does not have"
   grep -q "2 segment splits where segments pass exactly through vertices" stderr.last &&
     grep -q "1 collinear overlap between segments merged" stderr.last || fail "$q --corner-lopping: not the repairs made"

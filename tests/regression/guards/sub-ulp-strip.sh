@@ -32,6 +32,6 @@ cat >strip.poly <<'POLY'
 0
 POLY
 for q in -pq20 -pq30 -pq34; do
-  run 0 $q strip.poly && counted_misses && verified strip.poly strip.1
+  ends_counted strip.poly strip.1 $q strip.poly
 done
 echo "ok"

@@ -28,23 +28,30 @@ cat >cross.poly <<'POLY'
 0
 POLY
 # -pq30, then -rpq30 twice
-run 0 -pq30 cross.poly && counted_misses && verified cross.poly cross.1
-run 0 -rpq30 cross.1 && counted_misses && verified cross.1.poly cross.2
-run 0 -rpq30 cross.2 && counted_misses && verified cross.2.poly cross.3
-
-
-
+ends_counted cross.poly cross.1 -pq30 cross.poly
+ends_counted cross.1.poly cross.2 -rpq30 cross.1
+ends_counted cross.2.poly cross.3 -rpq30 cross.2
+# -pq30, then -pq30 (and -pq20, -pq33) of its .poly without -r: the crossing is an input vertex
+# there and the wedges' sides are chains of the first run's splits (item 7's rest; the chains that
+# end at such a sharp junction are one piece each, refine/segment_pieces.h)
+mkdir q && cp cross.poly q/ && cd q || exit 1
+run 0 -pq30 cross.poly
+ends_counted cross.1.poly cross.2 -pq30 cross.1.poly
+ends_counted cross.2.poly cross.3 -pq30 cross.2.poly
+ends_counted cross.1.poly cross.2 -pq20 cross.1.poly
+ends_counted cross.1.poly cross.2 -pq33 cross.1.poly
+cd .. || exit 1
 # -p, then -rpq30 twice
 mkdir p && cp cross.poly p/ && cd p || exit 1
 run 0 -p cross.poly
-run 0 -rpq30 cross.1 && verified cross.1.poly cross.2
-run 0 -rpq30 cross.2 && counted_misses && verified cross.2.poly cross.3
+ends_verified cross.1.poly cross.2 -rpq30 cross.1
+ends_counted cross.2.poly cross.3 -rpq30 cross.2
 cd .. || exit 1
 # -pq30, then -rpq30a with an .area file, then -rpq30a0.01
 mkdir a && cp cross.poly a/ && cd a || exit 1
 run 0 -pq30 cross.poly
 n=$(sed -n '1s/^ *\([0-9]*\).*/\1/p' cross.1.ele)
 { echo "$n"; i=1; while [ "$i" -le "$n" ]; do echo "$i 0.001"; i=$((i + 1)); done; } >cross.1.area
-run 0 -rpq30a cross.1 && counted_misses && verified cross.1.poly cross.2
-run 0 -rpq30a0.01 cross.2 && counted_misses && verified cross.2.poly cross.3
+ends_counted cross.1.poly cross.2 -rpq30a cross.1
+ends_counted cross.2.poly cross.3 -rpq30a0.01 cross.2
 echo "ok"

@@ -56,7 +56,11 @@ class _Surface(ctypes.Structure):
     _fields_ = [('pointlist', _D), ('pointmarkerlist', _I), ('numberofpoints', ctypes.c_int),
                 ('trianglelist', _I), ('triangleattributelist', _D), ('trianglefacetlist', _I),
                 ('numberoftriangles', ctypes.c_int),
-                ('edgelist', _I), ('edgemarkerlist', _I), ('numberofedges', ctypes.c_int)]
+                ('edgelist', _I), ('edgemarkerlist', _I), ('numberofedges', ctypes.c_int),
+                ('mergedpointlist', _I), ('numberofmergedpoints', ctypes.c_int),
+                ('emptiedfacetlist', _I), ('numberofemptiedfacets', ctypes.c_int),
+                ('budgetreached', ctypes.c_int), ('roundsexhausted', ctypes.c_int),
+                ('numberbelowangle', ctypes.c_int), ('numberabovearea', ctypes.c_int)]
 
 
 class _Status(ctypes.Structure):
@@ -364,7 +368,10 @@ def mesh_surface(d, opts=''):
     for the command line on a 3-D .poly ('pq30a0.02'); numbering is from 0 (z is always added).
     Returns a dict of numpy arrays: vertices (m x 3), vertex_markers (when given, unless 'B'),
     triangles (t x 3), triangle_attributes (t x 1, the facet markers), triangle_facets (t), edges
-    (the subsegments, s x 2) and edge_markers (unless 'B'). Raises DeltriError on bad input."""
+    (the subsegments, s x 2) and edge_markers (unless 'B'); what the mesh is not, as the command line
+    warns of it: merged_vertices (k x 2: a vertex repeating an earlier one's coordinates, that one),
+    emptied_facets, budget_reached, rounds_exhausted, triangles_below_angle and triangles_above_area
+    (counted when either flag is set). Raises DeltriError on bad input."""
     switches = _switches(opts, 'z')
     keep = []
     io_in, io_out, status = _Facets(), _Surface(), _Status()
@@ -379,12 +386,19 @@ def mesh_surface(d, opts=''):
              ('triangle_attributes', io_out.triangleattributelist, io_out.numberoftriangles, 1, np.float64),
              ('triangle_facets', io_out.trianglefacetlist, io_out.numberoftriangles, 1, np.intc),
              ('edges', io_out.edgelist, io_out.numberofedges, 2, np.intc),
-             ('edge_markers', io_out.edgemarkerlist, io_out.numberofedges, 1, np.intc)]
+             ('edge_markers', io_out.edgemarkerlist, io_out.numberofedges, 1, np.intc),
+             ('merged_vertices', io_out.mergedpointlist, io_out.numberofmergedpoints, 2, np.intc),
+             ('emptied_facets', io_out.emptiedfacetlist, io_out.numberofemptiedfacets, 1, np.intc)]
     result = {}
     for key, pointer, count, columns, dtype in items:
         a = _copy(pointer, count, columns, dtype)
         if a is not None:
-            result[key] = a.reshape(-1) if key == 'triangle_facets' else a
+            result[key] = a.reshape(-1) if key in ('triangle_facets', 'emptied_facets') else a
+    # What the mesh is not, as the command line warns of it.
+    result['budget_reached'] = bool(io_out.budgetreached)
+    result['rounds_exhausted'] = bool(io_out.roundsexhausted)
+    result['triangles_below_angle'] = io_out.numberbelowangle
+    result['triangles_above_area'] = io_out.numberabovearea
     _lib.deltri_surface_free(ctypes.byref(io_out))
     return result
 

@@ -48,6 +48,6 @@ cat >cluster.poly <<'POLY'
 0
 POLY
 for q in -pq30 -pq33.5 -pq34; do
-  run 0 $q cluster.poly && counted_misses && verified cluster.poly cluster.1
+  ends_counted cluster.poly cluster.1 $q cluster.poly
 done
 echo "ok"
