@@ -31,9 +31,11 @@ def fail(message):
     print("FAIL:", message)
 
 
-def poly(points, closed=True):
+def poly(points, ring=None):
+    """A .poly of the points whose first `ring` (default: all) form a closed loop of segments; the
+    rest are free vertices."""
+    n = len(points) if ring is None else ring
     lines = [f"{len(points)} 2 0 0"] + [f"{i + 1} {x} {y}" for i, (x, y) in enumerate(points)]
-    n = len(points)
     lines.append(f"{n} 0")
     lines += [f"{i + 1} {i + 1} {(i + 1) % n + 1}" for i in range(n)]
     lines.append("0")
@@ -42,13 +44,7 @@ def poly(points, closed=True):
 
 def inner(outline, extra):
     """A .poly with the outline's segments and extra free vertices."""
-    points = outline + extra
-    lines = [f"{len(points)} 2 0 0"] + [f"{i + 1} {x} {y}" for i, (x, y) in enumerate(points)]
-    n = len(outline)
-    lines.append(f"{n} 0")
-    lines += [f"{i + 1} {i + 1} {(i + 1) % n + 1}" for i in range(n)]
-    lines.append("0")
-    return "\n".join(lines) + "\n"
+    return poly(outline + extra, len(outline))
 
 
 def read_mesh(base):
