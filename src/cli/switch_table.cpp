@@ -138,10 +138,16 @@ void set_msh_format(S& s, const std::string* v) {
   s.msh_binary = encoding == "binary";
 }
 
+// The value of a switch argument that is only decimal digits, at most max_digits of them; -1 for
+// anything else (a sign, a point, an empty or longer text).
+long long whole_number(const std::string& text, std::size_t max_digits) {
+  const bool digits = !text.empty() && text.size() <= max_digits && text.find_first_not_of("0123456789") == std::string::npos;
+  return digits ? std::stoll(text) : -1;
+}
+
 void set_domain_tag(S& s, const std::string* v) {
   const std::string& n = *v;
-  const bool digits = !n.empty() && n.size() <= 10 && n.find_first_not_of("0123456789") == std::string::npos;
-  const long long tag = digits ? std::stoll(n) : 0;
+  const long long tag = whole_number(n, 10);
   if (tag < 1 || tag > 2147483647) throw UsageError("--domain-tag=" + n + ": give a whole number from 1 to 2147483647");
   s.domain_tag = tag;
 }
@@ -153,9 +159,7 @@ void set_vtu_format(S& s, const std::string* v) {
 
 void set_threads(S& s, const std::string* v) {
   const std::string& n = *v;
-  int threads = 0;
-  const bool digits = !n.empty() && n.size() <= 4 && n.find_first_not_of("0123456789") == std::string::npos;
-  if (digits) threads = std::stoi(n);
+  const int threads = static_cast<int>(whole_number(n, 4));
   if (threads < 1) throw UsageError("--threads=" + n + ": give a whole number of threads from 1 to 9999");
   s.threads = threads;
 }
@@ -182,8 +186,7 @@ void set_smooth(S& s, const std::string* v) {
     s.smooth_rounds = 3;
     return;
   }
-  const bool digits = !v->empty() && v->size() <= 4 && v->find_first_not_of("0123456789") == std::string::npos;
-  const int rounds = digits ? std::stoi(*v) : 0;
+  const int rounds = static_cast<int>(whole_number(*v, 4));
   if (rounds < 1) throw UsageError("--smooth=" + *v + ": give a whole number of rounds from 1 to 9999");
   s.smooth_rounds = rounds;
 }
