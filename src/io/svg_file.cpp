@@ -274,10 +274,15 @@ void write_triangles(TextWriter& out, const Mesh& mesh, const Canvas& canvas,
   out.text("</g>\n");
 }
 
+// A vertex the picture draws: one the .node lists, not a duplicate or a deleted vertex.
+bool shown(const Mesh& mesh, const VertexNumbering& number, VertexId v) {
+  return number.written(v) && mesh.kind[v] != VertexKind::Duplicate && mesh.kind[v] != VertexKind::Dead;
+}
+
 void write_vertex_numbers(TextWriter& out, const Mesh& mesh, const Canvas& canvas, const VertexNumbering& number) {
   out.text("<g font-family=\"sans-serif\" font-size=\"90\" fill=\"#003\">\n");
   for (VertexId v{0}; v < mesh.vertex_count(); ++v) {
-    if (!number.written(v) || mesh.kind[v] == VertexKind::Duplicate || mesh.kind[v] == VertexKind::Dead) continue;
+    if (!shown(mesh, number, v)) continue;
     if (!canvas.inside(mesh.points[v])) continue;
     out.text("<text x=\"");
     out.integer(canvas.x(mesh.points[v]) + 20);
@@ -295,7 +300,7 @@ void write_vertex_numbers(TextWriter& out, const Mesh& mesh, const Canvas& canva
 void write_vertex_dots(TextWriter& out, const Mesh& mesh, const Canvas& canvas, const VertexNumbering& number) {
   out.text("<g fill=\"#444\">\n");
   for (VertexId v{0}; v < mesh.vertex_count(); ++v) {
-    if (!number.written(v) || mesh.kind[v] == VertexKind::Duplicate || mesh.kind[v] == VertexKind::Dead) continue;
+    if (!shown(mesh, number, v)) continue;
     out.text("<circle r=\"40\" cx=\"");
     out.integer(canvas.x(mesh.points[v]));
     out.text("\" cy=\"");
