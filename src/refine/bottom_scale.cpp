@@ -47,7 +47,7 @@ std::optional<Point> Terminator::bottom_scale_point(TriangleId t, const Point& i
   std::optional<Point> best;
   BottomScore best_score{0.0, 0.0};
   for (const Point& c : candidates) {
-    const Probe probe = probe_candidate(mesh_, pred_, t, c, rule_, marks_, splittable);
+    const Probe probe = probe_candidate(mesh_, pred_, t, c, policy_.rule, marks_, splittable);
     if (probe.status != ProbeStatus::Clear) continue;
     const double r = probe.insertion_radius;
     if (r < floor_for(a, c) || r * r < kBottomRadius2 * l2) continue;
@@ -102,7 +102,7 @@ Point Terminator::bottom_scale_split(EdgeRef s, const Point& ideal, bool chew_pe
 // points inside; the Terminator keeps the rule its meshes were checked with (the corpus and the
 // robustness inputs, whose bottom-scale splits on the convex hull have nothing beyond them).
 bool Terminator::beyond_boundary(EdgeRef s, const Point& c) {
-  if (opt_.algorithm == RefinementAlgorithm::Terminator || mesh_.link[s] != kNone) return false;
+  if (!policy_.keeps_splits_inside || mesh_.link[s] != kNone) return false;
   return pred_.orient2d(mesh_.point(mesh_.org(s)), mesh_.point(mesh_.dest(s)), c) < 0;
 }
 

@@ -40,7 +40,7 @@ EdgeRef edge_among(const Mesh& mesh, const std::vector<TriangleId>& created, Ver
 // Theorem 4's argument for termination uses. Measured in docs/refinement.md ("Chew's deletion").
 // Chew's second algorithm (Sec. 4.1) deletes every one, as the paper states it.
 bool Terminator::too_close_to_split(VertexId w, const Point& p) {
-  if (opt_.algorithm == RefinementAlgorithm::Chew) return true;
+  if (policy_.deletes_every_free_vertex) return true;
   const Point& q = mesh_.point(w);
   const EdgeRef out = finder_.leaving(mesh_, w);
   if (out == kNone) return true;

@@ -50,7 +50,7 @@ RefineOptions after(const RefineOptions& opt, std::uint64_t used) {
 // points per vertex (stage_plan).
 RefineReport refine_beyond_reach(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
   TerminatorStart start = TerminatorStart::of(mesh, opt);
-  const auto allowance = static_cast<std::uint64_t>(stage_plan(opt.algorithm).allowance * mesh.vertex_count());
+  const auto allowance = static_cast<std::uint64_t>(stage_plan(opt).allowance * mesh.vertex_count());
   if (allowance < start.steiner_cap) {
     start.steiner_cap = allowance;
     start.cap_kind = CapKind::Cascade;
@@ -68,7 +68,7 @@ RefineReport refine_beyond_reach(Mesh& mesh, Predicates& pred, const RefineOptio
 // counts its triangles that miss the asked bound. Either way the run ends within a small multiple
 // of the first stage's size, time and memory (the copy kept is one more first-stage mesh).
 RefineReport refine_in_stages(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
-  const double reach_deg = stage_plan(opt.algorithm).reach_deg;
+  const double reach_deg = stage_plan(opt).reach_deg;
   if (!asks_beyond(opt.angle, reach_deg)) return refine_within_reach(mesh, pred, opt);
   RefineOptions reach = opt;
   reach.angle = AngleBound(reach_deg);

@@ -9,8 +9,10 @@
 #include "geometry/box.h"
 #include "mesh/operations.h"
 #include "mesh/parts.h"
+#include "refine/algorithm_corner_lopping.h"
 #include "refine/criteria.h"
 #include "refine/bottom_scale.h"
+#include "refine/kept_boundary.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"
 #include "util/big_allocator.h"
@@ -415,8 +417,8 @@ int part_depth(const Mesh& mesh, const RefineOptions& opt) {
 bool parts_apply(const Mesh& mesh, const RefineOptions& opt) {
   if (!opt.in_parts || !mesh.has_subsegments()) return false;
   const bool bounded = opt.angle.asked() || opt.size.any();
-  if (!bounded || opt.size_test || opt.max_steiner >= 0 || opt.no_steiner_on_segments != 0 || opt.conforming_delaunay ||
-      opt.decline_cluster_splits || opt.queue_order != QueueOrder::ShortestEdge || opt.lopped_apices)
+  if (!bounded || opt.size_test || opt.max_steiner >= 0 || KeptBoundary(opt).active() || opt.conforming_delaunay ||
+      opt.decline_cluster_splits || opt.queue_order != QueueOrder::ShortestEdge || CornerLopping(opt).active())
     return false;
   if (opt.angle.cascades()) return false;
   if (part_depth(mesh, opt) < 1) return false;

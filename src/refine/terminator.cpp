@@ -9,7 +9,11 @@
 #include "geometry/box.h"
 #include "geometry/constructions.h"
 #include "geometry/lattice.h"
+#include "refine/algorithm_corner_lopping.h"
+#include "refine/algorithm_policy.h"
 #include "refine/criteria.h"
+#include "refine/kept_boundary.h"
+#include "refine/mending.h"
 #include "mesh/operations.h"
 #include "refine/bottom_scale.h"
 #include "refine/split_permitted.h"
@@ -44,38 +48,6 @@ double guard_floor_of(const Mesh& mesh, const RefineOptions& opt, double input_a
   // Beyond the practical range the floor is what stops cascades, so it stays unscaled there.
   const double scale = opt.angle.cascades() ? 1.0 : angle_scale(input_angle);
   return guard_floor(smallest * scale, size_floor_of(mesh, opt));
-}
-
-// sin^2 of the smallest angle of the live triangles, 1 for none.
-double smallest_sine2(const Mesh& mesh) {
-  double smallest = 1.0;
-  for (TriangleId t{0}; t < mesh.triangle_slots(); ++t) {
-    if (mesh.is_live(t)) smallest = std::min(smallest, triangle_sine2(mesh, t));
-  }
-  return smallest;
-}
-
-// sin^2 of half the acute angle whose sin^2 is s2: (1 - cos) / 2.
-double half_angle_sine2(double s2) { return 0.5 * (1.0 - std::sqrt(std::max(0.0, 1.0 - s2))); }
-
-// Rule (0)'s floor where no subsegment may be split: min(angle bound, the mesh's smallest angle).
-// Without a size bound a dip below it is allowed down to half its angle: Triangle 1.6 makes one on
-// bicycle_seat.poly -pYYq33 and mends it (docs/refinement.md, "-Y, -YY", "Rule 0's dip").
-double kept_floor_sine2(const Mesh& mesh, double bound_sin2, bool size_bounds) {
-  const double floor = std::min(bound_sin2, smallest_sine2(mesh));
-  return size_bounds ? floor : half_angle_sine2(floor);
-}
-
-// Whether -Y/-YY leave every subsegment whole: -YY, or -Y where every segment lies on the
-// boundary. Then only insertions change the mesh, and rule (0) of refused_by_kept_boundary keeps
-// its smallest angle at the floor (half of it without a size bound); where interior segments are
-// split, their splits are not bound by it, and neither is an insertion.
-bool keeps_every_subsegment(const Mesh& mesh, int no_steiner_on_segments) {
-  if (no_steiner_on_segments != 1) return no_steiner_on_segments >= 2;
-  if (!mesh.has_subsegments()) return true;
-  for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
-    if (mesh.corner[e] != kNone && mesh.subseg.has(e) && mesh.link[e] != kNone) return false;
-  return true;
 }
 
 // The box around the vertices and `known` (TerminatorStart::extent).
@@ -129,51 +101,16 @@ void note_array(PageWarmer& warmer, unsigned slot, const Array& a) {
   warmer.note(slot, a.data(), a.size() * sizeof(T), a.capacity() * sizeof(T));
 }
 
-// Without an angle bound (-a, -u alone) the lens would shrink to the subsegment itself, and a
-// Steiner point exactly on a segment's line, beside a split vertex that rounding put an ulp off
-// it, would encroach upon nothing: it made triangles of 1e-13 degrees (guitar.poly -pa0.003). A
-// lens of 0.01 degrees catches such points and lets every other one be.
-constexpr double kLeastLensDeg = 0.01;
-
-// A candidate Steiner point is tested against a lens never flatter than that of 20 degrees. With
-// a lower angle bound, or none (-a, -u alone), the bound's own lens let free points settle a
-// hair's breadth from a segment and left slivers of 0.01 degrees beside it; with this one such a
-// point splits the subsegment instead, and size-bounded meshes keep their angles near 20 degrees
-// away from small input angles, at about the same triangle count (docs/refinement.md, "Area
-// bounds alone"). Only candidates: the vertices already there (the input's among them) are held
-// to the bound's own lens, or a size bound alone would split every segment an input vertex
-// stands near, as a -q20 mesh does. At 20 degrees and above the two lenses are one.
-constexpr double kLeastCandidateLensDeg = 20.0;
-
-EncroachRule candidate_rule_for(const RefineOptions& opt, const EncroachRule& rule) {
-  if (opt.algorithm != RefinementAlgorithm::Terminator || rule.min_apex_angle_deg <= 90.0) return rule;
-  const EncroachRule floor = EncroachRule::lens(kLeastCandidateLensDeg);
-  return floor.min_apex_angle_deg < rule.min_apex_angle_deg ? floor : rule;
-}
-
-// Ruppert encroaches with diametral circles (Sec. 3.1). Chew splits a subsegment only when it
-// lies between a bad triangle and its circumcentre, which the probe's walk finds whatever the rule
-// (candidate_probe.h), or when the circumcentre lies on it (Sec. 4.1): the lens of 0 degrees, the
-// open subsegment itself (with no angle bound the Terminator's least lens, as above).
-EncroachRule rule_for(const RefineOptions& opt) {
-  if (opt.algorithm == RefinementAlgorithm::Ruppert) return EncroachRule::circle();
-  if (opt.algorithm == RefinementAlgorithm::Chew) return EncroachRule::lens(opt.angle.degrees() > 0.0 ? 0.0 : kLeastLensDeg);
-  if (!opt.lenses || opt.conforming_delaunay) return EncroachRule::circle();
-  return EncroachRule::lens(std::max(opt.angle.degrees(), kLeastLensDeg));
-}
-
 // Whether the paper's theorems cover this run (termination_guard.h, within_proven_range): its
 // algorithm as the paper analyses it, the segments split wherever they are encroached upon. A
 // largest-angle bound A is covered only where -q implies it (every angle below 180 - 2 theta):
 // below that no theorem says that circumcentres of obtuse triangles ever run out.
 bool proven_for(const RefineOptions& opt, double input_angle) {
-  if (opt.no_steiner_on_segments != 0 || opt.interior_bound != 0 || opt.range_restricted || opt.lopped_apices)
+  const AlgorithmPolicy policy = AlgorithmPolicy::of(opt);
+  if (!policy.provable || KeptBoundary(opt).active() || opt.interior_bound != 0 || CornerLopping(opt).active())
     return false;
   if (!max_angle_implied(opt.max_angle, opt.angle)) return false;
-  const SplitRule rule = opt.algorithm == RefinementAlgorithm::Chew ? SplitRule::Chew
-                         : rule_for(opt).min_apex_angle_deg == 90.0 ? SplitRule::DiametralCircles
-                                                                    : SplitRule::DiametralLenses;
-  return within_proven_range(input_angle, opt.angle.degrees(), rule);
+  return within_proven_range(input_angle, opt.angle.degrees(), policy.proof_rule);
 }
 
 }  // namespace
@@ -233,12 +170,11 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       rules_{opt.angle, opt.size, opt.max_angle, opt.area_field, opt.size_test},
       interior_rules_{opt.interior_bound != 0 ? AngleBound(std::max(opt.angle.degrees(), kInteriorBoundDeg)) : opt.angle,
                       opt.size, opt.max_angle, opt.area_field, opt.size_test},
-      rule_(rule_for(opt)),
-      candidate_rule_(candidate_rule_for(opt, rule_)),
-      // Ruppert and Chew insert circumcentres (Sec. 3.1, 4.1).
-      off_center_factor_(opt.off_centers && opt.algorithm == RefinementAlgorithm::Terminator ? opt.angle.off_center_factor() : 0.0),
-      optimal_points_(off_center_factor_ > 0.0 && opt.steiner == SteinerPolicy::Optimal),
-      kept_bound_sin2_(AngleBound(std::max(opt.angle.degrees(), kLeastLensDeg)).sin2()),
+      policy_(AlgorithmPolicy::of(opt)),
+      lopping_(opt),
+      kept_(opt),
+      mending_(opt),
+      optimal_points_(policy_.off_center_factor > 0.0 && opt.steiner == SteinerPolicy::Optimal),
       guard_floor_(start.guard_floor),
       proven_range_(start.proven_range),
       edge_floor_(start.proven_range && !optimal_points_ ? 0.0 : start.guard_floor),
@@ -255,8 +191,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
   report_.guard_length = edge_floor_;
   report_.proven_range = proven_range_;
   const bool size_bounds = opt.size.any() || opt.size_test;
-  if (keeps_every_subsegment(mesh, opt.no_steiner_on_segments))
-    floor_sin2_ = kept_floor_sine2(mesh, kept_bound_sin2_, size_bounds);
+  kept_.start(mesh, size_bounds);
   bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
   if (bottom_possible_) {
     if (start.hopeless_edges >= 0) report_.hopeless_edges = static_cast<std::uint64_t>(start.hopeless_edges);
@@ -293,7 +228,7 @@ std::vector<EdgeRef> Terminator::initially_encroached() {
       mesh_.subseg.fetch_ahead(e);
       if (mesh_.corner[e] == kNone || !mesh_.subseg.has(e)) continue;
       if (mesh_.link[e] != kNone && mesh_.link[e] < e) continue;
-      if (is_splittable(e) && is_encroached(mesh_, pred, e, rule_)) out.push_back(e);
+      if (is_splittable(e) && is_encroached(mesh_, pred, e, policy_.rule)) out.push_back(e);
     }
   };
   const EdgeRef edges{static_cast<std::uint32_t>(mesh_.corner.size())};
@@ -318,14 +253,14 @@ void Terminator::refine_around(std::span<const TriangleId> triangles) {
   for (TriangleId t : triangles) {
     if (t >= mesh_.triangle_slots() || !mesh_.is_live(t)) continue;
     for (EdgeRef e : edges_of(t))
-      if (mesh_.subseg.has(e) && is_splittable(e) && is_encroached(mesh_, pred_, e, rule_))
+      if (mesh_.subseg.has(e) && is_splittable(e) && is_encroached(mesh_, pred_, e, policy_.rule))
         enqueue_subsegment(e);
   }
   split_encroached_subsegments(true);
   for (TriangleId t : triangles)
     if (t < mesh_.triangle_slots() && mesh_.is_live(t)) enqueue_if_bad(t);
   drain_queue();
-  mend_kept_boundary();
+  mending_.run(*this);
 }
 
 void Terminator::drain_queue() {
@@ -460,15 +395,11 @@ EdgeRef Terminator::current_edge(const EncroachedSubsegment& entry) {
 }
 
 bool Terminator::is_splittable(EdgeRef e) const {
-  if (kept_by_switch(e)) return false;
-  if (opt_.lopped_apices && is_spoke(mesh_.org(e), mesh_.dest(e))) return false;
+  if (kept_.keeps(mesh_, e)) return false;
+  if (lopping_.is_spoke(mesh_, e)) return false;
   const SubsegmentId id = mesh_.subseg[e];
   if (id == kSeamEdge) return false;
   return id >= locked_.size() || !locked_[id];
-}
-
-bool Terminator::kept_by_switch(EdgeRef e) const {
-  return opt_.no_steiner_on_segments >= 2 || (opt_.no_steiner_on_segments == 1 && mesh_.link[e] == kNone);
 }
 
 // A subsegment that doubles cannot split (the split point rounds onto an end, or a neighbour lies
@@ -482,18 +413,8 @@ void Terminator::lock(EdgeRef s) {
   locked_[id] = 1;
 }
 
-// A subsegment is locked for what its neighbours were when its split failed: a vertex flush with it,
-// often one of a sliver between nearly collinear segments that later insertions replace. With -D
-// a subsegment left encroached keeps the mesh from being Delaunay (quality/conformity.h), so once
-// the queue is empty the encroached locked ones are unlocked and split where doubles now can; each
-// round ends the retries unless it split something (water.poly, ruppert -pDq20.7: 14 such
-// subsegments were left between vertices 1e-6 apart). Only for Ruppert's algorithm (-D with
-// Chew's is refused): the Terminator's -D meshes stay as they were checked (on VVingerfly's
-// test.poly the retries took its subsegments left not Delaunay from 627 to 6, and doubled the mesh).
-bool Terminator::retries_locks() const {
-  return opt_.conforming_delaunay && opt_.algorithm != RefinementAlgorithm::Terminator;
-}
-
+// -D (AlgorithmPolicy::retries_locks, algorithm_ruppert.cpp): the locked subsegments left encroached
+// are unlocked and split where doubles now can, in rounds while some split.
 void Terminator::retry_locked_encroachments() {
   for (int round = 0; round < kLockRetryRounds; ++round) {
     bool any = false;
@@ -501,7 +422,7 @@ void Terminator::retry_locked_encroachments() {
       if (!mesh_.is_live(triangle_of(e)) || !mesh_.subseg.has(e)) continue;
       if (mesh_.link[e] != kNone && mesh_.link[e] < e) continue;
       const SubsegmentId id = mesh_.subseg[e];
-      if (id >= locked_.size() || !locked_[id] || !is_encroached(mesh_, pred_, e, rule_)) continue;
+      if (id >= locked_.size() || !locked_[id] || !is_encroached(mesh_, pred_, e, policy_.rule)) continue;
       locked_[id] = 0;
       if (!is_splittable(e)) {
         locked_[id] = 1;

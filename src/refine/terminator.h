@@ -17,7 +17,11 @@
 #include "geometry/box.h"
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
+#include "refine/algorithm_corner_lopping.h"
+#include "refine/algorithm_policy.h"
 #include "refine/criteria.h"
+#include "refine/kept_boundary.h"
+#include "refine/mending.h"
 #include "refine/candidate_probe.h"
 #include "refine/clusters.h"
 #include "refine/edge_finder.h"
@@ -93,6 +97,10 @@ class Terminator {
   TerminatorStart hand_over() &&;
 
  private:
+  // The -Y / -YY policies ask the mesh, the cavity and the probes.
+  friend class KeptBoundary;
+  friend class Mending;
+
   // --- the core (terminator_core.cpp) ---
   // Fig. 38 l.12-25: one triangle from Q_t.
   Outcome split_bad_triangle(const QueuedTriangle& entry);
@@ -131,38 +139,12 @@ class Terminator {
   // Would splitting s at p leave every new triangle counter-clockwise?
   // chew_pending: free vertices in s's diametral circle do not count (Chew's step deletes them).
   bool split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pending);
-  bool deletes_before_split() const;  // Chew's step (l.40-43): the Terminator with lenses, and Chew
   bool split_allowed(EdgeRef s, const Assessment& a, double d) const;  // Fig. 38 l.21
   // Ruppert, Chew: Sec. 6.2's sure-fire rule on the split of s planned as `plan`.
   bool refused_by_sure_fire_rule(EdgeRef s, const SplitPlan& plan) const;
   bool meets_at_small_angle(const PieceEnds& piece, VertexId w) const;
   bool parent_is_input_feature(const PieceEnds& piece) const;
   std::array<VertexId, 2> sure_fire_ancestors(EdgeRef shortest) const;
-  bool tracks_split_radii() const { return opt_.algorithm != RefinementAlgorithm::Terminator || opt_.range_restricted; }
-  // -Y / -YY: whether c, for bad triangle t, is refused: it would lower the smallest angle below
-  // floor_sin2_, make a bad triangle nothing can split, or spoil one next to a subsegment kept
-  // whole.
-  bool refused_by_kept_boundary(const Point& c, TriangleId t);
-  // Would c make a triangle below `below` (sin^2) whose own Steiner point no insertion can use?
-  bool would_strand(const Point& c, double below);
-  bool stranded_point(TriangleId from, const Point& p);
-  // -Y: would splitting interior subsegment s at p spoil the triangle on a kept subsegment?
-  bool split_spoils_kept_boundary(EdgeRef s, const Point& p);
-  // -Y/-YY, once Q_t is empty (terminator_mending.cpp): the triangles left below the bound, worst
-  // first, get a point across their longest edge where that betters every triangle it replaces.
-  void mend_kept_boundary();
-  bool mend(TriangleId t);
-  double mending_score(TriangleId t, const Assessment& assessed, const Point& q);
-  struct MendTally {
-    double worst_sine2 = 1.0;  // of the smallest angles
-    std::size_t below_angle = 0, over_size = 0;
-    double tightest_area = HUGE_VAL;  // the least area bound among them
-  };
-  MendTally tally_replaced();
-  MendTally tally_made(const Point& q, double tightest_area);
-  static constexpr int kMendRounds = 4;
-  double smallest_made_sine2(const Point& c);  // over the triangles c makes with the cavity's boundary
-  double smallest_replaced_sine2();            // over the cavity's triangles
   bool budget_left();                   // the Steiner cap and -S
   double floor_at(const Point& p) const;  // the guard's edge floor where p lies
   double floor_for(const Assessment& a, const Point& p) const;  // the floor for splitting that triangle
@@ -175,9 +157,6 @@ class Terminator {
   bool below_asked_bound(const Assessment& a) const;   // under -q, not only under Sec. 7.2's bound
   bool only_for_interior_bound(TriangleId t, const Assessment& a) const;  // bad for Sec. 7.2's bound alone
   bool shell_exempt(EdgeRef shortest) const;
-  bool in_lopped_corner(TriangleId t) const;  // --corner-lopping: a fan triangle (Sec. 6.1)
-  bool at_lopped_apex(VertexId v) const;
-  bool is_spoke(VertexId a, VertexId b) const;  // a piece of a segment from a lopped apex to its shield
 
   // --- Chew's step (chew_step.cpp), Fig. 39 l.40-43 ---
   // Returns the edge of the subsegment afterwards, or kNone.
@@ -191,7 +170,6 @@ class Terminator {
   void lock(EdgeRef s);
   // -D: tries the locked subsegments that are encroached again, in rounds while some split.
   void retry_locked_encroachments();
-  bool retries_locks() const;  // -D with Ruppert's algorithm
   static constexpr int kLockRetryRounds = 8;
   std::vector<EdgeRef> initially_encroached();  // Fig. 38 l.3-4
   // Fig. 38 l.10-11: serve Q_t until it is empty.
@@ -205,8 +183,7 @@ class Terminator {
   void enqueue_if_bad(TriangleId t);
   void enqueue_subsegment(EdgeRef e);
   EdgeRef current_edge(const EncroachedSubsegment& entry);
-  bool is_splittable(EdgeRef e) const;  // not kept by -Y / -YY, not a seam edge, not locked
-  bool kept_by_switch(EdgeRef e) const;  // -Y / -YY keep the subsegment on e whole
+  bool is_splittable(EdgeRef e) const;  // not kept by -Y / -YY, not a spoke, not a seam edge, not locked
   VertexId add_free_vertex(const Point& p, EdgeRef container);
   VertexId add_segment_vertex(const Point& p, EdgeRef s);
   Point centroid_of(TriangleId t) const;
@@ -231,14 +208,14 @@ class Terminator {
   const RefineOptions opt_;
   Criteria rules_;
   Criteria interior_rules_;  // Sec. 7.2 (--interior-bound): rules_ with max(-q, 30 degrees)
-  EncroachRule rule_;            // whether a vertex already in the mesh encroaches
-  EncroachRule candidate_rule_;  // whether a candidate Steiner point does (terminator.cpp)
-  double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
+  // The algorithm's rules (algorithm_policy.h), chosen once: the methods read them, never which
+  // algorithm it is.
+  const AlgorithmPolicy policy_;
+  CornerLopping lopping_;  // --corner-lopping
+  KeptBoundary kept_;      // -Y / -YY
+  Mending mending_;        // -Y / -YY, once Q_t is empty
   bool optimal_points_ = false;     // locally optimal Steiner points (--steiner=optimal; steiner_point.h)
   PetalSearch petal_;               // their search's scratch
-  double kept_bound_sin2_ = 0.0;    // -Y/-YY: sin^2 of the angle bound, of the least lens without -q
-  double floor_sin2_ = 0.0;         // sin^2 of min(that angle, the initial mesh's smallest), of half that
-                                    // angle without a size bound, where -Y/-YY keep every subsegment, else 0
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   bool proven_range_ = false;          // the paper's theorems cover the run
   // The floor applied: guard_floor_, or 0 within the proven range, whose proofs are for circumcentres
@@ -251,7 +228,6 @@ class Terminator {
   EdgeFinder finder_;
   Box extent_;  // the bounding box of the vertices: the queue's scale, the bottom scale's coordinates
   CavityMarks marks_;
-  CavityMarks lookahead_marks_;  // -Y/-YY: would_strand's probes, which must not disturb marks_
   QualityQueue bad_triangles_;       // Q_t
   EncroachedQueue encroached_;       // Q_s
   RefineReport report_;
@@ -264,7 +240,6 @@ class Terminator {
   // triangle's shortest edge that count as the splits' ancestors (sure_fire_ancestors), else kNone.
   std::array<VertexId, 2> sure_fire_parents_{kNone, kNone};
   std::vector<Point> lattice_scratch_;    // bottom_scale_point's candidates
-  std::vector<TriangleId> mend_scratch_;  // tally_replaced's list
   // Whether any split can come within kBottomScaleUlps of the coordinates: false when the feature
   // floor is above that everywhere and no size bound is given, and then the bottom-scale code is
   // skipped altogether (ordinary meshes).

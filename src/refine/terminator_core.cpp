@@ -18,8 +18,8 @@ void Terminator::refine_all() {
   for (TriangleId t{0}; t < mesh_.triangle_slots(); ++t)  // l.7
     if (mesh_.is_live(t)) enqueue_if_bad(t);                 // l.8-9
   drain_queue();                                             // l.10-11, the driver
-  mend_kept_boundary();                                       // -Y/-YY: the driver
-  if (retries_locks()) retry_locked_encroachments();          // -D: the driver
+  mending_.run(*this);                                        // -Y/-YY: the driver
+  if (policy_.retries_locks) retry_locked_encroachments();  // -D: the driver
 }
 
 // l.12-25 for one triangle from Q_t.
@@ -32,7 +32,7 @@ Outcome Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   Candidate c;
   if (const auto refusal = choose_point(t, a, c)) return *refusal;  // l.13
   const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
-  const Probe probe = probe_candidate(mesh_, pred_, t, c.point, candidate_rule_, marks_, splittable);  // l.14
+  const Probe probe = probe_candidate(mesh_, pred_, t, c.point, policy_.candidate_rule, marks_, splittable);  // l.14
   if (probe.status == ProbeStatus::Unusable) return Outcome::Unusable;
   if (probe.status == ProbeStatus::Clear) return insert_point(t, a, c, probe);  // l.15-17
   return split_encroached_instead(entry, a, probe);                               // l.18-25
@@ -42,7 +42,7 @@ Outcome Terminator::split_bad_triangle(const QueuedTriangle& entry) {
 Outcome Terminator::insert_point(TriangleId t, const Assessment& a, const Candidate& c, const Probe& probe) {
   // l.18 with a subsegment that -Y/-YY keep whole: nothing may be split, so t stays as it is
   // (counted by the closing survey).
-  if (refused_by_kept_boundary(c.point, t)) return Outcome::KeptBoundary;
+  if (kept_.refuses_insertion(*this, c.point, t)) return Outcome::KeptBoundary;
   if (const auto refusal = guard_insertion(a, c, probe.insertion_radius)) return *refusal;
   return insert_free_vertex(c.point, probe);
 }
@@ -71,7 +71,7 @@ Outcome Terminator::split_encroached_instead(const QueuedTriangle& entry, const 
   // l.24-25, in the other order: t goes back only if something was split, so that a guard refusal
   // cannot repeat the same attempt forever. Splits owed to a size bound meet only the precision
   // floor, as t itself does (floor_for).
-  if (tracks_split_radii()) sure_fire_parents_ = sure_fire_ancestors(a.shape.shortest);
+  if (policy_.tracks_split_radii) sure_fire_parents_ = sure_fire_ancestors(a.shape.shortest);
   const std::uint64_t splits = split_encroached_subsegments(true, a.too_large);
   sure_fire_parents_ = {kNone, kNone};
   if (splits > 0 && is_current(mesh_, entry)) enqueue_if_bad(entry.triangle);
@@ -101,15 +101,15 @@ Outcome Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_
   if (!owed_to_size && in_strip_below_an_ulp(s)) return Outcome::Hopeless;
   SplitPlan plan;
   if (const auto refusal = plan_split(s, owed_to_size, plan)) return *refusal;  // l.39
-  if (split_spoils_kept_boundary(s, plan.point)) return Outcome::KeptBoundary;
+  if (kept_.refuses_split(*this, s, plan.point)) return Outcome::KeptBoundary;
   if (refused_by_sure_fire_rule(s, plan)) return Outcome::SureFire;
-  if (deletes_before_split()) {                                                  // l.40-43
+  if (policy_.deletes_before_split) {                                                  // l.40-43
     s = delete_free_vertices_near(s, plan.point, queue_triangles);
     if (s == kNone) return Outcome::Gone;
     if (const auto refusal = replan_after_deletions(s, plan)) return *refusal;
   }
   const VertexId v = add_segment_vertex(plan.point, s);
-  if (tracks_split_radii()) {
+  if (policy_.tracks_split_radii) {
     split_radius_.resize(v + 1, 0.0);
     split_radius_[v] = plan.radius.after_chew;
   }
@@ -121,7 +121,7 @@ Outcome Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_
   new_vertex(out, queue_triangles);     // l.45
   for_each_around(mesh_, out, [&](EdgeRef e) {  // l.46-49: the halves s1 and s2
     for (EdgeRef half : {e, lprev(e)})
-      if (mesh_.subseg.has(half) && is_splittable(half) && is_encroached(mesh_, pred_, half, rule_))
+      if (mesh_.subseg.has(half) && is_splittable(half) && is_encroached(mesh_, pred_, half, policy_.rule))
         enqueue_subsegment(half);
   });
   return Outcome::Split;
@@ -136,7 +136,7 @@ void Terminator::new_vertex(EdgeRef out, bool queue_triangles) {
     const bool segment = mesh_.has_subsegments() && mesh_.subseg.has(opposite);
     if (segment && is_splittable(opposite) &&
         encroaches(pred_, mesh_.point(mesh_.org(opposite)), mesh_.point(mesh_.dest(opposite)),
-                   mesh_.point(v), rule_))
+                   mesh_.point(v), policy_.rule))
       enqueue_subsegment(opposite);  // l.52-53
     else if (queue_triangles)
       enqueue_if_bad(triangle_of(e));  // l.54-55

@@ -32,8 +32,8 @@ std::optional<Outcome> Terminator::choose_point(TriangleId t, const Assessment& 
   if (std::sqrt(a.shape.shortest_length2) < floor_for(a, g)) return Outcome::BelowFloor;
   // Locally optimal points are for the angle bound; a triangle bad only for its size keeps the
   // off-centre (its circumcentre).
-  c.point = optimal_points_ && a.skinny ? petal_.choose(mesh_, pred_, shortest, opt_.angle.degrees(), off_center_factor_)
-                                        : steiner_point(mesh_, shortest, off_center_factor_);
+  c.point = optimal_points_ && a.skinny ? petal_.choose(mesh_, pred_, shortest, opt_.angle.degrees(), policy_.off_center_factor)
+                                        : steiner_point(mesh_, shortest, policy_.off_center_factor);
   // A triangle flat to rounding (its measured area 0) has no usable circumcentre: the walk
   // towards a NaN point has no exit side.
   if (!std::isfinite(c.point.x) || !std::isfinite(c.point.y)) return Outcome::NoPoint;
@@ -82,7 +82,7 @@ bool Terminator::in_strip_below_an_ulp(EdgeRef s) const {
     if (at_bottom_scale(squared_distance(a, c), a) || at_bottom_scale(squared_distance(b, c), b)) continue;
     const double twice_area = std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
     const double ulp = ulps_at(std::max({magnitude(a), magnitude(b), magnitude(c)}), 1.0);
-    if (twice_area * twice_area < ulp * ulp * length2 && encroaches(pred_, a, b, c, rule_)) return true;
+    if (twice_area * twice_area < ulp * ulp * length2 && encroaches(pred_, a, b, c, policy_.rule)) return true;
   }
   return false;
 }
@@ -98,10 +98,10 @@ std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, Spli
   const auto out_of_precision = [&](const Point& q) {
     // A split point that overflowed (segments spanning most of the double range) is no point.
     return !std::isfinite(q.x) || !std::isfinite(q.y) || q == pa || q == pb ||
-           !split_keeps_orientation(s, q, deletes_before_split());
+           !split_keeps_orientation(s, q, policy_.deletes_before_split);
   };
   if ((bottom_possible_ && at_bottom_scale(squared_distance(pa, pb), pa)) || out_of_precision(p)) {
-    p = bottom_scale_split(s, p, deletes_before_split());
+    p = bottom_scale_split(s, p, policy_.deletes_before_split);
     if (out_of_precision(p)) {
       lock(s);
       return Outcome::Locked;
@@ -123,13 +123,11 @@ Point Terminator::split_point(EdgeRef s) {
   const VertexId a = mesh_.org(s), b = mesh_.dest(s);
   const Point& pa = mesh_.point(a);
   const Point& pb = mesh_.point(b);
-  const bool terminator = opt_.algorithm == RefinementAlgorithm::Terminator;
-  const bool shell_a = terminator && apices_.uses_shells(a), shell_b = terminator && apices_.uses_shells(b);
-  if (opt_.range_restricted && !shell_a && !shell_b)
-    return range_restricted_split_point(pa, pb, legal_range_top(rule_.min_apex_angle_deg > 90.0));
+  const bool shell_a = policy_.shells && apices_.uses_shells(a), shell_b = policy_.shells && apices_.uses_shells(b);
+  if (policy_.range_restricted && !shell_a && !shell_b)
+    return range_restricted_split_point(pa, pb, legal_range_top(policy_.rule.min_apex_angle_deg > 90.0));
   Point p;
-  if (!terminator || opt_.range_restricted ||
-      !mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
+  if (!policy_.mirrors || !mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))
     p = shell_split_point(pa, pb, shell_a, shell_b);
   return p;
 }
@@ -145,13 +143,6 @@ std::optional<Outcome> Terminator::replan_after_deletions(EdgeRef s, SplitPlan& 
   if (plan.radius.now < plan.floor && split_insertion_radius(mesh_, pred_, s, plan.point, marks_) < plan.floor)
     return Outcome::BelowFloor;
   return std::nullopt;
-}
-
-// Fig. 39 l.40-43 runs for the Terminator with lenses and always in Chew's second algorithm, whose
-// step it is (Sec. 4.1); never in Ruppert's.
-bool Terminator::deletes_before_split() const {
-  if (opt_.algorithm != RefinementAlgorithm::Terminator) return opt_.algorithm == RefinementAlgorithm::Chew;
-  return opt_.lenses && !opt_.conforming_delaunay;
 }
 
 // Fig. 38 l.21: may the rejected point of triangle a (shortest edge d) have s split? The Terminator
@@ -192,7 +183,7 @@ bool Terminator::split_allowed(EdgeRef s, const Assessment& a, double d) const {
 // rule never applies, so meshes in the range of the paper's proofs are unchanged.
 // docs/refinement.md, "The sure-fire rule".
 bool Terminator::refused_by_sure_fire_rule(EdgeRef s, const SplitPlan& plan) const {
-  if (!tracks_split_radii()) return false;
+  if (!policy_.tracks_split_radii) return false;
   const PieceEnds& piece = pieces_.of_subsegment[mesh_.subseg[s]];
   const double radius = plan.radius.after_chew;
   const auto ancestor = [&](VertexId w) {
@@ -203,11 +194,11 @@ bool Terminator::refused_by_sure_fire_rule(EdgeRef s, const SplitPlan& plan) con
   const Point& a = mesh_.point(mesh_.org(s));
   const Point& b = mesh_.point(mesh_.dest(s));
   const VertexId n = plan.radius.nearest;
-  if (opt_.algorithm == RefinementAlgorithm::Chew && n != kNone && ancestor(n) &&
+  if (policy_.chew_ancestors && n != kNone && ancestor(n) &&
       strictly_inside_diametral_circle(a, b, mesh_.point(n)) && !parent_is_input_feature(piece))
     return true;
   for (EdgeRef e : {s, mesh_.link[s]})
-    if (e != kNone && ancestor(mesh_.apex(e)) && encroaches(pred_, a, b, mesh_.point(mesh_.apex(e)), rule_)) return true;
+    if (e != kNone && ancestor(mesh_.apex(e)) && encroaches(pred_, a, b, mesh_.point(mesh_.apex(e)), policy_.rule)) return true;
   return false;
 }
 
@@ -243,7 +234,7 @@ bool Terminator::parent_is_input_feature(const PieceEnds& piece) const {
 // the paper's proven range is untouched.
 std::array<VertexId, 2> Terminator::sure_fire_ancestors(EdgeRef shortest) const {
   const VertexId a = mesh_.org(shortest), b = mesh_.dest(shortest);
-  if (opt_.algorithm != RefinementAlgorithm::Chew) return {std::max(a, b), kNone};
+  if (!policy_.chew_ancestors) return {std::max(a, b), kNone};
   return {std::max(a, b), std::min(a, b)};
 }
 
@@ -294,7 +285,7 @@ bool Terminator::below_asked_bound(const Assessment& a) const {
 // midpoint once made a split owed to a size bound look like a new edge of 1e-15.
 Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
   const double now = split_insertion_radius(mesh_, pred_, s, p, marks_);
-  if (!deletes_before_split() || marks_.boundary().empty()) return {now, now};
+  if (!policy_.deletes_before_split || marks_.boundary().empty()) return {now, now};
   const Point& pa = mesh_.point(mesh_.org(s));
   const Point& pb = mesh_.point(mesh_.dest(s));
   double nearest2 = HUGE_VAL;
@@ -330,116 +321,6 @@ bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pe
   return true;
 }
 
-// -Y/-YY: may c, whose probe was just made, be inserted? c replaces the triangles of its cavity
-// (CavityMarks) by those it makes with the cavity's boundary. It is refused when
-//  (0) where no subsegment may be split (-YY, or -Y with segments on the boundary only), it would
-//      make a triangle below the floor, min(angle bound, smallest angle of the mesh the Terminator
-//      started from), and worse than every triangle it replaces. Then no insertion lowers the
-//      smallest angle of the mesh below the floor, and as nothing else changes the mesh, the
-//      result has no angle below it (docs/refinement.md, "-Y, -YY": the initial constrained
-//      Delaunay triangulation shows the fixed boundary allows that much). Without a size bound
-//      the floor is half that angle: a dip that a later point mends is allowed, as Triangle 1.6
-//      makes one (bicycle_seat.poly -pYYq33: 34.35 degrees instead of the floor, 32.12); the whole
-//      floor is measured there, not proved. Elsewhere floor_sin2_ is 0.
-//  (1) it would make a triangle below the bound, worse than every triangle it replaces, that no
-//      later point can mend (would_strand): its own Steiner point lies behind a kept subsegment or
-//      in the lens of one. Delaunay refinement makes worse triangles on its way everywhere and
-//      splits them in their turn; next to a kept boundary that turn may never come (guitar.poly
-//      -pYYq33 kept a 7.1 degree triangle made for a 24.5 degree one).
-// The triangle on a kept subsegment s changes only when a new point lands in its circumcircle,
-// that is when s is on the boundary of the point's cavity, and the point then becomes its apex.
-// So c is also refused when, for a kept s on the cavity's boundary,
-//  (2) c encroaches upon s (lies in its lens): the rule of Fig. 38 l.18 with no split allowed; or
-//  (3) t is bad only for its size and c would lower the smallest angle of the triangles it
-//      replaces below theirs (and below the bound): the size bound is not worth a sliver. The area
-//      bound is given up there instead (the closing survey counts it).
-// Refusing every worse triangle not on s left the bound unmet where it is within reach (p01.poly
-// at -pYq: 16.8 degrees instead of 20); refusing those on s (a rule until 2026-12-03) stopped
-// refinement where Triangle 1.6 goes on (Constrained_Sweden -pYYq: 0.97 degrees against 1.85).
-// docs/refinement.md, "-Y", has the measurements.
-bool Terminator::refused_by_kept_boundary(const Point& c, TriangleId t) {
-  if (opt_.no_steiner_on_segments == 0) return false;
-  const double made = smallest_made_sine2(c);
-  const double replaced = smallest_replaced_sine2();
-  if (below_angle(made, floor_sin2_) && made < replaced) return true;  // (0)
-  const double worse = std::min(kept_bound_sin2_, replaced);
-  if (below_angle(made, worse) && would_strand(c, worse)) return true;  // (1)
-  bool touches = false;
-  for (EdgeRef e : marks_.boundary_subsegments()) {
-    if (!kept_by_switch(e)) continue;
-    touches = true;
-    const Point& a = mesh_.point(mesh_.org(e));
-    const Point& b = mesh_.point(mesh_.dest(e));
-    if (encroaches(pred_, a, b, c, rule_)) return true;  // (2)
-  }
-  if (!touches || assess(t).skinny) return false;
-  return below_angle(made, worse);  // (3)
-}
-
-// Would one of the triangles c makes with the cavity's boundary, with a smallest angle whose sin^2
-// is below `below`, be left as it is? Its Steiner point is probed in today's mesh from the cavity
-// triangle on the same edge (the new triangle lies in the cavity, which no subsegment crosses), so
-// the walk meets the subsegments the new triangle's point would meet. Reads the cavity (marks_)
-// and leaves it as it was: the look-ahead has marks of its own.
-bool Terminator::would_strand(const Point& c, double below) {
-  for (EdgeRef e : marks_.boundary()) {
-    const Point& a = mesh_.point(mesh_.org(e));
-    const Point& b = mesh_.point(mesh_.dest(e));
-    if (!below_angle(smallest_angle_sine2(a, b, c), below)) continue;
-    const Point p = steiner_point_of(a, b, c, off_center_factor_);
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || stranded_point(triangle_of(e), p)) return true;
-  }
-  return false;
-}
-
-// Whether the Steiner point p, probed from triangle `from`, is one no insertion can use: the
-// probe finds no place for it (behind a kept subsegment or the mesh's boundary, on a vertex), or
-// it lies in the lens of a kept subsegment of its cavity (refused by (2)).
-bool Terminator::stranded_point(TriangleId from, const Point& p) {
-  const auto splittable = [this](EdgeRef e) { return is_splittable(e); };
-  const Probe probe = probe_candidate(mesh_, pred_, from, p, rule_, lookahead_marks_, splittable);
-  if (probe.status == ProbeStatus::Unusable) return true;
-  if (probe.status == ProbeStatus::Encroaches) return false;  // the subsegments split instead
-  for (EdgeRef e : lookahead_marks_.boundary_subsegments())
-    if (kept_by_switch(e) && encroaches(pred_, mesh_.point(mesh_.org(e)), mesh_.point(mesh_.dest(e)), p, rule_))
-      return true;
-  return false;
-}
-
-// -Y: may the interior subsegment s be split at p? plan_split left p's cavity in marks_. A kept
-// subsegment k on its boundary gets p as its apex; the split is refused when that triangle would be
-// below the bound and worse than both the one on k now and those beside s, which the split is
-// for. Otherwise a split near a corner where a long kept segment meets an interior one at a small
-// angle made the triangle on the kept segment a sliver that nothing mends (drufat's la.poly
-// -pYq30a0.019: 0.032 degrees, Triangle 1.6 0.043). -D needs every encroached subsegment split.
-bool Terminator::split_spoils_kept_boundary(EdgeRef s, const Point& p) {
-  if (opt_.no_steiner_on_segments == 0 || opt_.conforming_delaunay) return false;
-  double worse = std::min(kept_bound_sin2_, triangle_sine2(mesh_, triangle_of(s)));
-  if (mesh_.link[s] != kNone) worse = std::min(worse, triangle_sine2(mesh_, triangle_of(mesh_.link[s])));
-  for (EdgeRef k : marks_.boundary_subsegments()) {
-    if (!kept_by_switch(k)) continue;
-    const double made = smallest_angle_sine2(mesh_.point(mesh_.org(k)), mesh_.point(mesh_.dest(k)), p);
-    if (made < std::min(worse, triangle_sine2(mesh_, triangle_of(k)))) return true;
-  }
-  return false;
-}
-
-// The sin^2 of the smallest angle among the triangles that c makes with the cavity's boundary.
-double Terminator::smallest_made_sine2(const Point& c) {
-  double smallest = 1.0;
-  for (EdgeRef e : marks_.boundary())
-    smallest = std::min(smallest, smallest_angle_sine2(mesh_.point(mesh_.org(e)), mesh_.point(mesh_.dest(e)), c));
-  return smallest;
-}
-
-// The same for the triangles of the cavity: those with a boundary edge and the inner ones.
-double Terminator::smallest_replaced_sine2() {
-  double smallest = 1.0;
-  for (EdgeRef e : marks_.boundary()) smallest = std::min(smallest, triangle_sine2(mesh_, triangle_of(e)));
-  for (TriangleId u : marks_.inner()) smallest = std::min(smallest, triangle_sine2(mesh_, u));
-  return smallest;
-}
-
 // The coarse floor (2^-kCoarsePrecisionOctaves of the coordinates) is precision_floor_at times
 // 2^(kPrecisionOctaves - kCoarsePrecisionOctaves), exactly: one multiplication instead of a branch
 // on the hot path.
@@ -472,8 +353,8 @@ bool Terminator::budget_left() {
 // triangle); the fans of lopped corners stay as they are (Sec. 6.1).
 Assessment Terminator::assess_with(TriangleId t, const Criteria& rules) const {
   Assessment a = assess_triangle(mesh_, t, rules);
-  if (opt_.lopped_apices && in_lopped_corner(t)) a.skinny = a.too_large = false;
-  if (a.skinny && opt_.algorithm == RefinementAlgorithm::Terminator && shell_exempt(a.shape.shortest)) a.skinny = false;
+  if (lopping_.spares(mesh_, t)) a.skinny = a.too_large = false;
+  if (a.skinny && policy_.shell_exemption && shell_exempt(a.shape.shortest)) a.skinny = false;
   return a;
 }
 
@@ -522,39 +403,6 @@ bool Terminator::shell_exempt(EdgeRef shortest) const {
   if (c == j) return true;
   const Point& pc = mesh_.point(c);
   return pred_.orient2d(pa, pb, pj) > 0.0 && pred_.orient2d(pb, pj, pc) >= 0.0 && pred_.orient2d(pj, pa, pc) >= 0.0;
-}
-
-// --corner-lopping: t is a triangle of a fan that fills a lopped corner: its angle at a lopped apex
-// lies in a lopped sector (under 60 degrees, so the bisector is inside exactly when t is). The
-// wider sectors at the same apex are meshed as anywhere else.
-bool Terminator::in_lopped_corner(TriangleId t) const {
-  if (opt_.lopped_sectors == nullptr) return false;
-  const auto c = mesh_.corners(t);
-  for (int i = 0; i < 3; ++i) {
-    if (!at_lopped_apex(c[i])) continue;
-    const Point& o = mesh_.point(c[i]);
-    const Point& p = mesh_.point(c[(i + 1) % 3]);
-    const Point& q = mesh_.point(c[(i + 2) % 3]);
-    const double lp = std::hypot(p.x - o.x, p.y - o.y), lq = std::hypot(q.x - o.x, q.y - o.y);
-    const double bx = (p.x - o.x) / lp + (q.x - o.x) / lq, by = (p.y - o.y) / lp + (q.y - o.y) / lq;
-    const auto& sectors = *opt_.lopped_sectors;
-    auto s = std::lower_bound(sectors.begin(), sectors.end(), c[i], [](const auto& x, VertexId v) { return x[0] < v; });
-    for (; s != sectors.end() && (*s)[0] == c[i]; ++s) {
-      const Point& from = mesh_.point((*s)[1]);
-      const Point& to = mesh_.point((*s)[2]);
-      if ((from.x - o.x) * by - (from.y - o.y) * bx > 0.0 && bx * (to.y - o.y) - by * (to.x - o.x) > 0.0) return true;
-    }
-  }
-  return false;
-}
-
-bool Terminator::at_lopped_apex(VertexId v) const {
-  return opt_.lopped_apices && v < opt_.lopped_apices->size() && (*opt_.lopped_apices)[v] == 1;
-}
-
-bool Terminator::is_spoke(VertexId a, VertexId b) const {
-  const auto kind = [&](VertexId v) { return v < opt_.lopped_apices->size() ? (*opt_.lopped_apices)[v] : 0; };
-  return (kind(a) == 1 && kind(b) == 2) || (kind(a) == 2 && kind(b) == 1);
 }
 
 }  // namespace deltri
