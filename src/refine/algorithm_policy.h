@@ -34,7 +34,7 @@ struct AlgorithmPolicy {
   // none of them, the midpoint.
   bool shells = false;
   bool mirrors = false;
-  bool range_restricted = false;
+  bool legal_lengths = false;
   // Fig. 39 l.40-43, Chew's step: free vertices in the diametral circle are deleted before a
   // split; every one of them (Chew's own rule, Sec. 4.1), or only those too close to the split
   // point (chew_step.cpp, too_close_to_split).

@@ -7,7 +7,7 @@
 namespace deltri {
 
 void restrict_split_ranges(AlgorithmPolicy& policy) {
-  policy.range_restricted = true;
+  policy.legal_lengths = true;
   policy.mirrors = false;
   policy.tracks_split_radii = true;
   policy.provable = false;

@@ -124,7 +124,7 @@ Point Terminator::split_point(EdgeRef s) {
   const Point& pa = mesh_.point(a);
   const Point& pb = mesh_.point(b);
   const bool shell_a = policy_.shells && apices_.uses_shells(a), shell_b = policy_.shells && apices_.uses_shells(b);
-  if (policy_.range_restricted && !shell_a && !shell_b)
+  if (policy_.legal_lengths && !shell_a && !shell_b)
     return range_restricted_split_point(pa, pb, legal_range_top(policy_.rule.min_apex_angle_deg > 90.0));
   Point p;
   if (!policy_.mirrors || !mirrored_split_point(mesh_, s, pieces_.of_subsegment[mesh_.subseg[s]], pieces_, p))

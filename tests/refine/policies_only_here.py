@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""Issue 43's rule for the algorithm and the -Y / corner-lopping switches: they are read once, when
+a Terminator is built, by the policy files (src/refine/algorithm*.h and .cpp, kept_boundary.*,
+mending.*), and the rest of src/refine reads the policies' values. Anywhere else under src/refine,
+code (not comments) that reads a member .algorithm, .no_steiner_on_segments (-Y, -YY),
+.lopped_apices or .lopped_sectors (--corner-lopping) or .range_restricted, or that names a
+RefinementAlgorithm:: value (outside refine.h, which declares the option), fails the test.
+
+usage: policies_only_here.py SOURCE_DIR   (or --self-test: the rule must catch known forms)"""
+import glob
+import os
+import re
+import sys
+
+READ = re.compile(r"\.\s*(algorithm|no_steiner_on_segments|lopped_apices|lopped_sectors|range_restricted)\b(?!\s*\()")
+VALUE = re.compile(r"\bRefinementAlgorithm\s*::")
+POLICY_FILES = re.compile(r"^refine/(algorithm[a-z_]*|kept_boundary|mending)\.(h|cpp)$")
+DECLARES = ("refine/refine.h",)
+
+
+def code(text):
+    text = re.sub(r"/\*.*?\*/", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+    lines = []
+    for line in text.split("\n"):
+        line = re.sub(r'"(\\.|[^"\\])*"', '""', line)  # string literals
+        lines.append(line.split("//")[0])
+    return lines
+
+
+def violations(text, rel):
+    found = []
+    for number, line in enumerate(code(text), 1):
+        if READ.search(line) or (rel not in DECLARES and VALUE.search(line)):
+            found.append((number, line.strip()))
+    return found
+
+
+def self_test():
+    caught = [
+        "  if (opt_.algorithm == RefinementAlgorithm::Chew) return true;",
+        "  const StagePlan plan = stage_plan(opt.algorithm);",
+        "  return opt_.no_steiner_on_segments >= 2 || mesh_.link[e] == kNone;",
+        "  if (opt_.lopped_apices && is_spoke(a, b)) return false;",
+        "  const auto& sectors = *options.lopped_sectors;",
+        "  if (opt_.range_restricted && !shell_a) return p;",
+        "  const bool chew = algo == RefinementAlgorithm::Chew;",
+    ]
+    passed = [
+        "  if (policy_.chew_ancestors && n != kNone) return true;",
+        "  // opt_.algorithm is read by the policy files only",
+        "  const char* s = \"opt.no_steiner_on_segments\";",
+        "  if (lopping_.spares(mesh_, t)) a.skinny = false;",
+        "  return range_restricted_split_point(pa, pb, top);",
+        "  if (policy_.legal_lengths && !shell_a) return p;",
+    ]
+    bad = [l for l in caught if not violations(l, "refine/x.cpp")] + \
+          [l for l in passed if violations(l, "refine/x.cpp")]
+    for line in bad:
+        print("self-test: wrong answer for:", line)
+    return 1 if bad else 0
+
+
+def main():
+    if sys.argv[1:] == ["--self-test"]:
+        return self_test()
+    if self_test():
+        return 1
+    src = os.path.join(sys.argv[1], "src")
+    paths = sorted(glob.glob(os.path.join(src, "refine", "**", "*.cpp"), recursive=True) +
+                   glob.glob(os.path.join(src, "refine", "**", "*.h"), recursive=True))
+    if not any(POLICY_FILES.match(os.path.relpath(p, src).replace(os.sep, "/")) for p in paths):
+        print("no policy files under src/refine: the rule would pass vacuously")
+        return 1
+    failures = []
+    for path in paths:
+        rel = os.path.relpath(path, src).replace(os.sep, "/")
+        if POLICY_FILES.match(rel):
+            continue
+        for number, line in violations(open(path, encoding="utf-8").read(), rel):
+            failures.append(f"src/{rel}:{number}: the algorithm or a -Y/lopping switch read outside the policy "
+                            f"files: {line}")
+    for failure in failures:
+        print(failure)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
