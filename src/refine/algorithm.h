@@ -2,7 +2,7 @@
 // stronger bound away from segments of Sec. 7.2. They are policies, not separate programs: the
 // core asks terminator_policies.cpp where a point goes, when a subsegment counts as encroached,
 // which splits are permitted and whether Chew's step deletes vertices, and those answers read
-// these settings (docs/refinement.md, "The paper's algorithms").
+// the table each algorithm fills once (algorithm_policy.h; docs/refinement.md, "The policies").
 #pragma once
 
 #include <cstdint>

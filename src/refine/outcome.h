@@ -22,7 +22,7 @@ enum class Outcome : std::uint8_t {
   NoBetterDouble,  // no double near the point improves the triangles it would destroy
   NoPoint,         // the circumcentre is not finite (a triangle flat to rounding)
   Unusable,        // the probe found no place for the point
-  KeptBoundary,    // -Y/-YY: the point would spoil the triangles next to a kept boundary (refused_by_kept_boundary)
+  KeptBoundary,    // -Y/-YY: the point would spoil the triangles next to a kept boundary (KeptBoundary, kept_boundary.h)
   OnSubsegment,    // the point lies on a subsegment that may not be split
   Declined,        // SPLITPERMITTED (Fig. 38 l.21) refused every encroached subsegment
   Locked,          // doubles cannot split the subsegment: it is kept whole from now on

@@ -4,7 +4,9 @@
 // or encroached subsegment served gets an Outcome (outcome.h). The policies the core asks (where a
 // point goes, when the guard refuses) are in terminator_policies.cpp, Chew's step in chew_step.cpp;
 // terminator.cpp is the driver around the core (set-up, the queue's mechanics, prefetching and page
-// warming, bookkeeping), terminator_survey.cpp the closing survey.
+// warming, bookkeeping), terminator_survey.cpp the closing survey. Which algorithm runs, -Y/-YY and
+// corner-lopping are policy objects chosen at construction (policy_, kept_, mending_, lopping_);
+// the methods read their values and never the switches (docs/refinement.md, "The policies").
 #pragma once
 
 #include <array>

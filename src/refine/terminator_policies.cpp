@@ -2,7 +2,7 @@
 // triangle, a subsegment's split point on concentric shells or mirrored across a thin wedge, a
 // double near either at the bottom of double precision) and when the termination guard refuses a
 // point (termination_guard.h). The core (terminator_core.cpp) asks; these answer with a point or
-// a refusal.
+// a refusal, reading the algorithm's rules from policy_ (algorithm_policy.h).
 #include <algorithm>
 #include <cmath>
 #include <numbers>
