@@ -132,8 +132,8 @@ def main():
             key = "identical" if verdict == "identical" else "both timed out" if verdict == "both timed out" else "different"
             tally.setdefault(mode, {}).setdefault(key, 0)
             tally[mode][key] += 1
-            if key == "different":
-                print(f"DIFFERENT {' '.join(switches)} {poly}: {verdict}", flush=True)
+            if key != "identical":
+                print(f"{key.upper()}: {' '.join(switches)} {poly}: {verdict}", flush=True)
     total = {}
     for mode in args.modes.split(","):
         counts = tally.get(mode, {})
