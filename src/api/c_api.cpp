@@ -10,7 +10,7 @@
 
 #include "api/c_support.h"
 #include "api/library_support.h"
-#include "cli/version.h"
+#include "options/version.h"
 
 namespace deltri {
 namespace {

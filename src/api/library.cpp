@@ -1,12 +1,12 @@
 // deltri::api::triangulate: the switch string, the input arrays and a size function through the
-// pipeline (api/pipeline.h) to the output arrays, every failure as one deltri::api::Error.
+// pipeline (pipeline/pipeline.h) to the output arrays, every failure as one deltri::api::Error.
 #include <exception>
 #include <string>
 
 #include "api/input_arrays.h"
 #include "api/library_support.h"
 #include "api/output_arrays.h"
-#include "api/pipeline.h"
+#include "pipeline/pipeline.h"
 
 namespace deltri {
 namespace {

@@ -7,7 +7,7 @@
 #define DELTRI_INTERNAL
 #include "deltri/deltri.hpp"
 
-#include "cli/switches.h"
+#include "options/switches.h"
 
 namespace deltri {
 

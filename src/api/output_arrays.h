@@ -7,8 +7,8 @@
 #define DELTRI_INTERNAL
 #include "deltri/deltri.hpp"
 
-#include "api/pipeline.h"
-#include "cli/switches.h"
+#include "pipeline/pipeline.h"
+#include "options/switches.h"
 #include "pslg/pslg.h"
 
 namespace deltri {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cli/version.h"
+#include "options/version.h"
 #include "quality/statistics.h"
 
 namespace deltri {

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "cdt/convex_hull.h"
-#include "cli/version.h"
+#include "options/version.h"
 #include "quality/statistics.h"
 #include "quality/triangle_wording.h"
 #include "refine/termination_guard.h"

@@ -10,7 +10,7 @@
 
 #include <unistd.h>
 
-#include "api/pipeline.h"
+#include "pipeline/pipeline.h"
 #include "cli/json_report.h"
 #include "cli/progress_meter.h"
 #include "cli/report.h"

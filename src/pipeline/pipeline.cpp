@@ -1,4 +1,4 @@
-#include "api/pipeline.h"
+#include "pipeline/pipeline.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // The stages from an input PSLG (and, with -r, a previous mesh) to the finished mesh: Delaunay,
 // segments and holes, refinement, boundary markers, the -C check, -o2 midpoints and the -j
-// numbering. The one facade over the core that the command line (src/cli/run.cpp: files in,
-// files out, messages) and the library (src/api/library.cpp: arrays in, arrays out) both use.
+// numbering. The one facade over the core that the command line (cli/run.cpp: files in,
+// files out, messages) and the library (api/library.cpp: arrays in, arrays out) both use.
 // It reads and writes no file, prints nothing and never exits: errors are exceptions
 // (util/errors.h).
 #pragma once
@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/report.h"
-#include "cli/switches.h"
+#include "options/switches.h"
+#include "pipeline/run_report.h"
 #include "io/ele_file.h"
 #include "mesh/mesh.h"
 #include "pslg/pslg.h"

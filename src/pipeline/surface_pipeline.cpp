@@ -1,11 +1,11 @@
-#include "api/surface_pipeline.h"
+#include "pipeline/surface_pipeline.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <tuple>
 
-#include "api/pipeline.h"
+#include "pipeline/pipeline.h"
 
 namespace deltri {
 namespace {

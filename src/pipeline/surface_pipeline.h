@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "cli/switches.h"
+#include "options/switches.h"
 #include "pslg/facets.h"
 #include "surface/check_surface.h"
 #include "surface/surface_mesher.h"
