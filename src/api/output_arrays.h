@@ -8,12 +8,12 @@
 #include "deltri/deltri.hpp"
 
 #include "pipeline/pipeline.h"
-#include "options/switches.h"
+#include "options/options.h"
 #include "pslg/pslg.h"
 
 namespace deltri {
 
 // `poly_input`: the input had segments (p), so segments are output as from a .poly.
-api::Mesh output_arrays(const PipelineResult& result, const Switches& sw, int first_index, bool poly_input);
+api::Mesh output_arrays(const PipelineResult& result, const Options& sw, int first_index, bool poly_input);
 
 }  // namespace deltri

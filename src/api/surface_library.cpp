@@ -70,7 +70,7 @@ FacetInput facet_input_of(const api::Facets& in, int first_index) {
 }
 
 // The .node, .ele and .edge items (surface/surface_files.cpp), numbered from first_index.
-api::Surface surface_arrays(const SurfaceMesh& m, const Switches& sw, int first_index) {
+api::Surface surface_arrays(const SurfaceMesh& m, const Options& sw, int first_index) {
   api::Surface s;
   s.point_count = static_cast<int>(m.points.size());
   for (const Point3& p : m.points) s.points.insert(s.points.end(), {p.x, p.y, p.z});
@@ -92,7 +92,7 @@ api::Surface surface_arrays(const SurfaceMesh& m, const Switches& sw, int first_
 }
 
 api::Surface run(const api::Facets& facets, const std::string& switches) {
-  const Switches sw = parse_library_switches(switches, false);
+  const Options sw = parse_library_switches(switches, false);
   const int first_index = sw.zero_based ? 0 : 1;
   const FacetInput input = facet_input_of(facets, first_index);
   const SurfaceResult result = run_surface_pipeline(input, sw);

@@ -190,8 +190,8 @@ bool uses_standard_output(const Switches& s) {
   return false;
 }
 
-int threads_to_use(const Switches& sw) {
-  if (sw.threads > 0) return sw.threads;
+int threads_to_use(const Options& options) {
+  if (options.threads > 0) return options.threads;
   const unsigned cores = std::thread::hardware_concurrency();
   return cores > 0 ? static_cast<int>(cores) : 1;
 }

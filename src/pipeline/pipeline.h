@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "options/switches.h"
+#include "options/options.h"
 #include "pipeline/run_report.h"
 #include "io/ele_file.h"
 #include "mesh/mesh.h"
@@ -55,18 +55,18 @@ using StageListener = std::function<void(const char*)>;
 
 // The bounds the switches ask for (-q, --max-angle, -a, -u), each made once; with area_file,
 // per-triangle bounds are honoured (-a bare, or an .area read).
-Criteria criteria_of(const Switches& sw, bool area_file);
+Criteria criteria_of(const Options& sw, bool area_file);
 
 // The refinement options the switches ask for (-D, -Y, -S, -k, --queue, ...), with the criteria's
 // bounds. Also the facets' (3-D).
-RefineOptions refine_options(const Switches& sw, const Criteria& criteria);
+RefineOptions refine_options(const Options& sw, const Criteria& criteria);
 
 // Whether the switches (or a size test) ask for refinement.
-bool refinement_wanted(const Switches& sw, const PipelineSource& source);
+bool refinement_wanted(const Options& sw, const PipelineSource& source);
 
 // Runs every stage on `pslg`, whose vertices move into the mesh (segments, holes and regions stay
 // for the writers). Fills `report`. Throws InputError (named after source.name) and MemoryError.
-PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Switches& sw, RunReport& report,
+PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Options& sw, RunReport& report,
                             const StageListener& stage = {});
 
 }  // namespace deltri

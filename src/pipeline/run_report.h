@@ -11,7 +11,7 @@
 #include "cdt/insert_segments.h"
 #include "geometry/predicates.h"
 #include "improve/smooth.h"
-#include "options/switches.h"
+#include "options/options.h"
 #include "pslg/pslg.h"
 #include "quality/bound_misses.h"
 #include "quality/check_mesh.h"
@@ -25,7 +25,7 @@ struct RunReport {
     const char* name;
     double seconds;
   };
-  const Switches* switches = nullptr;
+  const Options* options = nullptr;  // what the run was asked
   const Pslg* pslg = nullptr;
   std::string input_name;
   std::size_t input_vertices = 0;
