@@ -10,7 +10,7 @@
 
 #include "api/c_support.h"
 #include "api/library_support.h"
-#include "cli/version.h"
+#include "options/version.h"
 
 namespace deltri {
 namespace {
@@ -27,7 +27,7 @@ void check_attribute_count(int count, const char* name) {
 // Which arrays are read follows the parsed switches, as for the command line's files: segments
 // with p; holes and regions with p but not r (a refinement keeps the previous mesh's holes); the
 // triangles, their attributes and area bounds with r.
-api::Input input_of(const triangulateio& in, const Switches& sw) {
+api::Input input_of(const triangulateio& in, const Options& sw) {
   api::Input input;
   input.points = input_array(in.pointlist, in.numberofpoints, 2, "pointlist", "numberofpoints");
   check_attribute_count(in.numberofpointattributes, "numberofpointattributes");
@@ -108,7 +108,7 @@ class Outputs {
 };
 
 void write_outputs(const api::Mesh& m, const triangulateio& in, triangulateio& out, triangulateio* vorout,
-                   const Switches& sw) {
+                   const Options& sw) {
   Outputs o;
   o.add(&out.pointlist, m.points);
   o.add(&out.pointattributelist, m.point_attributes);
@@ -156,7 +156,7 @@ int triangulate_arrays(const char* switches, triangulateio* in, triangulateio* o
   return with_status(status, [&] {
     if (switches == nullptr) switches = "";
     if (in == nullptr || out == nullptr) fail(DELTRI_USAGE_ERROR, "the input and output structs must not be NULL");
-    const Switches sw = parse_library_switches(switches, test != nullptr);
+    const Options sw = parse_library_switches(switches, test != nullptr);
     if (sw.voronoi && vorout == nullptr) fail(DELTRI_USAGE_ERROR, "v: the Voronoi output struct is NULL");
     const api::Input input = input_of(*in, sw);
     api::SizeFunction size;

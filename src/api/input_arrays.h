@@ -6,7 +6,7 @@
 #define DELTRI_INTERNAL
 #include "deltri/deltri.hpp"
 
-#include "api/pipeline.h"
+#include "pipeline/pipeline.h"
 #include "pslg/pslg.h"
 
 namespace deltri {

@@ -1,12 +1,12 @@
 // deltri::api::triangulate: the switch string, the input arrays and a size function through the
-// pipeline (api/pipeline.h) to the output arrays, every failure as one deltri::api::Error.
+// pipeline (pipeline/pipeline.h) to the output arrays, every failure as one deltri::api::Error.
 #include <exception>
 #include <string>
 
 #include "api/input_arrays.h"
 #include "api/library_support.h"
 #include "api/output_arrays.h"
-#include "api/pipeline.h"
+#include "pipeline/pipeline.h"
 
 namespace deltri {
 namespace {
@@ -27,7 +27,7 @@ SizeTest size_test_of(const api::SizeFunction& size, std::exception_ptr& thrown)
   };
 }
 
-api::Mesh run(const api::Input& input, const Switches& sw, const api::SizeFunction& size, std::exception_ptr& thrown) {
+api::Mesh run(const api::Input& input, const Options& sw, const api::SizeFunction& size, std::exception_ptr& thrown) {
   const int first_index = sw.zero_based ? 0 : 1;
   Pslg pslg = pslg_from_input(input, first_index, sw.poly);
   PipelineSource source;
@@ -41,7 +41,7 @@ api::Mesh run(const api::Input& input, const Switches& sw, const api::SizeFuncti
   const SizeTest test = size ? size_test_of(size, thrown) : SizeTest{};
   if (size) source.size_test = &test;
   RunReport report;
-  report.switches = &sw;
+  report.options = &sw;
   const PipelineResult result = run_pipeline(pslg, source, sw, report);
   if (result.check_failed)
     throw api::Error(DELTRI_CHECK_FAILED, "C: the mesh is not consistent: " + report.check->summary());
@@ -50,7 +50,7 @@ api::Mesh run(const api::Input& input, const Switches& sw, const api::SizeFuncti
 
 }  // namespace
 
-api::Mesh triangulate_parsed(const api::Input& input, const Switches& sw, const api::SizeFunction& size) {
+api::Mesh triangulate_parsed(const api::Input& input, const Options& sw, const api::SizeFunction& size) {
   std::exception_ptr thrown;
   try {
     return run(input, sw, size, thrown);

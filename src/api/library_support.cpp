@@ -6,6 +6,7 @@
 #include <system_error>
 #include <vector>
 
+#include "options/switches.h"
 #include "util/errors.h"
 
 namespace deltri {
@@ -51,7 +52,7 @@ std::vector<std::string> long_options_of(const std::string& switches, std::strin
 
 }  // namespace
 
-Switches parse_library_switches(const std::string& given, bool size_function) {
+Options parse_library_switches(const std::string& given, bool size_function) {
   try {
     // A control character (a newline from a caller's buffer) would be echoed into a message of
     // more than one line; tabs separate words as spaces do.
@@ -76,7 +77,7 @@ Switches parse_library_switches(const std::string& given, bool size_function) {
     if (sw.caller_size_test && !size_function)
       throw api::Error(DELTRI_USAGE_ERROR, "u: a bare u asks for a size test, and none was given (or give a length, u0.05)");
     sw.quiet = true;
-    return sw;
+    return sw;  // the Options part: what the command line alone reads is dropped
   } catch (...) {
     rethrow_as_library_error();
   }

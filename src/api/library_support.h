@@ -7,18 +7,18 @@
 #define DELTRI_INTERNAL
 #include "deltri/deltri.hpp"
 
-#include "cli/switches.h"
+#include "options/options.h"
 
 namespace deltri {
 
-// Triangle's switch string (no dash needed; a bare u only with a size function) as Switches, quiet,
-// read by the command line's parser: every entry decides from these what to read and write, never
+// Triangle's switch string (no dash needed; a bare u only with a size function) as Options, quiet,
+// read by the parser the command line uses (options/switches.h): every entry decides from these what to read and write, never
 // from the letters of the string. Throws api::Error (DELTRI_USAGE_ERROR for bad switches).
-Switches parse_library_switches(const std::string& given, bool size_function);
+Options parse_library_switches(const std::string& given, bool size_function);
 
 // api::triangulate on switches already parsed (parse_library_switches with `size` given or not),
 // so that an entry which needs them first (the C library) parses the string once.
-api::Mesh triangulate_parsed(const api::Input& input, const Switches& sw, const api::SizeFunction& size);
+api::Mesh triangulate_parsed(const api::Input& input, const Options& sw, const api::SizeFunction& size);
 
 // Called inside a catch block: rethrows the exception being handled as an api::Error (InputError as
 // DELTRI_INPUT_ERROR, UsageError as DELTRI_USAGE_ERROR, out of memory as DELTRI_MEMORY_ERROR, other

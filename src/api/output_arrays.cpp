@@ -11,7 +11,7 @@ namespace {
 int as_int(long long x) { return static_cast<int>(x); }
 
 // As write_node_file.
-void fill_points(api::Mesh& out, const Mesh& mesh, const VertexNumbering& number, const Switches& sw) {
+void fill_points(api::Mesh& out, const Mesh& mesh, const VertexNumbering& number, const Options& sw) {
   const std::size_t na = static_cast<std::size_t>(mesh.num_attributes);
   out.point_attribute_count = mesh.num_attributes;
   out.point_count = as_int(number.written_count(mesh.vertex_count()));
@@ -26,7 +26,7 @@ void fill_points(api::Mesh& out, const Mesh& mesh, const VertexNumbering& number
 }
 
 // As write_ele_file and write_neigh_file.
-void fill_triangles(api::Mesh& out, const PipelineResult& result, const VertexNumbering& number, const Switches& sw) {
+void fill_triangles(api::Mesh& out, const PipelineResult& result, const VertexNumbering& number, const Options& sw) {
   const Mesh& mesh = result.mesh;
   const std::vector<VertexId>* mid = sw.order == 2 ? &result.midpoints : nullptr;
   const std::size_t na = static_cast<std::size_t>(mesh.num_triangle_attributes);
@@ -51,7 +51,7 @@ void fill_triangles(api::Mesh& out, const PipelineResult& result, const VertexNu
 }
 
 // As write_poly_file's segments; without segments, the count of boundary edges (as Triangle).
-void fill_segments(api::Mesh& out, const Mesh& mesh, const VertexNumbering& number, const Switches& sw, bool poly_input) {
+void fill_segments(api::Mesh& out, const Mesh& mesh, const VertexNumbering& number, const Options& sw, bool poly_input) {
   if (!(poly_input || sw.convex_hull)) {
     for (TriangleId t{0}; t < mesh.triangle_slots(); ++t)
       if (mesh.is_live(t))
@@ -72,7 +72,7 @@ void fill_segments(api::Mesh& out, const Mesh& mesh, const VertexNumbering& numb
 }
 
 // As write_edge_file and write_voronoi_edge_file (the same edges in the same order).
-void fill_edges(api::Mesh& out, const Mesh& mesh, const VertexNumbering& number, const Switches& sw) {
+void fill_edges(api::Mesh& out, const Mesh& mesh, const VertexNumbering& number, const Options& sw) {
   out.edge_count = as_int(count_edges(mesh));
   if (!sw.edges && !sw.voronoi) return;
   const std::vector<std::uint32_t> numbers = number_live_triangles(mesh);
@@ -115,7 +115,7 @@ void fill_voronoi_points(api::Mesh& out, const Mesh& mesh) {
 
 }  // namespace
 
-api::Mesh output_arrays(const PipelineResult& result, const Switches& sw, int first_index, bool poly_input) {
+api::Mesh output_arrays(const PipelineResult& result, const Options& sw, int first_index, bool poly_input) {
   const Mesh& mesh = result.mesh;
   const VertexNumbering number{result.numbering.empty() ? nullptr : &result.numbering, first_index};
   api::Mesh out;

@@ -7,13 +7,13 @@
 #define DELTRI_INTERNAL
 #include "deltri/deltri.hpp"
 
-#include "api/pipeline.h"
-#include "cli/switches.h"
+#include "pipeline/pipeline.h"
+#include "options/options.h"
 #include "pslg/pslg.h"
 
 namespace deltri {
 
 // `poly_input`: the input had segments (p), so segments are output as from a .poly.
-api::Mesh output_arrays(const PipelineResult& result, const Switches& sw, int first_index, bool poly_input);
+api::Mesh output_arrays(const PipelineResult& result, const Options& sw, int first_index, bool poly_input);
 
 }  // namespace deltri

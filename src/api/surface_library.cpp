@@ -1,12 +1,12 @@
 // deltri::api::mesh_surface: facets in 3-D as arrays, checked as the facet file reader checks them
 // (io/facet_file.h; the file:line replaced by the item), through the surface pipeline
-// (api/surface_pipeline.h) to arrays with the items and order of the .node, .ele and .edge writers
-// (io/surface_files.h).
+// (pipeline/surface_pipeline.h) to arrays with the items and order of the .node, .ele and .edge writers
+// (surface/surface_files.h).
 #include <cmath>
 #include <string>
 
 #include "api/library_support.h"
-#include "api/surface_pipeline.h"
+#include "pipeline/surface_pipeline.h"
 
 namespace deltri {
 namespace {
@@ -69,8 +69,8 @@ FacetInput facet_input_of(const api::Facets& in, int first_index) {
   return out;
 }
 
-// The .node, .ele and .edge items (io/surface_files.cpp), numbered from first_index.
-api::Surface surface_arrays(const SurfaceMesh& m, const Switches& sw, int first_index) {
+// The .node, .ele and .edge items (surface/surface_files.cpp), numbered from first_index.
+api::Surface surface_arrays(const SurfaceMesh& m, const Options& sw, int first_index) {
   api::Surface s;
   s.point_count = static_cast<int>(m.points.size());
   for (const Point3& p : m.points) s.points.insert(s.points.end(), {p.x, p.y, p.z});
@@ -92,7 +92,7 @@ api::Surface surface_arrays(const SurfaceMesh& m, const Switches& sw, int first_
 }
 
 api::Surface run(const api::Facets& facets, const std::string& switches) {
-  const Switches sw = parse_library_switches(switches, false);
+  const Options sw = parse_library_switches(switches, false);
   const int first_index = sw.zero_based ? 0 : 1;
   const FacetInput input = facet_input_of(facets, first_index);
   const SurfaceResult result = run_surface_pipeline(input, sw);

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "geometry/predicates.h"
-#include "io/ele_file.h"
+#include "pslg/ele_data.h"
 #include "mesh/mesh.h"
 
 namespace deltri {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cli/version.h"
+#include "options/version.h"
 #include "quality/statistics.h"
 
 namespace deltri {
@@ -116,8 +116,7 @@ void triangle_at(Json& j, const char* key, const char* measure, double value, co
 
 }  // namespace
 
-std::string json_report(const Mesh& mesh, const RunReport& r, int exit_status) {
-  const Switches& sw = *r.switches;
+std::string json_report(const Mesh& mesh, const Switches& sw, const RunReport& r, int exit_status) {
   const MeshStatistics stats = compute_statistics(mesh);
   Json j;
   j.open();

@@ -10,7 +10,8 @@
 
 namespace deltri {
 
-// `exit_status` is the status the run ends with (0, or 3 with --strict).
-std::string json_report(const Mesh& mesh, const RunReport& report, int exit_status);
+// `sw` are the run's switches (report.options is their Options part); `exit_status` is the status
+// the run ends with (0, or 3 with --strict).
+std::string json_report(const Mesh& mesh, const Switches& sw, const RunReport& report, int exit_status);
 
 }  // namespace deltri

@@ -5,8 +5,8 @@
 #include <system_error>
 
 #include "cli/run.h"
-#include "cli/switches.h"
-#include "cli/version.h"
+#include "options/switches.h"
+#include "options/version.h"
 #include "util/errors.h"
 
 int main(int argc, char** argv) {

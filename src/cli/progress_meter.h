@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-#include "cli/switches.h"
+#include "options/switches.h"
 #include "util/progress.h"
 
 namespace deltri {

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "cdt/convex_hull.h"
-#include "cli/version.h"
+#include "options/version.h"
 #include "quality/statistics.h"
 #include "quality/triangle_wording.h"
 #include "refine/termination_guard.h"
@@ -102,7 +102,7 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
     warn(plural(q->interior_bound_refusals, "triangle", "triangles") +
          " under the 30 degrees of --interior-bound left at the limit of double precision (Sec. 7.2 proves them for "
          "input angles of 60 degrees or more)");
-  if (r.switches && r.switches->variable_area && !r.area_file && !has_regional_area_bounds(r.pslg))
+  if (r.options && r.options->variable_area && !r.area_file && !has_regional_area_bounds(r.pslg))
     warn("bare -a has no effect: the input has no regional area bounds (-a<area> bounds every triangle)");
   if (const auto& b = r.misses; b && b->not_forced_by_input() > 0 && !(r.refine && r.refine->bad_triangles_left > 0))
     warn(plural(b->not_forced_by_input(), "triangle misses", "triangles miss") +
@@ -229,7 +229,7 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
     std::fprintf(out_, "Bounds (final mesh): %llu triangles miss them (%llu below the angle, %llu above the size",
                 static_cast<unsigned long long>(b->total), static_cast<unsigned long long>(b->below_angle),
                 static_cast<unsigned long long>(b->above_size));
-    if (r.switches && r.switches->max_angle > 0.0)
+    if (r.options && r.options->max_angle > 0.0)
       std::fprintf(out_, ", %llu above the largest angle; %llu of them between input segments at a larger angle",
                   static_cast<unsigned long long>(b->above_max_angle), static_cast<unsigned long long>(b->large_input_angle));
     std::fprintf(out_, ")\n");

@@ -10,7 +10,7 @@
 
 #include <unistd.h>
 
-#include "api/pipeline.h"
+#include "pipeline/pipeline.h"
 #include "cli/json_report.h"
 #include "cli/progress_meter.h"
 #include "cli/report.h"
@@ -179,8 +179,8 @@ void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
   if (sw.json.wanted) {
     const RunReport& report = c.report;
     const int status = c.exit_status;
-    add(requested_path(sw.json, out, "json"), [&mesh, &report, status](ByteSink& s) {
-      const std::string text = json_report(mesh, report, status);
+    add(requested_path(sw.json, out, "json"), [&mesh, &sw, &report, status](ByteSink& s) {
+      const std::string text = json_report(mesh, sw, report, status);
       s.write(text.data(), text.size());
     });
   }
@@ -272,7 +272,7 @@ PreviousMesh read_previous_mesh(const InputFiles& in, const Pslg& pslg, int thre
 int run(const Switches& sw) {
   if (const auto facets = surface_input(sw)) return run_surface(sw, *facets);  // facets in 3-D
   RunReport report;
-  report.switches = &sw;
+  report.options = &sw;
   ProgressMeter meter(sw, stderr, isatty(fileno(stderr)) != 0);
   StageTimer timer(report, meter);
   const auto start = std::chrono::steady_clock::now();

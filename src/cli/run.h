@@ -1,9 +1,9 @@
-// The command line's run: read the files, run the stages (api/pipeline.h: Delaunay -> constrained
+// The command line's run: read the files, run the stages (pipeline/pipeline.h: Delaunay -> constrained
 // Delaunay -> carve -> (refine) -> check), write the files and messages; facets in 3-D go to
 // cli/surface_run.h.
 #pragma once
 
-#include "cli/switches.h"
+#include "options/switches.h"
 
 namespace deltri {
 

@@ -5,13 +5,13 @@
 #include <cmath>
 #include <cstdio>
 
-#include "api/surface_pipeline.h"
+#include "pipeline/surface_pipeline.h"
 #include "cli/interrupt_cleanup.h"
 #include "cli/run.h"
 #include "io/facet_file.h"
 #include "io/output_names.h"
 #include "io/output_set.h"
-#include "io/surface_files.h"
+#include "surface/surface_files.h"
 
 namespace deltri {
 namespace {

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "cli/switches.h"
+#include "options/switches.h"
 
 namespace deltri {
 

@@ -1,4 +1,4 @@
-// The bounds a quality mesh is asked to meet, each made once from the switches (api/pipeline.cpp)
+// The bounds a quality mesh is asked to meet, each made once from the switches (pipeline/pipeline.cpp)
 // into one Criteria (refine/criteria.h) that refinement and the account of misses
 // (quality/bound_misses.h) both read: the smallest angle theta (-q) with every quantity derived
 // from it, the largest angle (--max-angle), and the size bounds (-a, -u).

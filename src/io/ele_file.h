@@ -11,16 +11,9 @@
 #include "io/file_text.h"
 #include "io/text_writer.h"
 #include "mesh/mesh.h"
+#include "pslg/ele_data.h"
 
 namespace deltri {
-
-struct EleData {
-  std::uint32_t nodes_per_triangle = 3;
-  int num_attributes = 0;
-  std::vector<std::uint32_t> corners;  // nodes_per_triangle per triangle, 0-based vertex ids
-  std::vector<double> attributes;      // num_attributes per triangle
-  std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(corners.size() / nodes_per_triangle); }
-};
 
 // Reads a .ele for -r. `first_index` is the numbering of the matching .node; every node must be
 // one of its `vertex_count` vertices. Triangle indices must be integers but are not checked.

@@ -1,5 +1,5 @@
 // Physical groups for the formats whose groups carry positive integer tags: Gmsh MSH, of a 2-D
-// mesh (io/msh_file) and of a surface in 3-D (io/surface_exports). Many solvers (GetDP, FreeFem++,
+// mesh (io/msh_file) and of a surface in 3-D (surface/surface_exports). Many solvers (GetDP, FreeFem++,
 // DOLFINx via its reader) name a region by its tag alone, whatever its dimension, so a line group
 // and a surface group must never share a tag. A solver script names its regions by number, so a
 // group's tag must depend on its own value only: changing one marker must not move any other

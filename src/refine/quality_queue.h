@@ -67,7 +67,7 @@ enum class QueueOrder {
   Fifo,
   ShortestEdgeHeap,
   PaperHeap,
-  // The names the switch table (cli/switch_table.cpp) still spells; to go when it says ShortestEdge.
+  // The names the switch table (options/switch_table.cpp) still spells; to go when it says ShortestEdge.
   Ratio = ShortestEdge,
   RatioHeap = ShortestEdgeHeap
 };

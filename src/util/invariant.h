@@ -1,6 +1,6 @@
 // Runtime checks of key invariants, each O(1), cheap enough to keep in the sanitizer build: on
 // without NDEBUG (make check-debug) and with DELTRI_ASSERTS defined (make check-sanitize, which
-// keeps NDEBUG and so leaves the per-stage mesh checks of api/pipeline.cpp off). Off, the condition
+// keeps NDEBUG and so leaves the per-stage mesh checks of pipeline/pipeline.cpp off). Off, the condition
 // is not evaluated. A failed check is a bug, not bad input: it throws std::logic_error naming the
 // file, the line and the condition, as a failed per-stage check does.
 #pragma once

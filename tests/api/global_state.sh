@@ -11,7 +11,7 @@ command -v objdump >/dev/null && command -v c++filt >/dev/null ||
 objects=$(objdump -t "$lib" | awk '$0 ~ / (\.data|\.bss|\.tdata|\.tbss)[ \t]/ && $3 == "O" { print $NF }' | c++filt | LC_ALL=C sort -u)
 unexpected=$(printf '%s\n' "$objects" | grep -v -x \
   -e 'completed.0' -e '__dso_handle' -e '__TMC_END__' -e 'DW.ref.*' \
-  `# constexpr tables of the switches (cli/switch_table.cpp): const, in .data only because they hold pointers` \
+  `# constexpr tables of the switches (options/switch_table.cpp): const, in .data only because they hold pointers` \
   -e 'deltri::(anonymous namespace)::kTable' -e 'deltri::(anonymous namespace)::kLongOptions' \
   `# a function-local static const bool, set once by the language's thread-safe initialisation (io/decimal_parse.h)` \
   -e 'deltri::decimal::parse_double(char const\*, char const\*, double&, char const\*\*)::precise' \

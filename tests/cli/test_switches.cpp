@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/switch_table.h"
-#include "cli/switches.h"
+#include "options/switch_table.h"
+#include "options/switches.h"
 #include "harness/check.h"
 #include "util/errors.h"
 

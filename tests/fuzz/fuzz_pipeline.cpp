@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "cli/run.h"
-#include "cli/switches.h"
+#include "options/switches.h"
 #include "fuzz_common.h"
 #include "io/node_file.h"
 #include "io/poly_file.h"

@@ -11,10 +11,10 @@
 
 #include "cli/run.h"
 #include "cli/surface_run.h"
-#include "cli/switches.h"
+#include "options/switches.h"
 #include "fuzz_common.h"
 #include "io/facet_file.h"
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 namespace {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "api/pipeline.h"
-#include "cli/switches.h"
+#include "pipeline/pipeline.h"
+#include "options/switches.h"
 #include "geometry/predicates.h"
 #include "harness/check.h"
 #include "quality/check_mesh.h"

@@ -1,4 +1,4 @@
-#include "cli/version.h"
+#include "options/version.h"
 
 // CMakeLists.txt passes the project's version to this file alone, so that a new version recompiles
 // one file.

@@ -1,4 +1,4 @@
-#include "io/surface_files.h"
+#include "surface/surface_files.h"
 
 namespace deltri {
 

@@ -1,17 +1,17 @@
-#include "api/surface_pipeline.h"
+#include "pipeline/surface_pipeline.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <tuple>
 
-#include "api/pipeline.h"
+#include "pipeline/pipeline.h"
 
 namespace deltri {
 namespace {
 
 // A bare -a has no per-triangle bounds to use on facets, so those are switched off.
-FacetMeshOptions facet_options(const Switches& sw) {
+FacetMeshOptions facet_options(const Options& sw) {
   FacetMeshOptions o;
   o.algorithm = sw.algorithm;
   o.threads = threads_to_use(sw);
@@ -69,7 +69,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> merge_duplicates(FacetInput
 }
 
 // The triangles that miss the bounds, counted in the coordinates the facets were meshed in.
-void count_misses(const SurfaceMesh& m, const Switches& sw, const AngleBound& angle, double max_area, SurfaceResult& result) {
+void count_misses(const SurfaceMesh& m, const Options& sw, const AngleBound& angle, double max_area, SurfaceResult& result) {
   for (std::size_t t = 0; t < m.triangle_count(); ++t) {
     const std::array<std::uint32_t, 3>& v = m.triangles[t];
     const Point3 p[3] = {m.points[v[0]], m.points[v[1]], m.points[v[2]]};
@@ -92,7 +92,7 @@ std::string first_eight(std::size_t n, Name name) {
 
 }  // namespace
 
-std::vector<std::string> surface_warnings(const SurfaceResult& result, const Switches& sw, int first) {
+std::vector<std::string> surface_warnings(const SurfaceResult& result, const Options& sw, int first) {
   std::vector<std::string> w;
   const SurfaceReport& report = result.report;
   if (!result.merged.empty())
@@ -129,7 +129,7 @@ double surface_smallest_angle(const Point3& a, const Point3& b, const Point3& c)
   return best;
 }
 
-SurfaceResult run_surface_pipeline(const FacetInput& given, const Switches& sw, const SurfaceProgress& progress) {
+SurfaceResult run_surface_pipeline(const FacetInput& given, const Options& sw, const SurfaceProgress& progress) {
   SurfaceResult result;
   FacetInput input = given;
   result.merged = merge_duplicates(input);

@@ -1,8 +1,8 @@
-// Every command-line option travels in one Switches value; nothing else holds settings.
+// What a run is asked to build and write: the options the pipeline (pipeline/pipeline.h) and the
+// library (api/) read. The command line's own, which name files and messages, are in Switches
+// (switches.h), which extends these; the library parses Triangle's switch string into Switches
+// too and keeps these.
 #pragma once
-
-#include <string>
-#include <vector>
 
 #include "delaunay/triangulate.h"
 #include "refine/algorithm.h"
@@ -11,7 +11,7 @@
 
 namespace deltri {
 
-struct Switches {
+struct Options {
   // What to build.
   bool poly = false;             // -p  read a PSLG, build its constrained Delaunay triangulation
   bool refine = false;           // -r  refine a previous mesh
@@ -46,7 +46,7 @@ struct Switches {
   DelaunayAlgorithm algorithm = DelaunayAlgorithm::DivideAndConquer;  // -i, -l
   bool sweepline = false;        // -F (divide and conquer is used instead)
 
-  // What to write.
+  // What to write (the library: which arrays to fill).
   bool edges = false;            // -e
   bool voronoi = false;          // -v
   bool neighbors = false;        // -n
@@ -58,56 +58,17 @@ struct Switches {
   bool no_iteration = false;     // -I
   bool zero_based = false;       // -z
   int order = 1;                 // -o2
-
-  // Formats beyond Triangle's, asked for by long options (--msh, --vtu, --svg, --json).
-  struct FileRequest {
-    bool wanted = false;
-    std::string path;  // empty: <output base>.<extension>; "-": standard output
-  };
-  FileRequest msh, vtu, svg, json;
-  FileRequest stl;               // --stl: ASCII STL of a surface mesh (facets in 3-D only)
-  int msh_version = 22;          // --msh-format=2.2|4.1[,binary]
-  bool msh_binary = false;
-  long long domain_tag = 0;      // --domain-tag=N; 0: the rule's own (io/physical_groups.h)
-  bool vtu_binary = false;       // --vtu-format=ascii|binary
-  bool svg_numbers = false;      // --svg-numbers: vertex numbers in the picture
-  bool strict = false;           // --strict: exit status 3 when triangles miss the bounds not forced by the input, or none exist
   bool exact_input = false;      // --exact-input: no snapping of vertices onto nearby segments
-  bool triangle_messages = false;  // --triangle-messages: also Triangle's labelled statistics
-  std::string size_field;        // --size-field=FILE: background mesh FILE.node/.ele of wanted edge lengths
-  bool man = false;              // --man: print the manual page (roff) and exit
-  bool version = false;          // --version: print the version and exit
 
   // How to run.
   bool check = false;            // -C
   bool quiet = false;            // -Q
   int verbose = 0;               // -V, -VV, ...
-  bool help = false;             // -h
   int threads = 0;               // --threads=N; 0: all cores (threads_to_use)
   int progress = 0;              // --progress 1, --no-progress -1; 0: after 2 s of work, not with -Q
-
-  std::string input;             // the input file as given
-  std::string command_line;      // every argument, space-separated (for the JSON report)
-  std::vector<std::string> notices;  // letters Triangle accepts that deltri reads its own way (-L, -w, -o3, ...)
 };
 
 // The threads a run may use: --threads=N, or every core the machine reports (at least one).
-int threads_to_use(const Switches& sw);
-
-// Who gives the switches: on the command line a bare -u is Triangle's stock size test;
-// the library takes it as asking for the caller's size function (caller_size_test).
-enum class SwitchSource { CommandLine, Library };
-
-// Parses Triangle-style arguments: switch words start with '-' and hold any number of letters,
-// a letter's number follows it directly; the last other argument names the input.
-// Throws UsageError on an unknown letter or a malformed number.
-Switches parse_switches(int argc, const char* const* argv, SwitchSource source = SwitchSource::CommandLine);
-
-// The -h text and the man page (docs/deltri.1), made from the same tables the parser uses.
-std::string help_text();
-std::string man_page();
-
-// Whether some output goes to standard output (then every message goes to standard error).
-bool uses_standard_output(const Switches& s);
+int threads_to_use(const Options& options);
 
 }  // namespace deltri

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "cli/switches.h"
+#include "options/options.h"
 #include "pslg/facets.h"
 #include "surface/check_surface.h"
 #include "surface/surface_mesher.h"
@@ -36,13 +36,13 @@ struct SurfaceResult {
 // `progress`, if set, hears of each meshing round as it ends (-V). Points with the coordinates of an
 // earlier point are merged into it (`merged`); an input whose coordinates are very large or very
 // small is meshed scaled by a power of two, and the mesh scaled back.
-SurfaceResult run_surface_pipeline(const FacetInput& input, const Switches& sw, const SurfaceProgress& progress = {});
+SurfaceResult run_surface_pipeline(const FacetInput& input, const Options& sw, const SurfaceProgress& progress = {});
 
 // Loud, counted statements of what the result is not, one line each, word for word as the command
 // line prints them after "deltri: warning: " and the library returns them: merged points, facets
 // left empty, and the round cap's or the Steiner budget's misses. Point and facet numbers count
 // from `first`.
-std::vector<std::string> surface_warnings(const SurfaceResult& result, const Switches& sw, int first);
+std::vector<std::string> surface_warnings(const SurfaceResult& result, const Options& sw, int first);
 
 // The smallest angle of a triangle in space, in degrees.
 double surface_smallest_angle(const Point3& a, const Point3& b, const Point3& c);

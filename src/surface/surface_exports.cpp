@@ -1,5 +1,5 @@
 // The single-file formats of a surface mesh (declared in surface_files.h): OFF, STL, MSH 2.2, VTU.
-#include "io/surface_files.h"
+#include "surface/surface_files.h"
 
 #include "io/physical_groups.h"
 

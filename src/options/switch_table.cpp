@@ -1,10 +1,10 @@
-#include "cli/switch_table.h"
+#include "options/switch_table.h"
 
 #include <array>
 #include <string_view>
 #include <utility>
 
-#include "pslg/errors.h"
+#include "util/errors.h"
 
 namespace deltri {
 namespace {

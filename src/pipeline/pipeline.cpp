@@ -1,4 +1,4 @@
-#include "api/pipeline.h"
+#include "pipeline/pipeline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -122,14 +122,14 @@ void unscale_mesh(Mesh& mesh, RefineReport* report, int e) {
 // The paper's other algorithms and options (--algorithm=ruppert|chew, --interior-bound,
 // --range-restricted, --corner-lopping) are younger than the Terminator and less tried on hard
 // inputs: their meshes always get the -C check, so that a fault ends in an error, never in exit 0.
-bool always_checked(const Switches& sw) {
+bool always_checked(const Options& sw) {
   return sw.refinement != RefinementAlgorithm::Terminator || sw.interior_bound != 0 || sw.range_restricted ||
          sw.corner_lopping;
 }
 
 // -D asks for a conforming Delaunay mesh; where subsegments are counted as not Delaunay
 // (quality/conformity.h; their warning says so), it is held to the constrained property only.
-bool conforming_expected(const Switches& sw, const RunReport& report) {
+bool conforming_expected(const Options& sw, const RunReport& report) {
   return sw.conforming_delaunay && !(report.conformity && report.conformity->total > 0);
 }
 
@@ -159,7 +159,7 @@ Mesh mesh_from_pslg(Pslg& pslg) {
 }
 
 // Builds the constrained Delaunay triangulation of a .poly's segments and carves the domain.
-void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Switches& sw,
+void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Options& sw,
                RunReport& report) {
   Predicates pred;
   report.segments = insert_segments(mesh, pred, pslg.segments, dt.duplicates, !sw.exact_input, sw.split_segments,
@@ -175,7 +175,7 @@ void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Swi
 
 // --corner-lopping (Sec. 6.1): X becomes X' and its spokes (cdt/corner_lopping.h); which angles lie
 // inside the domain is read off X's own constrained Delaunay triangulation, built on a copy.
-CornerLopping lop_corners_of(Pslg& pslg, const Switches& sw) {
+CornerLopping lop_corners_of(Pslg& pslg, const Options& sw) {
   Pslg copy = pslg;
   Mesh domain = mesh_from_pslg(copy);
   const DelaunayReport dt = delaunay_triangulate(domain, sw.algorithm, 1);
@@ -214,7 +214,7 @@ std::vector<std::uint32_t> vertex_numbering(const Mesh& mesh, bool jettison, con
 // are not carved again and regions are not read, as in Triangle.
 // The .area bounds are kept as a field over the triangles as read (refine/area_field.h), before
 // the flips that make the mesh constrained Delaunay re-cut them.
-void rebuild(Mesh& mesh, const Pslg& pslg, const PipelineSource& source, const Switches& sw, RunReport& report,
+void rebuild(Mesh& mesh, const Pslg& pslg, const PipelineSource& source, const Options& sw, RunReport& report,
              AreaField& area_field, int scale) {
   Predicates pred;
   const PreviousMesh& previous = *source.previous;
@@ -251,7 +251,7 @@ SizeTest size_test_at_scale(const SizeTest* test, int scale) {
   };
 }
 
-BoundRequest bound_request(const Criteria& criteria, const Switches& sw, const RunReport& report, int scale) {
+BoundRequest bound_request(const Criteria& criteria, const Options& sw, const RunReport& report, int scale) {
   BoundRequest r;
   r.angle = criteria.angle;
   r.size = scaled_size(criteria.size, scale);
@@ -264,7 +264,7 @@ BoundRequest bound_request(const Criteria& criteria, const Switches& sw, const R
 
 // --smooth: after refinement (and its -D account), on one thread in vertex order, so that the
 // mesh is the same for every --threads.
-void smooth(Mesh& mesh, const Switches& sw, const Criteria& criteria, const PipelineSource& source, RunReport& report,
+void smooth(Mesh& mesh, const Options& sw, const Criteria& criteria, const PipelineSource& source, RunReport& report,
             int scale) {
   SmoothOptions opt;
   opt.rounds = sw.smooth_rounds;
@@ -281,7 +281,7 @@ void smooth(Mesh& mesh, const Switches& sw, const Criteria& criteria, const Pipe
 
 }  // namespace
 
-Criteria criteria_of(const Switches& sw, bool area_file) {
+Criteria criteria_of(const Options& sw, bool area_file) {
   Criteria c;
   if (sw.quality) c.angle = AngleBound(sw.min_angle);
   c.size = {sw.fixed_area ? sw.max_area : 0.0, sw.variable_area || area_file, sw.user_test ? sw.max_edge_length : 0.0};
@@ -289,7 +289,7 @@ Criteria criteria_of(const Switches& sw, bool area_file) {
   return c;
 }
 
-RefineOptions refine_options(const Switches& sw, const Criteria& criteria) {
+RefineOptions refine_options(const Options& sw, const Criteria& criteria) {
   RefineOptions opt;
   opt.angle = criteria.angle;
   opt.size = criteria.size;
@@ -310,12 +310,12 @@ RefineOptions refine_options(const Switches& sw, const Criteria& criteria) {
   return opt;
 }
 
-bool refinement_wanted(const Switches& sw, const PipelineSource& source) {
+bool refinement_wanted(const Options& sw, const PipelineSource& source) {
   return sw.quality || sw.max_angle > 0.0 || sw.fixed_area || sw.variable_area || area_bounds_read(source) || sw.user_test ||
          sw.conforming_delaunay || source.size_test != nullptr;
 }
 
-PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Switches& sw, RunReport& report,
+PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Options& sw, RunReport& report,
                             const StageListener& stage_listener) {
   Progress* const progress = source.progress;
   const auto begin = [progress](const char* name) {

@@ -1,7 +1,7 @@
 // The stages from an input PSLG (and, with -r, a previous mesh) to the finished mesh: Delaunay,
 // segments and holes, refinement, boundary markers, the -C check, -o2 midpoints and the -j
-// numbering. The one facade over the core that the command line (src/cli/run.cpp: files in,
-// files out, messages) and the library (src/api/library.cpp: arrays in, arrays out) both use.
+// numbering. The one facade over the core that the command line (cli/run.cpp: files in,
+// files out, messages) and the library (api/library.cpp: arrays in, arrays out) both use.
 // It reads and writes no file, prints nothing and never exits: errors are exceptions
 // (util/errors.h).
 #pragma once
@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/report.h"
-#include "cli/switches.h"
+#include "options/options.h"
+#include "pipeline/run_report.h"
 #include "io/ele_file.h"
 #include "mesh/mesh.h"
 #include "pslg/pslg.h"
@@ -55,18 +55,18 @@ using StageListener = std::function<void(const char*)>;
 
 // The bounds the switches ask for (-q, --max-angle, -a, -u), each made once; with area_file,
 // per-triangle bounds are honoured (-a bare, or an .area read).
-Criteria criteria_of(const Switches& sw, bool area_file);
+Criteria criteria_of(const Options& sw, bool area_file);
 
 // The refinement options the switches ask for (-D, -Y, -S, -k, --queue, ...), with the criteria's
 // bounds. Also the facets' (3-D).
-RefineOptions refine_options(const Switches& sw, const Criteria& criteria);
+RefineOptions refine_options(const Options& sw, const Criteria& criteria);
 
 // Whether the switches (or a size test) ask for refinement.
-bool refinement_wanted(const Switches& sw, const PipelineSource& source);
+bool refinement_wanted(const Options& sw, const PipelineSource& source);
 
 // Runs every stage on `pslg`, whose vertices move into the mesh (segments, holes and regions stay
 // for the writers). Fills `report`. Throws InputError (named after source.name) and MemoryError.
-PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Switches& sw, RunReport& report,
+PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Options& sw, RunReport& report,
                             const StageListener& stage = {});
 
 }  // namespace deltri

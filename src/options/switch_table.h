@@ -3,7 +3,7 @@
 
 #include <span>
 
-#include "cli/switches.h"
+#include "options/switches.h"
 
 namespace deltri {
 
