@@ -98,8 +98,6 @@ class OutputSet {
     std::function<void(ByteSink&)> produce;  // empty: use contents
   };
   static void write_temporary(File& f, const std::string& temp_path, RangePool* pool);
-  std::size_t remove_stale_temporaries() const;
-  void refuse_duplicate_names() const;
   static void write_standard_output(File& f);
   std::size_t workers_;
   std::vector<File> files_;
