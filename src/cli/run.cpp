@@ -197,9 +197,10 @@ void refuse_overwriting_inputs(const RunReport& report, const InputFiles& in, co
   if (in.area_file) names.push_back(in.base + ".area");
   // Each file stat'ed once (outputs times inputs had been a dozen calls in a small run).
   std::vector<std::pair<dev_t, ino_t>> inputs;
-  for (const std::string& name : names) {
+  for (std::size_t k = 0; k < names.size(); ++k) {
     struct stat st;
-    if (!name.empty() && name != "-" && stat(name.c_str(), &st) == 0) inputs.emplace_back(st.st_dev, st.st_ino);
+    const bool again = std::find(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(k), names[k]) != names.begin() + static_cast<std::ptrdiff_t>(k);
+    if (!again && !names[k].empty() && names[k] != "-" && stat(names[k].c_str(), &st) == 0) inputs.emplace_back(st.st_dev, st.st_ino);
   }
   for (const std::string& output : report.written) {
     struct stat st;

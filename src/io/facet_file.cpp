@@ -192,9 +192,12 @@ std::optional<bool> says_three_dimensions(std::string line) {
 bool is_facet_file(const std::string& path) {
   if (ends_with(path, ".smesh")) return true;
   if (path == "-") return false;
-  // C stdio rather than a stream: a small run then never starts iostreams and their locale.
+  // C stdio rather than a stream: a small run then never starts iostreams and their locale. The
+  // buffer is given (and outlives the file), so stdio does not ask the file system for a block size.
+  char buffer[4096];
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!file) return false;
+  std::setvbuf(file.get(), buffer, _IOFBF, sizeof buffer);
   std::string line;
   for (int c; (c = std::getc(file.get())) != EOF || !line.empty();) {
     if (c != '\n' && c != EOF) {

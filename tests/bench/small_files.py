@@ -37,6 +37,8 @@ ap.add_argument("--corpus", default=os.path.join(here, "..", "..", "data"))
 ap.add_argument("--rounds", type=int, default=3)
 ap.add_argument("--batch", type=int, default=200)
 ap.add_argument("--only", default="cpu,batch,corpus,thin")
+ap.add_argument("--switches", default="-pQ,-pq30Q", help="the corpus part's switch sets")
+ap.add_argument("--timeout", type=float, default=60, help="a corpus run's limit; a file past it is left out")
 args = ap.parse_args()
 parts = set(args.only.split(","))
 deltri, triangle = os.path.abspath(args.deltri), os.path.abspath(args.triangle)
@@ -104,10 +106,10 @@ def part_corpus():
     files = sorted(os.path.join(d, f) for d, _, fs in os.walk(args.corpus) for f in fs if f.endswith(".poly"))
     print(f"### Corpus ({len(files)} .poly files under {os.path.basename(os.path.abspath(args.corpus))}): "
           "deltri/Triangle wall ratio, median of 3 interleaved runs, files Triangle needs >= 20 ms for\n")
-    print("| switches | files | median ratio | worst ratio | worst five |")
-    print("|---|---|---|---|---|")
-    for switch in ["-pQ", "-pq30Q"]:
-        ratios = []
+    print("| switches | files | median ratio | worst ratio | worst five | left out (past the time limit) |")
+    print("|---|---|---|---|---|---|")
+    for switch in args.switches.split(","):
+        ratios, left_out = [], []
         for path in files:
             work = tempfile.mkdtemp()
             local = os.path.join(work, os.path.basename(path))
@@ -118,15 +120,21 @@ def part_corpus():
             walls = {name: [] for name, _ in programs}
             for _ in range(3):
                 for name, argv in programs:
-                    walls[name].append(run([argv[0], switch, os.path.basename(local)], work, timeout=300)[0])
+                    walls[name].append(run([argv[0], switch, os.path.basename(local)], work, timeout=args.timeout)[0])
+                if max(max(w) for w in walls.values()) >= args.timeout:
+                    break
             shutil.rmtree(work)
+            if max(max(w) for w in walls.values()) >= args.timeout:
+                left_out.append(os.path.basename(path))
+                continue
             t, d = (statistics.median(walls[name]) for name, _ in programs)
             if t >= 0.020:
                 ratios.append((d / t, os.path.basename(path), t))
         ratios.sort()
         worst = ", ".join(f"{n} {r:.2f} ({t * 1000:.0f} ms)" for r, n, t in reversed(ratios[-5:]))
         med = statistics.median(r for r, _, _ in ratios) if ratios else float("nan")
-        print(f"| `{switch}` | {len(ratios)} | {med:.2f} | {ratios[-1][0] if ratios else float('nan'):.2f} | {worst} |")
+        print(f"| `{switch}` | {len(ratios)} | {med:.2f} | {ratios[-1][0] if ratios else float('nan'):.2f} | {worst} | "
+              f"{', '.join(left_out) or 'none'} |")
     print()
 
 
