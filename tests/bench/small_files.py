@@ -13,9 +13,10 @@ PARTS (comma-separated, default all): cpu, batch, corpus, thin.
   batch   N copies (default 200) of guitar.poly in one fresh folder, meshed with
           `xargs -P 2 -n 1 PROGRAM -pq30Q` (the names listed, not globbed); wall seconds per round,
           and whatever the runs wrote on standard error. The load average is printed first.
-  corpus  every .poly under DIR at -pQ and -pq30Q, each program three times (alternating), the
+  corpus  every .poly under DIR at -pQ and -pq30Q (--switches), each program three times (alternating), the
           median wall time; the deltri/Triangle ratio over the files Triangle needs 20 ms or more
-          for: median, worst, and the five worst files.
+          for: median, worst, and the five worst files; a file where a run fails (Triangle 1.6 crashes on
+          some) or passes --timeout (60 s) is left out and named.
   thin    the rectangle 1 x 1e-6 at -pq30Q: wall seconds and peak resident memory, once per round.
 guitar.poly is read from the repository's data/ folder.
 """
@@ -46,7 +47,7 @@ programs = [("Triangle 1.6", [triangle]), ("deltri", [deltri, "--threads=1"])]
 
 
 def run(argv, cwd, timeout=600):
-    """Runs argv in cwd; returns (wall seconds, CPU seconds, peak KiB, stderr bytes)."""
+    """Runs argv in cwd; returns (wall seconds, CPU seconds, peak KiB, stderr bytes, exit status)."""
     with tempfile.TemporaryFile() as err:
         start = time.perf_counter()
         proc = subprocess.Popen(argv, cwd=cwd, stdout=subprocess.DEVNULL, stderr=err)
@@ -57,7 +58,7 @@ def run(argv, cwd, timeout=600):
         guard.cancel()
         proc.returncode = os.waitstatus_to_exitcode(status)
         err.seek(0)
-        return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss, len(err.read())
+        return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss, len(err.read()), proc.returncode
 
 
 def part_cpu():
@@ -106,7 +107,7 @@ def part_corpus():
     files = sorted(os.path.join(d, f) for d, _, fs in os.walk(args.corpus) for f in fs if f.endswith(".poly"))
     print(f"### Corpus ({len(files)} .poly files under {os.path.basename(os.path.abspath(args.corpus))}): "
           "deltri/Triangle wall ratio, median of 3 interleaved runs, files Triangle needs >= 20 ms for\n")
-    print("| switches | files | median ratio | worst ratio | worst five | left out (past the time limit) |")
+    print("| switches | files | median ratio | worst ratio | worst five | left out (a run failed or passed the time limit) |")
     print("|---|---|---|---|---|---|")
     for switch in args.switches.split(","):
         ratios, left_out = [], []
@@ -118,14 +119,18 @@ def part_corpus():
             if os.path.exists(base + ".node"):
                 shutil.copy(base + ".node", local[:-len(".poly")] + ".node")
             walls = {name: [] for name, _ in programs}
+            failed = []
             for _ in range(3):
                 for name, argv in programs:
-                    walls[name].append(run([argv[0], switch, os.path.basename(local)], work, timeout=args.timeout)[0])
-                if max(max(w) for w in walls.values()) >= args.timeout:
+                    wall, _, _, _, status = run([argv[0], switch, os.path.basename(local)], work, timeout=args.timeout)
+                    walls[name].append(wall)
+                    if status != 0 or wall >= args.timeout:
+                        failed.append(f"{name} {'timed out' if wall >= args.timeout else f'exit {status}'}")
+                if failed:
                     break
             shutil.rmtree(work)
-            if max(max(w) for w in walls.values()) >= args.timeout:
-                left_out.append(os.path.basename(path))
+            if failed:  # no ratio against a run that crashed or was cut short
+                left_out.append(f"{os.path.basename(path)} ({', '.join(failed)})")
                 continue
             t, d = (statistics.median(walls[name]) for name, _ in programs)
             if t >= 0.020:
@@ -148,7 +153,7 @@ def part_thin():
     for r in range(args.rounds):
         got = []
         for name, argv in programs:
-            wall, _, peak, _ = run([argv[0], "-pq30Q", "thin.poly"], work, timeout=1200)
+            wall, _, peak, _, _ = run([argv[0], "-pq30Q", "thin.poly"], work, timeout=1200)
             got.append((wall, peak / 1024))
         print(f"| {r + 1} | " + " | ".join(f"{w:.2f} | {m:.0f}" for w, m in got) +
               f" | {got[1][0] / got[0][0]:.2f} | {got[1][1] / got[0][1]:.2f} |")
