@@ -12,7 +12,9 @@
 int main(int argc, char** argv) {
   using namespace deltri;
   try {
-    const Switches switches = parse_switches(argc, argv);
+    Switches switches = parse_switches(argc, argv);
+    // The machine's core count, read once: each stage asking for it again cost a read of sysfs.
+    switches.threads = threads_to_use(switches);
     if (switches.version) {
       std::printf("deltri %s\n", version());
       return kExitOk;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "pipeline/pipeline.h"
@@ -191,15 +192,22 @@ void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
 // input, -rI aside, which parse_switches refuses; an older output under them is replaced, as in
 // Triangle.)
 void refuse_overwriting_inputs(const RunReport& report, const InputFiles& in, const Pslg& pslg) {
-  std::vector<std::string> inputs = {in.path, pslg.source_name};
-  if (in.refine) inputs.push_back(in.base + ".ele");
-  if (in.area_file) inputs.push_back(in.base + ".area");
-  for (const std::string& output : report.written)
-    for (const std::string& input : inputs) {
-      std::error_code ec;
-      if (!input.empty() && input != "-" && std::filesystem::equivalent(output, input, ec))
-        throw OutputError(output + ": is an input of this run, not overwritten (no files written)");
-    }
+  std::vector<std::string> names = {in.path, pslg.source_name};
+  if (in.refine) names.push_back(in.base + ".ele");
+  if (in.area_file) names.push_back(in.base + ".area");
+  // Each file stat'ed once (outputs times inputs had been a dozen calls in a small run).
+  std::vector<std::pair<dev_t, ino_t>> inputs;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    struct stat st;
+    const bool again = std::find(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(k), names[k]) != names.begin() + static_cast<std::ptrdiff_t>(k);
+    if (!again && !names[k].empty() && names[k] != "-" && stat(names[k].c_str(), &st) == 0) inputs.emplace_back(st.st_dev, st.st_ino);
+  }
+  for (const std::string& output : report.written) {
+    struct stat st;
+    if (stat(output.c_str(), &st) != 0) continue;  // not there yet: not an input
+    if (std::find(inputs.begin(), inputs.end(), std::pair{st.st_dev, st.st_ino}) != inputs.end())
+      throw OutputError(output + ": is an input of this run, not overwritten (no files written)");
+  }
 }
 
 // Whether the .node is left out because of -I alone (it would overwrite the input's vertices; as in

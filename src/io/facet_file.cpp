@@ -1,7 +1,10 @@
 #include "io/facet_file.h"
 
 #include <climits>
-#include <fstream>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
 
 #include "io/line_reader.h"
 #include "util/errors.h"
@@ -167,22 +170,42 @@ void read_facets(LineReader& in, FacetInput& out, bool smesh) {
 
 }  // namespace
 
+namespace {
+
+// Whether a .poly line with something on it gives dimension 3 (its second word), or nullopt for a
+// line of nothing but separators and comments.
+std::optional<bool> says_three_dimensions(std::string line) {
+  line = line.substr(0, line.find('#'));
+  for (char& c : line)
+    if (c == ',' || c == '\t' || c == '\r') c = ' ';
+  const std::size_t a = line.find_first_not_of(' ');
+  if (a == std::string::npos) return std::nullopt;
+  const std::size_t b = line.find_first_of(' ', a);
+  const std::size_t c = b == std::string::npos ? std::string::npos : line.find_first_not_of(' ', b);
+  if (c == std::string::npos) return false;
+  const std::size_t d = line.find_first_of(' ', c);
+  return line.substr(c, d == std::string::npos ? std::string::npos : d - c) == "3";
+}
+
+}  // namespace
+
 bool is_facet_file(const std::string& path) {
   if (ends_with(path, ".smesh")) return true;
   if (path == "-") return false;
-  std::ifstream file(path);
+  // C stdio rather than a stream: a small run then never starts iostreams and their locale. The
+  // buffer is given (and outlives the file), so stdio does not ask the file system for a block size.
+  char buffer[4096];
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) return false;
+  std::setvbuf(file.get(), buffer, _IOFBF, sizeof buffer);
   std::string line;
-  while (std::getline(file, line)) {
-    line = line.substr(0, line.find('#'));
-    for (char& c : line)
-      if (c == ',' || c == '\t' || c == '\r') c = ' ';
-    const std::size_t a = line.find_first_not_of(' ');
-    if (a == std::string::npos) continue;
-    const std::size_t b = line.find_first_of(' ', a);
-    const std::size_t c = b == std::string::npos ? std::string::npos : line.find_first_not_of(' ', b);
-    if (c == std::string::npos) return false;
-    const std::size_t d = line.find_first_of(' ', c);
-    return line.substr(c, d == std::string::npos ? std::string::npos : d - c) == "3";
+  for (int c; (c = std::getc(file.get())) != EOF || !line.empty();) {
+    if (c != '\n' && c != EOF) {
+      line += static_cast<char>(c);
+      continue;
+    }
+    if (const std::optional<bool> three = says_three_dimensions(line)) return *three;
+    line.clear();
   }
   return false;
 }

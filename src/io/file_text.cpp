@@ -1,5 +1,7 @@
 #include "io/file_text.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -135,10 +137,17 @@ FileText read_sized(FileHandle f, const std::string& path, std::size_t size, int
 FileText read_file_text(const std::string& path, int threads) {
   if (path == "-") return read_stream(stdin, kStandardInputName);
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a file");
-  FileHandle f = open_or_throw(path);
-  const auto size = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
-  if (ec || size == 0) return read_stream(f.get(), path);  // pipes, devices, files whose size lies
+  FileHandle f(std::fopen(path.c_str(), "rb"));
+  // One fstat of the open file tells a directory, a regular file and its size (asking by name had
+  // taken three stat calls).
+  struct stat st;
+  const bool known = f && fstat(fileno(f.get()), &st) == 0;
+  if ((known && S_ISDIR(st.st_mode)) || (!f && std::filesystem::is_directory(path, ec)))
+    throw InputError(path, 0, "is a directory, not a file");
+  if (!f) f = open_or_throw(path);  // fails again, saying why
+  const std::size_t size = known && S_ISREG(st.st_mode) ? static_cast<std::size_t>(st.st_size) : 0;
+  if (size == 0) return read_stream(f.get(), path);  // pipes, devices, files whose size lies
+  std::setvbuf(f.get(), nullptr, _IONBF, 0);  // read in one piece into the text: no stdio buffer
   // Never mapped: a mapped file that another process shrinks faults (SIGBUS) on the lost pages,
   // where read() reports a short file, which becomes the ordinary truncated-file error.
   return read_sized(std::move(f), path, static_cast<std::size_t>(size), threads);

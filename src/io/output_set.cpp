@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <optional>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <random>
 #include <system_error>
 #include <thread>
@@ -17,6 +19,7 @@
 #include "util/errors.h"
 
 #if __has_include(<sys/file.h>) && __has_include(<unistd.h>)
+#include <dirent.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/file.h>
@@ -68,15 +71,14 @@ std::size_t stem_size(std::size_t final_size, std::size_t suffix_size, std::size
 
 // FINAL.tmp.PID.RANDOM: the process id lets a later run prove a leftover stale (its process is
 // gone); the random part keeps names unique within the process. `rng` belongs to one commit().
-std::string temporary_name(const std::string& final_path, std::mt19937_64& rng) {
+std::string temporary_name(const std::string& final_path, std::size_t longest, std::mt19937_64& rng) {
   static const char kHex[] = "0123456789abcdef";
   std::string suffix = ".tmp." + std::to_string(process_id()) + ".";
   std::uint64_t bits = rng();
   for (int i = 0; i < 12; ++i, bits >>= 4) suffix += kHex[bits & 15];
   const std::string name = file_name_of(final_path);
   const std::string dir_part = final_path.substr(0, final_path.size() - name.size());
-  return dir_part + name.substr(0, stem_size(name.size(), suffix.size(), longest_name(directory_of(final_path)))) +
-         suffix;
+  return dir_part + name.substr(0, stem_size(name.size(), suffix.size(), longest)) + suffix;
 }
 
 // The process id of a temporary of `final_name` (a file name, no directory), or -1 if `name` is
@@ -118,6 +120,7 @@ struct Target {
   std::uint64_t device = 0, inode = 0;
   bool identified = false;
   std::string name;
+  std::size_t longest = 255;  // the directory's longest file name
   std::tuple<bool, std::uint64_t, std::uint64_t, std::string, std::string> key() const {
     return {identified, device, inode, identified ? std::string() : dir, name};
   }
@@ -125,19 +128,32 @@ struct Target {
   bool operator==(const Target& o) const { return key() == o.key(); }
 };
 
-Target target_of(const std::string& path) {
-  Target t;
-  t.dir = directory_of(path);
-  t.name = file_name_of(path);
+// The targets of `paths`, each directory asked once for its identity and longest name, however
+// many outputs it holds.
+std::vector<Target> targets_of(const std::vector<std::string>& paths) {
+  std::vector<Target> targets;
+  for (const std::string& path : paths) {
+    Target t;
+    t.dir = directory_of(path);
+    t.name = file_name_of(path);
+    const auto known = std::find_if(targets.begin(), targets.end(), [&](const Target& o) { return o.dir == t.dir; });
+    if (known != targets.end()) {
+      std::tie(t.identified, t.device, t.inode, t.longest) = std::tuple{known->identified, known->device, known->inode, known->longest};
+      targets.push_back(std::move(t));
+      continue;
+    }
+    t.longest = longest_name(t.dir);
 #ifdef DELTRI_POSIX_OUTPUT
-  struct stat st;
-  if (stat(t.dir.c_str(), &st) == 0) {
-    t.device = static_cast<std::uint64_t>(st.st_dev);
-    t.inode = static_cast<std::uint64_t>(st.st_ino);
-    t.identified = true;
-  }
+    struct stat st;
+    if (stat(t.dir.c_str(), &st) == 0) {
+      t.device = static_cast<std::uint64_t>(st.st_dev);
+      t.inode = static_cast<std::uint64_t>(st.st_ino);
+      t.identified = true;
+    }
 #endif
-  return t;
+    targets.push_back(std::move(t));
+  }
+  return targets;
 }
 
 // FNV-1a of a file name: the same in every build, so that two deltri programs agree on the name
@@ -148,10 +164,19 @@ std::uint64_t name_hash(const std::string& name) {
   return h;
 }
 
-// Exclusive advisory locks (flock), one per final output name: a hidden file
-// DIR/.deltri-lock.<16 hex digits of the name's hash>, short whatever the output's name. Locking
-// names rather than directories is what lets runs writing other names into the same directory go
-// on without waiting, while two runs writing one name still rename in turn. The lock file exists
+// The part of an output's file name its lock stands for: the name without its last extension
+// ("box.1" for box.1.node, box.1.ele and box.1.poly). Two runs writing one file share its stem, so
+// they still rename in turn; a run's usual outputs share one stem, so it takes one lock, not one
+// per file (each lock file is a create and an unlink in the directory).
+std::string lock_stem(const std::string& name) {
+  const std::size_t dot = name.rfind('.');
+  return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
+}
+
+// Exclusive advisory locks (flock), one per stem of the final output names (lock_stem): a hidden
+// file DIR/.deltri-lock.<16 hex digits of the stem's hash>, short whatever the output's name.
+// Locking stems rather than directories is what lets runs writing other names into the same
+// directory go on without waiting, while two runs writing one name still rename in turn. The lock file exists
 // only while it is held: its holder removes it before letting go, and a run that was waiting for
 // it then finds the path gone or pointing to a newer file, and locks again. Locks are taken in
 // sorted order of (directory device and inode, hash), so two runs cannot deadlock, and each lock
@@ -162,11 +187,11 @@ class NameLocks {
   explicit NameLocks(const std::vector<Target>& targets) {
 #ifdef DELTRI_POSIX_OUTPUT
     // Sorted by the lock file's own identity (directory, hash), not by name: two names sharing a
-    // lock file (a hash collision, or one name twice) then share one place in the order too.
+    // lock file (one stem, a hash collision, or one name twice) then share one place in the order too.
     using Key = std::tuple<bool, std::uint64_t, std::uint64_t, std::string, std::uint64_t>;
     std::vector<std::pair<Key, std::string>> locks;
     for (const Target& t : targets) {
-      const std::uint64_t hash = name_hash(t.name);
+      const std::uint64_t hash = name_hash(lock_stem(t.name));
       char hex[17];
       std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
       locks.emplace_back(Key{t.identified, t.device, t.inode, t.identified ? std::string() : t.dir, hash},
@@ -222,16 +247,22 @@ class NameLocks {
   bool waited_ = false;
 };
 
-// An identity of what is at `path` now (inode, size and time), to see whether another process
-// replaced it; empty when nothing is there.
+// An identity of what is at `path` now (inode, size and time; of a symbolic link itself, which is
+// what a rename replaces), to see whether another process replaced it; empty when nothing is
+// there. Throws OutputError when it is something a rename could not replace (a directory, say).
 std::string file_identity(const std::string& path) {
 #ifdef DELTRI_POSIX_OUTPUT
   struct stat st;
-  if (stat(path.c_str(), &st) != 0) return {};
+  if (lstat(path.c_str(), &st) != 0) return {};
+  if (!S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode)) fail(path, "cannot be replaced: it exists and is not a regular file");
   return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" + std::to_string(st.st_size) + ":" +
          std::to_string(st.st_mtim.tv_sec) + "." + std::to_string(st.st_mtim.tv_nsec);
 #else
-  (void)path;
+  std::error_code ec;
+  const auto status = std::filesystem::symlink_status(path, ec);
+  if (!ec && status.type() != std::filesystem::file_type::not_found && status.type() != std::filesystem::file_type::regular &&
+      status.type() != std::filesystem::file_type::symlink)
+    fail(path, "cannot be replaced: it exists and is not a regular file");
   return {};
 #endif
 }
@@ -242,8 +273,11 @@ class FileSink final : public ByteSink {
   FileSink(const std::string& temp_path, const std::string& final_path, RangePool* pool)
       : final_path_(final_path), pool_(pool) {
     errno = 0;
-    file_ = std::fopen(temp_path.c_str(), "wb");
+    file_ = std::fopen(temp_path.c_str(), "wbx");  // the name is new: never another run's file
     if (!file_) fail(final_path_, "cannot be created: " + errno_text(errno));
+    // A buffer of our own: stdio then neither asks the file system for its block size nor writes
+    // a small output in several pieces.
+    std::setvbuf(file_, buffer_.get(), _IOFBF, kBuffer);
   }
   ~FileSink() override {
     if (file_) std::fclose(file_);
@@ -267,8 +301,10 @@ class FileSink final : public ByteSink {
   }
 
  private:
+  static constexpr std::size_t kBuffer = 65536;
   std::string final_path_;
   RangePool* pool_;
+  std::unique_ptr<char[]> buffer_ = std::make_unique_for_overwrite<char[]>(kBuffer);
   std::FILE* file_ = nullptr;
 };
 
@@ -347,71 +383,85 @@ void OutputSet::write_temporary(File& f, const std::string& temp_path, RangePool
   sink.close();
 }
 
-// Throws OutputError when `path` exists but is not a regular file (a directory, say), which a
-// rename could not replace.
-void check_replaceable(const std::string& path) {
+namespace {
+
+// Calls visit(file name) for each entry of `dir` (none if it cannot be read). With POSIX, opendir
+// and readdir: std::filesystem's iterator added an fstat and two fcntl calls to each small run.
+template <class Visit>
+void for_each_name_in(const std::string& dir, Visit&& visit) {
+#ifdef DELTRI_POSIX_OUTPUT
+  DIR* d = opendir(dir.c_str());
+  if (!d) return;
+  while (const dirent* e = readdir(d)) visit(std::string(e->d_name));
+  closedir(d);
+#else
   std::error_code ec;
-  const auto status = std::filesystem::symlink_status(path, ec);
-  if (ec || status.type() == std::filesystem::file_type::not_found) return;
-  if (status.type() != std::filesystem::file_type::regular && status.type() != std::filesystem::file_type::symlink)
-    fail(path, "cannot be replaced: it exists and is not a regular file");
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    visit(it->path().filename().string());
+#endif
 }
 
 // One pass over each output directory, however many outputs it holds: in a batch folder of
 // thousands of files a pass per output name was most of a small run's time in the file system.
-std::size_t OutputSet::remove_stale_temporaries() const {
-  std::vector<std::pair<std::string, std::vector<std::string>>> names_by_dir;  // directory, file names
-  for (const File& f : files_) {
-    if (f.final_path == kStandardOutput) continue;
-    const std::string dir = directory_of(f.final_path);
-    auto it = std::find_if(names_by_dir.begin(), names_by_dir.end(), [&](const auto& d) { return d.first == dir; });
-    if (it == names_by_dir.end()) it = names_by_dir.insert(names_by_dir.end(), {dir, {}});
-    it->second.push_back(file_name_of(f.final_path));
+std::size_t remove_stale_temporaries(const std::vector<Target>& targets) {
+  std::vector<std::pair<const Target*, std::vector<std::string>>> names_by_dir;  // directory, file names
+  for (const Target& t : targets) {
+    auto it = std::find_if(names_by_dir.begin(), names_by_dir.end(), [&](const auto& d) { return d.first->dir == t.dir; });
+    if (it == names_by_dir.end()) it = names_by_dir.insert(names_by_dir.end(), {&t, {}});
+    it->second.push_back(t.name);
   }
   std::size_t removed = 0;
   for (const auto& [dir, names] : names_by_dir) {
-    const std::size_t longest = longest_name(dir);
-    std::error_code ec;
-    for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-      const std::string entry = it->path().filename().string();
+    for_each_name_in(dir->dir, [&](const std::string& entry) {
       for (const std::string& name : names) {
-        const long owner = temporary_owner(entry, name, longest);
+        const long owner = temporary_owner(entry, name, dir->longest);
         if (owner < 0 || !process_gone(owner)) continue;
         std::error_code ignored;
-        removed += std::filesystem::remove(it->path(), ignored);
+        removed += std::filesystem::remove(std::filesystem::path(dir->dir) / entry, ignored);
         break;
       }
-    }
+    });
   }
   return removed;
 }
 
 // Two outputs of one run naming the same file would leave only one of them, and which one would
-// depend on the order of the renames: refused, as an output naming an input is.
-void OutputSet::refuse_duplicate_names() const {
-  std::vector<std::pair<Target, std::size_t>> targets;
-  for (std::size_t k = 0; k < files_.size(); ++k)
-    if (files_[k].final_path != kStandardOutput) targets.emplace_back(target_of(files_[k].final_path), k);
-  std::stable_sort(targets.begin(), targets.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (std::size_t i = 1; i < targets.size(); ++i)
-    if (targets[i].first == targets[i - 1].first) {
-      const std::string& first = files_[std::min(targets[i].second, targets[i - 1].second)].final_path;
-      const std::string& second = files_[std::max(targets[i].second, targets[i - 1].second)].final_path;
+// depend on the order of the renames: refused, as an output naming an input is. `paths[k]` is
+// where `targets[k]` was spelt.
+void refuse_duplicate_names(const std::vector<std::string>& paths, const std::vector<Target>& targets) {
+  std::vector<std::size_t> order(targets.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return targets[a] < targets[b]; });
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (targets[order[i]] == targets[order[i - 1]]) {
+      const std::string& first = paths[std::min(order[i], order[i - 1])];
+      const std::string& second = paths[std::max(order[i], order[i - 1])];
       fail(second, first == second ? "named by two outputs of this run (no files written)"
                                    : "the same file as " + first + ", another output of this run (no files written)");
     }
 }
 
+}  // namespace
+
 CommitNotes OutputSet::commit(const CommitListener& listener) {
-  refuse_duplicate_names();
+  std::vector<std::string> paths;  // of the files, standard output left out
+  for (const File& f : files_)
+    if (f.final_path != kStandardOutput) paths.push_back(f.final_path);
+  const std::vector<Target> targets = targets_of(paths);
+  refuse_duplicate_names(paths, targets);
   CommitNotes notes;
-  notes.stale_temporaries_removed = remove_stale_temporaries();
-  std::mt19937_64 rng{std::random_device{}()};
+  notes.stale_temporaries_removed = remove_stale_temporaries(targets);
+  // The random part only keeps this process's names apart (the process id keeps processes apart,
+  // and O_EXCL refuses a name that exists), so the clock is seed enough; std::random_device's
+  // set-up had been a measurable part of a small run.
+  std::mt19937_64 rng{static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count())};
   std::vector<std::string> temps, before, finals;
-  for (const File& f : files_) {
-    temps.push_back(f.final_path == kStandardOutput ? std::string() : temporary_name(f.final_path, rng));
-    before.push_back(f.final_path == kStandardOutput ? std::string() : file_identity(f.final_path));
-    finals.push_back(f.final_path);
+  for (std::size_t k = 0, t = 0; k < files_.size(); ++k) {
+    const bool real = files_[k].final_path != kStandardOutput;
+    temps.push_back(real ? temporary_name(files_[k].final_path, targets[t].longest, rng) : std::string());
+    before.push_back(real ? file_identity(files_[k].final_path) : std::string());
+    finals.push_back(files_[k].final_path);
+    t += real;
   }
   if (listener.pending) listener.pending(temps, finals);
   struct Unlisten {
@@ -426,29 +476,27 @@ CommitNotes OutputSet::commit(const CommitListener& listener) {
   std::exception_ptr error =
       run_in_order(files_.size(), writers, [&](std::size_t k) { write_temporary(files_[k], temps[k], &pool); }, &pool);
   const std::size_t workers = std::max<std::size_t>(1, std::min(workers_, files_.size()));
-  // A rename can still fail when something that is not a file stands in the way; find that before
-  // the first rename, so that a failed run leaves every old output as it was.
-  if (!error)
-    error = run_in_order(files_.size(), workers, [&](std::size_t k) {
-      if (!temps[k].empty()) check_replaceable(files_[k].final_path);
-    });
-  // Renaming over an existing file frees the old one's blocks and cached pages, which for a large
-  // .ele takes tens of milliseconds: worth sharing between threads too.
-  std::vector<Target> targets;
-  for (const File& f : files_)
-    if (f.final_path != kStandardOutput) targets.push_back(target_of(f.final_path));
   std::optional<NameLocks> locks;
   if (!error) {
     locks.emplace(targets);
     notes.waited_for_other_run = locks->waited();
-    for (std::size_t k = 0; k < files_.size(); ++k)
-      if (!temps[k].empty() && file_identity(files_[k].final_path) != before[k]) ++notes.replaced_meanwhile;
+    // Under the locks and before the first rename, one look at each final name: whether another
+    // process replaced it meanwhile, and whether something that is not a file stands in the way of
+    // the rename (then the run fails leaving every old output as it was).
+    try {
+      for (std::size_t k = 0; k < files_.size(); ++k)
+        if (!temps[k].empty() && file_identity(files_[k].final_path) != before[k]) ++notes.replaced_meanwhile;
+    } catch (...) {
+      error = std::current_exception();
+    }
   }
   // Past this point a signal finishes the renames instead of removing the temporaries left (see
   // cli/interrupt_cleanup.h); if one is already being handled, nothing is renamed.
   bool renaming = false;
   if (!error && listener.begin_renames && !(renaming = listener.begin_renames(locks->paths())))
     error = std::make_exception_ptr(OutputError("interrupted before the outputs were put in place"));
+  // Renaming over an existing file frees the old one's blocks and cached pages, which for a large
+  // .ele takes tens of milliseconds: worth sharing between threads too.
   if (!error) {
     error = run_in_order(files_.size(), workers, [&](std::size_t k) {
       if (temps[k].empty()) return;

@@ -13,8 +13,8 @@ namespace deltri {
 
 // What commit() met besides its own files, for the caller to report.
 struct CommitNotes {
-  // Another run held the lock of one of this run's output names, so this one waited for it (the
-  // other run's set is now wholly replaced by this one's). Runs writing other names never wait.
+  // Another run held the lock of one of this run's output stems, so this one waited for it (the
+  // other run's set is now wholly replaced by this one's). Runs writing other stems never wait.
   bool waited_for_other_run = false;
   // Output files that changed on disk (another process replaced them) while this run was writing.
   std::size_t replaced_meanwhile = 0;
@@ -84,9 +84,10 @@ class OutputSet {
   // directory's longest file name (so any output name the file system takes can be written).
   // Before writing, temporaries of this kind for the same final names whose process is gone are
   // removed (an interrupted or killed run's). The renames happen under an exclusive advisory lock
-  // (flock) of each final name (a short hidden lock file beside it, removed afterwards), so that two
-  // deltri runs writing the same names leave one run's complete set, never a mix, while runs writing
-  // other names in the same directory never wait for each other.
+  // (flock) of each stem of the final names (the name without its last extension: one lock for
+  // box.1.node, box.1.ele and box.1.poly; a short hidden lock file in the directory, removed
+  // afterwards), so that two deltri runs writing the same names leave one run's complete set, never
+  // a mix, while runs writing other stems in the same directory never wait for each other.
   CommitNotes commit(const CommitListener& listener = {});
 
   std::size_t size() const { return files_.size(); }
@@ -98,8 +99,6 @@ class OutputSet {
     std::function<void(ByteSink&)> produce;  // empty: use contents
   };
   static void write_temporary(File& f, const std::string& temp_path, RangePool* pool);
-  std::size_t remove_stale_temporaries() const;
-  void refuse_duplicate_names() const;
   static void write_standard_output(File& f);
   std::size_t workers_;
   std::vector<File> files_;

@@ -143,7 +143,7 @@ std::uint32_t QualityQueue::take_block() {
     blocks_[block]->next = kNoBlock;
     return block;
   }
-  blocks_.push_back(std::make_unique<Block>());
+  blocks_.push_back(std::make_unique_for_overwrite<Block>());  // entries written before read: no 16 KiB clear
   levels_.emplace_back();
   return static_cast<std::uint32_t>(blocks_.size() - 1);
 }
@@ -166,7 +166,7 @@ void QualityQueue::append_leveled(const QueuedTriangle& entry, unsigned level, u
   if (bucket != 1) return;  // buckets 2..63 imply the level
   const Fifo& fifo = buckets_[1];
   std::unique_ptr<Levels>& levels = levels_[fifo.last];
-  if (!levels) levels = std::make_unique<Levels>();
+  if (!levels) levels = std::make_unique_for_overwrite<Levels>();
   (*levels)[fifo.tail - 1] = static_cast<std::uint16_t>(level);
 }
 

@@ -5,7 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace deltri {
@@ -17,15 +18,28 @@ double limit_of(int resource) {
   return static_cast<double>(limit.rlim_cur);
 }
 
+// The first line of a file, without its newline ("" if it cannot be read). C stdio rather than a
+// stream: a small run then never starts iostreams and their locale.
+std::string first_line(const std::string& path) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) return {};
+  char buffer[4096];
+  const bool read = std::fgets(buffer, sizeof buffer, file) != nullptr;
+  std::fclose(file);
+  if (!read) return {};
+  std::string line(buffer);
+  if (!line.empty() && line.back() == '\n') line.pop_back();
+  return line;
+}
+
 // cgroup v2's memory.max of this process's group ("max" or absent: no limit).
 double cgroup_limit() {
-  std::ifstream group("/proc/self/cgroup");
-  std::string line;
-  if (!std::getline(group, line) || line.rfind("0::", 0) != 0) return HUGE_VAL;
-  std::ifstream max("/sys/fs/cgroup" + line.substr(3) + "/memory.max");
-  double bytes = HUGE_VAL;
-  if (max >> bytes) return bytes;
-  return HUGE_VAL;
+  const std::string line = first_line("/proc/self/cgroup");
+  if (line.rfind("0::", 0) != 0) return HUGE_VAL;
+  const std::string max = first_line("/sys/fs/cgroup" + line.substr(3) + "/memory.max");
+  char* end = nullptr;
+  const double bytes = std::strtod(max.c_str(), &end);
+  return end != max.c_str() ? bytes : HUGE_VAL;
 }
 
 }  // namespace

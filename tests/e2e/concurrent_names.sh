@@ -81,6 +81,44 @@ for round in 1 2; do
   grep -q "warning: \(waited for another deltri run writing the same output files\|.*changed on disk\)" err.b ||
     fail "same names: run B did not say it met another run"
 done
+# 3. Started together with no hook, as a batch starts them (issue 45), PAIRS times each (20): two
+# runs on different files of the folder both exit 0, say nothing and write what a run alone writes;
+# two runs on the same names (-pQ against -pq30Q of one input, so that every file differs between
+# the two) both exit 0 and leave one run's complete set, byte for byte.
+"$deltri" -pQ a.poly && for ext in node ele poly; do mv a.1.$ext coarse.$ext; done
+cp a.poly same.poly
+pairs=${PAIRS:-20} i=0 met=0
+while [ $i -lt "$pairs" ]; do
+  rm -f a.1.* b.1.* same.1.*
+  "$deltri" -pq30Q a.poly 2>err.a &
+  pa=$!
+  "$deltri" -pq30Q b.poly 2>err.b &
+  pb=$!
+  wait $pa; sa=$?
+  wait $pb; sb=$?
+  [ $sa = 0 ] && [ $sb = 0 ] || fail "together, other names, pair $i: exit $sa and $sb"
+  if [ -s err.a ] || [ -s err.b ]; then fail "together, other names, pair $i: warned: $(cat err.a err.b)"; fi
+  for ext in node ele poly; do
+    cmp -s a.1.$ext big.$ext && cmp -s b.1.$ext big.$ext || fail "together, other names, pair $i: a.1.$ext or b.1.$ext not as alone"
+  done
+  "$deltri" -pQ same.poly 2>err.a &
+  pa=$!
+  "$deltri" -pq30Q same.poly 2>err.b &
+  pb=$!
+  wait $pa; sa=$?
+  wait $pb; sb=$?
+  [ $sa = 0 ] && [ $sb = 0 ] || fail "together, same names, pair $i: exit $sa and $sb"
+  [ -s err.a ] || [ -s err.b ] && met=$((met + 1))
+  set_is=mixed
+  for name in coarse big; do
+    same=1
+    for ext in node ele poly; do cmp -s same.1.$ext $name.$ext || same=0; done
+    [ $same = 1 ] && set_is=$name
+  done
+  [ $set_is != mixed ] || fail "together, same names, pair $i: a mixed set"
+  i=$((i + 1))
+done
+echo "started together: $pairs pairs on other names, $pairs on the same names ($met of them met each other)"
 [ -z "$(ls -a | grep -e '\.tmp\.' -e '^\.deltri-lock')" ] || fail "left behind: $(ls -a | grep -e '\.tmp\.' -e '^\.deltri-lock')"
 [ $failed = 0 ] && echo ok
 exit $failed

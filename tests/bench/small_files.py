@@ -1,0 +1,166 @@
+#!/usr/bin/env python3
+"""Issue 45's "must show" figures: deltri against Triangle 1.6 where the work is small.
+
+A measurement, not a test: nothing is asserted; the figures are printed as Markdown tables for
+docs/benchmarks.md ("Small files"). Every comparison interleaves the two programs run by run, so
+that both meet the same host.
+
+    small_files.py DELTRI TRIANGLE [--corpus DIR] [--rounds N] [--batch N] [--only PARTS]
+
+PARTS (comma-separated, default all): cpu, batch, corpus, thin.
+  cpu     guitar.poly -pq30Q, 20 runs of each program per round, alternating; CPU time (user +
+          system) of each run from wait4(), deltri with --threads=1. The mean per round.
+  batch   N copies (default 200) of guitar.poly in one fresh folder, meshed with
+          `xargs -P 2 -n 1 PROGRAM -pq30Q` (the names listed, not globbed); wall seconds per round,
+          and whatever the runs wrote on standard error. The load average is printed first.
+  corpus  every .poly under DIR at -pQ and -pq30Q (--switches), each program three times (alternating), the
+          median wall time; the deltri/Triangle ratio over the files Triangle needs 20 ms or more
+          for: median, worst, and the five worst files; a file where a run fails (Triangle 1.6 crashes on
+          some) or passes --timeout (60 s) is left out and named.
+  thin    the rectangle 1 x 1e-6 at -pq30Q: wall seconds and peak resident memory, once per round.
+guitar.poly is read from the repository's data/ folder.
+"""
+import argparse
+import os
+import shutil
+import statistics
+import subprocess
+import tempfile
+import threading
+import time
+
+here = os.path.dirname(os.path.abspath(__file__))
+guitar = os.path.join(here, "..", "..", "data", "guitar.poly")
+ap = argparse.ArgumentParser()
+ap.add_argument("deltri")
+ap.add_argument("triangle")
+ap.add_argument("--corpus", default=os.path.join(here, "..", "..", "data"))
+ap.add_argument("--rounds", type=int, default=3)
+ap.add_argument("--batch", type=int, default=200)
+ap.add_argument("--only", default="cpu,batch,corpus,thin")
+ap.add_argument("--switches", default="-pQ,-pq30Q", help="the corpus part's switch sets")
+ap.add_argument("--timeout", type=float, default=60, help="a corpus run's limit; a file past it is left out")
+args = ap.parse_args()
+parts = set(args.only.split(","))
+deltri, triangle = os.path.abspath(args.deltri), os.path.abspath(args.triangle)
+programs = [("Triangle 1.6", [triangle]), ("deltri", [deltri, "--threads=1"])]
+
+
+def run(argv, cwd, timeout=600):
+    """Runs argv in cwd; returns (wall seconds, CPU seconds, peak KiB, stderr bytes, exit status)."""
+    with tempfile.TemporaryFile() as err:
+        start = time.perf_counter()
+        proc = subprocess.Popen(argv, cwd=cwd, stdout=subprocess.DEVNULL, stderr=err)
+        guard = threading.Timer(timeout, proc.kill)  # a guard against a hang, not a measure
+        guard.start()
+        _, status, usage = os.wait4(proc.pid, 0)
+        wall = time.perf_counter() - start
+        guard.cancel()
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        err.seek(0)
+        return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss, len(err.read()), proc.returncode
+
+
+def part_cpu():
+    print("### guitar.poly -pq30Q: CPU ms per run (mean of 20 runs per round, interleaved)\n")
+    work = tempfile.mkdtemp()
+    shutil.copy(guitar, os.path.join(work, "guitar.poly"))
+    print("| round | " + " | ".join(name for name, _ in programs) + " | ratio |")
+    print("|---|" + "---|" * (len(programs) + 1))
+    for r in range(args.rounds):
+        cpu = {name: [] for name, _ in programs}
+        for _ in range(20):
+            for name, argv in programs:
+                cpu[name].append(run(argv + ["-pq30Q", "guitar.poly"], work)[1] * 1000)
+        means = [statistics.mean(cpu[name]) for name, _ in programs]
+        print(f"| {r + 1} | " + " | ".join(f"{m:.2f}" for m in means) + f" | {means[1] / means[0]:.2f} |")
+    shutil.rmtree(work)
+    print()
+
+
+def part_batch():
+    load = os.getloadavg()
+    print(f"### {args.batch} copies of guitar.poly, `xargs -P 2 -n 1 PROGRAM -pq30Q` in one folder: wall s "
+          f"(load average at the start {load[0]:.2f} {load[1]:.2f} {load[2]:.2f})\n")
+    print("| round | " + " | ".join(name for name, _ in programs) + " | ratio | stderr bytes |")
+    print("|---|" + "---|" * (len(programs) + 2))
+    for r in range(args.rounds):
+        walls, errs = [], []
+        for name, argv in programs:
+            work = tempfile.mkdtemp()
+            names = [f"f{i}.poly" for i in range(args.batch)]
+            for n in names:
+                shutil.copy(guitar, os.path.join(work, n))
+            prog = argv[0]  # default threads, as a user's batch runs it
+            start = time.perf_counter()
+            p = subprocess.run(["xargs", "-P", "2", "-n", "1", prog, "-pq30Q"], input="\n".join(names).encode(),
+                               cwd=work, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+            walls.append(time.perf_counter() - start)
+            errs.append(len(p.stderr) + (0 if p.returncode == 0 else 1))
+            shutil.rmtree(work)
+        print(f"| {r + 1} | " + " | ".join(f"{w:.2f}" for w in walls) + f" | {walls[1] / walls[0]:.2f} | " +
+              ", ".join(map(str, errs)) + " |")
+    print()
+
+
+def part_corpus():
+    files = sorted(os.path.join(d, f) for d, _, fs in os.walk(args.corpus) for f in fs if f.endswith(".poly"))
+    print(f"### Corpus ({len(files)} .poly files under {os.path.basename(os.path.abspath(args.corpus))}): "
+          "deltri/Triangle wall ratio, median of 3 interleaved runs, files Triangle needs >= 20 ms for\n")
+    print("| switches | files | median ratio | worst ratio | worst five | left out (a run failed or passed the time limit) |")
+    print("|---|---|---|---|---|---|")
+    for switch in args.switches.split(","):
+        ratios, left_out = [], []
+        for path in files:
+            work = tempfile.mkdtemp()
+            local = os.path.join(work, os.path.basename(path))
+            shutil.copy(path, local)
+            base = path[:-len(".poly")]
+            if os.path.exists(base + ".node"):
+                shutil.copy(base + ".node", local[:-len(".poly")] + ".node")
+            walls = {name: [] for name, _ in programs}
+            failed = []
+            for _ in range(3):
+                for name, argv in programs:
+                    wall, _, _, _, status = run([argv[0], switch, os.path.basename(local)], work, timeout=args.timeout)
+                    walls[name].append(wall)
+                    if status != 0 or wall >= args.timeout:
+                        failed.append(f"{name} {'timed out' if wall >= args.timeout else f'exit {status}'}")
+                if failed:
+                    break
+            shutil.rmtree(work)
+            if failed:  # no ratio against a run that crashed or was cut short
+                left_out.append(f"{os.path.basename(path)} ({', '.join(failed)})")
+                continue
+            t, d = (statistics.median(walls[name]) for name, _ in programs)
+            if t >= 0.020:
+                ratios.append((d / t, os.path.basename(path), t))
+        ratios.sort()
+        worst = ", ".join(f"{n} {r:.2f} ({t * 1000:.0f} ms)" for r, n, t in reversed(ratios[-5:]))
+        med = statistics.median(r for r, _, _ in ratios) if ratios else float("nan")
+        print(f"| `{switch}` | {len(ratios)} | {med:.2f} | {ratios[-1][0] if ratios else float('nan'):.2f} | {worst} | "
+              f"{', '.join(left_out) or 'none'} |")
+    print()
+
+
+def part_thin():
+    print("### The rectangle 1 x 1e-6 at -pq30Q (wall s, peak MiB)\n")
+    work = tempfile.mkdtemp()
+    with open(os.path.join(work, "thin.poly"), "w") as f:
+        f.write("4 2 0 0\n1 0 0\n2 1 0\n3 1 0.000001\n4 0 0.000001\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n")
+    print("| round | " + " | ".join(f"{name} s | {name} MiB" for name, _ in programs) + " | time ratio | peak ratio |")
+    print("|---|" + "---|" * (2 * len(programs) + 2))
+    for r in range(args.rounds):
+        got = []
+        for name, argv in programs:
+            wall, _, peak, _, _ = run([argv[0], "-pq30Q", "thin.poly"], work, timeout=1200)
+            got.append((wall, peak / 1024))
+        print(f"| {r + 1} | " + " | ".join(f"{w:.2f} | {m:.0f}" for w, m in got) +
+              f" | {got[1][0] / got[0][0]:.2f} | {got[1][1] / got[0][1]:.2f} |")
+    shutil.rmtree(work)
+    print()
+
+
+for part, fn in [("cpu", part_cpu), ("batch", part_batch), ("corpus", part_corpus), ("thin", part_thin)]:
+    if part in parts:
+        fn()
