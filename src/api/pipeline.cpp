@@ -166,7 +166,7 @@ void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Swi
                                     threads_to_use(sw));
   if (sw.convex_hull) enclose_convex_hull(mesh);
   const std::vector<Point> no_holes;
-  report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull);
+  report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull, pslg.segments);
   const bool region_areas = sw.variable_area && !pslg.regions.empty();
   if (sw.regional_attributes || region_areas)
     report.regions = spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "geometry/predicates.h"
@@ -25,8 +26,11 @@ struct HoleReport {
 // edges without subsegments and deleted. Subsegments with no triangle left on either side are
 // deleted from mesh.subsegments (the survivors keep their order and are renumbered). Finally the
 // triangles are compacted, so triangle ids change.
-HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& holes,
-                       bool keep_convex_hull);
+// A hole point on a subsegment whose input segment (input_segments, indexed as the subsegments'
+// `segment`) does not pass through it lies there only because snapping bent the segment's chain
+// through a vertex an ulp or so off it: the point takes the side the input segment puts it on.
+HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& holes, bool keep_convex_hull,
+                       std::span<const Pslg::Segment> input_segments = {});
 
 struct RegionReport {
   std::vector<std::size_t> outside;     // indices of region points outside the mesh (ignored)
