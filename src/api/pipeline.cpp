@@ -187,7 +187,7 @@ void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Swi
   report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull, pslg.segments);
   const bool region_areas = sw.variable_area && !pslg.regions.empty();
   if (sw.regional_attributes || region_areas)
-    report.regions = spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas);
+    report.regions = spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas, pslg.segments);
   report.counters.add(pred.counters);
 }
 

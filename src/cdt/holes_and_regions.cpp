@@ -115,16 +115,16 @@ void add_region_attribute(Mesh& mesh) {
 
 // The triangle a region point seeds, or kNone; `where` says why not.
 TriangleId region_triangle(const Mesh& mesh, Predicates& pred, const Point& at, EdgeRef hint,
-                           LocateStatus& where) {
+                           std::span<const Pslg::Segment> input, LocateStatus& where) {
   const Location location = locate(mesh, pred, at, hint);
   where = location.status;
-  return hole_triangle(mesh, pred, location, at, {});  // the same rule as for hole points
+  return hole_triangle(mesh, pred, location, at, input);  // the same rule as for hole points
 }
 
 }  // namespace
 
 RegionReport spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Region>& regions,
-                            bool attributes, bool area_bounds) {
+                            bool attributes, bool area_bounds, std::span<const Pslg::Segment> input_segments) {
   RegionReport report;
   if (attributes) add_region_attribute(mesh);
   if (area_bounds && mesh.area_bound.size() != mesh.triangle_slots())
@@ -135,7 +135,7 @@ RegionReport spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg
   EdgeRef hint = kNone;
   for (std::size_t i = 0; i < regions.size(); ++i) {
     LocateStatus where = LocateStatus::Outside;
-    starts.push_back(region_triangle(mesh, pred, regions[i].at, hint, where));
+    starts.push_back(region_triangle(mesh, pred, regions[i].at, hint, input_segments, where));
     if (starts.back() != kNone) hint = edge_of(starts.back(), 0);
     else if (where == LocateStatus::Outside) report.outside.push_back(i);
     else report.on_segment.push_back(i);

@@ -46,7 +46,9 @@ struct RegionReport {
 // ignored, and so is one exactly on a segment or on a vertex a segment ends at, where the side is
 // ambiguous: the same rule as for hole points, for the CLI and any other caller of this function.
 // A point on an edge or vertex without a segment is fine: every triangle there is in one region.
+// A point on a subsegment that snapping bent through it takes its input segment's side, as a hole
+// point does (carve_holes).
 RegionReport spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Region>& regions,
-                    bool attributes, bool area_bounds);
+                    bool attributes, bool area_bounds, std::span<const Pslg::Segment> input_segments = {});
 
 }  // namespace deltri

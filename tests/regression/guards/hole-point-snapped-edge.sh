@@ -5,6 +5,8 @@
 # The point is tested against the input segment (strictly inside the hole), so the hole is carved.
 # Independent facts: every vertex lies on the outer square or the hole's boundary, so a mesh of
 # the square minus one hole has V + 2h - 2 = 9 triangles; no triangle's centroid lies in the hole.
+# The same point as a region point (-A): the pentagon the rectangle became (its 5 vertices) is
+# V - 2 = 3 triangles, and exactly the triangles inside the rectangle take the region's attribute.
 #   hole-point-snapped-edge.sh DELTRI VERIFY
 . "$(dirname "$0")/lib.sh"
 cat >hole.poly <<'POLY'
@@ -46,4 +48,14 @@ verified hole.poly hole.1
 ends_verified hole.poly hole.1 -pq30 hole.poly
 grep -q "ignored" stderr.last && fail "the hole point was ignored at -pq30"
 none_in_hole hole.1
+sed -e 's/^1$/0\n1/' -e 's/^1 0.5000002384185791 0.5000000000000001$/1 0.5000002384185791 0.5000000000000001 7 0/' hole.poly >region.poly
+run 0 -pA region.poly
+grep -q "ignored" stderr.last && fail "the region point was ignored"
+awk 'FNR == 1 { f++ } f == 1 && FNR > 1 && !/^#/ && NF >= 3 { x[$1] = $2; y[$1] = $3 }
+     f == 2 && FNR > 1 && !/^#/ && NF >= 5 {
+       cx = (x[$2] + x[$3] + x[$4]) / 3; cy = (y[$2] + y[$3] + y[$4]) / 3
+       inside = cx > 0.5 && cx < 0.5000009536743164 && cy > 0.5 && cy < 0.5000000953674316
+       if (inside != ($5 == 7)) bad++; n7 += ($5 == 7) }
+     END { exit !(bad == 0 && n7 == 3) }' region.1.node region.1.ele ||
+  fail "the region's attribute is not on exactly the 3 triangles inside the rectangle"
 echo "ok"
