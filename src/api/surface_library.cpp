@@ -96,8 +96,10 @@ api::Surface run(const api::Facets& facets, const std::string& switches) {
   const int first_index = sw.zero_based ? 0 : 1;
   const FacetInput input = facet_input_of(facets, first_index);
   const SurfaceResult result = run_surface_pipeline(input, sw);
-  if (result.check_failed())
+  if (result.check_failed() && sw.check)
     throw api::Error(DELTRI_CHECK_FAILED, "C: the surface mesh is not consistent: " + result.check->summary());
+  if (result.check_failed())
+    throw api::Error(DELTRI_CHECK_FAILED, "the surface mesh is not consistent (" + result.check->one_line() + ")");
   api::Surface s = surface_arrays(result.mesh, sw, first_index);
   for (const auto& [point, earlier] : result.merged)
     s.merged_points.insert(s.merged_points.end(), {static_cast<int>(point) + first_index, static_cast<int>(earlier) + first_index});

@@ -26,15 +26,35 @@ bool touches_subsegment(const Mesh& mesh, EdgeRef from) {
   return false;
 }
 
+// A hole point on subsegment e whose input segment does not pass through it: snapping (a vertex a
+// few ulps off the segment placed on it) bent the chain onto the point, and the point's side is
+// the one the input segment puts it on. The triangle on that side, or kNone if the point lies on
+// the input segment itself (ambiguous) or nothing is there.
+TriangleId side_of_input_segment(const Mesh& mesh, Predicates& pred, EdgeRef e, const Point& h,
+                                 std::span<const Pslg::Segment> input) {
+  const std::uint32_t seg = mesh.subsegments[mesh.subseg[e]].segment;
+  if (seg >= input.size()) return kNone;
+  const Point& a = mesh.point(VertexId{input[seg].a});
+  const Point& b = mesh.point(VertexId{input[seg].b});
+  const double side = pred.orient2d(a, b, h);
+  if (side == 0) return kNone;
+  const Point& p = mesh.point(mesh.org(e));
+  const Point& q = mesh.point(mesh.dest(e));
+  const bool along = (q.x - p.x) * (b.x - a.x) + (q.y - p.y) * (b.y - a.y) > 0;
+  if ((side > 0) == along) return triangle_of(e);  // e's triangle lies to its left
+  return mesh.link[e] == kNone ? kNone : triangle_of(mesh.link[e]);
+}
+
 // The triangle a hole point infects, or kNone (the point is then reported).
 // Which of the triangles at an edge or vertex does not matter: without a subsegment there, the
 // flood reaches all of them.
-TriangleId hole_triangle(const Mesh& mesh, const Location& at) {
+TriangleId hole_triangle(const Mesh& mesh, Predicates& pred, const Location& at, const Point& h,
+                         std::span<const Pslg::Segment> input) {
   switch (at.status) {
     case LocateStatus::InTriangle:
       return triangle_of(at.edge);
     case LocateStatus::OnEdge:
-      return constrained(mesh, at.edge) ? kNone : triangle_of(at.edge);
+      return constrained(mesh, at.edge) ? side_of_input_segment(mesh, pred, at.edge, h, input) : triangle_of(at.edge);
     case LocateStatus::OnVertex:
       return touches_subsegment(mesh, at.edge) ? kNone : triangle_of(at.edge);
     case LocateStatus::Outside:
@@ -53,8 +73,8 @@ std::vector<TriangleId> hull_seeds(const Mesh& mesh) {
 
 }  // namespace
 
-HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& holes,
-                       bool keep_convex_hull) {
+HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& holes, bool keep_convex_hull,
+                       std::span<const Pslg::Segment> input_segments) {
   HoleReport report;
   std::vector<TriangleId> seeds;
   if (!keep_convex_hull) seeds = hull_seeds(mesh);
@@ -68,7 +88,7 @@ HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& h
       report.outside.push_back(i);
       continue;
     }
-    const TriangleId t = hole_triangle(mesh, at);
+    const TriangleId t = hole_triangle(mesh, pred, at, holes[i], input_segments);
     if (t == kNone) report.on_segment.push_back(i);
     else seeds.push_back(t);
   }
@@ -95,16 +115,16 @@ void add_region_attribute(Mesh& mesh) {
 
 // The triangle a region point seeds, or kNone; `where` says why not.
 TriangleId region_triangle(const Mesh& mesh, Predicates& pred, const Point& at, EdgeRef hint,
-                           LocateStatus& where) {
+                           std::span<const Pslg::Segment> input, LocateStatus& where) {
   const Location location = locate(mesh, pred, at, hint);
   where = location.status;
-  return hole_triangle(mesh, location);  // the same rule as for hole points
+  return hole_triangle(mesh, pred, location, at, input);  // the same rule as for hole points
 }
 
 }  // namespace
 
 RegionReport spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Region>& regions,
-                            bool attributes, bool area_bounds) {
+                            bool attributes, bool area_bounds, std::span<const Pslg::Segment> input_segments) {
   RegionReport report;
   if (attributes) add_region_attribute(mesh);
   if (area_bounds && mesh.area_bound.size() != mesh.triangle_slots())
@@ -115,7 +135,7 @@ RegionReport spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg
   EdgeRef hint = kNone;
   for (std::size_t i = 0; i < regions.size(); ++i) {
     LocateStatus where = LocateStatus::Outside;
-    starts.push_back(region_triangle(mesh, pred, regions[i].at, hint, where));
+    starts.push_back(region_triangle(mesh, pred, regions[i].at, hint, input_segments, where));
     if (starts.back() != kNone) hint = edge_of(starts.back(), 0);
     else if (where == LocateStatus::Outside) report.outside.push_back(i);
     else report.on_segment.push_back(i);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "geometry/predicates.h"
@@ -25,8 +26,11 @@ struct HoleReport {
 // edges without subsegments and deleted. Subsegments with no triangle left on either side are
 // deleted from mesh.subsegments (the survivors keep their order and are renumbered). Finally the
 // triangles are compacted, so triangle ids change.
-HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& holes,
-                       bool keep_convex_hull);
+// A hole point on a subsegment whose input segment (input_segments, indexed as the subsegments'
+// `segment`) does not pass through it lies there only because snapping bent the segment's chain
+// through a vertex an ulp or so off it: the point takes the side the input segment puts it on.
+HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& holes, bool keep_convex_hull,
+                       std::span<const Pslg::Segment> input_segments = {});
 
 struct RegionReport {
   std::vector<std::size_t> outside;     // indices of region points outside the mesh (ignored)
@@ -42,7 +46,9 @@ struct RegionReport {
 // ignored, and so is one exactly on a segment or on a vertex a segment ends at, where the side is
 // ambiguous: the same rule as for hole points, for the CLI and any other caller of this function.
 // A point on an edge or vertex without a segment is fine: every triangle there is in one region.
+// A point on a subsegment that snapping bent through it takes its input segment's side, as a hole
+// point does (carve_holes).
 RegionReport spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Region>& regions,
-                    bool attributes, bool area_bounds);
+                    bool attributes, bool area_bounds, std::span<const Pslg::Segment> input_segments = {});
 
 }  // namespace deltri

@@ -107,8 +107,13 @@ int run_surface(const Switches& sw, const std::string& path) {
   const SurfaceResult result = run_surface_pipeline(input, sw, progress);
   const SurfaceMesh& mesh = result.mesh;
   const SurfaceReport& report = result.report;
-  if (result.check_failed()) {
+  if (result.check_failed() && sw.check) {
     std::fprintf(stderr, "deltri: -C: the surface mesh is not consistent; no files written\n%s", result.check->summary().c_str());
+    return kExitCheck;
+  }
+  if (result.check_failed()) {
+    std::fprintf(stderr, "deltri: %s: the surface mesh is not consistent (%s; facet loops that cross other loops or segments?); no files written\n",
+                 path.c_str(), result.check->one_line().c_str());
     return kExitCheck;
   }
   warn(result, sw, input.first_index);

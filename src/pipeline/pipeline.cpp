@@ -78,6 +78,24 @@ int refinement_scale(const Pslg& pslg, const std::string& path) {
                                 "cannot be scaled into it exactly: its coordinates span more than the doubles' exponent range");
 }
 
+// Segments that cross where every vertex coordinate is below kSmallestScalable: each crossing
+// point is rounded to a grid of subnormal numbers, ulps of the input's size, off both segments, and
+// the segments are no chains of mesh edges. Refused as refinement there is (refinement_scale).
+void refuse_subnormal_crossings(const Mesh& mesh, std::size_t input_vertices, std::size_t crossings,
+                                const std::string& path) {
+  if (crossings == 0) return;
+  double largest = 0.0;
+  for (std::size_t v = 0; v < input_vertices && v < mesh.points.size(); ++v)
+    largest = std::max({largest, std::fabs(mesh.points[v].x), std::fabs(mesh.points[v].y)});
+  if (!(largest > 0.0 && largest < kSmallestScalable)) return;
+  char magnitude[32];
+  std::snprintf(magnitude, sizeof magnitude, "%g", largest);
+  throw InputError(path, 0, std::to_string(crossings) + (crossings == 1 ? " crossing" : " crossings") +
+                                " of segments where every vertex coordinate is below " + magnitude +
+                                " in magnitude: the crossing points would be subnormal numbers rounded off their "
+                                "segments (below 2^-970, about 1e-292); scale the input up");
+}
+
 // An area or length bound at the scale refinement runs at: a positive bound stays positive and finite.
 double scaled_bound(double bound, int e) {
   if (!(bound > 0.0)) return bound;
@@ -166,10 +184,10 @@ void constrain(Mesh& mesh, const Pslg& pslg, const DelaunayReport& dt, const Opt
                                     threads_to_use(sw));
   if (sw.convex_hull) enclose_convex_hull(mesh);
   const std::vector<Point> no_holes;
-  report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull);
+  report.holes = carve_holes(mesh, pred, sw.ignore_holes ? no_holes : pslg.holes, sw.convex_hull, pslg.segments);
   const bool region_areas = sw.variable_area && !pslg.regions.empty();
   if (sw.regional_attributes || region_areas)
-    report.regions = spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas);
+    report.regions = spread_regions(mesh, pred, pslg.regions, sw.regional_attributes, region_areas, pslg.segments);
   report.counters.add(pred.counters);
 }
 
@@ -368,6 +386,7 @@ PipelineResult run_pipeline(Pslg& pslg, const PipelineSource& source, const Opti
     if (source.is_poly) {
       begin("segments and holes");
       constrain(mesh, pslg, dt, sw, report);
+      refuse_subnormal_crossings(mesh, report.input_vertices, report.segments ? report.segments->crossings : 0, report.input_name);
       std::vector<Pslg::Segment>().swap(pslg.segments);  // in the mesh now; refinement's peak is later
       stage("segments and holes");
       check_stage(mesh, "segments and holes");

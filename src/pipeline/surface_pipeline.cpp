@@ -144,7 +144,7 @@ SurfaceResult run_surface_pipeline(const FacetInput& given, const Options& sw, c
     if (size.max_edge_length > 0.0) size.max_edge_length = std::ldexp(size.max_edge_length, e);
   }
   result.mesh = mesh_surface(input, options, result.report, kMaxSurfaceRounds, progress);
-  if (sw.check) result.check = check_surface(result.mesh);
+  result.check = check_surface(result.mesh);
   if (!result.report.converged || result.report.budget_reached)
     count_misses(result.mesh, sw, options.refinement.angle, options.refinement.size.max_area, result);
   if (e != 0) {

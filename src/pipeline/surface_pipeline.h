@@ -21,7 +21,9 @@ namespace deltri {
 struct SurfaceResult {
   SurfaceMesh mesh;
   SurfaceReport report;
-  std::optional<SurfaceCheck> check;  // with -C
+  // -C's check, run on every mesh: a run ends well only with a mesh the check accepts (facets
+  // whose loops cross other loops or segments give subsegments that are no edge of their facet).
+  std::optional<SurfaceCheck> check;
   // Input points (0-based) with the coordinates of an earlier one, each with the point it was
   // merged into.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> merged;

@@ -68,6 +68,11 @@ std::optional<Outcome> Terminator::guard_insertion(const Assessment& a, const Ca
 // a size bound and subsegments at the bottom scale keep their rules (bottom_scale.h).
 // Not where an initial edge is hopeless (precision_scale_ above 1): the coarse floor holds there,
 // and robustness2.node, whose hull chains have such strips, kept its mesh only without the rule.
+// A strip a few ulps wide is as hopeless when it is long: segments meeting at 1e-15 radians with
+// their far ends a few ulps apart need pieces as short as the strip is wide all along it (about
+// 1e15 splits under -D or -q). So a subsegment over kLongStripUlps long counts a triangle on it
+// narrower than kStripUlps as such a strip; shorter ones are meshed as before.
+constexpr double kStripUlps = 16.0, kLongStripUlps = 4096.0;
 bool Terminator::in_strip_below_an_ulp(EdgeRef s) const {
   if (precision_scale_ != 1.0) return false;
   const Point& a = mesh_.point(mesh_.org(s));
@@ -82,7 +87,10 @@ bool Terminator::in_strip_below_an_ulp(EdgeRef s) const {
     if (at_bottom_scale(squared_distance(a, c), a) || at_bottom_scale(squared_distance(b, c), b)) continue;
     const double twice_area = std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
     const double ulp = ulps_at(std::max({magnitude(a), magnitude(b), magnitude(c)}), 1.0);
-    if (twice_area * twice_area < ulp * ulp * length2 && encroaches(pred_, a, b, c, policy_.rule)) return true;
+    // width below an ulp, or below kStripUlps along a subsegment over kLongStripUlps long
+    const double width_ulps = kStripUlps * static_cast<double>(length2 > kLongStripUlps * kLongStripUlps * ulp * ulp);
+    const double limit = std::max(1.0, width_ulps) * ulp;
+    if (twice_area * twice_area < limit * limit * length2 && encroaches(pred_, a, b, c, policy_.rule)) return true;
   }
   return false;
 }

@@ -126,6 +126,12 @@ std::string SurfaceCheck::summary() const {
   return text;
 }
 
+std::string SurfaceCheck::one_line() const {
+  std::string text = std::to_string(faults) + (faults == 1 ? " fault" : " faults");
+  if (!examples.empty()) text += ", first: " + examples.front();
+  return text;
+}
+
 SurfaceCheck check_surface(const SurfaceMesh& mesh) {
   SurfaceCheck c;
   check_facets(mesh, c);

@@ -22,6 +22,8 @@ struct SurfaceCheck {
   std::vector<std::string> examples;  // the first few faults, one line each
   bool ok() const { return faults == 0; }
   std::string summary() const;
+  // The count and the first fault on one line, for the refusal without -C.
+  std::string one_line() const;
 };
 
 SurfaceCheck check_surface(const SurfaceMesh& mesh);

@@ -241,6 +241,33 @@ def case_steiner_total():
         print(f"{switches}: {n - len(pts)} Steiner points, {t} triangles, {below} below 30 degrees")
 
 
-{"scale": case_scale, "duplicates": case_duplicates, "hole_inside": case_hole_inside,
+def case_inconsistent():
+    # A mesh -C rejects must not end with exit 0 without -C either (fuzz_surface's finding F4): a
+    # facet point moved far out of a 4x2x1 box leaves facets planar within their (size-relative)
+    # tolerance whose loops, projected, cross other facets' segments; deltri exited 0 with
+    # subsegments that were no edge of their facet. The finding and two more of its class (the
+    # point at x = 4000 and x = -4000) must be refused in one line, nothing written (at -pq30 the
+    # variants run without end: open, docs/reliability.md).
+    here = os.path.dirname(os.path.abspath(__file__))
+    finding = open(os.path.join(here, "..", "fuzz", "findings", "surface-open-subsegment-no-edge.poly")).read()
+    moved = re.compile(r"^11 40000\.0*", re.M)
+    for name, x in (("finding", None), ("at4000", "4000"), ("atminus4000", "-4000")):
+        text = finding if x is None else moved.sub("11 " + x, finding)
+        path = os.path.join(WORK, name + ".poly")
+        with open(path, "w") as out:
+            out.write(text)
+        for switches in ("-p", "-pC") if x else ("-p", "-pq30", "-pC"):
+            r = run(path, switches)
+            lines = r.stderr.strip().splitlines()
+            if r.returncode == 0:
+                fail(f"{name} {switches}: exit 0 on a mesh its own check rejects")
+            if switches != "-pC" and (len(lines) != 1 or "not consistent" not in lines[0]):
+                fail(f"{name} {switches}: not a one-line refusal: {r.stderr!r}")
+            if any(f.startswith(name + ".1.") for f in os.listdir(WORK)):
+                fail(f"{name} {switches}: files written")
+            print(f"{name} {switches}: exit {r.returncode}: {lines[0]}")
+
+
+{"inconsistent": case_inconsistent, "scale": case_scale, "duplicates": case_duplicates, "hole_inside": case_hole_inside,
  "hole_off_plane": case_hole_off_plane, "sphere": case_sphere, "steiner_total": case_steiner_total}[CASE]()
 print("ok")

@@ -80,10 +80,19 @@ def write_poly(path, pts, segs, holes):
 def rescaled(name, out, pts, segs, holes):
     """deltri_mesh_verify computes in doubles: at 1e-300 or 1e90 its products underflow or
     overflow. The input and the mesh are multiplied by the power of two 2^k that brings the input
-    into [1, 2), which is exact for every double involved (the scales here keep every coordinate
-    within the exponent range), and verified there. Returns the new input and mesh names."""
+    into [1, 2) and verified there, when that is exact for every coordinate of the input and the
+    mesh; otherwise (a subnormal coordinate scaled down loses bits, and then turned a valid mesh
+    into one with flat triangles) the files are verified as they are. Returns the input and mesh
+    names to verify."""
     k = -math.frexp(max(max(abs(x), abs(y)) for x, y in pts))[1] + 1
     if k == 0:
+        return name, out
+
+    def exact(c):
+        return math.ldexp(math.ldexp(c, k), -k) == c
+    rows = [l.split() for l in open(out + '.node').read().split('\n')[1:]]
+    mesh = [float(c) for t in rows if len(t) >= 3 and not t[0].startswith('#') for c in t[1:3]]
+    if not all(exact(c) for c in mesh + [c for p in list(pts) + list(holes) for c in p]):
         return name, out
 
     def scale(src, dst, first_data_line, columns):

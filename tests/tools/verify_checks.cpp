@@ -134,10 +134,22 @@ void check_boundary_edges(Context& c, Failures& f) {
     }
 }
 
+// Whether h lies exactly on a closed input segment: such a hole point is ignored (the manual's
+// rule, as Triangle's), and refinement may round the segment's chain off it.
+bool on_input_segment(Context& c, const Point& h) {
+  for (const auto& s : c.in.segments) {
+    const Point &a = c.in.points[s.a], &b = c.in.points[s.b];
+    if (h.x < std::min(a.x, b.x) || h.x > std::max(a.x, b.x) || h.y < std::min(a.y, b.y) || h.y > std::max(a.y, b.y)) continue;
+    if (on_closed_segment(c.pred, a, b, h)) return true;
+  }
+  return false;
+}
+
 // A hole point may not lie inside a triangle nor on an edge that is not a segment.
 void check_holes(Context& c, Failures& f) {
   if (c.no_holes) return;
-  for (const Point& h : c.in.holes)
+  for (const Point& h : c.in.holes) {
+    if (on_input_segment(c, h)) continue;
     for (int t : c.triangles_near(h, h)) {
       double o[3];
       for (int i = 0; i < 3; ++i) o[i] = c.pred.orient2d(c.tri_point(t, i), c.tri_point(t, (i + 1) % 3), h);
@@ -148,6 +160,7 @@ void check_holes(Context& c, Failures& f) {
         if (o[i] == 0) bad = !c.segment_edges.count(undirected_key(c.out.triangles[t][i], c.out.triangles[t][(i + 1) % 3]));
       if (bad) f.add("holes", "hole point " + fmt(h) + " lies in " + tri_name(c, t));
     }
+  }
 }
 
 // Every interior edge that is not part of an input segment is locally Delaunay.

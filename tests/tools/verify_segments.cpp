@@ -18,6 +18,9 @@
 // meets a triangle) is exact.
 #include <algorithm>
 #include <cmath>
+#include <unordered_set>
+#include <utility>
+#include <vector>
 
 #include "verify.h"
 
@@ -59,57 +62,95 @@ class SegmentWalk {
         t_end_(param(b_)) {}
 
   // Marks the covering mesh edges; returns the point where coverage fails, if it does.
+  // A search with backtracking, not a greedy walk: near a cluster of vertices a few ulps apart,
+  // mesh vertices that are no part of the chain lie within the tolerance too (kCrossUlps), and the
+  // nearest of them along the segment can be a dead end. Whether b can be reached from a vertex
+  // depends on the vertex alone (the parameter only grows), so each dead end is tried once.
   std::optional<Point> walk() {
-    Point pos = a_;
-    long double t_pos = 0;
-    int cur = vertex_at(a_);
-    note(cur);
-    while (!(pos == b_)) {
-      int best = -1;
-      long double t_best = 0;
-      // Vertices exactly on the segment first: a rounded vertex of a nearly collinear neighbour
-      // segment (a wedge of 1e-12 rad) can be within the tolerance too, and must not hide the
-      // exact edge.
-      for (bool exact : {true, false}) {
-        if (cur < 0 || best >= 0) break;
-        for (int w : c_.topo.adjacent[cur]) {
-          const Point& q = c_.out.points[w];
-          const long double t = param(q);
-          if (t > t_pos && t <= t_end_ && (best < 0 || t < t_best) && (exact ? exactly_on(q) : on_segment(q))) {
-            best = w;
-            t_best = t;
-          }
-        }
-      }
-      if (best >= 0) {
-        c_.segment_edges.insert(undirected_key(cur, best));
-        cur = best;
-        note(cur);
-        pos = c_.out.points[best];
-        t_pos = t_best;
+    std::vector<Step> path{{vertex_at(a_), a_, 0, {}, 0, false}};
+    path.back().next = candidates(path.back());
+    std::unordered_set<int> dead;
+    Point stuck = a_;
+    long double t_stuck = -1;
+    while (!path.empty() && !(path.back().pos == b_)) {
+      Step& top = path.back();
+      if (top.t_pos > t_stuck) stuck = top.pos, t_stuck = top.t_pos;
+      if (top.tried < top.next.size()) {
+        const int w = top.next[top.tried++];
+        if (dead.count(w)) continue;
+        Step step{w, c_.out.points[w], param(c_.out.points[w]), {}, 0, false};
+        step.next = candidates(step);
+        path.push_back(std::move(step));
         continue;
       }
-      // No mesh edge continues the segment: up to the next vertex on it, it must be outside the mesh.
-      Point next = b_;
-      long double t_next = t_end_;
-      for (int v : c_.vertex_grid.query(lower(pos, b_), upper(pos, b_))) {
-        const Point& q = c_.out.points[v];
-        const long double t = param(q);
-        if (t > t_pos && t < t_next && on_segment(q)) {
-          next = q;
-          t_next = t;
+      const bool gap_tried = top.gap_tried;
+      top.gap_tried = true;
+      if (!gap_tried && top.next.empty()) {
+        if (auto step = gap_from(top)) {
+          step->next = candidates(*step);
+          path.push_back(std::move(*step));
+          continue;
         }
       }
-      if (c_.open_segment_meets_mesh(pos, next)) return pos;
-      pos = next;
-      t_pos = t_next;
-      cur = vertex_at(next);
-      note(cur);
+      if (top.cur >= 0) dead.insert(top.cur);
+      path.pop_back();
+    }
+    if (path.empty()) return stuck;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+      note(path[i].cur);
+      if (i > 0 && !path[i].by_gap) c_.segment_edges.insert(undirected_key(path[i - 1].cur, path[i].cur));
     }
     return std::nullopt;
   }
 
  private:
+  struct Step {
+    int cur;  // the mesh vertex at pos, or -1
+    Point pos;
+    long double t_pos;
+    std::vector<int> next;  // neighbours that continue the segment: exactly on it first, then by t
+    std::size_t tried;
+    bool gap_tried;
+    bool by_gap = false;  // reached across a stretch outside the mesh, not by an edge
+  };
+
+  // The neighbours of the step's vertex that continue the segment: those exactly on it (a rounded
+  // vertex of a nearly collinear neighbour segment can be within the tolerance too, and must not
+  // hide the exact edge), then those within the tolerance, each group nearest first.
+  std::vector<int> candidates(const Step& at) {
+    std::vector<std::pair<long double, int>> exact, close;
+    if (at.cur >= 0)
+      for (int w : c_.topo.adjacent[at.cur]) {
+        const Point& q = c_.out.points[w];
+        const long double t = param(q);
+        if (!(t > at.t_pos && t <= t_end_)) continue;
+        if (exactly_on(q)) exact.push_back({t, w});
+        else if (near(q)) close.push_back({t, w});
+      }
+    std::sort(exact.begin(), exact.end());
+    std::sort(close.begin(), close.end());
+    std::vector<int> out;
+    for (const auto& group : {exact, close})
+      for (const auto& [t, w] : group) out.push_back(w);
+    return out;
+  }
+
+  // No mesh edge continues the segment: up to the next vertex on it, it must be outside the mesh.
+  std::optional<Step> gap_from(const Step& at) {
+    Point next = b_;
+    long double t_next = t_end_;
+    for (int v : c_.vertex_grid.query(lower(at.pos, b_), upper(at.pos, b_))) {
+      const Point& q = c_.out.points[v];
+      const long double t = param(q);
+      if (t > at.t_pos && t < t_next && on_segment(q)) {
+        next = q;
+        t_next = t;
+      }
+    }
+    if (c_.open_segment_meets_mesh(at.pos, next)) return std::nullopt;
+    return Step{vertex_at(next), next, t_next, {}, 0, false, true};
+  }
+
   static Point lower(const Point& a, const Point& b) { return {std::min(a.x, b.x), std::min(a.y, b.y)}; }
   static Point upper(const Point& a, const Point& b) { return {std::max(a.x, b.x), std::max(a.y, b.y)}; }
 
