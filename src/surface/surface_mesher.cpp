@@ -58,6 +58,7 @@ class SurfaceBuilder {
   std::uint32_t segment_of(std::uint32_t a, std::uint32_t b);
   Pslg facet_pslg(std::uint32_t f);
   std::vector<std::pair<std::uint32_t, double>> new_cuts(std::uint32_t f) const;
+  bool add_splits_near(std::uint32_t g, double t);
   std::vector<std::uint32_t> mesh_facets(const std::vector<std::uint32_t>& facets, const FacetMeshOptions& options,
                                          bool record = true);
   std::vector<std::uint32_t> facet_vertices(std::uint32_t f, const std::vector<std::uint32_t>& split_base,
@@ -189,6 +190,46 @@ std::vector<std::pair<std::uint32_t, double>> SurfaceBuilder::new_cuts(std::uint
   return cuts;
 }
 
+// The power of two in (d/3, 2d/3]: a concentric shell's radius (Sec. 6) for a piece of length d
+// at a corner. Rounded down by 1e-9 so that lengths equal but for rounding pick the same shell.
+double shell_radius_in_space(double d) {
+  int e = 0;
+  std::frexp(d * (2.0 / 3.0) * (1.0 - 1e-9), &e);
+  return std::ldexp(1.0, e - 1);
+}
+
+// The one point where piece [u, v] of a segment (parameters, the segment `length` long) is split,
+// whichever facet asks: the midpoint, or on a concentric shell around the segment's end where the
+// piece has one. Splits chosen so form one binary tree per segment, so two facets' splits
+// never interleave: the pieces near a corner are the same shells in every facet around it.
+double tree_split(double u, double v, double length) {
+  if (u == 0.0 && v == 1.0) return 0.5;
+  if (u == 0.0) return shell_radius_in_space(v * length) / length;
+  if (v == 1.0) return 1.0 - shell_radius_in_space((1.0 - u) * length) / length;
+  return 0.5 * (u + v);
+}
+
+// A facet's mesh has a vertex at parameter t of segment g: splits the piece holding t by the
+// tree's rule, and the part of it that holds t again, until a split lies within a quarter of the
+// piece of t. Each facet's own split points (midpoints, shells, mirrored across thin wedges,
+// measured in its own plane) interleaved with the others' and cut the pieces near small corners
+// down to 1e-10 (the gear at -pq30a2). False when t is (within kSameParameter) a split already.
+bool SurfaceBuilder::add_splits_near(std::uint32_t g, double t) {
+  Segment3& s = segments_[g];
+  const double length = norm(in_.points[s.b] - in_.points[s.a]);
+  bool added = false;
+  for (;;) {
+    const auto at = std::lower_bound(s.splits.begin(), s.splits.end(), t);
+    const double u = at == s.splits.begin() ? 0.0 : *(at - 1), v = at == s.splits.end() ? 1.0 : *at;
+    if (t - u < kSameParameter || v - t < kSameParameter) return added;
+    const double m = tree_split(u, v, length);
+    if (!(m - u >= kSameParameter && v - m >= kSameParameter)) return added;
+    s.splits.insert(std::lower_bound(s.splits.begin(), s.splits.end(), m), m);
+    added = true;
+    if (std::abs(t - m) <= 0.25 * (v - u)) return added;
+  }
+}
+
 // Meshes the given facets (on two threads with options.threads > 1: facets share nothing while
 // they are meshed, and the cuts are merged afterwards in facet order, so the result does not
 // depend on the threads); with `record`, adds the cuts to the segments' splits and returns the
@@ -226,15 +267,10 @@ std::vector<std::uint32_t> SurfaceBuilder::mesh_facets(const std::vector<std::ui
   std::vector<std::uint32_t> again;
   for (std::size_t i = 0; i < facets.size(); ++i)
     for (const auto& [g, t] : cuts[i]) {
-      std::vector<double>& splits = segments_[g].splits;
-      const auto at = std::lower_bound(splits.begin(), splits.end(), t);
-      const bool near_next = at != splits.end() && *at - t < kSameParameter;
-      const bool near_prev = at != splits.begin() && t - *(at - 1) < kSameParameter;
-      if (near_next || near_prev || t < kSameParameter || t > 1.0 - kSameParameter) {
+      if (!add_splits_near(g, t)) {
         again.push_back(facets[i]);
         continue;
       }
-      splits.insert(at, t);
       again.insert(again.end(), segments_[g].facets.begin(), segments_[g].facets.end());
     }
   std::sort(again.begin(), again.end());
