@@ -18,12 +18,6 @@ FacetMeshResult mesh_facet(Pslg pslg, const FacetMeshOptions& options) {
   if (options.refine && mesh.live_triangles() > 0) {
     RefineOptions opt = options.refinement;
     opt.threads = 1;
-    // The cuts other facets put on its segments are input vertices here; taken as splits of the
-    // straight chain they lie on (as for -r), a corner's pieces keep the corner as their end, so
-    // the shells there are measured from it and the triangle between two equal shells is spared as
-    // in one 2-D run. As ends of pieces of their own, the shells were cut down again every round
-    // (the gear at -pq30a20 never agreed).
-    opt.straight_chains = true;
     result.refine = refine_mesh(mesh, pred, opt);
     mesh.compact_triangles();
   }
