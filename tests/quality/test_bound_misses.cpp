@@ -203,6 +203,23 @@ TEST(a_triangle_beyond_the_corner_a_shell_cuts_off_is_not_forced) {
   CHECK_EQ(b.other, 1u);
 }
 
+// Below the angle bound the Terminator spares every triangle on an equal-shell edge, not only the
+// corner triangle (sparing only the corner cut the shells down without end; Terminator::shell_exempt),
+// so such a triangle is forced by the input angle there: a, c, b beyond a 20-degree corner with c 3
+// from j, 9.85 degrees (above Theorem 12's floor of 7.05), its circumcentre in no diametral disk at
+// j. At -q15 the 20-degree junction is at or above the bound, and the same triangle is not forced.
+TEST(below_the_bound_a_triangle_on_a_shell_edge_is_forced) {
+  const Mesh m = shell_pair(20, 3.0);
+  CHECK(std::fabs(smallest_angle(m, 1_t) - 9.85) < 0.01);
+  BoundMisses b = count_bound_misses(m, angle(30));
+  CHECK_EQ(b.below_angle, 2u);  // also the corner triangle, 20 degrees at j (rule 1)
+  CHECK_EQ(b.small_input_angle, 2u);
+  b = count_bound_misses(m, angle(15));
+  CHECK_EQ(b.below_angle, 1u);
+  CHECK_EQ(b.small_input_angle, 0u);
+  CHECK_EQ(b.other, 1u);
+}
+
 // A flat triangle just beyond the edge a-b of a 20-degree corner: its circumcentre lies on the
 // bisector inside the corner, in the diametral disk of j-a, where the Terminator may leave it
 // (Theorem 12). With c 0.05 beyond a-b its smallest angle, 16.1 degrees, is above Theorem 12's floor
