@@ -72,8 +72,8 @@ class SurfaceBuilder {
   const FacetMeshOptions& options_;
   const int max_rounds_;
   const SurfaceProgress& progress_;
-  bool use_seeds_ = true;
-  bool one_tree_ = false;  // the second try's rules (run)  // seed each facet with the interior vertices of its previous mesh
+  bool use_seeds_ = true;  // seed each facet with the interior vertices of its previous mesh
+  bool one_tree_ = false;  // the second try's rules (run)
   std::vector<FacetPlane> planes_;
   std::vector<Segment3> segments_;
   std::unordered_map<std::uint64_t, std::uint32_t> segment_index_;
@@ -221,11 +221,12 @@ double tree_split(double u, double v, double length, bool shells_at_a, bool shel
   return 0.5 * (u + v);
 }
 
-// A facet's mesh has a vertex at parameter t of segment g: splits the piece holding t by the
-// tree's rule, and the part of it that holds t again, until a split lies within a quarter of the
-// piece of t. Each facet's own split points (midpoints, shells, mirrored across thin wedges,
-// measured in its own plane) interleaved with the others' and cut the pieces near small corners
-// down to 1e-10 (the gear at -pq30a2). False when t is (within kSameParameter) a split already.
+// A facet's mesh has a vertex at parameter t of segment g. The first try takes t as a split. The
+// second (one_tree_) splits the piece holding t by the tree's rule, and the part of it that holds t
+// again, until a split lies within a quarter of the piece of t: each facet's own split points
+// (midpoints, shells, mirrored across thin wedges, measured in its own plane) interleaved with the
+// others' and cut the pieces near small corners down to 1e-10 (the gear at -pq30a2). False when t
+// is (within kSameParameter) a split or an end already: nothing was added.
 bool SurfaceBuilder::add_splits_near(std::uint32_t g, double t) {
   Segment3& s = segments_[g];
   if (!one_tree_) {
