@@ -19,6 +19,9 @@ constexpr double kSmallInputAngle = 60.0;
 
 double length(const Point& a, const Point& b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
+// The reports' relative margin (BoundCheck): a triangle at a floor but for rounding meets it.
+constexpr double kMargin = 1e-12;
+
 bool at_precision_limit(const Mesh& m, TriangleId t) {
   double shortest = INFINITY, largest = 0.0;
   for (int i = 0; i < 3; ++i) {
@@ -169,40 +172,168 @@ double junction_angle(const SegmentVertices& s, VertexId j, std::uint32_t a, std
   return smallest;
 }
 
-// Rules 2 and 3 for the edge p-q: the junction they explain the triangle by, or kNone. An edge
-// with an end at the junction spans no wedge: it lies along one of the two segments, and its
-// triangle is inside their small angle (rule 1 at that end) or outside it, unexplained.
-VertexId junction_of_edge(const Mesh& m, const SegmentVertices& s, VertexId p, VertexId q, bool edge_on_segment) {
+// Theorem 12 of Shewchuk's paper (Sec. 6.3): where the smallest input angle of a subsegment cluster
+// is phi <= 60 degrees, the Terminator leaves no triangle whose smallest angle is below
+// arcsin(sin(phi / 2) / sqrt 2) (with diametral lenses the floor is higher, Sec. 6.4). A triangle
+// below that floor is not what the input angle forces, whatever its place. Degrees; phi in radians.
+double theorem12_floor_deg(double phi) {
+  return std::asin(std::sin(phi / 2.0) / std::numbers::sqrt2) * (180.0 / std::numbers::pi);
+}
+
+double smallest_angle_deg(const Point& a, const Point& b, const Point& c) {
+  return std::min({angle_degrees(a, b, c), angle_degrees(b, c, a), angle_degrees(c, a, b)});
+}
+
+// r lies in the closed triangle jpq (either orientation), by the signs of rounded cross products.
+bool in_closed_triangle(const Point& j, const Point& p, const Point& q, const Point& r) {
+  const auto cross = [](const Point& a, const Point& b, const Point& c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  };
+  const double turn = cross(j, p, q);
+  if (turn == 0.0) return false;
+  const double side = turn > 0.0 ? 1.0 : -1.0;
+  return side * cross(j, p, r) >= 0.0 && side * cross(p, q, r) >= 0.0 && side * cross(q, j, r) >= 0.0;
+}
+
+// Rule 2 for triangle pqr with shortest edge p-q: the junction j of two segments that meet there at
+// under 60 degrees, p on one and q on the other (neither at j), with r in the corner triangle jpq
+// (r may be j itself), or, where that angle is below the -q angle (bound_deg), with p and q at
+// distances from j equal within 0.1%: the triangle lies in the shells the input angle cuts off.
+// (Below the bound the Terminator spares every triangle on such a shell edge, as Triangle does:
+// splitting the ones beyond it cut the shells down without end; Terminator::shell_exempt.) Its
+// smallest angle must be at least the Theorem 12 floor of that angle. Else kNone. An edge with an
+// end at the junction spans no wedge: it lies along one of the two segments, and its triangle is
+// inside their small angle (rule 1 at that end) or outside it, unexplained.
+VertexId corner_junction(const Mesh& m, const SegmentVertices& s, VertexId p, VertexId q, VertexId r, double smallest,
+                         double bound_deg) {
   const double small = kSmallInputAngle * std::numbers::pi / 180.0;
+  const double bound = bound_deg * std::numbers::pi / 180.0;
   for (std::uint32_t a : s.segments[p])
     for (std::uint32_t b : s.segments[q]) {
       if (a == b || a == kNone || b == kNone || a >= s.junctions.size()) continue;
       for (VertexId j : s.junctions[a]) {
         if (j == p || j == q) continue;
         if (std::find(s.segments[j].begin(), s.segments[j].end(), b) == s.segments[j].end()) continue;
-        if (junction_angle(s, j, a, b) < small) return j;                     // rule 2: the wedge
+        const double phi = junction_angle(s, j, a, b);
+        if (phi >= small || smallest < theorem12_floor_deg(phi) * (1.0 - kMargin)) continue;
+        if (r == j || in_closed_triangle(m.points[j], m.points[p], m.points[q], m.points[r])) return j;
         const double dp = length(m.points[p], m.points[j]), dq = length(m.points[q], m.points[j]);
-        if (!edge_on_segment && std::fabs(dp - dq) <= 0.01 * std::max(dp, dq)) return j;  // rule 3: a shell
+        if (phi < bound && std::fabs(dp - dq) <= 0.001 * std::max(dp, dq)) return j;
       }
     }
   return kNone;
 }
 
+// Rule 3's subsegments: a mesh edge on a segment, from a vertex j where that segment bounds a sector
+// under 60 degrees between neighbouring segments (the subsegment clusters of Sec. 6.3), with phi the
+// smallest such sector it bounds. Its closed diametral disk, centre and squared radius.
+struct ClusterDisk {
+  VertexId junction;
+  double phi;
+  Point centre;
+  double radius2;
+};
+
+// The disks, in a uniform grid of about one cell per disk for the lookups of the misses' circumcentres;
+// a disk over more than kMaxCells cells goes on a list every lookup reads.
+class ClusterDisks {
+ public:
+  ClusterDisks(const Mesh& m, const SegmentVertices& s) {
+    const double small = kSmallInputAngle * std::numbers::pi / 180.0;
+    for (VertexId j{0}; j < m.vertex_count(); ++j) {
+      const auto& list = s.spokes[j];
+      const std::size_t n = list.size();
+      if (n < 2) continue;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double before = angle_between(list[(i + n - 1) % n].direction, list[i].direction);
+        const double after = angle_between(list[i].direction, list[(i + 1) % n].direction);
+        double phi = HUGE_VAL;
+        for (double gap : {before, after})
+          if (gap > 0.0 && gap < small) phi = std::min(phi, gap);
+        if (phi == HUGE_VAL) continue;
+        const Point& a = m.points[j];
+        const Point& b = m.points[list[i].to];
+        const Point centre{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+        disks_.push_back({j, phi, centre, 0.25 * ((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y))});
+      }
+    }
+    if (disks_.empty()) return;
+    lo_ = hi_ = disks_[0].centre;
+    for (const ClusterDisk& d : disks_) {
+      const double r = std::sqrt(d.radius2);
+      lo_ = {std::min(lo_.x, d.centre.x - r), std::min(lo_.y, d.centre.y - r)};
+      hi_ = {std::max(hi_.x, d.centre.x + r), std::max(hi_.y, d.centre.y + r)};
+    }
+    side_ = std::max<std::size_t>(1, static_cast<std::size_t>(std::sqrt(static_cast<double>(disks_.size()))));
+    cells_.resize(side_ * side_);
+    for (std::uint32_t k = 0; k < disks_.size(); ++k) {
+      const double r = std::sqrt(disks_[k].radius2);
+      const std::size_t x0 = cell(disks_[k].centre.x - r, lo_.x, hi_.x), x1 = cell(disks_[k].centre.x + r, lo_.x, hi_.x);
+      const std::size_t y0 = cell(disks_[k].centre.y - r, lo_.y, hi_.y), y1 = cell(disks_[k].centre.y + r, lo_.y, hi_.y);
+      if ((x1 - x0 + 1) * (y1 - y0 + 1) > kMaxCells) {
+        large_.push_back(k);
+        continue;
+      }
+      for (std::size_t y = y0; y <= y1; ++y)
+        for (std::size_t x = x0; x <= x1; ++x) cells_[y * side_ + x].push_back(k);
+    }
+  }
+
+  // The junction of a disk that holds p, whose Theorem 12 floor `smallest` meets, or kNone.
+  VertexId holding(const Point& p, double smallest) const {
+    if (disks_.empty() || !(p.x >= lo_.x && p.x <= hi_.x && p.y >= lo_.y && p.y <= hi_.y)) return find(large_, p, smallest);
+    const VertexId j = find(cells_[cell(p.y, lo_.y, hi_.y) * side_ + cell(p.x, lo_.x, hi_.x)], p, smallest);
+    return j != kNone ? j : find(large_, p, smallest);
+  }
+
+ private:
+  static constexpr std::size_t kMaxCells = 64;
+  std::size_t cell(double v, double lo, double hi) const {
+    if (!(hi > lo)) return 0;
+    const double f = (v - lo) / (hi - lo) * static_cast<double>(side_);
+    return static_cast<std::size_t>(std::clamp(f, 0.0, static_cast<double>(side_ - 1)));
+  }
+  VertexId find(const std::vector<std::uint32_t>& list, const Point& p, double smallest) const {
+    for (std::uint32_t k : list) {
+      const ClusterDisk& d = disks_[k];
+      const double dx = p.x - d.centre.x, dy = p.y - d.centre.y;
+      if (dx * dx + dy * dy <= d.radius2 * (1.0 + kMargin) && smallest >= theorem12_floor_deg(d.phi) * (1.0 - kMargin))
+        return d.junction;
+    }
+    return kNone;
+  }
+  std::vector<ClusterDisk> disks_;
+  std::vector<std::vector<std::uint32_t>> cells_;
+  std::vector<std::uint32_t> large_;
+  Point lo_{}, hi_{};
+  std::size_t side_ = 1;
+};
+
+// The circumcentre of abc, relative to a for accuracy; NaN coordinates for a degenerate triangle.
+Point circumcentre_of(const Point& a, const Point& b, const Point& c) {
+  const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+  const double d = 2.0 * (bx * cy - by * cx);
+  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  return {a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d};
+}
+
 // The vertex whose input angle explains t's miss, or kNone.
-VertexId explaining_junction(const Mesh& m, const SegmentVertices& s, TriangleId t) {
+VertexId explaining_junction(const Mesh& m, const SegmentVertices& s, const ClusterDisks& disks, TriangleId t,
+                             double bound_deg) {
   const VertexId* c = m.corners_at(t);
   for (int i = 0; i < 3; ++i)
     if (in_small_sector(m, s, c[i], c[(i + 1) % 3], c[(i + 2) % 3])) return c[i];
+  const Point &a = m.points[c[0]], &b = m.points[c[1]], &d = m.points[c[2]];
+  const double smallest = smallest_angle_deg(a, b, d);
   double shortest = INFINITY;
   for (int i = 0; i < 3; ++i) shortest = std::min(shortest, length(m.points[c[i]], m.points[c[(i + 1) % 3]]));
   for (int i = 0; i < 3; ++i) {
-    const VertexId p = c[i], q = c[(i + 1) % 3];
+    const VertexId p = c[i], q = c[(i + 1) % 3], r = c[(i + 2) % 3];
     if (length(m.points[p], m.points[q]) > shortest) continue;
-    const bool on_segment = m.has_subsegments() && m.subseg.has(edge_of(t, i));
-    const VertexId j = junction_of_edge(m, s, p, q, on_segment);
+    const VertexId j = corner_junction(m, s, p, q, r, smallest, bound_deg);
     if (j != kNone) return j;
   }
-  return kNone;
+  return disks.holding(circumcentre_of(a, b, d), smallest);  // rule 3
 }
 
 // What a triangle misses, in its entry of the first pass's `missing`.
@@ -219,9 +350,10 @@ VertexId large_angle_corner(const Mesh& m, TriangleId t, const BoundCheck& test)
 
 // The vertex whose input angles explain every angle t misses, or kNone: a size miss is never
 // explained. With both a small and a large angle, the one made by deltri (a repair) if either is.
-VertexId explaining_vertex(const Mesh& m, const SegmentVertices& s, TriangleId t, char missing, const BoundCheck& test) {
+VertexId explaining_vertex(const Mesh& m, const SegmentVertices& s, const ClusterDisks& disks, TriangleId t, char missing,
+                           const BoundCheck& test, double bound_deg) {
   if (missing & kMissesSize) return kNone;
-  const VertexId small = (missing & kMissesAngle) ? explaining_junction(m, s, t) : kNone;
+  const VertexId small = (missing & kMissesAngle) ? explaining_junction(m, s, disks, t, bound_deg) : kNone;
   if (!(missing & kMissesMaxAngle)) return small;
   const VertexId large = large_angle_corner(m, t, test);
   if (!(missing & kMissesAngle) || large == kNone) return large;
@@ -280,9 +412,10 @@ BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
   BoundMisses out = first_pass(m, r, test, missing);
   if (out.total == 0) return out;
   const SegmentVertices s = collect_spokes(m);
+  const ClusterDisks disks(m, s);
   for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t) || !missing[t]) continue;
-    const VertexId j = explaining_vertex(m, s, t, missing[t], test);
+    const VertexId j = explaining_vertex(m, s, disks, t, missing[t], test, r.angle.degrees());
     bool touches_repair = false, touches_segment = false;
     for (int i = 0; i < 3; ++i) {
       const VertexId v = m.corner[edge_of(t, i)];

@@ -9,14 +9,22 @@
 // Each such triangle gets the first of these causes that applies (docs/manual.md, "Quality
 // accounting"):
 //   small_input_angle  it misses no size bound, and its angle miss is explained by the input, at an
-//                      input vertex j: (1) a corner j where segments meet, with the other two corners
-//                      inside the sector between two neighbouring segments at j, that sector under
-//                      60 degrees; or its shortest edge joins points on two input segments that
-//                      meet at j and (2) meet there at under 60 degrees (the wedge between them), or
-//                      (3) lie at distances from j equal within 1%, the edge not itself on a segment
-//                      (the isosceles triangles of concentric shells). Hull edges (-c, .node inputs)
-//                      count as segments. These are the exemptions of Miller, Pav and Walkington
-//                      and of Triangle; tests/tools/verify_quality.cpp checks meshes by the same rules;
+//                      input vertex j where segments meet at an input angle phi under 60 degrees:
+//                      (1) a corner j, with the other two corners inside the sector between two
+//                      neighbouring segments at j, that sector under 60 degrees (the input angle
+//                      itself); or, with its smallest angle at least Theorem 12's floor for phi,
+//                      arcsin(sin(phi / 2) / sqrt 2) (Shewchuk 2001, Sec. 6.3), (2) its shortest edge
+//                      joins points on two segments that meet at j at phi, neither being j, and its
+//                      third corner lies in the corner triangle that edge cuts off at j (the shells
+//                      around the input angle), or, with phi below the -q angle, its ends lie at
+//                      distances from j equal within 0.1% (a shell edge, every triangle on which
+//                      the Terminator spares there); or (3) its circumcentre lies in the closed diametral
+//                      disk of a subsegment at j that bounds a sector of phi under 60 degrees (the
+//                      triangles the Terminator may decline, Theorem 12's proof). phi is the sector's
+//                      angle (rules 1, 3) or the angle between the two segments (rule 2). Hull edges
+//                      (-c, .node inputs) count as segments. A triangle elsewhere, or below the floor,
+//                      is not forced by the input angle (docs/manual.md, "Quality accounting");
+//                      tests/tools/verify_quality.cpp checks meshes by the same rules;
 //   large_input_angle  it misses only --max-angle (or that and a small angle explained as above), and
 //                      its angle above the bound lies between two segments at an input vertex;
 //   repaired_input     the same explanation at a vertex deltri made where input segments cross or

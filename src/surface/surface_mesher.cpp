@@ -55,9 +55,11 @@ class SurfaceBuilder {
 
  private:
   void collect_segments();
+  void run_rounds(SurfaceReport& report, long& budget);
   std::uint32_t segment_of(std::uint32_t a, std::uint32_t b);
   Pslg facet_pslg(std::uint32_t f);
   std::vector<std::pair<std::uint32_t, double>> new_cuts(std::uint32_t f) const;
+  bool add_splits_near(std::uint32_t g, double t);
   std::vector<std::uint32_t> mesh_facets(const std::vector<std::uint32_t>& facets, const FacetMeshOptions& options,
                                          bool record = true);
   std::vector<std::uint32_t> facet_vertices(std::uint32_t f, const std::vector<std::uint32_t>& split_base,
@@ -71,10 +73,12 @@ class SurfaceBuilder {
   const int max_rounds_;
   const SurfaceProgress& progress_;
   bool use_seeds_ = true;  // seed each facet with the interior vertices of its previous mesh
+  bool one_tree_ = false;  // the second try's rules (run)
   std::vector<FacetPlane> planes_;
   std::vector<Segment3> segments_;
   std::unordered_map<std::uint64_t, std::uint32_t> segment_index_;
   std::vector<FacetState> facets_;
+  std::vector<char> acute_;  // by input point: a corner under 60 degrees in some facet
 };
 
 std::uint32_t SurfaceBuilder::segment_of(std::uint32_t a, std::uint32_t b) {
@@ -89,6 +93,7 @@ std::uint32_t SurfaceBuilder::segment_of(std::uint32_t a, std::uint32_t b) {
 // that facets naming the same two points share it.
 void SurfaceBuilder::collect_segments() {
   facets_.resize(in_.facets.size());
+  acute_.assign(in_.points.size(), 0);
   for (std::uint32_t f = 0; f < in_.facets.size(); ++f) {
     FacetState& state = facets_[f];
     for (const auto& polygon : in_.facets[f].polygons) {
@@ -99,6 +104,14 @@ void SurfaceBuilder::collect_segments() {
         if (a != b) state.segments.push_back(segment_of(a, b));
       }
     }
+    for (const auto& polygon : in_.facets[f].polygons)
+      for (std::size_t i = 0; polygon.size() >= 3 && i < polygon.size(); ++i) {
+        const Point3 o = in_.points[polygon[i]];
+        const Point3 u = in_.points[polygon[(i + 1) % polygon.size()]] - o;
+        const Point3 w = in_.points[polygon[(i + polygon.size() - 1) % polygon.size()]] - o;
+        // Under 60 degrees: cos > 1/2.
+        if (2.0 * dot(u, w) > norm(u) * norm(w)) acute_[polygon[i]] = 1;
+      }
     std::sort(state.segments.begin(), state.segments.end());
     state.segments.erase(std::unique(state.segments.begin(), state.segments.end()), state.segments.end());
     for (std::uint32_t g : state.segments) segments_[g].facets.push_back(f);
@@ -189,6 +202,55 @@ std::vector<std::pair<std::uint32_t, double>> SurfaceBuilder::new_cuts(std::uint
   return cuts;
 }
 
+// The power of two in (d/3, 2d/3]: a concentric shell's radius (Sec. 6) for a piece of length d
+// at a corner. Rounded down by 1e-9 so that lengths equal but for rounding pick the same shell.
+double shell_radius_in_space(double d) {
+  int e = 0;
+  std::frexp(d * (2.0 / 3.0) * (1.0 - 1e-9), &e);
+  return std::ldexp(1.0, e - 1);
+}
+
+// The one point where piece [u, v] of a segment (parameters, the segment `length` long) is split,
+// whichever facet asks: the midpoint, or on a concentric shell around the segment's end where the
+// piece has one at a corner under 60 degrees in some facet (as the 2-D Terminator's apices). Splits
+// chosen so form one binary tree per segment, so two facets' splits
+// never interleave: the pieces near a corner are the same shells in every facet around it.
+double tree_split(double u, double v, double length, bool shells_at_a, bool shells_at_b) {
+  if (u == 0.0 && shells_at_a && !(v == 1.0 && shells_at_b)) return shell_radius_in_space(v * length) / length;
+  if (v == 1.0 && shells_at_b && !(u == 0.0 && shells_at_a)) return 1.0 - shell_radius_in_space((1.0 - u) * length) / length;
+  return 0.5 * (u + v);
+}
+
+// A facet's mesh has a vertex at parameter t of segment g. The first try takes t as a split. The
+// second (one_tree_) splits the piece holding t by the tree's rule, and the part of it that holds t
+// again, until a split lies within a quarter of the piece of t: each facet's own split points
+// (midpoints, shells, mirrored across thin wedges, measured in its own plane) interleaved with the
+// others' and cut the pieces near small corners down to 1e-10 (the gear at -pq30a2). False when t
+// is (within kSameParameter) a split or an end already: nothing was added.
+bool SurfaceBuilder::add_splits_near(std::uint32_t g, double t) {
+  Segment3& s = segments_[g];
+  if (!one_tree_) {
+    const auto at = std::lower_bound(s.splits.begin(), s.splits.end(), t);
+    const bool near_next = at != s.splits.end() && *at - t < kSameParameter;
+    const bool near_prev = at != s.splits.begin() && t - *(at - 1) < kSameParameter;
+    if (near_next || near_prev || t < kSameParameter || t > 1.0 - kSameParameter) return false;
+    s.splits.insert(at, t);
+    return true;
+  }
+  const double length = norm(in_.points[s.b] - in_.points[s.a]);
+  bool added = false;
+  for (;;) {
+    const auto at = std::lower_bound(s.splits.begin(), s.splits.end(), t);
+    const double u = at == s.splits.begin() ? 0.0 : *(at - 1), v = at == s.splits.end() ? 1.0 : *at;
+    if (t - u < kSameParameter || v - t < kSameParameter) return added;
+    const double m = tree_split(u, v, length, acute_[s.a] != 0, acute_[s.b] != 0);
+    if (!(m - u >= kSameParameter && v - m >= kSameParameter)) return added;
+    s.splits.insert(std::lower_bound(s.splits.begin(), s.splits.end(), m), m);
+    added = true;
+    if (std::abs(t - m) <= 0.25 * (v - u)) return added;
+  }
+}
+
 // Meshes the given facets (on two threads with options.threads > 1: facets share nothing while
 // they are meshed, and the cuts are merged afterwards in facet order, so the result does not
 // depend on the threads); with `record`, adds the cuts to the segments' splits and returns the
@@ -226,15 +288,10 @@ std::vector<std::uint32_t> SurfaceBuilder::mesh_facets(const std::vector<std::ui
   std::vector<std::uint32_t> again;
   for (std::size_t i = 0; i < facets.size(); ++i)
     for (const auto& [g, t] : cuts[i]) {
-      std::vector<double>& splits = segments_[g].splits;
-      const auto at = std::lower_bound(splits.begin(), splits.end(), t);
-      const bool near_next = at != splits.end() && *at - t < kSameParameter;
-      const bool near_prev = at != splits.begin() && t - *(at - 1) < kSameParameter;
-      if (near_next || near_prev || t < kSameParameter || t > 1.0 - kSameParameter) {
+      if (!add_splits_near(g, t)) {
         again.push_back(facets[i]);
         continue;
       }
-      splits.insert(at, t);
       again.insert(again.end(), segments_[g].facets.begin(), segments_[g].facets.end());
     }
   std::sort(again.begin(), again.end());
@@ -266,18 +323,16 @@ FacetMeshOptions SurfaceBuilder::share_of_budget(const FacetMeshOptions& options
   return o;
 }
 
-SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
-  for (std::size_t f = 0; f < in_.facets.size(); ++f) planes_.push_back(fit_facet_plane(in_, f));
-  collect_segments();
+// Rounds until the facets agree, the round cap, or the budget.
+void SurfaceBuilder::run_rounds(SurfaceReport& report, long& budget) {
   std::vector<std::uint32_t> dirty(facets_.size());
   for (std::uint32_t f = 0; f < dirty.size(); ++f) dirty[f] = f;
   report.converged = false;
-  // The rounds after the first re-mesh facets whose input grew by other facets' cuts, and their
-  // 2-D guards, tied to that input, do not bound the whole run: one budget does (SurfaceReport).
-  long budget = options_.refine ? options_.steiner_total : -1;
+  FacetMeshOptions options = options_;
+  options.refinement.straight_chains = one_tree_;
   for (report.rounds = 1; report.rounds <= max_rounds_; ++report.rounds) {
     report.facet_meshings += dirty.size();
-    const FacetMeshOptions round_options = share_of_budget(options_, dirty.size(), budget);
+    const FacetMeshOptions round_options = share_of_budget(options, dirty.size(), budget);
     const std::vector<std::uint32_t> meshed = dirty;
     dirty = mesh_facets(dirty, round_options);
     for (std::uint32_t f : meshed)
@@ -305,6 +360,28 @@ SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
     if (budget >= 0 && steiner_count() >= static_cast<std::size_t>(budget)) report.budget_reached = true;
     if (report.budget_reached) break;
   }
+}
+
+SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
+  for (std::size_t f = 0; f < in_.facets.size(); ++f) planes_.push_back(fit_facet_plane(in_, f));
+  collect_segments();
+  // The rounds after the first re-mesh facets whose input grew by other facets' cuts, and their
+  // 2-D guards, tied to that input, do not bound the whole run: one budget does (SurfaceReport).
+  long budget = options_.refine ? options_.steiner_total : -1;
+  run_rounds(report, budget);
+  if (!report.converged && !report.budget_reached) {
+    // The second try, from scratch: every facet splits a shared segment at the points of one tree
+    // (add_splits_near), and takes other facets' cuts as splits of the straight chain they lie on
+    // (as for -r), so a corner's pieces keep the corner as their end, its shells are measured
+    // from it and the triangles between equal shells are spared as in one 2-D run. Each facet's
+    // own split points near small corners interleaved with the others' and were cut down to
+    // 1e-10 (the pynastran gear at -pq30a20, a2, a0.02: now 19, 13 and 29 rounds). Not the first
+    // try: sparing the rung between unequal shells left 7.25 degrees at the wedge's 15.
+    one_tree_ = true;
+    for (Segment3& s : segments_) s.splits.clear();
+    for (FacetState& state : facets_) state = FacetState{state.segments, 0, state.lone, {}, {}, {}};
+    run_rounds(report, budget);
+  }
   report.steiner_budget = budget;
   if (!report.converged) {
     // The guard: mesh every facet again with its segments kept as they are now, so that no facet
@@ -319,7 +396,7 @@ SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
       for (FacetState& state : facets_) state.own_steiner = 0;
     FacetMeshOptions kept = share_of_budget(options_, facets_.size(), budget);
     kept.refinement.no_steiner_on_segments = 2;
-    dirty.resize(facets_.size());
+    std::vector<std::uint32_t> dirty(facets_.size());
     for (std::uint32_t f = 0; f < dirty.size(); ++f) dirty[f] = f;
     report.facet_meshings += dirty.size();
     mesh_facets(dirty, kept, false);

@@ -16,8 +16,10 @@
 // Termination: the recorded points only grow, and each is a vertex a facet's Terminator placed
 // under its termination guard. That guard's floor is tied to the facet's input, which the cuts
 // arriving from other facets extend, so the rounds are not proven to end (docs/surfaces.md); they
-// are bounded instead: after kMaxSurfaceRounds the facets are meshed once more with no Steiner
-// points on any segment (-YY), which always conforms; triangles that miss the bounds are reported.
+// are bounded instead: after kMaxSurfaceRounds the run starts again from the facets as read with
+// one tree of split points per segment (surface_mesher.cpp, "the second try"), and after
+// kMaxSurfaceRounds more the facets are meshed once more with no Steiner points on any segment
+// (-YY), which always conforms; triangles that miss the bounds are reported.
 #pragma once
 
 #include <cstdint>
@@ -47,7 +49,7 @@ struct SurfaceReport {
   std::size_t segments = 0;         // distinct input segments
   std::size_t shared_segments = 0;  // held by two or more facets
   std::size_t shared_splits = 0;    // vertices on shared segments at the end
-  int rounds = 0;                   // meshing rounds until the facets agreed
+  int rounds = 0;                   // meshing rounds until the facets agreed (of the second try if it ran)
   std::size_t facet_meshings = 0;   // facet meshes made in all rounds
   bool converged = true;            // false: the -YY guard pass made the result
   // The run's Steiner budget: -S if given, and never more than the sum of the caps the 2-D guard

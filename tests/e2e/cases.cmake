@@ -410,6 +410,7 @@ endforeach()
 set(AREA_ALONE_CASES
     guitar 0.5376 2.136           # 4.2717
     guitar 0.05376 0.013          # 0.024919
+    guitar 0.005376 0.00009       # 0.00018163
     box 0.09 0.106                # 0.2103
     box 0.0036 0.29               # 0.57882
     box 0.00036 0.024             # 0.047506
@@ -417,8 +418,10 @@ set(AREA_ALONE_CASES
     overlapping_constraints 0.017472 0.492   # 0.98283
     overlapping_constraints 0.0017472 0.255  # 0.50917
     square_with_crack 0.01 0.285             # 0.56925
+    square_with_crack 0.002 0.267            # 0.53403
     square_with_crack 0.0004 0.292           # 0.58377
     issue-42-hole-overlaps-bondary 0.06 0.529     # 1.0566
+    issue-42-hole-overlaps-bondary 0.006 0.508    # 1.01757
     issue-42-hole-overlaps-bondary 0.00024 0.229)  # 0.45615
 while(AREA_ALONE_CASES)
   list(POP_FRONT AREA_ALONE_CASES name a angle)
