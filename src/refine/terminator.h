@@ -23,6 +23,7 @@
 #include "refine/edge_finder.h"
 #include "refine/encroached.h"
 #include "refine/encroached_queue.h"
+#include "refine/relocation.h"
 #include "refine/mirrored_split.h"
 #include "refine/outcome.h"
 #include "refine/quality_queue.h"
@@ -164,6 +165,7 @@ class Terminator {
   double smallest_made_sine2(const Point& c);  // over the triangles c makes with the cavity's boundary
   double smallest_replaced_sine2();            // over the cavity's triangles
   bool budget_left();                   // the Steiner cap and -S
+  bool relocate_corners(TriangleId t);  // relocation.h: true when a corner of t moved
   double floor_at(const Point& p) const;  // the guard's edge floor where p lies
   double floor_for(const Assessment& a, const Point& p) const;  // the floor for splitting that triangle
   double precision_floor(const Point& p) const;  // precision_floor_at, or the coarse floor
@@ -236,6 +238,8 @@ class Terminator {
   double off_center_factor_ = 0.0;  // 0: circumcentres only (-k)
   bool optimal_points_ = false;     // locally optimal Steiner points (--steiner=optimal; steiner_point.h)
   PetalSearch petal_;               // their search's scratch
+  Relocator relocator_;             // free vertices moved above 34 degrees (relocation.h)
+  std::uint64_t relocations_ = 0;
   double kept_bound_sin2_ = 0.0;    // -Y/-YY: sin^2 of the angle bound, of the least lens without -q
   double floor_sin2_ = 0.0;         // sin^2 of min(that angle, the initial mesh's smallest), of half that
                                     // angle without a size bound, where -Y/-YY keep every subsegment, else 0
