@@ -475,3 +475,14 @@ e2e_case(ceiling.holes3.pq38 gen:holes3.poly -pq38 --no-warning --verify "--refi
 e2e_case(ceiling.hexhole.pq38 gen:hexhole.poly "-pq38 --steiner=optimal" --no-warning --verify "--refined --min-angle 38")
 e2e_case(ceiling.annulus.offcentre.pq39 gen:annulus.poly "-pq39 --steiner=offcentre" --verify "--refined --min-angle 34"
          --warning "refinement cannot reach this angle bound here")
+
+# ---- -q40 and above (docs/refinement.md, "-q40 and above: moving free vertices, worst first"):
+# the second stage of locally optimal points moves free vertices and serves the worst triangles
+# first; before that every one of these stopped with the 34-degree mesh and a warning. The annulus
+# is ring.poly's shape (a 40-gon around a 20-gon hole). Every triangle meets the bound by
+# deltri_mesh_verify's check, and no warning ----
+e2e_case(ceiling.q40.annulus gen:annulus.poly -pq40 --no-warning --verify "--refined --min-angle 40")
+e2e_case(ceiling.q40.hexhole gen:hexhole.poly -pq40 --no-warning --verify "--refined --min-angle 40")
+e2e_case(ceiling.q40.holes3 gen:holes3.poly -pq40 --no-warning --verify "--refined --min-angle 40")
+e2e_case(ceiling.q40.ngon12 gen:ngon12.poly -pq40 --no-warning --verify "--refined --min-angle 40")
+e2e_case(ceiling.q41.annulus gen:annulus.poly -pq41 --no-warning --verify "--refined --min-angle 41")
