@@ -2,7 +2,7 @@
 // optimal Steiner points", "-q40 and above"): before a bad triangle gets a new vertex, each of its
 // free corners may move to where its star's smallest angle is larger. Above about 38 degrees a new
 // vertex rarely has a place where all its new triangles meet the bound (ring.poly at -q40: no such
-// candidate in 470 of 555 petal searches), so each insertion leaves bad triangles and the inserting
+// candidate in 445 of 530 petal searches), so each insertion leaves bad triangles and the inserting
 // cascades; a move changes no topology and makes no shorter edge. A move is kept only where
 //   * the star stays a valid fan (exact orient2d) and its smallest angle rises;
 //   * every edge of the star stays locally Delaunay (exact incircle), edges on subsegments

@@ -30,7 +30,7 @@ ap = argparse.ArgumentParser()
 ap.add_argument('deltri'); ap.add_argument('triangle'); ap.add_argument('verify'); ap.add_argument('corpus')
 ap.add_argument('--files', default=DEFAULT_FILES)
 ap.add_argument('--extra-input', action='append', default=[], help='an input outside the corpus (a path)')
-ap.add_argument('--top', type=int, default=40)
+ap.add_argument('--top', type=int, default=45)
 ap.add_argument('--timeout', type=float, default=300); ap.add_argument('--triangle-timeout', type=float, default=60)
 args = ap.parse_args()
 

@@ -2,7 +2,7 @@
 """Triangle counts of deltri against Triangle 1.6 at equal -q on every corpus .poly (issue 44,
 "at -q34 the total over the corpus no more than Triangle's, no file above 1.05x at -q33").
 
-    counts_vs_triangle.py DELTRI TRIANGLE CORPUS_DIR [--angles 33,34] [--timeout 60] [--extra "..."]
+    counts_vs_triangle.py DELTRI TRIANGLE CORPUS_DIR [--angles 33,34] [--timeout 60] [--extra="--steiner=optimal"]
 
 Both programs run `-pq<angle>Q` on a scratch copy of each file; a file counts towards an angle's
 totals only when both programs gave a mesh within the timeout. Prints one line per file (counts
