@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/constructions.h"
+
 namespace deltri {
 namespace {
 
@@ -18,8 +20,12 @@ double angle_at(const Point& a, const Point& b, const Point& c) {
   return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * (180.0 / std::numbers::pi);
 }
 
+// The smallest angle is the one opposite the shortest edge: one atan2, not three (the search
+// measures every star triangle at every step).
 double smallest_angle(const Point& a, const Point& b, const Point& c) {
-  return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)});
+  const double ab = squared_distance(a, b), bc = squared_distance(b, c), ca = squared_distance(c, a);
+  if (ab <= bc && ab <= ca) return angle_at(c, a, b);
+  return bc <= ca ? angle_at(a, b, c) : angle_at(b, c, a);
 }
 
 }  // namespace
