@@ -47,7 +47,10 @@ RefineOptions after(const RefineOptions& opt, std::uint64_t used) {
 }
 
 // On at opt's bound from a mesh that meets the algorithm's reach, with at most its allowance of Steiner
-// points per vertex (stage_plan).
+// points per vertex (stage_plan). With locally optimal points the worst triangles go first (the
+// paper's order) and free vertices are moved before points are added (relocation.h): served
+// shortest edge first, the moves and points chased the smallest triangles down to the guard's
+// floor and no corpus file reached -q40; worst first, all ten did (docs/refinement.md).
 RefineReport refine_beyond_reach(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
   TerminatorStart start = TerminatorStart::of(mesh, opt);
   const auto allowance = static_cast<std::uint64_t>(stage_plan(opt).allowance * mesh.vertex_count());
@@ -55,7 +58,9 @@ RefineReport refine_beyond_reach(Mesh& mesh, Predicates& pred, const RefineOptio
     start.steiner_cap = allowance;
     start.cap_kind = CapKind::Cascade;
   }
-  return Terminator(mesh, pred, opt, std::move(start)).run();
+  RefineOptions second = opt;
+  if (opt.steiner == SteinerPolicy::Optimal && opt.queue_order == QueueOrder::ShortestEdge) second.queue_order = QueueOrder::Paper;
+  return Terminator(mesh, pred, second, std::move(start)).run();
 }
 
 // Above kCascadeAngleDeg refinement can cascade (Sec. 7.3, Fig. 37): each generation of vertices

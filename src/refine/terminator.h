@@ -29,6 +29,7 @@
 #include "refine/edge_finder.h"
 #include "refine/encroached.h"
 #include "refine/encroached_queue.h"
+#include "refine/relocation.h"
 #include "refine/mirrored_split.h"
 #include "refine/outcome.h"
 #include "refine/quality_queue.h"
@@ -148,6 +149,7 @@ class Terminator {
   bool parent_is_input_feature(const PieceEnds& piece) const;
   std::array<VertexId, 2> sure_fire_ancestors(EdgeRef shortest) const;
   bool budget_left();                   // the Steiner cap and -S
+  bool relocate_corners(TriangleId t);  // relocation.h: true when a corner of t moved
   double floor_at(const Point& p) const;  // the guard's edge floor where p lies
   double floor_for(const Assessment& a, const Point& p) const;  // the floor for splitting that triangle
   double precision_floor(const Point& p) const;  // precision_floor_at, or the coarse floor
@@ -218,6 +220,8 @@ class Terminator {
   Mending mending_;        // -Y / -YY, once Q_t is empty
   bool optimal_points_ = false;     // locally optimal Steiner points (--steiner=optimal; steiner_point.h)
   PetalSearch petal_;               // their search's scratch
+  Relocator relocator_;             // free vertices moved above 34 degrees (relocation.h)
+  std::uint64_t relocations_ = 0;
   double guard_floor_ = 0.0;           // the guard's edge floor from the input's features
   bool proven_range_ = false;          // the paper's theorems cover the run
   // The floor applied: guard_floor_, or 0 within the proven range, whose proofs are for circumcentres

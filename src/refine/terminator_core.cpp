@@ -26,9 +26,10 @@ void Terminator::refine_all() {
 Outcome Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   if (!is_current(mesh_, entry)) return Outcome::Gone;  // l.12
   const TriangleId t = entry.triangle;
-  const Assessment a = assess(t);
+  Assessment a = assess(t);
   if (!a.bad()) return Outcome::NotBad;
   if (!budget_left()) return Outcome::OverBudget;
+  if (relocate_corners(t) && !(a = assess(t)).bad()) return Outcome::NotBad;  // a corner moved: t again
   Candidate c;
   if (const auto refusal = choose_point(t, a, c)) return *refusal;  // l.13
   const auto splittable = [this](EdgeRef e) { return is_splittable(e); };

@@ -110,6 +110,12 @@ gen_input() {  # gen_input NAME.EXT DIR
         for (i = 0; i < 40; i++) printf "%d %d %d 1\n", i + 1, i + 1, (i + 1) % 40 + 1
         for (i = 0; i < 20; i++) printf "%d %d %d 2\n", i + 41, i + 41, (i + 1) % 20 + 41
         print 1; print 1, 0, 0 }' >"$2/$1" ;;
+    ngon12.poly)  # a regular 12-gon of radius 1: every input angle 150 degrees
+      awk 'BEGIN { pi = atan2(0, -1); print 12, 2, 0, 0
+        for (i = 0; i < 12; i++) printf "%d %.17g %.17g\n", i + 1, cos(2 * pi * i / 12), sin(2 * pi * i / 12)
+        print 12, 0
+        for (i = 0; i < 12; i++) printf "%d %d %d\n", i + 1, i + 1, (i + 1) % 12 + 1
+        print 0 }' >"$2/$1" ;;
     hexhole.poly)  # a 3 x 2 rectangle around a hexagonal hole: every input angle 90 or 240 degrees
       awk 'BEGIN { pi = atan2(0, -1); print 10, 2, 0, 1; printf "1 0 0 1\n2 3 0 1\n3 3 2 1\n4 0 2 1\n"
         for (i = 0; i < 6; i++) printf "%d %.17g %.17g 2\n", i + 5, 1.1 + 0.5 * cos(2 * pi * i / 6 + 0.3), 0.9 + 0.5 * sin(2 * pi * i / 6 + 0.3)

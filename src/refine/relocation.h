@@ -1,0 +1,43 @@
+// Vertex relocation in the second stage of locally optimal points (docs/refinement.md, "Locally
+// optimal Steiner points", "-q40 and above"): before a bad triangle gets a new vertex, each of its
+// free corners may move to where its star's smallest angle is larger. Above about 38 degrees a new
+// vertex rarely has a place where all its new triangles meet the bound (ring.poly at -q40: no such
+// candidate in 445 of 530 petal searches), so each insertion leaves bad triangles and the inserting
+// cascades; a move changes no topology and makes no shorter edge. A move is kept only where
+//   * the star stays a valid fan (exact orient2d) and its smallest angle rises;
+//   * every edge of the star stays locally Delaunay (exact incircle), edges on subsegments
+//     excepted, which the vertex must not encroach upon (the refinement's rule);
+// so the mesh stays the constrained Delaunay mesh the Terminator keeps. The search is a compass
+// search on the star's smallest angle (as --smooth's, improve/smooth.cpp, whose layer comes after
+// refinement): eight directions at a tenth of the shortest spoke, halved when none gains.
+#pragma once
+
+#include <vector>
+
+#include "geometry/encroachment.h"
+#include "geometry/predicates.h"
+#include "mesh/mesh.h"
+
+namespace deltri {
+
+// Moves per vertex of the mesh a run may make: moves add no vertex, so the Steiner cap does not
+// bound them. Raising it from 4 to 16 changed no file's outcome at -q40 (measured with the
+// shortest-edge order; refinement.md).
+inline constexpr double kRelocationsPerVertex = 4.0;
+
+class Relocator {
+ public:
+  // Moves org(first), a free vertex, to raise its star's smallest angle; true when it moved. The
+  // star's edges leaving it are in star_edges() afterwards.
+  bool relocate(Mesh& mesh, Predicates& pred, const EncroachRule& rule, EdgeRef first);
+  const std::vector<EdgeRef>& star_edges() const { return out_; }
+
+ private:
+  bool gather(const Mesh& mesh, EdgeRef first);
+  double least_angle(const Mesh& mesh, const Point& p) const;
+  bool acceptable(const Mesh& mesh, Predicates& pred, const EncroachRule& rule, const Point& p, double before) const;
+  std::vector<EdgeRef> out_;     // the edges leaving the vertex, counter-clockwise
+  std::vector<VertexId> ring_;   // their far ends, the first repeated at the end
+};
+
+}  // namespace deltri

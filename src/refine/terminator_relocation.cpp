@@ -1,0 +1,25 @@
+// The Terminator's use of vertex relocation (relocation.h) in the second stage of locally optimal points.
+#include "refine/terminator.h"
+
+namespace deltri {
+
+// Above the off-centres' reach (the second stage, with locally optimal points), a bad triangle's
+// free corners first move where their stars' smallest angles are larger (relocation.h), and the
+// stars' triangles go back in the queue; a triangle that meets the bound then needs no new vertex.
+// Moves add no vertex, so the Steiner cap does not bound them: kRelocationsPerVertex does.
+bool Terminator::relocate_corners(TriangleId t) {
+  if (!optimal_points_ || !opt_.angle.cascades()) return false;
+  bool moved = false;
+  for (unsigned k = 0; k < 3; ++k) {
+    const EdgeRef e = edge_of(t, k);
+    if (mesh_.kind[mesh_.org(e)] != VertexKind::Free) continue;
+    if (relocations_ >= static_cast<std::uint64_t>(kRelocationsPerVertex * mesh_.vertex_count())) return moved;
+    if (!relocator_.relocate(mesh_, pred_, rule_, e)) continue;
+    ++relocations_;
+    moved = true;
+    for (const EdgeRef s : relocator_.star_edges()) enqueue_if_bad(triangle_of(s));
+  }
+  return moved;
+}
+
+}  // namespace deltri
