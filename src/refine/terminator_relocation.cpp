@@ -14,7 +14,7 @@ bool Terminator::relocate_corners(TriangleId t) {
     const EdgeRef e = edge_of(t, k);
     if (mesh_.kind[mesh_.org(e)] != VertexKind::Free) continue;
     if (relocations_ >= static_cast<std::uint64_t>(kRelocationsPerVertex * mesh_.vertex_count())) return moved;
-    if (!relocator_.relocate(mesh_, pred_, rule_, e)) continue;
+    if (!relocator_.relocate(mesh_, pred_, policy_.rule, e)) continue;
     ++relocations_;
     moved = true;
     for (const EdgeRef s : relocator_.star_edges()) enqueue_if_bad(triangle_of(s));
