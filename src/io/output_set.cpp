@@ -411,7 +411,9 @@ std::size_t remove_stale_temporaries(const std::vector<Target>& targets) {
     it->second.push_back(t.name);
   }
   std::size_t removed = 0;
-  for (const auto& [dir, names] : names_by_dir) {
+  for (const auto& by_dir : names_by_dir) {
+    const Target* dir = by_dir.first;  // not a structured binding: clang 14 cannot capture one in a lambda
+    const std::vector<std::string>& names = by_dir.second;
     for_each_name_in(dir->dir, [&](const std::string& entry) {
       for (const std::string& name : names) {
         const long owner = temporary_owner(entry, name, dir->longest);
