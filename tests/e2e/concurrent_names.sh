@@ -87,27 +87,26 @@ done
 # the two) both exit 0 and leave one run's complete set, byte for byte.
 "$deltri" -pQ a.poly && for ext in node ele poly; do mv a.1.$ext coarse.$ext; done
 cp a.poly same.poly
-pairs=${PAIRS:-20} i=0 met=0
-while [ $i -lt "$pairs" ]; do
-  rm -f a.1.* b.1.* same.1.*
-  "$deltri" -pq30Q a.poly 2>err.a &
+# together "ARGS A" "ARGS B": both runs started at once, their stderr in err.a and err.b, their
+# exits in sa and sb; true when both exit 0.
+together() {
+  "$deltri" $1 2>err.a &
   pa=$!
-  "$deltri" -pq30Q b.poly 2>err.b &
+  "$deltri" $2 2>err.b &
   pb=$!
   wait $pa; sa=$?
   wait $pb; sb=$?
-  [ $sa = 0 ] && [ $sb = 0 ] || fail "together, other names, pair $i: exit $sa and $sb"
+  [ $sa = 0 ] && [ $sb = 0 ]
+}
+pairs=${PAIRS:-20} i=0 met=0
+while [ $i -lt "$pairs" ]; do
+  rm -f a.1.* b.1.* same.1.*
+  together "-pq30Q a.poly" "-pq30Q b.poly" || fail "together, other names, pair $i: exit $sa and $sb"
   if [ -s err.a ] || [ -s err.b ]; then fail "together, other names, pair $i: warned: $(cat err.a err.b)"; fi
   for ext in node ele poly; do
     cmp -s a.1.$ext big.$ext && cmp -s b.1.$ext big.$ext || fail "together, other names, pair $i: a.1.$ext or b.1.$ext not as alone"
   done
-  "$deltri" -pQ same.poly 2>err.a &
-  pa=$!
-  "$deltri" -pq30Q same.poly 2>err.b &
-  pb=$!
-  wait $pa; sa=$?
-  wait $pb; sb=$?
-  [ $sa = 0 ] && [ $sb = 0 ] || fail "together, same names, pair $i: exit $sa and $sb"
+  together "-pQ same.poly" "-pq30Q same.poly" || fail "together, same names, pair $i: exit $sa and $sb"
   [ -s err.a ] || [ -s err.b ] && met=$((met + 1))
   set_is=mixed
   for name in coarse big; do
