@@ -34,6 +34,7 @@ class Relocator {
 
  private:
   bool gather(const Mesh& mesh, EdgeRef first);
+  // sin^2 of the smallest angle of the star with its centre at p.
   double least_angle(const Mesh& mesh, const Point& p) const;
   bool acceptable(const Mesh& mesh, Predicates& pred, const EncroachRule& rule, const Point& p, double before) const;
   std::vector<EdgeRef> out_;     // the edges leaving the vertex, counter-clockwise
