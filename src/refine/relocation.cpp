@@ -36,16 +36,16 @@ bool Relocator::gather(const Mesh& m, EdgeRef first) {
   return out_.size() >= 3;
 }
 
-double Relocator::least_angle(const Mesh& m, const Point& p) const {
+double Relocator::least_angle(const Mesh& m, const Point& p, double floor) const {
   double least = 1.0;
-  for (std::size_t i = 0; i < out_.size(); ++i)
+  for (std::size_t i = 0; i < out_.size() && least > floor; ++i)
     least = std::min(least, smallest_angle_sine2(p, m.points[ring_[i]], m.points[ring_[i + 1]]));
   return least;
 }
 
 bool Relocator::acceptable(const Mesh& m, Predicates& pred, const EncroachRule& rule, const Point& p,
                            double before) const {
-  if (!(least_angle(m, p) > before + kSlack)) return false;
+  if (!(least_angle(m, p, before + kSlack) > before + kSlack)) return false;
   const std::size_t n = out_.size();
   for (std::size_t i = 0; i < n; ++i)
     if (!(pred.orient2d(p, m.points[ring_[i]], m.points[ring_[i + 1]]) > 0.0)) return false;
@@ -72,13 +72,13 @@ bool Relocator::relocate(Mesh& m, Predicates& pred, const EncroachRule& rule, Ed
   for (VertexId w : ring_) least = std::min(least, std::hypot(m.points[w].x - old.x, m.points[w].y - old.y));
   double h = 0.1 * least;
   Point at = old;
-  double best = least_angle(m, old);
+  double best = least_angle(m, old, 0.0);
   for (int k = 0; k < kSearchSteps && h > 0.0; ++k) {
     Point pick = at;
     double gain = best;
     for (const auto& d : kDirections) {
       const Point p{at.x + h * d[0], at.y + h * d[1]};
-      const double q = least_angle(m, p);
+      const double q = least_angle(m, p, gain + kSlack);
       if (q > gain + kSlack) gain = q, pick = p;
     }
     if (pick != at && acceptable(m, pred, rule, pick, best)) {
