@@ -36,10 +36,18 @@ bool Relocator::gather(const Mesh& m, EdgeRef first) {
   return out_.size() >= 3;
 }
 
+// Starts at the triangle that was smallest last time: a nearby candidate's smallest is most often
+// the same one, so a candidate no better than floor is dropped after one measure. The order does not
+// change the value returned when it is above floor (the minimum), nor the verdict when it is not.
 double Relocator::least_angle(const Mesh& m, const Point& p, double floor) const {
+  const std::size_t n = out_.size();
   double least = 1.0;
-  for (std::size_t i = 0; i < out_.size() && least > floor; ++i)
-    least = std::min(least, smallest_angle_sine2(p, m.points[ring_[i]], m.points[ring_[i + 1]]));
+  std::size_t worst = worst_ < n ? worst_ : 0;
+  for (std::size_t k = 0, i = worst; k < n && least > floor; ++k, i = i + 1 < n ? i + 1 : 0) {
+    const double s = smallest_angle_sine2(p, m.points[ring_[i]], m.points[ring_[i + 1]]);
+    if (s < least) least = s, worst = i;
+  }
+  worst_ = worst;
   return least;
 }
 

@@ -40,6 +40,7 @@ class Relocator {
   bool acceptable(const Mesh& mesh, Predicates& pred, const EncroachRule& rule, const Point& p, double before) const;
   std::vector<EdgeRef> out_;     // the edges leaving the vertex, counter-clockwise
   std::vector<VertexId> ring_;   // their far ends, the first repeated at the end
+  mutable std::size_t worst_ = 0;  // where least_angle found the smallest last (where it starts)
 };
 
 }  // namespace deltri
