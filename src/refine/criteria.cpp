@@ -125,16 +125,6 @@ double triangle_sine2(const Mesh& mesh, TriangleId t) {
   return smallest_angle_sine2(a, b, c);
 }
 
-double smallest_angle_sine2(const Point& a, const Point& b, const Point& c) {
-  const double abx = b.x - a.x, aby = b.y - a.y, acx = c.x - a.x, acy = c.y - a.y;
-  const double bcx = c.x - b.x, bcy = c.y - b.y;
-  const double twice_area = abx * acy - aby * acx;
-  if (!(twice_area > 0.0)) return 0.0;
-  double l[3] = {abx * abx + aby * aby, bcx * bcx + bcy * bcy, acx * acx + acy * acy};
-  std::sort(l, l + 3);
-  return twice_area * twice_area / (l[1] * l[2]);
-}
-
 bool hopeless_edge(const Point& p, const Point& q, double sin2_theta) {
   if (!(sin2_theta > 0.0)) return false;
   const double length = std::sqrt(squared_distance(p, q));

@@ -7,6 +7,7 @@
 // when an angle is compared against a bound anywhere else.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "geometry/point.h"
@@ -95,7 +96,16 @@ bool angle_between_subsegments(const Mesh& mesh, EdgeRef e);
 // of the squared lengths of the two longer sides; 0 if a, b, c are clockwise or collinear by the
 // plain cross product. For points a few thousand ulps apart the coordinate differences, and their
 // products, are exact, so the measure is as good as the exact angle for comparisons.
-double smallest_angle_sine2(const Point& a, const Point& b, const Point& c);
+// Inline, with the two longer sides' product as the largest of the three pairwise products (the
+// same double: rounding is monotone), since the vertex-relocation search calls it in its inner loop.
+inline double smallest_angle_sine2(const Point& a, const Point& b, const Point& c) {
+  const double abx = b.x - a.x, aby = b.y - a.y, acx = c.x - a.x, acy = c.y - a.y;
+  const double bcx = c.x - b.x, bcy = c.y - b.y;
+  const double twice_area = abx * acy - aby * acx;
+  if (!(twice_area > 0.0)) return 0.0;
+  const double ab = abx * abx + aby * aby, bc = bcx * bcx + bcy * bcy, ca = acx * acx + acy * acy;
+  return twice_area * twice_area / std::max({ab * bc, bc * ca, ca * ab});
+}
 
 // Whether a smallest-angle measure sine2 (smallest_angle_sine2) meets the bound whose sin2() is
 // sin2_theta (at or above it), or falls below it. Not quite each other's negation: a NaN does neither.

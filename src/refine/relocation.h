@@ -34,10 +34,13 @@ class Relocator {
 
  private:
   bool gather(const Mesh& mesh, EdgeRef first);
-  double least_angle(const Mesh& mesh, const Point& p) const;
+  // sin^2 of the smallest angle of the star with its centre at p, or some value at or below floor
+  // once that is below it (a candidate no better than floor is dropped whatever its exact measure).
+  double least_angle(const Mesh& mesh, const Point& p, double floor) const;
   bool acceptable(const Mesh& mesh, Predicates& pred, const EncroachRule& rule, const Point& p, double before) const;
   std::vector<EdgeRef> out_;     // the edges leaving the vertex, counter-clockwise
   std::vector<VertexId> ring_;   // their far ends, the first repeated at the end
+  mutable std::size_t worst_ = 0;  // where least_angle found the smallest last (where it starts)
 };
 
 }  // namespace deltri

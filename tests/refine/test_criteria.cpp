@@ -1,5 +1,6 @@
 // The criteria (refine/criteria.h): the smallest-angle measure, edges no double can give a good
 // triangle, and the exact largest-angle test against independent facts.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstdint>
@@ -41,6 +42,33 @@ TEST(smallest_angle_sine2_of_known_triangles) {
   CHECK_EQ(deltri::smallest_angle_sine2({x, y}, {up(x, 1), y}, {x, up(y, 1)}), 0.5);
   // 1 by 2 ulps: the angle opposite the short side is atan(1/2).
   CHECK_NEAR(deltri::smallest_angle_sine2({x, y}, {up(x, 2), y}, {x, up(y, 1)}), 0.2, 1e-15);
+}
+
+// Against the three angles measured one by one (atan2 of cross and dot at each corner): the measure
+// is sin^2 of the least of them, whatever the order of the corners' side lengths, so ranking
+// triangles by it ranks them by their smallest angles (the vertex relocation search relies on it).
+TEST(smallest_angle_sine2_matches_the_least_of_three_angles) {
+  std::uint64_t state = 7;
+  const auto coordinate = [&] { return static_cast<double>(next(state) % 1000003) / 1000003.0; };
+  const auto angle = [](const Point& a, const Point& b, const Point& c) {
+    const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - a.x, vy = c.y - a.y;
+    return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy);
+  };
+  double previous_angle = 0.0, previous_measure = 0.0;
+  for (int i = 0; i < 20000; ++i) {
+    const Point a{coordinate(), coordinate()}, b{coordinate(), coordinate()}, c{coordinate(), coordinate()};
+    const double least = std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+    const double cross = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    const double measure = deltri::smallest_angle_sine2(a, b, c);
+    if (!(cross > 0.0)) {
+      CHECK_EQ(measure, 0.0);
+      continue;
+    }
+    CHECK_NEAR(measure, std::sin(least) * std::sin(least), 1e-9);
+    if (least > previous_angle + 1e-6) CHECK(measure > previous_measure);
+    if (least < previous_angle - 1e-6) CHECK(measure < previous_measure);
+    previous_angle = least, previous_measure = measure;
+  }
 }
 
 TEST(hopeless_edge_finds_pairs_no_double_can_mesh) {
