@@ -5,6 +5,7 @@
 #include <numbers>
 #include <vector>
 
+#include "geometry/compass.h"
 #include "geometry/constructions.h"
 #include "refine/criteria.h"
 
@@ -19,10 +20,7 @@ constexpr double kAngleSlackDeg = 1e-9;
 // The ODT point may lie far off; shorter steps towards it are tried when it is refused.
 constexpr double kSteps[] = {1.0, 0.5, 0.25};
 
-// The compass search's directions (unit vectors at multiples of 45 degrees) and its step budget.
-constexpr double kDiagonal = 0.70710678118654752;
-constexpr double kDirections[8][2] = {{1, 0}, {kDiagonal, kDiagonal}, {0, 1}, {-kDiagonal, kDiagonal},
-                                      {-1, 0}, {-kDiagonal, -kDiagonal}, {0, -1}, {kDiagonal, -kDiagonal}};
+// The compass search's step budget (its directions: geometry/compass.h).
 constexpr int kSearchSteps = 6;
 
 double angle_at(const Point& a, const Point& b, const Point& c) {
@@ -226,7 +224,7 @@ class Smoother {
       Point pick = at;
       const StarQuality here = quality<Measure::Rough>(at);
       StarQuality gain = here;
-      for (const auto& d : kDirections) {
+      for (const auto& d : kCompassDirections) {
         const Point p{at.x + h * d[0], at.y + h * d[1]};
         const StarQuality q = quality<Measure::Rough>(p);
         if (q.better_than(here) && q.least > gain.least) {

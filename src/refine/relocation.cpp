@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/compass.h"
 #include "geometry/constructions.h"
 #include "refine/criteria.h"
 
@@ -14,9 +15,6 @@ namespace {
 // is at most 60 degrees, where sin^2 rises with the angle, so the ranking is the angles'; an
 // inverted triangle measures 0 and is never picked. The slack is about 1e-9 degrees near 40.
 constexpr double kSlack = 1.7e-11;
-constexpr double kDiagonal = 0.70710678118654752;
-constexpr double kDirections[8][2] = {{1, 0}, {kDiagonal, kDiagonal}, {0, 1}, {-kDiagonal, kDiagonal},
-                                      {-1, 0}, {-kDiagonal, -kDiagonal}, {0, -1}, {kDiagonal, -kDiagonal}};
 constexpr int kSearchSteps = 8;
 
 }  // namespace
@@ -84,7 +82,7 @@ bool Relocator::relocate(Mesh& m, Predicates& pred, const EncroachRule& rule, Ed
   for (int k = 0; k < kSearchSteps && h > 0.0; ++k) {
     Point pick = at;
     double gain = best;
-    for (const auto& d : kDirections) {
+    for (const auto& d : kCompassDirections) {
       const Point p{at.x + h * d[0], at.y + h * d[1]};
       const double q = least_angle(m, p, gain + kSlack);
       if (q > gain + kSlack) gain = q, pick = p;
