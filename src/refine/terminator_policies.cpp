@@ -95,6 +95,21 @@ bool Terminator::in_strip_below_an_ulp(EdgeRef s) const {
   return false;
 }
 
+// The guard's floor for a subsegment split, kSplitFloorUlps units in the last place of the larger
+// coordinate of the split's ends: the feature floor can be far below an ulp (a wedge of 1e-15
+// radians between two segments that leave an ulp cluster gave 1.9e-34), and at the bottom scale
+// the split points of the chain along such a wedge crept along it an ulp at a time, each split
+// making the next one's triangles bad (issue 47, item 6: -pq20 to -pq22 ran without end). A
+// split whose halves would be shorter than the floor is refused and its triangles counted.
+namespace {
+constexpr double kSplitFloorUlps = 2.0;
+bool halves_below_ulps(const Point& a, const Point& b, const Point& p) {
+  const double floor = ulps_at(std::max({magnitude(a), magnitude(b), magnitude(p)}), kSplitFloorUlps);
+  const double floor2 = floor * floor;
+  return squared_distance(a, p) < floor2 || squared_distance(p, b) < floor2;
+}
+}  // namespace
+
 // Fig. 39 l.39: the split point of s (split_point). Out of precision (it rounds onto an end, or a
 // neighbour is flush with s there, unless it is one that Chew's step deletes; checked again after
 // the step) and at the bottom of double precision the doubles near it are tried
@@ -119,6 +134,7 @@ std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, Spli
   plan.floor = owed_to_size ? precision_floor(p) : floor_at(p);
   plan.radius = split_radius(s, p);
   if (plan.radius.after_chew < plan.floor) return Outcome::BelowFloor;
+  if (!owed_to_size && halves_below_ulps(pa, pb, p)) return Outcome::BelowFloor;
   return std::nullopt;
 }
 
