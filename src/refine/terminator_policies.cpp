@@ -95,6 +95,34 @@ bool Terminator::in_strip_below_an_ulp(EdgeRef s) const {
   return false;
 }
 
+// The bottom of the guard's floor for subsegment splits: no split whose half would join two
+// neighbouring doubles (its ends at most one ulp apart in each coordinate, a piece that no double
+// can split again). The feature floor can be far below an ulp (1.9e-34 for a wedge of 1e-15
+// radians between two segments that leave an ulp cluster), and there the bottom-scale splits of
+// one segment's chain crept along the wedge one lattice step at a time, each split making the
+// next one's triangles bad (issue 47, item 6: -pq20 to -pq22 ran without end). Such a split is
+// refused and its triangles are counted. Halves shorter than 2 ulps of the magnitude but a few
+// doubles apart are still allowed: robustness1.node at -q20 splits a subsegment of 3 x ulps by
+// 6 y ulps (a y ulp is half an x ulp there), and refusing it left a triangle of 11.3 degrees.
+namespace {
+double lattice_step(double u, double v) {
+  const double m = std::max(std::fabs(u), std::fabs(v));
+  return std::nextafter(m, HUGE_VAL) - m;
+}
+bool neighbouring_doubles(const Point& a, const Point& b) {
+  return std::fabs(a.x - b.x) <= lattice_step(a.x, b.x) && std::fabs(a.y - b.y) <= lattice_step(a.y, b.y);
+}
+// Splitting s (pa-pb, on the segment piece A-B) at p would creep: a half joins neighbouring
+// doubles and the piece is over kLongStripUlps long, far longer than any feature the split
+// resolves (the pieces inside an ulp cluster are a few ulps long and are meshed down to the
+// lattice as before).
+bool creeping_split(const Point& pa, const Point& pb, const Point& p, const Point& A, const Point& B) {
+  const double ulp = ulps_at(std::max(magnitude(A), magnitude(B)), 1.0);
+  if (!(squared_distance(A, B) > kLongStripUlps * kLongStripUlps * ulp * ulp)) return false;
+  return neighbouring_doubles(pa, p) || neighbouring_doubles(p, pb);
+}
+}  // namespace
+
 // Fig. 39 l.39: the split point of s (split_point). Out of precision (it rounds onto an end, or a
 // neighbour is flush with s there, unless it is one that Chew's step deletes; checked again after
 // the step) and at the bottom of double precision the doubles near it are tried
@@ -119,6 +147,8 @@ std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, Spli
   plan.floor = owed_to_size ? precision_floor(p) : floor_at(p);
   plan.radius = split_radius(s, p);
   if (plan.radius.after_chew < plan.floor) return Outcome::BelowFloor;
+  const PieceEnds& piece = pieces_.of_subsegment[mesh_.subseg[s]];
+  if (!owed_to_size && creeping_split(pa, pb, p, mesh_.point(piece[0]), mesh_.point(piece[1]))) return Outcome::BelowFloor;
   return std::nullopt;
 }
 
