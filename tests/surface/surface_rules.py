@@ -247,7 +247,7 @@ def case_inconsistent():
     # tolerance whose loops, projected, cross other facets' segments; deltri exited 0 with
     # subsegments that were no edge of their facet. The finding and two more of its class (the
     # point at x = 4000 and x = -4000) must be refused in one line, nothing written (at -pq30 the
-    # variants run without end: open, docs/reliability.md).
+    # variants take minutes: open, docs/reliability.md).
     here = os.path.dirname(os.path.abspath(__file__))
     finding = open(os.path.join(here, "..", "fuzz", "findings", "surface-open-subsegment-no-edge.poly")).read()
     moved = re.compile(r"^11 40000\.0*", re.M)
