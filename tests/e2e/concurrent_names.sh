@@ -16,6 +16,17 @@ cd "$work" || exit 1
 LD_PRELOAD=$hook "$deltri" --version >/dev/null 2>&1 || { echo "skipped: the hook cannot be preloaded here"; exit 77; }
 failed=0
 fail() { echo "FAIL: $*"; failed=1; }
+# set_of STEM NAME...: the NAME whose .node, .ele and .poly STEM.1.* equal byte for byte, or "mixed".
+set_of() {
+  stem=$1
+  shift
+  for name in "$@"; do
+    same=1
+    for ext in node ele poly; do cmp -s $stem.1.$ext $name.$ext || same=0; done
+    [ $same = 1 ] && { echo $name; return; }
+  done
+  echo mixed
+}
 cp "$data/guitar.poly" a.poly
 cp "$data/guitar.poly" b.poly
 cp "$data/box.poly" small.poly
@@ -69,12 +80,7 @@ for round in 1 2; do
   "$deltri" -pq30Q out.poly 2>err.b &
   b=$!
   wait_b $b
-  set_is=mixed
-  for name in big little; do
-    same=1
-    for ext in node ele poly; do cmp -s out.1.$ext $name.$ext || same=0; done
-    [ $same = 1 ] && set_is=$name
-  done
+  set_is=$(set_of out big little)
   echo "same names, round $round: A exit $status_a, B exit $status_b, outputs: $set_is; B said: $(cat err.b)"
   [ $status_a = 0 ] && [ $status_b = 0 ] || fail "same names: exit $status_a and $status_b"
   [ $set_is = little ] || fail "same names: the outputs are '$set_is', not B's complete set (B ran last)"
@@ -108,12 +114,7 @@ while [ $i -lt "$pairs" ]; do
   done
   together "-pQ same.poly" "-pq30Q same.poly" || fail "together, same names, pair $i: exit $sa and $sb"
   [ -s err.a ] || [ -s err.b ] && met=$((met + 1))
-  set_is=mixed
-  for name in coarse big; do
-    same=1
-    for ext in node ele poly; do cmp -s same.1.$ext $name.$ext || same=0; done
-    [ $same = 1 ] && set_is=$name
-  done
+  set_is=$(set_of same coarse big)
   [ $set_is != mixed ] || fail "together, same names, pair $i: a mixed set"
   i=$((i + 1))
 done
