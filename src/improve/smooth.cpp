@@ -7,6 +7,7 @@
 
 #include "geometry/compass.h"
 #include "geometry/constructions.h"
+#include "mesh/star.h"
 #include "refine/criteria.h"
 
 namespace deltri {
@@ -69,28 +70,6 @@ struct StarQuality {
   double sum = 0.0;
   bool better_than(const StarQuality& o) const { return least > o.least + kAngleSlackDeg && sum > o.sum + kAngleSlackDeg; }
 };
-
-// v's star: the edges leaving v, counter-clockwise; triangle i is (v, ring[i], ring[i + 1]).
-struct Star {
-  std::vector<EdgeRef> out;
-  std::vector<VertexId> ring;  // ring.size() == out.size() + 1, ring.back() == ring.front()
-};
-
-// False where the fan around v is open (v on the boundary) or a spoke carries a subsegment.
-bool gather_star(const Mesh& m, EdgeRef first, Star& star) {
-  star.out.clear();
-  star.ring.clear();
-  EdgeRef e = first;
-  do {
-    if (m.has_subsegments() && m.subseg.has(e)) return false;
-    star.out.push_back(e);
-    star.ring.push_back(m.dest(e));
-    e = m.onext(e);
-    if (e == kNone) return false;
-  } while (e != first);
-  star.ring.push_back(star.ring.front());
-  return star.out.size() >= 3;
-}
 
 class Smoother {
  public:

@@ -19,30 +19,15 @@ constexpr int kSearchSteps = 8;
 
 }  // namespace
 
-bool Relocator::gather(const Mesh& m, EdgeRef first) {
-  out_.clear();
-  ring_.clear();
-  EdgeRef e = first;
-  do {
-    if (m.has_subsegments() && m.subseg.has(e)) return false;
-    out_.push_back(e);
-    ring_.push_back(m.dest(e));
-    e = m.onext(e);
-    if (e == kNone) return false;
-  } while (e != first);
-  ring_.push_back(ring_.front());
-  return out_.size() >= 3;
-}
-
 // Starts at the triangle that was smallest last time: a nearby candidate's smallest is most often
 // the same one, so a candidate no better than floor is dropped after one measure. The order does not
 // change the value returned when it is above floor (the minimum), nor the verdict when it is not.
 double Relocator::least_angle(const Mesh& m, const Point& p, double floor) const {
-  const std::size_t n = out_.size();
+  const std::size_t n = star_.out.size();
   double least = 1.0;
   std::size_t worst = worst_ < n ? worst_ : 0;
   for (std::size_t k = 0, i = worst; k < n && least > floor; ++k, i = i + 1 < n ? i + 1 : 0) {
-    const double s = smallest_angle_sine2(p, m.points[ring_[i]], m.points[ring_[i + 1]]);
+    const double s = smallest_angle_sine2(p, m.points[star_.ring[i]], m.points[star_.ring[i + 1]]);
     if (s < least) least = s, worst = i;
   }
   worst_ = worst;
@@ -52,14 +37,14 @@ double Relocator::least_angle(const Mesh& m, const Point& p, double floor) const
 bool Relocator::acceptable(const Mesh& m, Predicates& pred, const EncroachRule& rule, const Point& p,
                            double before) const {
   if (!(least_angle(m, p, before + kSlack) > before + kSlack)) return false;
-  const std::size_t n = out_.size();
+  const std::size_t n = star_.out.size();
   for (std::size_t i = 0; i < n; ++i)
-    if (!(pred.orient2d(p, m.points[ring_[i]], m.points[ring_[i + 1]]) > 0.0)) return false;
+    if (!(pred.orient2d(p, m.points[star_.ring[i]], m.points[star_.ring[i + 1]]) > 0.0)) return false;
   for (std::size_t i = 0; i < n; ++i) {
-    const Point& a = m.points[ring_[i]];
-    const Point& b = m.points[ring_[i + 1]];
-    if (pred.incircle(p, a, b, m.points[ring_[(i + 2) % n]]) > 0.0) return false;
-    const EdgeRef side = lnext(out_[i]);
+    const Point& a = m.points[star_.ring[i]];
+    const Point& b = m.points[star_.ring[i + 1]];
+    if (pred.incircle(p, a, b, m.points[star_.ring[(i + 2) % n]]) > 0.0) return false;
+    const EdgeRef side = lnext(star_.out[i]);
     if (m.has_subsegments() && m.subseg.has(side)) {
       if (encroaches(pred, a, b, p, rule)) return false;
       continue;
@@ -71,11 +56,11 @@ bool Relocator::acceptable(const Mesh& m, Predicates& pred, const EncroachRule& 
 }
 
 bool Relocator::relocate(Mesh& m, Predicates& pred, const EncroachRule& rule, EdgeRef first) {
-  if (!gather(m, first)) return false;
+  if (!gather_star(m, first, star_)) return false;
   const VertexId v = m.org(first);
   const Point old = m.points[v];
   double least = INFINITY;
-  for (VertexId w : ring_) least = std::min(least, std::hypot(m.points[w].x - old.x, m.points[w].y - old.y));
+  for (VertexId w : star_.ring) least = std::min(least, std::hypot(m.points[w].x - old.x, m.points[w].y - old.y));
   double h = 0.1 * least;
   Point at = old;
   double best = least_angle(m, old, 0.0);

@@ -17,6 +17,7 @@
 #include "geometry/encroachment.h"
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
+#include "mesh/star.h"
 
 namespace deltri {
 
@@ -30,16 +31,14 @@ class Relocator {
   // Moves org(first), a free vertex, to raise its star's smallest angle; true when it moved. The
   // star's edges leaving it are in star_edges() afterwards.
   bool relocate(Mesh& mesh, Predicates& pred, const EncroachRule& rule, EdgeRef first);
-  const std::vector<EdgeRef>& star_edges() const { return out_; }
+  const std::vector<EdgeRef>& star_edges() const { return star_.out; }
 
  private:
-  bool gather(const Mesh& mesh, EdgeRef first);
   // sin^2 of the smallest angle of the star with its centre at p, or some value at or below floor
   // once that is below it (a candidate no better than floor is dropped whatever its exact measure).
   double least_angle(const Mesh& mesh, const Point& p, double floor) const;
   bool acceptable(const Mesh& mesh, Predicates& pred, const EncroachRule& rule, const Point& p, double before) const;
-  std::vector<EdgeRef> out_;     // the edges leaving the vertex, counter-clockwise
-  std::vector<VertexId> ring_;   // their far ends, the first repeated at the end
+  Star star_;  // the moving vertex's star (mesh/star.h)
   mutable std::size_t worst_ = 0;  // where least_angle found the smallest last (where it starts)
 };
 
