@@ -17,7 +17,7 @@ enum Phase : int {
   kWriting = 0,   // remove the temporaries
   kRenaming = 1,  // finish the renames
   kHandling = 2,  // a handler is removing them: nothing may be renamed any more
-  kFinishing = 3, // a handler is finishing the renames: the locks are its until the process ends
+  kFinishing = 3, // a handler is finishing the renames: the temporaries' locks are its until the process ends
 };
 
 // The paths are copied into `storage` in normal context; the handler sees them only through
@@ -28,10 +28,6 @@ struct Registry {
   std::vector<const char*> pointers;
   std::atomic<const char* const*> published{nullptr};
   std::atomic<std::size_t> count{0};  // pairs
-  std::vector<std::string> lock_storage;  // the lock files held during the renames
-  std::vector<const char*> lock_pointers;
-  std::atomic<const char* const*> locks{nullptr};
-  std::atomic<std::size_t> lock_count{0};
   std::atomic<int> phase{kWriting};
   bool installed = false;
 };
@@ -60,10 +56,6 @@ extern "C" void finish_or_remove_and_reraise(int signal_number) {
     if (remove) unlink(paths[2 * i]);
     else std::rename(paths[2 * i], paths[2 * i + 1]);
   }
-  // Only in the renaming phase are the locks known to be this run's: remove them while held.
-  const char* const* locks = remove ? nullptr : r.locks.load();
-  const std::size_t m = r.lock_count.load();
-  for (std::size_t i = 0; locks && i < m; ++i) unlink(locks[i]);
 #endif
   std::signal(signal_number, SIG_DFL);
   std::raise(signal_number);
@@ -98,15 +90,8 @@ void set_interrupt_cleanup(const std::vector<std::string>& temporaries, const st
   r.count.store(r.pointers.size() / 2);
 }
 
-bool begin_interrupt_renames(const std::vector<std::string>& lock_files) {
+bool begin_interrupt_renames() {
   Registry& r = registry();
-  r.lock_count.store(0);
-  r.locks.store(nullptr);
-  r.lock_storage = lock_files;
-  r.lock_pointers.clear();
-  for (const std::string& p : r.lock_storage) r.lock_pointers.push_back(p.c_str());
-  r.locks.store(r.lock_pointers.data());
-  r.lock_count.store(r.lock_pointers.size());
   int phase = kWriting;
   return r.phase.compare_exchange_strong(phase, kRenaming);
 }
@@ -116,15 +101,13 @@ void end_interrupt_renames() {
   int phase = kRenaming;
   if (!r.phase.compare_exchange_strong(phase, kWriting)) {
     // A handler on another thread is finishing the renames and then ends the process; letting go
-    // of the locks now would let it remove lock files of other runs.
+    // of the temporaries' locks now would let another run take the names it is renaming.
     for (;;) {
 #ifdef DELTRI_HAVE_UNLINK
       pause();
 #endif
     }
   }
-  r.lock_count.store(0);
-  r.locks.store(nullptr);
 }
 
 CommitListener interrupt_listener() { return {set_interrupt_cleanup, begin_interrupt_renames, end_interrupt_renames}; }

@@ -9,8 +9,8 @@
 // would leave a mixed set (a new .node beside an old .ele), so the handler finishes the renames
 // instead, with rename(2), and the new set is complete. Finishing was chosen over rolling back:
 // a rollback would need a copy of every old file kept aside until the end, and its own renames
-// could be cut short just the same; the renames left are few, in directories already locked by
-// this run, and each is one system call. Blocking the signals around the renames would not do
+// could be cut short just the same; the renames left are few, of temporaries this run holds
+// locked, and each is one system call. Blocking the signals around the renames would not do
 // either: a signal to the process goes to any thread that has not blocked it.
 //
 // Which of the two the handler does is decided by one atomic exchange, so that the handler and the
@@ -28,16 +28,16 @@
 namespace deltri {
 
 // Installs the handlers (once) and makes `temporaries` (with their final names) the files to
-// remove; empty lists once they are renamed or removed. Not thread-safe: called from the thread
+// remove: only those this run holds, since a temporary's name is shared with any other run
+// writing the same output; empty lists once they are renamed or removed. Not thread-safe: called from the thread
 // that commits the outputs.
 void set_interrupt_cleanup(const std::vector<std::string>& temporaries, const std::vector<std::string>& finals);
 
-// Called before the first rename, with the lock files held: from then on the handler finishes the
-// renames, then removes the lock files (as their holder would on its way out). false if a signal is
-// already being handled (then nothing may be renamed).
-bool begin_interrupt_renames(const std::vector<std::string>& lock_files);
+// Called before the first rename: from then on the handler finishes the renames. false if a
+// signal is already being handled (then nothing may be renamed).
+bool begin_interrupt_renames();
 
-// Called after the renames, before the locks are let go: back to removing. If a handler is
+// Called after the renames, before the temporaries' locks are let go: back to removing. If a handler is
 // finishing the renames meanwhile (on another thread), waits for it to end the process.
 void end_interrupt_renames();
 

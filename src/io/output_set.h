@@ -13,29 +13,31 @@ namespace deltri {
 
 // What commit() met besides its own files, for the caller to report.
 struct CommitNotes {
-  // Another run held the lock of one of this run's output stems, so this one waited for it (the
-  // other run's set is now wholly replaced by this one's). Runs writing other stems never wait.
+  // Another run held the temporary of one of this run's output names, so this one waited for it
+  // (the other run's set is now wholly replaced by this one's). Runs writing other names never wait.
   bool waited_for_other_run = false;
   // Output files that changed on disk (another process replaced them) while this run was writing.
   std::size_t replaced_meanwhile = 0;
-  // Temporaries of earlier runs that died before renaming them (their process no longer exists).
+  // Temporaries of earlier runs that died before renaming them (killed: nothing removed them),
+  // found at this run's own temporary names and reused.
   std::size_t stale_temporaries_removed = 0;
 };
 
 // What commit() tells the CLI, which keeps it where a signal handler can reach it (the library
 // itself keeps no global state).
 struct CommitListener {
-  // Every temporary path ("" for none) and its final name, before any temporary is created; two
-  // empty lists once nothing is left to remove or rename.
+  // Every temporary path this run holds so far ("" for one not yet held) and its final name; told
+  // again as each temporary is taken, so a handler only ever removes temporaries of this run (a
+  // temporary's name is shared with other runs writing the same output); two empty lists once
+  // nothing is left to remove or rename.
   std::function<void(const std::vector<std::string>& temporaries, const std::vector<std::string>& finals)> pending;
-  // Asked just before the first rename, with the lock files this run holds. true: from now on an
-  // interrupted run must finish the renames rather than remove what is left (a mix of new and old
-  // files is never left), and then remove the lock files; false: the run is already being
-  // interrupted and nothing may be renamed.
-  std::function<bool(const std::vector<std::string>& lock_files)> begin_renames;
-  // Told after the renames (done or failed), before the locks are let go: an interrupted run no
-  // longer finishes renames or touches the lock files. Does not return if a signal is being
-  // handled meanwhile (the handler owns the locks until the process ends).
+  // Asked just before the first rename. true: from now on an interrupted run must finish the
+  // renames rather than remove what is left (a mix of new and old files is never left); false:
+  // the run is already being interrupted and nothing may be renamed.
+  std::function<bool()> begin_renames;
+  // Told after the renames (done or failed), before the temporaries' locks are let go: an
+  // interrupted run no longer finishes renames. Does not return if a signal is being handled
+  // meanwhile (the handler owns the locks until the process ends).
   std::function<void()> end_renames;
 };
 
@@ -80,14 +82,14 @@ class OutputSet {
   // Two outputs naming the same file (also through another spelling of its directory) are refused
   // with OutputError before anything is written.
   //
-  // Temporaries are named FINAL.tmp.PID.RANDOM, FINAL cut short where the whole would exceed the
-  // directory's longest file name (so any output name the file system takes can be written).
-  // Before writing, temporaries of this kind for the same final names whose process is gone are
-  // removed (an interrupted or killed run's). The renames happen under an exclusive advisory lock
-  // (flock) of each stem of the final names (the name without its last extension: one lock for
-  // box.1.node, box.1.ele and box.1.poly; a short hidden lock file in the directory, removed
-  // afterwards), so that two deltri runs writing the same names leave one run's complete set, never
-  // a mix, while runs writing other stems in the same directory never wait for each other.
+  // Temporaries are named FINAL.tmp.HASH (16 hex digits of the final file name's hash), FINAL cut
+  // short where the whole would exceed the directory's longest file name (so any output name the
+  // file system takes can be written). A temporary is held (an exclusive flock on the open file)
+  // from its creation until after the renames, the temporaries taken in one order (directory,
+  // then name) by every run. Two runs writing one output name meet at its temporary: the later
+  // waits until the earlier has renamed its whole set, so they leave one run's complete set, never
+  // a mix, while runs writing other names never wait for each other; no lock file and no
+  // directory scan. A temporary found at this run's name with no holder (a killed run's) is reused.
   CommitNotes commit(const CommitListener& listener = {});
 
   std::size_t size() const { return files_.size(); }
@@ -98,7 +100,7 @@ class OutputSet {
     std::string contents;
     std::function<void(ByteSink&)> produce;  // empty: use contents
   };
-  static void write_temporary(File& f, const std::string& temp_path, RangePool* pool);
+  static void write_temporary(File& f, const std::string& temp_path, int fd, RangePool* pool);
   static void write_standard_output(File& f);
   std::size_t workers_;
   std::vector<File> files_;
