@@ -55,7 +55,7 @@ check-sanitize:
 # run in `make test` and `make check-sanitize`.
 check-debug:
 	@cmake -S . -B build-debug -DDELTRI_CHECKED=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-	@cmake --build build-debug -j $(JOBS) --target deltri deltri_mesh_verify deltri_bench_gen deltri_rename_hook
+	@cmake --build build-debug -j $(JOBS) --target deltri deltri_preloadable deltri_mesh_verify deltri_bench_gen deltri_rename_hook
 	@cd build-debug && ctest --output-on-failure -j $(JOBS) -R '^(e2e|regression)\.'
 
 # The library's thread test (8 threads calling the C++ API at once, tests/api/test_threads.cpp)

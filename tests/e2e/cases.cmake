@@ -432,11 +432,12 @@ endwhile()
 # ---- how outputs are put in place (issues 45 and 47): a signal between two renames, concurrent
 # runs on other and on the same names, one directory under two names, refused output names ----
 if(UNIX AND NOT APPLE)
-  # Preloaded into deltri to reach the moment between two renames (tests/e2e/rename_hook.c).
+  # Preloaded into deltri to reach the moment between two renames (tests/e2e/rename_hook.c); into
+  # deltri_preloadable, the program's objects linked with the shared libc (deltri itself is static).
   add_library(deltri_rename_hook MODULE ${CMAKE_CURRENT_SOURCE_DIR}/e2e/rename_hook.c)
   target_link_libraries(deltri_rename_hook PRIVATE ${CMAKE_DL_LIBS})
   add_test(NAME e2e.outputs.rename_window
-           COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/rename_window.sh $<TARGET_FILE:deltri>
+           COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/rename_window.sh $<TARGET_FILE:deltri_preloadable>
                    $<TARGET_FILE:deltri_rename_hook> ${E2E_DATA})
   set_tests_properties(e2e.outputs.rename_window PROPERTIES TIMEOUT 300 SKIP_RETURN_CODE 77)
 endif()
@@ -444,7 +445,7 @@ add_test(NAME e2e.outputs.lock_aliases COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2
 set_tests_properties(e2e.outputs.lock_aliases PROPERTIES TIMEOUT 1500 SKIP_RETURN_CODE 77)
 if(UNIX AND NOT APPLE)
   add_test(NAME e2e.outputs.concurrent_names
-           COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/concurrent_names.sh $<TARGET_FILE:deltri>
+           COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/concurrent_names.sh $<TARGET_FILE:deltri_preloadable>
                    $<TARGET_FILE:deltri_rename_hook> ${E2E_DATA})
   set_tests_properties(e2e.outputs.concurrent_names PROPERTIES TIMEOUT 900 SKIP_RETURN_CODE 77)
 endif()
