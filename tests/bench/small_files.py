@@ -12,10 +12,12 @@ PARTS (comma-separated, default all): cpu, batch, corpus, thin.
           system) of each run from wait4(), deltri with --threads=1. The mean per round.
   batch   N copies (default 200) of guitar.poly in one fresh folder, meshed with
           `xargs -P 2 -n 1 PROGRAM -pq30Q` (the names listed, not globbed); wall seconds per round,
-          and whatever the runs wrote on standard error. The load average is printed first.
+          the batch's CPU seconds (user + system, from xargs's wait4(), which counts the runs it
+          waited for; load distorts it less than the wall time), and whatever the runs wrote on
+          standard error. The load average is printed first and after each round.
   corpus  every .poly under DIR at -pQ and -pq30Q (--switches), each program three times (alternating), the
           median wall time; the deltri/Triangle ratio over the files Triangle needs 20 ms or more
-          for: median, worst, and the five worst files; a file where a run fails (Triangle 1.6 crashes on
+          for: median, worst, and the five worst files, and the same two of the CPU time; a file where a run fails (Triangle 1.6 crashes on
           some) or passes --timeout (60 s) is left out and named.
   thin    the rectangle 1 x 1e-6 at -pq30Q: wall seconds and peak resident memory, once per round.
 guitar.poly is read from the repository's data/ folder.
@@ -65,15 +67,16 @@ def part_cpu():
     print("### guitar.poly -pq30Q: CPU ms per run (mean of 20 runs per round, interleaved)\n")
     work = tempfile.mkdtemp()
     shutil.copy(guitar, os.path.join(work, "guitar.poly"))
-    print("| round | " + " | ".join(name for name, _ in programs) + " | ratio |")
-    print("|---|" + "---|" * (len(programs) + 1))
+    print("| round | load | " + " | ".join(name for name, _ in programs) + " | ratio |")
+    print("|---|---|" + "---|" * (len(programs) + 1))
     for r in range(args.rounds):
         cpu = {name: [] for name, _ in programs}
         for _ in range(20):
             for name, argv in programs:
                 cpu[name].append(run(argv + ["-pq30Q", "guitar.poly"], work)[1] * 1000)
         means = [statistics.mean(cpu[name]) for name, _ in programs]
-        print(f"| {r + 1} | " + " | ".join(f"{m:.2f}" for m in means) + f" | {means[1] / means[0]:.2f} |")
+        print(f"| {r + 1} | {os.getloadavg()[0]:.1f} | " + " | ".join(f"{m:.2f}" for m in means) +
+              f" | {means[1] / means[0]:.2f} |")
     shutil.rmtree(work)
     print()
 
@@ -81,25 +84,34 @@ def part_cpu():
 def part_batch():
     load = os.getloadavg()
     print(f"### {args.batch} copies of guitar.poly, `xargs -P 2 -n 1 PROGRAM -pq30Q` in one folder: wall s "
-          f"(load average at the start {load[0]:.2f} {load[1]:.2f} {load[2]:.2f})\n")
-    print("| round | " + " | ".join(name for name, _ in programs) + " | ratio | stderr bytes |")
-    print("|---|" + "---|" * (len(programs) + 2))
+          f"and their CPU s (user + system) "
+          f"(load average at the start {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; per round, the 1-minute one at its end)\n")
+    print("| round | load | " + " | ".join(f"{name} wall | {name} CPU" for name, _ in programs) +
+          " | wall ratio | CPU ratio | stderr bytes |")
+    print("|---|---|" + "---|" * (2 * len(programs) + 3))
     for r in range(args.rounds):
-        walls, errs = [], []
+        walls, cpus, errs = [], [], []
         for name, argv in programs:
             work = tempfile.mkdtemp()
             names = [f"f{i}.poly" for i in range(args.batch)]
             for n in names:
                 shutil.copy(guitar, os.path.join(work, n))
             prog = argv[0]  # default threads, as a user's batch runs it
-            start = time.perf_counter()
-            p = subprocess.run(["xargs", "-P", "2", "-n", "1", prog, "-pq30Q"], input="\n".join(names).encode(),
-                               cwd=work, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-            walls.append(time.perf_counter() - start)
-            errs.append(len(p.stderr) + (0 if p.returncode == 0 else 1))
+            with tempfile.TemporaryFile() as listing, tempfile.TemporaryFile() as err:
+                listing.write("\n".join(names).encode())
+                listing.seek(0)
+                start = time.perf_counter()
+                p = subprocess.Popen(["xargs", "-P", "2", "-n", "1", prog, "-pq30Q"], stdin=listing, cwd=work,
+                                     stdout=subprocess.DEVNULL, stderr=err)
+                # xargs's rusage covers the runs it waited for: the CPU of the whole batch.
+                _, status, usage = os.wait4(p.pid, 0)
+                walls.append(time.perf_counter() - start)
+                cpus.append(usage.ru_utime + usage.ru_stime)
+                err.seek(0)
+                errs.append(len(err.read()) + (0 if os.waitstatus_to_exitcode(status) == 0 else 1))
             shutil.rmtree(work)
-        print(f"| {r + 1} | " + " | ".join(f"{w:.2f}" for w in walls) + f" | {walls[1] / walls[0]:.2f} | " +
-              ", ".join(map(str, errs)) + " |")
+        print(f"| {r + 1} | {os.getloadavg()[0]:.1f} | " + " | ".join(f"{w:.2f} | {c:.2f}" for w, c in zip(walls, cpus)) +
+              f" | {walls[1] / walls[0]:.2f} | {cpus[1] / cpus[0]:.2f} | " + ", ".join(map(str, errs)) + " |")
     print()
 
 
@@ -107,10 +119,12 @@ def part_corpus():
     files = sorted(os.path.join(d, f) for d, _, fs in os.walk(args.corpus) for f in fs if f.endswith(".poly"))
     print(f"### Corpus ({len(files)} .poly files under {os.path.basename(os.path.abspath(args.corpus))}): "
           "deltri/Triangle wall ratio, median of 3 interleaved runs, files Triangle needs >= 20 ms for\n")
-    print("| switches | files | median ratio | worst ratio | worst five | left out (a run failed or passed the time limit) |")
-    print("|---|---|---|---|---|---|")
+    print(f"(load average at the start {os.getloadavg()[0]:.2f}; CPU: user + system of the same runs, median of 3)\n")
+    print("| switches | files | median ratio | worst ratio | worst five | CPU median ratio | CPU worst ratio | "
+          "left out (a run failed or passed the time limit) |")
+    print("|---|---|---|---|---|---|---|---|")
     for switch in args.switches.split(","):
-        ratios, left_out = [], []
+        ratios, left_out, cpu_ratios = [], [], []
         for path in files:
             work = tempfile.mkdtemp()
             local = os.path.join(work, os.path.basename(path))
@@ -119,11 +133,13 @@ def part_corpus():
             if os.path.exists(base + ".node"):
                 shutil.copy(base + ".node", local[:-len(".poly")] + ".node")
             walls = {name: [] for name, _ in programs}
+            cpus = {name: [] for name, _ in programs}
             failed = []
             for _ in range(3):
                 for name, argv in programs:
-                    wall, _, _, _, status = run([argv[0], switch, os.path.basename(local)], work, timeout=args.timeout)
+                    wall, cpu, _, _, status = run([argv[0], switch, os.path.basename(local)], work, timeout=args.timeout)
                     walls[name].append(wall)
+                    cpus[name].append(cpu)
                     if status != 0 or wall >= args.timeout:
                         failed.append(f"{name} {'timed out' if wall >= args.timeout else f'exit {status}'}")
                 if failed:
@@ -133,13 +149,17 @@ def part_corpus():
                 left_out.append(f"{os.path.basename(path)} ({', '.join(failed)})")
                 continue
             t, d = (statistics.median(walls[name]) for name, _ in programs)
+            ct, cd = (statistics.median(cpus[name]) for name, _ in programs)
             if t >= 0.020:
                 ratios.append((d / t, os.path.basename(path), t))
+                cpu_ratios.append(cd / ct if ct > 0 else float("nan"))
         ratios.sort()
         worst = ", ".join(f"{n} {r:.2f} ({t * 1000:.0f} ms)" for r, n, t in reversed(ratios[-5:]))
         med = statistics.median(r for r, _, _ in ratios) if ratios else float("nan")
+        cmed = statistics.median(cpu_ratios) if cpu_ratios else float("nan")
+        cworst = max(cpu_ratios) if cpu_ratios else float("nan")
         print(f"| `{switch}` | {len(ratios)} | {med:.2f} | {ratios[-1][0] if ratios else float('nan'):.2f} | {worst} | "
-              f"{', '.join(left_out) or 'none'} |")
+              f"{cmed:.2f} | {cworst:.2f} | {', '.join(left_out) or 'none'} |")
     print()
 
 
