@@ -41,6 +41,8 @@ MODES = {
     "chew25": ["--algorithm=chew", "-pq25"],
     "interior1": ["--algorithm=ruppert", "--interior-bound=1", "-pq20"],
     "interior2": ["--algorithm=ruppert", "--interior-bound=2", "-pq20"],
+    "chew_interior1": ["--algorithm=chew", "--interior-bound=1", "-pq25"],
+    "chew_interior2": ["--algorithm=chew", "--interior-bound=2", "-pq25"],
     "decline": ["--decline-cluster-splits", "-pq30"],
     "pq40": ["-pq40"],
     "own": [],
