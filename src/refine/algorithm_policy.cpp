@@ -12,6 +12,8 @@ AlgorithmPolicy AlgorithmPolicy::of(const RefineOptions& opt) {
     case RefinementAlgorithm::Chew: policy = chew_algorithm(opt); break;
   }
   if (opt.range_restricted) restrict_split_ranges(policy);
+  policy.interior_strategy = opt.interior_bound;
+  policy.declines_cluster_splits = opt.decline_cluster_splits;
   return policy;
 }
 

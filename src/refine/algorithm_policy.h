@@ -51,6 +51,13 @@ struct AlgorithmPolicy {
   bool retries_locks = false;
   // Bottom-scale split points on the boundary are kept on the mesh's side of the subsegment.
   bool keeps_splits_inside = false;
+  // Sec. 7.2 (--interior-bound, Ruppert and Chew): 0, none; 1, the triangles with no corner in a
+  // segment interior are held to max(-q, 30 degrees); 2, every triangle is, and one bad for the 30
+  // degrees alone splits an encroached subsegment only where |s|/2 is at least its shortest edge.
+  int interior_strategy = 0;
+  // Fig. 38 l.21: SPLITPERMITTED decides which subsegments a rejected point may have split
+  // (--decline-cluster-splits, the Terminator's); else every one.
+  bool declines_cluster_splits = false;
 
   // The table for opt.algorithm and opt's switches.
   static AlgorithmPolicy of(const RefineOptions& opt);

@@ -63,12 +63,6 @@ double squared_diameter(const Box& box) {
   return box.width() * box.width() + box.height() * box.height();
 }
 
-// The largest magnitude of a coordinate in a box, 0 for an empty one.
-double largest_coordinate(const Box& box) {
-  if (box.empty()) return 0.0;
-  return std::max(magnitude({box.lo_x, box.lo_y}), magnitude({box.hi_x, box.hi_y}));
-}
-
 // Size-bounded refinement ends with about twice as many triangles as its bounds ask for (the unit
 // square at -a: 1.68 times); quality alone multiplies the triangles of a fresh constrained
 // triangulation by a few (the 45x45 holes: 5.6 times), a run on an already refined mesh by about
@@ -107,7 +101,7 @@ void note_array(PageWarmer& warmer, unsigned slot, const Array& a) {
 // below that no theorem says that circumcentres of obtuse triangles ever run out.
 bool proven_for(const RefineOptions& opt, double input_angle) {
   const AlgorithmPolicy policy = AlgorithmPolicy::of(opt);
-  if (!policy.provable || KeptBoundary(opt).active() || opt.interior_bound != 0 || CornerLopping(opt).active())
+  if (!policy.provable || KeptBoundary(opt).active() || policy.interior_strategy != 0 || CornerLopping(opt).active())
     return false;
   if (!max_angle_implied(opt.max_angle, opt.angle)) return false;
   return within_proven_range(input_angle, opt.angle.degrees(), policy.proof_rule);
@@ -167,10 +161,11 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt)
 Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, TerminatorStart start)
     : mesh_(mesh), pred_(pred),
       opt_(opt),
-      rules_{opt.angle, opt.size, opt.max_angle, opt.area_field, opt.size_test},
-      interior_rules_{opt.interior_bound != 0 ? AngleBound(std::max(opt.angle.degrees(), kInteriorBoundDeg)) : opt.angle,
-                      opt.size, opt.max_angle, opt.area_field, opt.size_test},
       policy_(AlgorithmPolicy::of(opt)),
+      rules_{opt.angle, opt.size, opt.max_angle, opt.area_field, opt.size_test},
+      interior_rules_{policy_.interior_strategy != 0 ? AngleBound(std::max(opt.angle.degrees(), kInteriorBoundDeg))
+                                                     : opt.angle,
+                      opt.size, opt.max_angle, opt.area_field, opt.size_test},
       lopping_(opt),
       kept_(opt),
       mending_(opt),
@@ -184,20 +179,15 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       apices_(std::move(start.apices)),
       finder_(mesh),
       extent_(extent_with(mesh, start.extent)),
+      bottom_(mesh, opt, policy_, start.guard_floor, extent_, start.hopeless_edges),
       bad_triangles_(opt.queue_order, squared_diameter(extent_), edge_level_bits(opt.angle.degrees())),
       locked_(std::move(start.locked)),
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
   report_.guard_length = edge_floor_;
   report_.proven_range = proven_range_;
-  const bool size_bounds = opt.size.any() || opt.size_test;
-  kept_.start(mesh, size_bounds);
-  bottom_possible_ = size_bounds || guard_floor_ < ulps_at(largest_coordinate(extent_), kBottomScaleUlps);
-  if (bottom_possible_) {
-    if (start.hopeless_edges >= 0) report_.hopeless_edges = static_cast<std::uint64_t>(start.hopeless_edges);
-    else find_hopeless_edges();
-  }
-  if (report_.hopeless_edges > 0) precision_scale_ = std::ldexp(1.0, kPrecisionOctaves - kCoarsePrecisionOctaves);
+  kept_.start(mesh, opt.size.any() || opt.size_test);
+  report_.hopeless_edges = bottom_.hopeless_edges();
   report_.steiner_cap = steiner_cap_;
   report_.cap_kind = cap_kind_;
 }

@@ -4,9 +4,11 @@
 // or encroached subsegment served gets an Outcome (outcome.h). The policies the core asks (where a
 // point goes, when the guard refuses) are in terminator_policies.cpp, Chew's step in chew_step.cpp;
 // terminator.cpp is the driver around the core (set-up, the queue's mechanics, prefetching and page
-// warming, bookkeeping), terminator_survey.cpp the closing survey. Which algorithm runs, -Y/-YY and
-// corner-lopping are policy objects chosen at construction (policy_, kept_, mending_, lopping_);
-// the methods read their values and never the switches (docs/refinement.md, "The policies").
+// warming, bookkeeping), terminator_survey.cpp the closing survey. Which algorithm runs (with
+// Sec. 7.2's interior bound and the cluster-split refusal), -Y/-YY, corner-lopping and the bottom
+// of double precision are policy objects chosen at construction (policy_, kept_, mending_,
+// lopping_, bottom_); the methods read their values and never the switches (docs/refinement.md,
+// "The policies").
 #pragma once
 
 #include <array>
@@ -21,6 +23,7 @@
 #include "mesh/mesh.h"
 #include "refine/algorithm_corner_lopping.h"
 #include "refine/algorithm_policy.h"
+#include "refine/bottom_scale.h"
 #include "refine/criteria.h"
 #include "refine/kept_boundary.h"
 #include "refine/mending.h"
@@ -100,9 +103,10 @@ class Terminator {
   TerminatorStart hand_over() &&;
 
  private:
-  // The -Y / -YY policies ask the mesh, the cavity and the probes.
+  // The -Y / -YY and bottom-scale policies ask the mesh, the cavity and the probes.
   friend class KeptBoundary;
   friend class Mending;
+  friend class BottomScale;
 
   // --- the core (terminator_core.cpp) ---
   // Fig. 38 l.12-25: one triangle from Q_t.
@@ -123,9 +127,6 @@ class Terminator {
   // --- the policies (terminator_policies.cpp): a point, or a refusal ---
   std::optional<Outcome> choose_point(TriangleId t, const Assessment& a, Candidate& c);  // l.13
   std::optional<Outcome> guard_insertion(const Assessment& a, const Candidate& c, double radius) const;
-  // The bottom-of-precision rule for strips: s, longer than the bottom scale (bottom_scale.h), is
-  // encroached upon by the apex of a triangle on it that is narrower than an ulp.
-  bool in_strip_below_an_ulp(EdgeRef s) const;
   struct SplitRadius {
     double now, after_chew;  // the shortest edge a split at p would make, before and after Chew's step
     VertexId nearest = kNone;  // the vertex after_chew is measured to, when Chew's step is planned
@@ -152,7 +153,6 @@ class Terminator {
   bool relocate_corners(TriangleId t);  // relocation.h: true when a corner of t moved
   double floor_at(const Point& p) const;  // the guard's edge floor where p lies
   double floor_for(const Assessment& a, const Point& p) const;  // the floor for splitting that triangle
-  double precision_floor(const Point& p) const;  // precision_floor_at, or the coarse floor
   // assess_triangle plus the equal-shell exemption (shell_exempt), under t's bound (rules_for);
   // assess_with under the given rules (the closing survey: the -q bound).
   Assessment assess(TriangleId t) const { return assess_with(t, rules_for(t)); }
@@ -196,25 +196,15 @@ class Terminator {
   void survey(TriangleId from, TriangleId to, RefineReport& into) const;
   static constexpr std::uint32_t kParallelSurveySlots = 100000;
   static constexpr std::uint32_t kSurveyPrefetch = 16;
-  // At the bottom scale (bottom_scale.h): the double near `ideal` whose insertion makes the best
-  // triangles, if they beat the worst one it destroys; t must be among those.
-  std::optional<Point> bottom_scale_point(TriangleId t, const Point& ideal, const Assessment& a);
-  struct BottomScore {
-    double near, all;  // the smallest angle sines of the new triangles near t's scale, and of all
-  };
-  std::optional<BottomScore> bottom_score(const Point& c, const KnownCavity& cavity, double l2, double t_sine2);
-  Point bottom_scale_split(EdgeRef s, const Point& ideal, bool chew_pending);
-  bool beyond_boundary(EdgeRef s, const Point& c);  // c strictly outside the mesh's boundary edge s
-  void find_hopeless_edges();  // counts them into report_.hopeless_edges
 
   Mesh& mesh_;
   Predicates& pred_;
   const RefineOptions opt_;
-  Criteria rules_;
-  Criteria interior_rules_;  // Sec. 7.2 (--interior-bound): rules_ with max(-q, 30 degrees)
   // The algorithm's rules (algorithm_policy.h), chosen once: the methods read them, never which
-  // algorithm it is.
+  // algorithm it is, nor --interior-bound or --decline-cluster-splits.
   const AlgorithmPolicy policy_;
+  Criteria rules_;
+  Criteria interior_rules_;  // Sec. 7.2 (policy_.interior_strategy): rules_ with max(-q, 30 degrees)
   CornerLopping lopping_;  // --corner-lopping
   KeptBoundary kept_;      // -Y / -YY
   Mending mending_;        // -Y / -YY, once Q_t is empty
@@ -233,6 +223,7 @@ class Terminator {
   SegmentApices apices_;
   EdgeFinder finder_;
   Box extent_;  // the bounding box of the vertices: the queue's scale, the bottom scale's coordinates
+  BottomScale bottom_;  // the bottom of double precision (bottom_scale.h)
   CavityMarks marks_;
   QualityQueue bad_triangles_;       // Q_t
   EncroachedQueue encroached_;       // Q_s
@@ -245,14 +236,6 @@ class Terminator {
   // While the subsegments a rejected circumcentre encroaches upon are split: the ends of its
   // triangle's shortest edge that count as the splits' ancestors (sure_fire_ancestors), else kNone.
   std::array<VertexId, 2> sure_fire_parents_{kNone, kNone};
-  std::vector<Point> lattice_scratch_;    // bottom_scale_point's candidates
-  // Whether any split can come within kBottomScaleUlps of the coordinates: false when the feature
-  // floor is above that everywhere and no size bound is given, and then the bottom-scale code is
-  // skipped altogether (ordinary meshes).
-  bool bottom_possible_ = false;
-  // 2^18 when an initial edge is one that no double can give a good triangle (report_.hopeless_edges):
-  // then the coarse precision floor applies everywhere, as the bottom scale cannot meet the bound.
-  double precision_scale_ = 1.0;
   bool track_unsplit_ = false;
   bool small_pages_ = false;
   std::vector<TriangleId> unsplit_;

@@ -99,7 +99,7 @@ std::uint64_t Terminator::split_encroached_subsegments(bool queue_triangles, boo
 
 // Fig. 39 l.39-49 for one subsegment.
 Outcome Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_size) {
-  if (!owed_to_size && in_strip_below_an_ulp(s)) return Outcome::Hopeless;
+  if (!owed_to_size && bottom_.in_strip_below_an_ulp(mesh_, pred_, s)) return Outcome::Hopeless;
   SplitPlan plan;
   if (const auto refusal = plan_split(s, owed_to_size, plan)) return *refusal;  // l.39
   if (kept_.refuses_split(*this, s, plan.point)) return Outcome::KeptBoundary;

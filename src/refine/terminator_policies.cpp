@@ -37,13 +37,13 @@ std::optional<Outcome> Terminator::choose_point(TriangleId t, const Assessment& 
   // A triangle flat to rounding (its measured area 0) has no usable circumcentre: the walk
   // towards a NaN point has no exit side.
   if (!std::isfinite(c.point.x) || !std::isfinite(c.point.y)) return Outcome::NoPoint;
-  if (!bottom_possible_ || !at_bottom_scale(a.shape.shortest_length2, g)) return std::nullopt;
+  if (!bottom_.reached(a.shape.shortest_length2, g)) return std::nullopt;
   if (only_for_interior_bound(t, a)) return Outcome::InteriorBoundAtBottom;
   // A shortest edge that no double can make a good triangle with stays bad: refuse at once rather
   // than grade the mesh down around it.
   if (a.skinny && !a.too_large && hopeless_edge(g, mesh_.point(mesh_.dest(shortest)), opt_.angle.sin2()))
     return Outcome::Hopeless;
-  if (const std::optional<Point> better = bottom_scale_point(t, c.point, a)) c.point = *better;
+  if (const std::optional<Point> better = bottom_.point(*this, t, c.point, a)) c.point = *better;
   else c.no_better_double = true;
   return std::nullopt;
 }
@@ -55,78 +55,10 @@ std::optional<Outcome> Terminator::guard_insertion(const Assessment& a, const Ca
   return std::nullopt;
 }
 
-// A subsegment s encroached upon by the apex of a triangle on it whose width (the apex's distance
-// to s) is below one ulp of their coordinates, s itself longer than the bottom scale: a strip
-// between two segments a fraction of an ulp apart (two segments meeting at an angle of 1e-15
-// radians, a segment rounded off a collinear chain). No double lies inside such a strip, so no
-// triangle there can meet the bound, and the vertices of each side encroach upon the other's
-// subsegments: each split made the halves encroached upon again, down to subsegments of two ulps
-// along the whole strip, about 1e16 splits, with the feature floor near 1e-35 (the strip's width
-// times its angle) and the Steiner cap from its work far above the memory. The split is refused as
-// hopeless, as a short edge that no double can give a good triangle is (choose_point), and the
-// triangles are counted. Ordinary meshes have no triangle narrower than an ulp, and splits owed to
-// a size bound and subsegments at the bottom scale keep their rules (bottom_scale.h).
-// Not where an initial edge is hopeless (precision_scale_ above 1): the coarse floor holds there,
-// and robustness2.node, whose hull chains have such strips, kept its mesh only without the rule.
-// A strip a few ulps wide is as hopeless when it is long: segments meeting at 1e-15 radians with
-// their far ends a few ulps apart need pieces as short as the strip is wide all along it (about
-// 1e15 splits under -D or -q). So a subsegment over kLongStripUlps long counts a triangle on it
-// narrower than kStripUlps as such a strip; shorter ones are meshed as before.
-constexpr double kStripUlps = 16.0, kLongStripUlps = 4096.0;
-bool Terminator::in_strip_below_an_ulp(EdgeRef s) const {
-  if (precision_scale_ != 1.0) return false;
-  const Point& a = mesh_.point(mesh_.org(s));
-  const Point& b = mesh_.point(mesh_.dest(s));
-  const double length2 = squared_distance(a, b);
-  if (at_bottom_scale(length2, a)) return false;
-  for (EdgeRef e : {s, mesh_.link[s]}) {
-    if (e == kNone) continue;
-    const Point& c = mesh_.point(mesh_.apex(e));
-    // A vertex at the bottom scale from an end is a flush neighbour (bottom_scale_split's case),
-    // not the far side of a strip.
-    if (at_bottom_scale(squared_distance(a, c), a) || at_bottom_scale(squared_distance(b, c), b)) continue;
-    const double twice_area = std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
-    const double ulp = ulps_at(std::max({magnitude(a), magnitude(b), magnitude(c)}), 1.0);
-    // width below an ulp, or below kStripUlps along a subsegment over kLongStripUlps long
-    const double width_ulps = kStripUlps * static_cast<double>(length2 > kLongStripUlps * kLongStripUlps * ulp * ulp);
-    const double limit = std::max(1.0, width_ulps) * ulp;
-    if (twice_area * twice_area < limit * limit * length2 && encroaches(pred_, a, b, c, policy_.rule)) return true;
-  }
-  return false;
-}
-
-// The bottom of the guard's floor for subsegment splits: no split whose half would join two
-// neighbouring doubles (its ends at most one ulp apart in each coordinate, a piece that no double
-// can split again). The feature floor can be far below an ulp (1.9e-34 for a wedge of 1e-15
-// radians between two segments that leave an ulp cluster), and there the bottom-scale splits of
-// one segment's chain crept along the wedge one lattice step at a time, each split making the
-// next one's triangles bad (issue 47, item 6: -pq20 to -pq22 ran without end). Such a split is
-// refused and its triangles are counted. Halves shorter than 2 ulps of the magnitude but a few
-// doubles apart are still allowed: robustness1.node at -q20 splits a subsegment of 3 x ulps by
-// 6 y ulps (a y ulp is half an x ulp there), and refusing it left a triangle of 11.3 degrees.
-namespace {
-double lattice_step(double u, double v) {
-  const double m = std::max(std::fabs(u), std::fabs(v));
-  return std::nextafter(m, HUGE_VAL) - m;
-}
-bool neighbouring_doubles(const Point& a, const Point& b) {
-  return std::fabs(a.x - b.x) <= lattice_step(a.x, b.x) && std::fabs(a.y - b.y) <= lattice_step(a.y, b.y);
-}
-// Splitting s (pa-pb, on the segment piece A-B) at p would creep: a half joins neighbouring
-// doubles and the piece is over kLongStripUlps long, far longer than any feature the split
-// resolves (the pieces inside an ulp cluster are a few ulps long and are meshed down to the
-// lattice as before).
-bool creeping_split(const Point& pa, const Point& pb, const Point& p, const Point& A, const Point& B) {
-  const double ulp = ulps_at(std::max(magnitude(A), magnitude(B)), 1.0);
-  if (!(squared_distance(A, B) > kLongStripUlps * kLongStripUlps * ulp * ulp)) return false;
-  return neighbouring_doubles(pa, p) || neighbouring_doubles(p, pb);
-}
-}  // namespace
-
 // Fig. 39 l.39: the split point of s (split_point). Out of precision (it rounds onto an end, or a
 // neighbour is flush with s there, unless it is one that Chew's step deletes; checked again after
 // the step) and at the bottom of double precision the doubles near it are tried
-// (bottom_scale_split); if none will do, s is locked.
+// (BottomScale::split); if none will do, s is locked.
 std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, SplitPlan& plan) {
   const Point& pa = mesh_.point(mesh_.org(s));
   const Point& pb = mesh_.point(mesh_.dest(s));
@@ -136,19 +68,20 @@ std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, Spli
     return !std::isfinite(q.x) || !std::isfinite(q.y) || q == pa || q == pb ||
            !split_keeps_orientation(s, q, policy_.deletes_before_split);
   };
-  if ((bottom_possible_ && at_bottom_scale(squared_distance(pa, pb), pa)) || out_of_precision(p)) {
-    p = bottom_scale_split(s, p, policy_.deletes_before_split);
+  if (bottom_.reached(squared_distance(pa, pb), pa) || out_of_precision(p)) {
+    p = bottom_.split(*this, s, p, policy_.deletes_before_split);
     if (out_of_precision(p)) {
       lock(s);
       return Outcome::Locked;
     }
   }
   plan.point = p;
-  plan.floor = owed_to_size ? precision_floor(p) : floor_at(p);
+  plan.floor = owed_to_size ? bottom_.precision_floor(p) : floor_at(p);
   plan.radius = split_radius(s, p);
   if (plan.radius.after_chew < plan.floor) return Outcome::BelowFloor;
   const PieceEnds& piece = pieces_.of_subsegment[mesh_.subseg[s]];
-  if (!owed_to_size && creeping_split(pa, pb, p, mesh_.point(piece[0]), mesh_.point(piece[1]))) return Outcome::BelowFloor;
+  if (!owed_to_size && BottomScale::creeping_split(pa, pb, p, mesh_.point(piece[0]), mesh_.point(piece[1])))
+    return Outcome::BelowFloor;
   return std::nullopt;
 }
 
@@ -173,7 +106,7 @@ Point Terminator::split_point(EdgeRef s) {
 // After Chew's step (Fig. 39 l.40-43) the split point is checked again: a free vertex flush with
 // s that the step did not delete, or one its search could not reach, still counts.
 std::optional<Outcome> Terminator::replan_after_deletions(EdgeRef s, SplitPlan& plan) {
-  if (!split_keeps_orientation(s, plan.point, false)) plan.point = bottom_scale_split(s, plan.point, false);
+  if (!split_keeps_orientation(s, plan.point, false)) plan.point = bottom_.split(*this, s, plan.point, false);
   if (!split_keeps_orientation(s, plan.point, false)) {
     lock(s);
     return Outcome::Locked;
@@ -190,9 +123,9 @@ std::optional<Outcome> Terminator::replan_after_deletions(EdgeRef s, SplitPlan& 
 // vertex has a descendant with a smaller insertion radius for the sake of the stronger bound.
 bool Terminator::split_allowed(EdgeRef s, const Assessment& a, double d) const {
   if (a.too_large) return true;
-  if (opt_.interior_bound == 2 && !below_asked_bound(a))
+  if (policy_.interior_strategy == 2 && !below_asked_bound(a))
     return 0.25 * squared_distance(mesh_.point(mesh_.org(s)), mesh_.point(mesh_.dest(s))) >= d * d;
-  return !opt_.decline_cluster_splits || split_permitted(mesh_, apices_, s, d);
+  return !policy_.declines_cluster_splits || split_permitted(mesh_, apices_, s, d);
 }
 
 // Sec. 6.2's sure-fire rule, for Ruppert's and Chew's algorithms and range-restricted splitting,
@@ -297,8 +230,8 @@ bool Terminator::meets_at_small_angle(const PieceEnds& piece, VertexId w) const 
 // Sec. 7.2: strategy 1 holds the triangles with no vertex in a segment interior (none of kind
 // Segment: input vertices on a segment are its ends) to 30 degrees, strategy 2 every triangle.
 const Criteria& Terminator::rules_for(TriangleId t) const {
-  if (opt_.interior_bound == 0) return rules_;
-  if (opt_.interior_bound == 2) return interior_rules_;
+  if (policy_.interior_strategy == 0) return rules_;
+  if (policy_.interior_strategy == 2) return interior_rules_;
   for (const VertexId v : mesh_.corners(t))
     if (mesh_.kind[v] == VertexKind::Segment) return rules_;
   return interior_rules_;
@@ -310,7 +243,7 @@ const Criteria& Terminator::rules_for(TriangleId t) const {
 // on to the Steiner cap (water.poly, a 29-degree corner: ruppert --interior-bound=2 -pq20.7 made
 // 930,000 Steiner points within 1e-6 of it).
 bool Terminator::only_for_interior_bound(TriangleId t, const Assessment& a) const {
-  return opt_.interior_bound != 0 && !a.too_large && &rules_for(t) == &interior_rules_ && !below_asked_bound(a);
+  return policy_.interior_strategy != 0 && !a.too_large && &rules_for(t) == &interior_rules_ && !below_asked_bound(a);
 }
 
 // a was assessed under interior_rules_ (ratio2_over_bound2 against its sin^2): is it under -q?
@@ -359,12 +292,7 @@ bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pe
   return true;
 }
 
-// The coarse floor (2^-kCoarsePrecisionOctaves of the coordinates) is precision_floor_at times
-// 2^(kPrecisionOctaves - kCoarsePrecisionOctaves), exactly: one multiplication instead of a branch
-// on the hot path.
-double Terminator::precision_floor(const Point& p) const { return precision_floor_at(p) * precision_scale_; }
-
-double Terminator::floor_at(const Point& p) const { return std::max(edge_floor_, precision_floor(p)); }
+double Terminator::floor_at(const Point& p) const { return std::max(edge_floor_, bottom_.precision_floor(p)); }
 
 // The feature floor is there to stop cascades of quality splits. A triangle over its size bound
 // is split whatever the shapes around it: its circumcentre is at least 0.87 sqrt(area) from
@@ -372,7 +300,7 @@ double Terminator::floor_at(const Point& p) const { return std::max(edge_floor_,
 // size refinement, and only the precision floor applies. (An area-only run of plate.poly at
 // -a0.01 had left one triangle of area 0.015 whose shortest edge was below the floor.)
 double Terminator::floor_for(const Assessment& a, const Point& p) const {
-  return a.too_large ? precision_floor(p) : floor_at(p);
+  return a.too_large ? bottom_.precision_floor(p) : floor_at(p);
 }
 
 bool Terminator::budget_left() {

@@ -3,10 +3,14 @@
 change a mesh). Not a test (it needs the shared corpus); its result is recorded in
 docs/refinement.md ("The policies").
 
-    byte_identical.py OLD NEW CORPUS_DIR [--jobs 2] [--timeout 120] [--modes NAME,...]
+    byte_identical.py OLD NEW CORPUS_DIR... [--jobs 2] [--timeout 120] [--modes NAME,...]
+                      [--nodes] [--max-bytes N]
 
-Every .poly under CORPUS_DIR, in every mode of MODES, is meshed by both binaries in fresh
-directories of their own; the run counts as identical when both exit with the same status and
+Every .poly under each CORPUS_DIR (with --nodes also every .node without a .poly beside it, meshed
+with the modes' switches less -p; with --max-bytes only the files up to N bytes), in every mode of
+MODES, is meshed by both binaries in fresh directories of their own; the mode "own" takes the
+switches from the input's first line, "# deltri SWITCHES" (tests/regression/inputs/), and skips
+the inputs without one; the run counts as identical when both exit with the same status and
 write the same set of files, and every .node, .ele, .poly and .edge file is the same byte for byte.
 A run that times out under both binaries is counted apart (it compares nothing). The area bound of
 the -a mode is 1/10000 of the input's bounding box, written without an exponent (Triangle's -a
@@ -31,8 +35,20 @@ MODES = {
     "lopping": ["--corner-lopping", "-pq30"],
     "Y": ["-pYq30"],
     "YY": ["-pYYq30"],
+    "pq20": ["-pq20"],
+    "pq33a0.01": ["-pq33a0.01"],
+    "ruppert25": ["--algorithm=ruppert", "-pq25"],
+    "chew25": ["--algorithm=chew", "-pq25"],
+    "interior1": ["--algorithm=ruppert", "--interior-bound=1", "-pq20"],
+    "interior2": ["--algorithm=ruppert", "--interior-bound=2", "-pq20"],
+    "chew_interior1": ["--algorithm=chew", "--interior-bound=1", "-pq25"],
+    "chew_interior2": ["--algorithm=chew", "--interior-bound=2", "-pq25"],
+    "decline": ["--decline-cluster-splits", "-pq30"],
+    "pq40": ["-pq40"],
+    "own": [],
 }
 COMPARED = (".node", ".ele", ".poly", ".edge")
+DEFAULT_MODES = ("p", "pq30", "pq33a", "ruppert", "chew", "range", "lopping", "Y", "YY")
 
 
 def numbers(line):
@@ -70,12 +86,28 @@ def area_of(path):
     return format(decimal.Decimal(repr(area)), "f")
 
 
+def own_switches(path):
+    with open(path, encoding="utf-8", errors="replace") as f:
+        first = f.readline()
+    return first[len("# deltri "):].split() if first.startswith("# deltri ") else None
+
+
+def switches_for(mode, path, area):
+    if mode == "own":
+        return own_switches(path)
+    switches = [s.format(area=area) for s in MODES[mode]]
+    if path.endswith(".node"):  # a point set: the same switches without -p
+        switches = [s.replace("p", "", 1) if s.startswith("-p") else s for s in switches]
+        switches = [s for s in switches if s != "-"]
+    return switches
+
+
 def run(binary, switches, poly, timeout):
     work = tempfile.mkdtemp(prefix="byteid-")
     name = os.path.basename(poly)
     shutil.copy(poly, os.path.join(work, name))
     node = poly[:-5] + ".node"
-    if os.path.exists(node):
+    if poly.endswith(".poly") and os.path.exists(node):
         shutil.copy(node, os.path.join(work, name[:-5] + ".node"))
     before = set(os.listdir(work))
     try:
@@ -110,18 +142,28 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("old")
     ap.add_argument("new")
-    ap.add_argument("corpus")
+    ap.add_argument("corpus", nargs="+")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--timeout", type=float, default=120.0)
-    ap.add_argument("--modes", default=",".join(MODES))
+    ap.add_argument("--modes", default=",".join(m for m in MODES if m in DEFAULT_MODES))
+    ap.add_argument("--nodes", action="store_true")
+    ap.add_argument("--max-bytes", type=int, default=0)
     args = ap.parse_args()
-    polys = sorted(os.path.join(d, f) for d, _, fs in os.walk(args.corpus) for f in fs if f.endswith(".poly"))
+    polys = []
+    for corpus in args.corpus:
+        for d, _, fs in os.walk(corpus):
+            for f in fs:
+                lone_node = args.nodes and f.endswith(".node") and f[:-5] + ".poly" not in fs
+                if f.endswith(".poly") or lone_node:
+                    polys.append(os.path.join(d, f))
+    polys = sorted(p for p in polys if not args.max_bytes or os.path.getsize(p) <= args.max_bytes)
     jobs = []
     for poly in polys:
-        area = area_of(poly)
+        area = area_of(poly) if poly.endswith(".poly") else "0.01"
         for mode in args.modes.split(","):
-            switches = [s.format(area=area) for s in MODES[mode]]
-            jobs.append((mode, poly, switches))
+            switches = switches_for(mode, poly, area)
+            if switches is not None:
+                jobs.append((mode, poly, switches))
     tally = {}
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         futures = {pool.submit(compare, os.path.abspath(args.old), os.path.abspath(args.new), s, p, args.timeout):

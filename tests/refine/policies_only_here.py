@@ -4,7 +4,10 @@ a Terminator is built, by the policy files (src/refine/algorithm*.h and .cpp, ke
 mending.*), and the rest of src/refine reads the policies' values. Anywhere else under src/refine,
 code (not comments) that reads a member .algorithm, .no_steiner_on_segments (-Y, -YY),
 .lopped_apices or .lopped_sectors (--corner-lopping) or .range_restricted, or that names a
-RefinementAlgorithm:: value (outside refine.h, which declares the option), fails the test.
+RefinementAlgorithm:: value (outside refine.h, which declares the option), fails the test. The
+Terminator's own files (refine/terminator*, and any other file that defines a Terminator:: member)
+must not read .interior_bound (Sec. 7.2, --interior-bound) or .decline_cluster_splits either: they
+come from AlgorithmPolicy (interior_strategy, declines_cluster_splits).
 
 usage: policies_only_here.py SOURCE_DIR   (or --self-test: the rule must catch known forms)"""
 import glob
@@ -16,6 +19,9 @@ READ = re.compile(r"\.\s*(algorithm|no_steiner_on_segments|lopped_apices|lopped_
 VALUE = re.compile(r"\bRefinementAlgorithm\s*::")
 POLICY_FILES = re.compile(r"^refine/(algorithm[a-z_]*|kept_boundary|mending)\.(h|cpp)$")
 DECLARES = ("refine/refine.h",)
+TERMINATOR_READ = re.compile(r"\.\s*(interior_bound|decline_cluster_splits)\b(?!\s*\()")
+TERMINATOR_FILES = re.compile(r"^refine/terminator[a-z_]*\.(h|cpp)$")
+DEFINES_MEMBER = re.compile(r"\bTerminator\s*::")
 
 
 def code(text):
@@ -27,10 +33,15 @@ def code(text):
     return lines
 
 
-def violations(text, rel):
+def terminator_file(text, rel):
+    return bool(TERMINATOR_FILES.match(rel)) or any(DEFINES_MEMBER.search(line) for line in code(text))
+
+
+def violations(text, rel, terminator=False):
     found = []
     for number, line in enumerate(code(text), 1):
-        if READ.search(line) or (rel not in DECLARES and VALUE.search(line)):
+        if READ.search(line) or (rel not in DECLARES and VALUE.search(line)) or \
+                (terminator and TERMINATOR_READ.search(line)):
             found.append((number, line.strip()))
     return found
 
@@ -54,8 +65,25 @@ def self_test():
         "  return range_restricted_split_point(pa, pb, top);",
         "  if (policy_.legal_lengths && !shell_a) return p;",
     ]
+    terminator_caught = [
+        "  if (opt_.interior_bound == 2 && !below_asked_bound(a))",
+        "  return !opt_.decline_cluster_splits || split_permitted(mesh_, apices_, s, d);",
+        "      interior_rules_{opt.interior_bound != 0 ? AngleBound(30.0) : opt.angle,",
+    ]
+    terminator_passed = [
+        "  if (policy_.interior_strategy == 2 && !below_asked_bound(a))",
+        "  return !policy_.declines_cluster_splits || split_permitted(mesh_, apices_, s, d);",
+        "    case Outcome::InteriorBoundAtBottom: ++report.interior_bound_refusals; break;",
+        "  // opt_.interior_bound is read by AlgorithmPolicy::of",
+    ]
+    files = [not terminator_file("x", "refine/terminator_policies.cpp"),
+             not terminator_file("bool Terminator::f() { return true; }", "refine/x.cpp"),
+             terminator_file("TerminatorStart TerminatorStart::of(m, o);", "refine/refine_in_parts.cpp")]
     return [l for l in caught if not violations(l, "refine/x.cpp")] + \
-           [l for l in passed if violations(l, "refine/x.cpp")]
+           [l for l in passed if violations(l, "refine/x.cpp")] + \
+           [l for l in terminator_caught if not violations(l, "refine/x.cpp", True)] + \
+           [l for l in terminator_passed if violations(l, "refine/x.cpp", True)] + \
+           [f"terminator_file case {i}" for i, wrong in enumerate(files) if wrong]
 
 
 def main():
@@ -67,16 +95,19 @@ def main():
     src = os.path.join(sys.argv[1], "src")
     paths = sorted(glob.glob(os.path.join(src, "refine", "**", "*.cpp"), recursive=True) +
                    glob.glob(os.path.join(src, "refine", "**", "*.h"), recursive=True))
-    if not any(POLICY_FILES.match(os.path.relpath(p, src).replace(os.sep, "/")) for p in paths):
-        print("no policy files under src/refine: the rule would pass vacuously")
+    rels = [os.path.relpath(p, src).replace(os.sep, "/") for p in paths]
+    if not any(POLICY_FILES.match(r) for r in rels) or not any(TERMINATOR_FILES.match(r) for r in rels):
+        print("no policy files or no Terminator files under src/refine: the rule would pass vacuously")
         return 1
     failures = []
     for path in paths:
         rel = os.path.relpath(path, src).replace(os.sep, "/")
         if POLICY_FILES.match(rel):
             continue
-        for number, line in violations(open(path, encoding="utf-8").read(), rel):
-            failures.append(f"src/{rel}:{number}: the algorithm or a -Y/lopping switch read outside the policy "
+        text = open(path, encoding="utf-8").read()
+        for number, line in violations(text, rel, terminator_file(text, rel)):
+            failures.append(f"src/{rel}:{number}: the algorithm, a -Y/lopping switch, or (in the Terminator's "
+                            f"files) --interior-bound or --decline-cluster-splits read outside the policy "
                             f"files: {line}")
     for failure in failures:
         print(failure)

@@ -88,3 +88,16 @@ TEST(a_hull_edge_next_to_a_flush_vertex_is_split_at_a_nearby_double) {
   CHECK_EQ(r.locked_subsegments, std::uint64_t{0});
   CHECK(f.min_angle >= 20.0 - 1e-9);
 }
+
+// BottomScale::creeping_split: a split of a piece over 4096 ulps long is refused when one of its
+// halves would join two neighbouring doubles (no double lies between them), and allowed when the
+// halves are two lattice steps or more, or the piece is a few ulps long (an ulp cluster).
+TEST(creeping_split_refuses_halves_between_neighbouring_doubles_on_long_pieces) {
+  const double x = 1.0, up = std::nextafter(x, 2.0), up2 = std::nextafter(up, 2.0);
+  const Point A{0.0, 0.0}, B{1.0, 0.0};  // 2^52 ulps of 1 long
+  CHECK(BottomScale::creeping_split(Point{x, 0.0}, Point{up2, 0.0}, Point{up, 0.0}, A, B));
+  const double up4 = std::nextafter(std::nextafter(up2, 2.0), 2.0);
+  CHECK(!BottomScale::creeping_split(Point{x, 0.0}, Point{up4, 0.0}, Point{up2, 0.0}, A, B));
+  const Point near_a{1.0, 0.0}, near_b{std::nextafter(std::nextafter(up4, 2.0), 2.0), 0.0};  // 6 ulps long
+  CHECK(!BottomScale::creeping_split(Point{x, 0.0}, Point{up2, 0.0}, Point{up, 0.0}, near_a, near_b));
+}

@@ -4,7 +4,7 @@
 # vertices (1,0) and (2,0) of a collinear chain a fraction of an ulp below it. Each side's vertices
 # encroach upon the other's subsegments, and the splits went on down to subsegments of two ulps
 # along the whole strip (about 1e16 of them; the feature floor there is 6e-36). Such splits are
-# refused now (Terminator::in_strip_below_an_ulp): each run ends (CTest's timeout), exits 0, passes
+# refused now (BottomScale::in_strip_below_an_ulp, refine/bottom_scale.h): each run ends (CTest's timeout), exits 0, passes
 # deltri_mesh_verify and counts the triangles left in the strip.
 #   sub-ulp-strip.sh DELTRI VERIFY
 . "$(dirname "$0")/lib.sh"

@@ -5,7 +5,7 @@
 # a few ulps wide and a few tenths of the domain long. -D (an empty diametral circle for every
 # subsegment) and quality refinement split both sides down to pieces as short as the strip is
 # wide, about 1e15 splits. A subsegment over 4,096 ulps long is no longer split for quality or
-# -D when a triangle on it is narrower than 16 ulps (Terminator::in_strip_below_an_ulp); each run
+# -D when a triangle on it is narrower than 16 ulps (BottomScale::in_strip_below_an_ulp, refine/bottom_scale.h); each run
 # must end (CTest's timeout), exit 0 with the unmet -D subsegments counted, and pass
 # deltri_mesh_verify.
 #   sweep-thin-strips.sh DELTRI VERIFY

@@ -5,7 +5,7 @@
 # 1e-15 radians: beyond the cluster the two bound a wedge narrower than an ulp over a length of 0.5.
 # -pq30, -pq33.5 and -pq34 ran without end (1.4 GB in 30 s), splitting the wedge's subsegments down
 # to two ulps along its length; the splits in a strip narrower than an ulp are refused now
-# (Terminator::in_strip_below_an_ulp). Each run must end (CTest's timeout), exit 0, pass
+# (BottomScale::in_strip_below_an_ulp, refine/bottom_scale.h). Each run must end (CTest's timeout), exit 0, pass
 # deltri_mesh_verify and count its misses. The meshes had failed deltri_mesh_verify only because
 # its walk along a segment was greedy: beyond the cluster the other segment's chain lies within
 # the checker's 8-ulp tolerance of the diagonal, and the nearest vertex within it was a dead end;
