@@ -118,9 +118,13 @@ SegmentApices::SegmentApices(const Mesh& mesh) : apex_(mesh.vertex_count(), fals
     const EdgeRef twin = mesh.link[e];
     if (twin != kNone && twin < e) continue;
     for (VertexId v : {mesh.org(e), mesh.dest(e)})
-      if (degree[v] < 2) ++degree[v];
+      if (degree[v] < 3) ++degree[v];
   }
-  for (VertexId v{0}; v < mesh.vertex_count(); ++v) apex_[v] = degree[v] >= 2;
+  corner_.assign(mesh.vertex_count(), false);
+  for (VertexId v{0}; v < mesh.vertex_count(); ++v) {
+    apex_[v] = degree[v] >= 2;
+    corner_[v] = degree[v] == 2;
+  }
   shells_.assign(mesh.vertex_count(), false);
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
     if (mesh.corner[e] == kNone || !has_subsegment(mesh, e)) continue;
@@ -133,9 +137,11 @@ SegmentApices SegmentApices::of_vertices(const std::vector<VertexId>& vertices) 
   SegmentApices part;
   part.apex_.assign(vertices.size(), false);
   part.shells_.assign(vertices.size(), false);
+  part.corner_.assign(vertices.size(), false);
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     if (is_apex(vertices[i])) part.apex_[i] = true;
     if (uses_shells(vertices[i])) part.shells_[i] = true;
+    if (is_two_segment_corner(vertices[i])) part.corner_[i] = true;
   }
   return part;
 }

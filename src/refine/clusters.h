@@ -27,12 +27,15 @@ class SegmentApices {
   explicit SegmentApices(const Mesh& mesh);
   bool is_apex(VertexId v) const { return v < apex_.size() && apex_[v]; }
   bool uses_shells(VertexId v) const { return v < shells_.size() && shells_[v]; }
+  // Exactly two segments end at v (a corner, not a cluster of three or more).
+  bool is_two_segment_corner(VertexId v) const { return v < corner_.size() && corner_[v]; }
   // The same marks for a part that holds only `vertices` (increasing), renumbered from 0.
   SegmentApices of_vertices(const std::vector<VertexId>& vertices) const;
 
  private:
   std::vector<bool> apex_;
   std::vector<bool> shells_;
+  std::vector<bool> corner_;
 };
 
 struct Cluster {

@@ -71,6 +71,9 @@ struct Assessment {
   bool too_obtuse = false; // largest angle above --max-angle and not between two subsegments
   bool bad() const { return skinny || too_large || too_obtuse; }
   TriangleShape shape;
+  // A subsegment of a triangle beyond a small corner that is split instead of placing a point
+  // (Terminator::beyond_corner_subsegment); kNone for every other triangle.
+  EdgeRef split_instead = kNone;
 };
 
 // Fig. 38 l.8: "delta(t) or t has an angle less than theta (but not separating two subsegments)",

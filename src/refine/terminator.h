@@ -161,6 +161,10 @@ class Terminator {
   bool below_asked_bound(const Assessment& a) const;   // under -q, not only under Sec. 7.2's bound
   bool only_for_interior_bound(TriangleId t, const Assessment& a) const;  // bad for Sec. 7.2's bound alone
   bool shell_exempt(EdgeRef shortest) const;
+  // The subsegment to split of a spared triangle beyond a corner whose angle is below the corner's
+  // (kNone for any other), and that split, served in place of the triangle's point.
+  EdgeRef beyond_corner_subsegment(EdgeRef shortest) const;
+  Outcome split_beyond_corner(EdgeRef s);
 
   // --- Chew's step (chew_step.cpp), Fig. 39 l.40-43 ---
   // Returns the edge of the subsegment afterwards, or kNone.

@@ -29,6 +29,7 @@ Outcome Terminator::split_bad_triangle(const QueuedTriangle& entry) {
   Assessment a = assess(t);
   if (!a.bad()) return Outcome::NotBad;
   if (!budget_left()) return Outcome::OverBudget;
+  if (a.split_instead != kNone) return split_beyond_corner(a.split_instead);
   if (relocate_corners(t) && !(a = assess(t)).bad()) return Outcome::NotBad;  // a corner moved: t again
   Candidate c;
   if (const auto refusal = choose_point(t, a, c)) return *refusal;  // l.13

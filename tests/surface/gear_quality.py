@@ -6,11 +6,11 @@ Recomputed here from the input and the written .node/.ele with numpy, none of de
 - the surface is closed and conforming: the gear is a closed solid, so every edge lies in exactly
   two triangles (a cut that one facet holds and its neighbour does not leaves edges in one), no two
   points coincide, and the triangles' areas sum to the facets' areas;
-- every angle is at least the floor of the input's smallest corner theta (7.083 degrees): shells
-  around a corner are powers of two apart (Sec. 6), and the triangle beyond the corner triangle
-  joins the two shell vertices at r to the next at 2r on one side: its angle at the far vertex is
-  just under theta (6.977; Triangle 1.6 leaves the same triangle at a 7.083-degree corner of a
-  PSLG at -q30). The floor is that triangle's smallest angle, computed from theta alone;
+- every angle is at least the input's smallest corner theta (7.083 degrees), to the rounding of the
+  written coordinates: shells a factor 2 apart around a corner would leave, beyond the corner
+  triangle, the triangle joining the shell vertices at r on both sides to the next at 2r on one,
+  whose angle at the far vertex is just under theta (6.977, the `rung_floor` below; Triangle 1.6
+  leaves it at a 7.083-degree corner of a PSLG at -q30); nothing forces it, and it must be gone;
 - every triangle below 30 degrees has a vertex within reach of a corner under 30 degrees: within
   the longest input segment at that corner (the shells lie on its segments);
 - no angle above 120 degrees (a triangle with all angles at least 30 has none larger; gmsh meshes
@@ -97,8 +97,9 @@ def main():
         faults.append(f'a triangle of area {out_area.max()} above -a{area}')
     ang = angles(p, tri)
     smallest, largest = ang.min(axis=1), ang.max(axis=1)
-    if smallest.min() < floor - 1e-6:  # the written coordinates are rounded
-        faults.append(f'smallest angle {smallest.min():.4f} below the floor {floor:.4f} of the {theta:.4f}-degree corner')
+    if smallest.min() < theta - 1e-6:  # the written coordinates are rounded
+        faults.append(f'smallest angle {smallest.min():.4f} below the {theta:.4f}-degree corner '
+                      f'(the 2r rung triangle would have {floor:.4f})')
     if largest.max() > 120.0 + 1e-6:
         faults.append(f'largest angle {largest.max():.4f} above 120')
     apex = np.array(sorted(reach))
