@@ -93,6 +93,8 @@ double PetalSearch::star_margin(const Point& x, const AngleBound& angle, const L
   return margin;
 }
 
+// The first gathered triangle (closed) holding x: in the domain, on pq's side of the subsegments
+// around (in_gathered).
 int PetalSearch::container_of(const Point& x) const {
   const auto left_of = [&](const Point& a, const Point& b) {
     return (b.x - a.x) * (x.y - a.y) - (b.y - a.y) * (x.x - a.x) >= 0.0;
