@@ -33,9 +33,6 @@ Point PetalSearch::choose_for_obtuse(const Mesh& mesh, Predicates& pred, EdgeRef
   if (!std::isfinite(fallback.x) || !std::isfinite(fallback.y)) return fallback;
   gather(mesh, triangle_of(longest), mid(p, q), kObtuseReach * std::sqrt(squared_distance(p, q)));
   mark_walls(mesh);
-  // The circumcentre when its own star meets the bounds: as good a mesh as the search's (2% fewer
-  // triangles over the corpus at 90 degrees, docs/refinement.md) for the work of one candidate.
-  if (star_margin(fallback, angle, max_angle) >= 0.0) return fallback;
   propose_obtuse(p, q, fallback);
   Point best = fallback;
   double best_clearance = -1.0;
