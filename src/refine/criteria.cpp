@@ -169,6 +169,24 @@ int corner_above(const Point& a, const Point& b, const Point& c, const LargestAn
   return -1;
 }
 
+double angle_margin(const Point& a, const Point& b, const Point& c, const AngleBound& angle,
+                    const LargestAngleBound& max_angle) {
+  const double sine2 = smallest_angle_sine2(a, b, c);
+  if (!(sine2 > 0.0)) return -2.0;  // clockwise or flat
+  double margin = angle.sin2() > 0.0 ? sine2 - angle.sin2() : 1.0;
+  if (!max_angle.asked()) return margin;
+  const Point* corner[3] = {&a, &b, &c};
+  for (unsigned k = 0; k < 3; ++k) {
+    const Point& p = *corner[k];
+    const Point& u = *corner[(k + 1) % 3];
+    const Point& v = *corner[(k + 2) % 3];
+    const double ux = u.x - p.x, uy = u.y - p.y, vx = v.x - p.x, vy = v.y - p.y;
+    const double cosine = (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
+    margin = std::min(margin, cosine - max_angle.cosine());
+  }
+  return margin;
+}
+
 namespace {
 
 constexpr double kMargin = 1e-12;  // BoundCheck's

@@ -142,6 +142,14 @@ bool angle_exceeds(const Point& p, const Point& a, const Point& b, const Largest
 // The corner (0, 1, 2) of triangle a, b, c whose angle exceeds the bound, or -1. At most one can.
 int corner_above(const Point& a, const Point& b, const Point& c, const LargestAngleBound& bound);
 
+// How well a would-be triangle a, b, c (counter-clockwise) meets both angle bounds: the lesser of
+// sin^2 of its smallest angle less sin^2 theta and the cosine of its largest angle less cos A
+// (either term left out when its bound is not asked); >= 0 when it meets both in doubles, < 0
+// by how much it misses. A ranking for the choice of a Steiner point (obtuse_point.cpp), never the
+// test of a triangle of the mesh, which is assess_triangle's.
+double angle_margin(const Point& a, const Point& b, const Point& c, const AngleBound& angle,
+                    const LargestAngleBound& max_angle);
+
 // Whether -q implies the largest-angle bound: a triangle whose smallest angle is at least theta has
 // none above 180 - 2 theta.
 inline bool max_angle_implied(const LargestAngleBound& max_angle, const AngleBound& angle) {

@@ -143,14 +143,7 @@ bool PetalSearch::admissible(Predicates& pred, const Petal& petal, const Point& 
 }
 
 // In one of the gathered triangles (closed): in the domain, on pq's side of the subsegments around.
-bool PetalSearch::in_gathered(const Point& x) const {
-  const auto left_of = [&](const Point& a, const Point& b) {
-    return (b.x - a.x) * (x.y - a.y) - (b.y - a.y) * (x.x - a.x) >= 0.0;
-  };
-  for (const auto& [a, b, c] : corners_)
-    if (left_of(a, b) && left_of(b, c) && left_of(c, a)) return true;
-  return false;
-}
+bool PetalSearch::in_gathered(const Point& x) const { return container_of(x) >= 0; }
 
 double PetalSearch::clearance2(const Point& x) const {
   double nearest = HUGE_VAL;

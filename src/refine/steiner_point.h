@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "geometry/mesh_bounds.h"
 #include "geometry/point.h"
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
@@ -42,6 +43,11 @@ class PetalSearch {
  public:
   static constexpr std::size_t kSlots = 256;  // the gathered triangles' index table (steiner_point.cpp)
   Point choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, double theta_deg, double off_center_factor);
+  // For a triangle bad only for an angle above --max-angle, `longest` its edge opposite that
+  // angle (obtuse_point.cpp): the candidate whose new triangles all meet both bounds, or else
+  // `fallback` (its circumcentre).
+  Point choose_for_obtuse(const Mesh& mesh, Predicates& pred, EdgeRef longest, const Point& fallback,
+                          const AngleBound& angle, const LargestAngleBound& max_angle);
 
  private:
   struct Petal {
@@ -69,6 +75,10 @@ class PetalSearch {
   std::size_t slot_of(TriangleId t) const;
   int index_of(TriangleId t) const;  // in triangles_, or -1
   void remember(TriangleId t);
+  void propose_obtuse(const Point& p, const Point& q, const Point& fallback);
+  double star_margin(const Point& x, const AngleBound& angle, const LargestAngleBound& max_angle);
+  int container_of(const Point& x) const;  // the gathered triangle holding x, or -1
+  void mark_walls(const Mesh& mesh);
 
   std::vector<TriangleId> triangles_;
   std::vector<Point> centres_;  // the circumcentres of triangles_: the Voronoi vertices near pq
@@ -81,6 +91,8 @@ class PetalSearch {
   std::vector<TriangleId> slots_;     // index_of's table: kSlots triangles or kNone
   std::vector<int> slot_index_ = std::vector<int>(kSlots, -1);
   std::vector<Point> candidates_;
+  std::vector<std::array<bool, 3>> walls_;  // per gathered triangle: which sides are subsegments
+  std::vector<int> stack_;
 };
 
 }  // namespace deltri

@@ -34,6 +34,11 @@ std::optional<Outcome> Terminator::choose_point(TriangleId t, const Assessment& 
   // off-centre (its circumcentre).
   c.point = optimal_points_ && a.skinny ? petal_.choose(mesh_, pred_, shortest, opt_.angle.degrees(), policy_.off_center_factor)
                                         : steiner_point(mesh_, shortest, policy_.off_center_factor);
+  // One bad only for an angle above --max-angle: a candidate whose star meets the bounds
+  // (obtuse_point.cpp), the circumcentre failing one.
+  if (a.too_obtuse && !a.skinny && !a.too_large)
+    c.point = petal_.choose_for_obtuse(mesh_, pred_, edge_of(t, longest_side(a.shape.length2)), c.point,
+                                       rules_for(t).angle, opt_.max_angle);
   // A triangle flat to rounding (its measured area 0) has no usable circumcentre: the walk
   // towards a NaN point has no exit side.
   if (!std::isfinite(c.point.x) || !std::isfinite(c.point.y)) return Outcome::NoPoint;

@@ -10,9 +10,10 @@ Cases: a square and a rotated L (a 3-4-5 rotation: integer coordinates, right an
 --max-angle=90 with -q and -a; a square with inner points at --max-angle=100, whose -q20 mesh alone
 has angles above 100; a trapezoid whose input angles of 116.6 degrees force triangles above 100
 (only at those corners, between the two segments, counted as forced in the JSON, and --strict
-passes); a run the
-termination guard stops, whose JSON count of triangles above the bound must be the exact count and
---strict must fail; A below 90 refused.
+passes); the square with inner points at --max-angle=90, which the circumcentre alone never
+finished (the guard stopped it) and the star-checked point choice meshes non-obtuse; a run the
+termination guard stops (a fan of segments with a 7.1-degree input angle), whose JSON count of
+triangles above the bound must be the exact count and --strict must fail; A below 90 refused.
 
 usage: max_angle.py DELTRI"""
 import json
@@ -42,6 +43,19 @@ def poly(points, ring=None):
     return "\n".join(lines) + "\n"
 
 
+def square_of(half):
+    return [(-half, -half), (half, -half), (half, half), (-half, half)]
+
+
+def poly_with(points, segments):
+    """A .poly of the points and the segments (pairs of 0-based indices)."""
+    lines = [f"{len(points)} 2 0 0"] + [f"{i + 1} {x} {y}" for i, (x, y) in enumerate(points)]
+    lines.append(f"{len(segments)} 0")
+    lines += [f"{i + 1} {a + 1} {b + 1}" for i, (a, b) in enumerate(segments)]
+    lines.append("0")
+    return "\n".join(lines) + "\n"
+
+
 def inner(outline, extra):
     """A .poly with the outline's segments and extra free vertices."""
     return poly(outline + extra, len(outline))
@@ -53,7 +67,10 @@ def read_mesh(base):
             data = [l.split("#")[0].split() for l in f]
         data = [r for r in data if r]
         return data[1:int(data[0][0]) + 1]
-    nodes = {int(r[0]): (Fraction(r[1]), Fraction(r[2])) for r in rows(base + ".node")}
+    # Each written coordinate is the shortest decimal that reads back as the mesh's double; the
+    # mesh is those doubles (every reader parses them so), so the exact test takes their values, not
+    # the decimals' (a right angle exact in doubles can be 90 + 1e-14 degrees in the decimals).
+    nodes = {int(r[0]): (Fraction(float(r[1])), Fraction(float(r[2]))) for r in rows(base + ".node")}
     triangles = [tuple(int(x) for x in r[1:4]) for r in rows(base + ".ele")]
     return nodes, triangles
 
@@ -149,15 +166,33 @@ def main():
         fail(f"trapezoid: JSON counts {report.get('triangles_above_max_angle')} above the bound, "
              f"{report['missing_bounds_by_cause'].get('large_input_angle')} forced; exact count {len(bad)}")
 
-    # Circumcentres of near-right triangles keep making others: the guard stops this one. Its
-    # misses must be counted exactly and fail --strict.
-    r = run(deltri, work, "dotted", text, ["-pq20", "--max-angle=90", "--json=dotted.json", "--strict"], expect_rc=3)
+    # The circumcentre alone never ended here (circumcentres of nearly right triangles made other
+    # nearly right ones until the guard stopped the run at the Steiner cap); a point whose new star
+    # meets the bound (refine/obtuse_point.cpp) does: a non-obtuse mesh, --strict content.
+    run(deltri, work, "dotted", text, ["-pq20", "--max-angle=90", "--json=dotted.json", "--strict"])
     nodes, triangles = read_mesh(os.path.join(work, "dotted.1"))
     bad = above(nodes, triangles, 90)
     report = json.load(open(os.path.join(work, "dotted.json")))["quality"]
     print(f"dotted -pq20 --max-angle=90: {len(triangles)} triangles, {len(bad)} above 90 (JSON {report.get('triangles_above_max_angle')})")
-    if report.get("triangles_above_max_angle") != len(bad) or report.get("triangles_missing_bounds_not_forced_by_input") != len(bad):
-        fail("dotted --max-angle=90: the JSON counts differ from the exact count")
+    if bad or report.get("triangles_above_max_angle") != 0:
+        fail(f"dotted --max-angle=90: {len(bad)} triangles above 90 degrees")
+
+    # A fan of segments from one vertex with a 7.1-degree input angle between two of them: next to
+    # that angle the guard stops the run at 90 degrees. Its misses must be counted exactly and fail
+    # --strict.
+    ends = [(8, 0), (8, 1), (7, 2), (-6, 5)]
+    fan_points = square_of(10) + [(0, 0)] + ends
+    segments = [(i, (i + 1) % 4) for i in range(4)] + [(4, 5 + i) for i in range(len(ends))]
+    run(deltri, work, "fan", poly_with(fan_points, segments), ["-pq20", "--max-angle=90", "--json=fan.json", "--strict"],
+        expect_rc=3)
+    nodes, triangles = read_mesh(os.path.join(work, "fan.1"))
+    bad = above(nodes, triangles, 90)
+    report = json.load(open(os.path.join(work, "fan.json")))["quality"]
+    print(f"fan -pq20 --max-angle=90: {len(triangles)} triangles, {len(bad)} above 90 (JSON {report.get('triangles_above_max_angle')})")
+    if not bad:
+        fail("fan --max-angle=90: no triangle above 90 degrees, so the guard case shows nothing")
+    if report.get("triangles_above_max_angle") != len(bad):
+        fail("fan --max-angle=90: the JSON count differs from the exact count")
 
     for a in ("89.9", "abc", "180"):
         r = run(deltri, work, "refused", poly(square), ["-p", f"--max-angle={a}"], expect_rc=2)
