@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <unordered_map>
 #include <utility>
 
 #include "refine/termination_guard.h"
+#include "util/errors.h"
 #include "util/run_both.h"
 
 namespace deltri {
@@ -59,6 +61,11 @@ class SurfaceBuilder {
   std::uint32_t segment_of(std::uint32_t a, std::uint32_t b);
   Pslg facet_pslg(std::uint32_t f);
   std::vector<std::pair<std::uint32_t, double>> new_cuts(std::uint32_t f) const;
+  void refuse_foreign_vertex(std::uint32_t f) const;
+  [[noreturn]] void refuse(std::uint32_t f, const std::string& what) const;
+  std::string name(std::uint32_t g) const { return id(segments_[g].a) + "-" + id(segments_[g].b); }
+  std::string id(std::uint32_t i) const { return std::to_string(i + static_cast<std::uint32_t>(in_.first_index)); }
+  bool holds_without(std::uint32_t other, const LocalVertex& v) const;
   bool add_splits_near(std::uint32_t g, double t);
   std::vector<std::uint32_t> mesh_facets(const std::vector<std::uint32_t>& facets, const FacetMeshOptions& options,
                                          bool record = true);
@@ -202,6 +209,64 @@ std::vector<std::pair<std::uint32_t, double>> SurfaceBuilder::new_cuts(std::uint
   return cuts;
 }
 
+// Whether facet `other` lacks vertex v (an input point or a split of a segment) that another
+// facet found on a segment they share.
+bool SurfaceBuilder::holds_without(std::uint32_t other, const LocalVertex& v) const {
+  if (v.input != kNone) {
+    for (const auto& polygon : in_.facets[other].polygons)
+      if (std::find(polygon.begin(), polygon.end(), v.input) != polygon.end()) return false;
+    return true;
+  }
+  const std::vector<std::uint32_t>& held = facets_[other].segments;
+  return v.g == kNone || !std::binary_search(held.begin(), held.end(), v.g);
+}
+
+// The one-line refusal of an input whose facets cannot agree on a segment (refuse_foreign_vertex).
+[[noreturn]] void SurfaceBuilder::refuse(std::uint32_t f, const std::string& what) const {
+  throw InputError(in_.source_name, in_.facets[f].line,
+                   "facet " + id(f) + ": " + what + " (facets may meet only at whole segments and corners)");
+}
+
+// Facet f's mesh has a vertex inside a piece of a shared segment that no facet can make agree:
+// an input point of f on the segment, a split of another segment overlapping it (f's 2-D repair
+// splits the piece there, but a facet holding the segment without that vertex never does), or a
+// crossing of two shared segments (each would take the crossing as a cut of its own: two
+// vertices at one point, a cracked surface). Such an input is not a complex, and it is refused as
+// the facet readers refuse other invalid facets.
+void SurfaceBuilder::refuse_foreign_vertex(std::uint32_t f) const {
+  const FacetState& state = facets_[f];
+  const Mesh& mesh = state.result.mesh;
+  if (!mesh.has_subsegments()) return;
+  std::unordered_map<std::uint32_t, std::uint32_t> crossing;  // new vertex -> a shared segment it cuts
+  // Each end of each subsegment: a boundary subsegment has one half-edge, whose origin may be the
+  // piece's own end.
+  for (std::uint32_t i = 0; i < 2 * mesh.corner.size(); ++i) {
+    const EdgeRef edge{i / 2};
+    if (!mesh.subseg.has(edge)) continue;
+    const std::uint32_t v = i % 2 == 0 ? mesh.org(edge) : mesh.dest(edge);
+    const Subsegment& rec = mesh.subsegments[mesh.subseg[edge]];
+    if (rec.segment >= state.pieces.size()) continue;
+    const Piece& piece = state.pieces[rec.segment];
+    const std::uint32_t g = piece.g;
+    if (v >= state.local.size()) {
+      if (!segments_[g].shared()) continue;
+      const auto [it, added] = crossing.emplace(v, g);
+      if (!added && it->second != g)
+        refuse(f, "its segments " + name(it->second) + " and " + name(g) + " cross, and each is an edge of another facet too");
+      continue;
+    }
+    const Point& p = mesh.points[v];
+    if (p == mesh.points[piece.la] || p == mesh.points[piece.lb]) continue;  // the piece's end, or a copy of it
+    const LocalVertex& lv = state.local[v];
+    for (std::uint32_t other : segments_[g].facets)
+      if (other != f && holds_without(other, lv))
+        refuse(f, (lv.input != kNone ? "point " + id(lv.input)
+                   : lv.g != kNone ? "a point of segment " + name(lv.g)
+                                   : std::string("a vertex")) +
+                      " lies inside segment " + name(g) + ", which facet " + id(other) + " holds without it");
+  }
+}
+
 // The power of two in (d/3, 2d/3]: a concentric shell's radius (Sec. 6) for a piece of length d
 // at a corner. Rounded down by 1e-9 so that lengths equal but for rounding pick the same shell.
 double shell_radius_in_space(double d) {
@@ -282,6 +347,7 @@ std::vector<std::uint32_t> SurfaceBuilder::mesh_facets(const std::vector<std::ui
     run_both([&] { mesh_every_other(1); }, [&] { mesh_every_other(0); });
   else
     for (std::size_t first : {0, 1}) mesh_every_other(first);
+  for (std::uint32_t f : facets) refuse_foreign_vertex(f);
   // A facet whose cut another facet's split (or a segment's end) stood in for has a vertex of its
   // own on the segment where the others have none: it is meshed again on the splits as they are.
   // Declaring the surface converged with such a facet left subsegments that are no edge of it.
