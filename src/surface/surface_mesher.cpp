@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -62,6 +63,7 @@ class SurfaceBuilder {
   Pslg facet_pslg(std::uint32_t f);
   std::vector<std::pair<std::uint32_t, double>> new_cuts(std::uint32_t f) const;
   void refuse_foreign_vertex(std::uint32_t f) const;
+  void refuse_repeated_facets() const;
   [[noreturn]] void refuse(std::uint32_t f, const std::string& what) const;
   std::string name(std::uint32_t g) const { return id(segments_[g].a) + "-" + id(segments_[g].b); }
   std::string id(std::uint32_t i) const { return std::to_string(i + static_cast<std::uint32_t>(in_.first_index)); }
@@ -221,6 +223,22 @@ bool SurfaceBuilder::holds_without(std::uint32_t other, const LocalVertex& v) co
   return v.g == kNone || !std::binary_search(held.begin(), held.end(), v.g);
 }
 
+// Two facets with the same corners cover one piece of surface twice: each meshes it with Steiner
+// points of its own, two vertices at one point, a surface cracked between them. Refused as a
+// facet meeting another other than at whole segments and corners.
+void SurfaceBuilder::refuse_repeated_facets() const {
+  std::map<std::vector<std::uint32_t>, std::uint32_t> first;
+  for (std::uint32_t f = 0; f < in_.facets.size(); ++f) {
+    std::vector<std::uint32_t> corners;
+    for (const auto& polygon : in_.facets[f].polygons) corners.insert(corners.end(), polygon.begin(), polygon.end());
+    std::sort(corners.begin(), corners.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    if (corners.size() < 3) continue;
+    const auto [it, added] = first.emplace(std::move(corners), f);
+    if (!added) refuse(f, "it has the corners of facet " + id(it->second) + ", one piece of surface twice");
+  }
+}
+
 // The one-line refusal of an input whose facets cannot agree on a segment (refuse_foreign_vertex).
 [[noreturn]] void SurfaceBuilder::refuse(std::uint32_t f, const std::string& what) const {
   throw InputError(in_.source_name, in_.facets[f].line,
@@ -230,14 +248,14 @@ bool SurfaceBuilder::holds_without(std::uint32_t other, const LocalVertex& v) co
 // Facet f's mesh has a vertex inside a piece of a shared segment that no facet can make agree:
 // an input point of f on the segment, a split of another segment overlapping it (f's 2-D repair
 // splits the piece there, but a facet holding the segment without that vertex never does), or a
-// crossing of two shared segments (each would take the crossing as a cut of its own: two
-// vertices at one point, a cracked surface). Such an input is not a complex, and it is refused as
+// crossing of a shared segment with another segment (a cut of each: two vertices at one point, or
+// a piece the other facets cannot follow; a cracked surface). Such an input is not a complex, and it is refused as
 // the facet readers refuse other invalid facets.
 void SurfaceBuilder::refuse_foreign_vertex(std::uint32_t f) const {
   const FacetState& state = facets_[f];
   const Mesh& mesh = state.result.mesh;
   if (!mesh.has_subsegments()) return;
-  std::unordered_map<std::uint32_t, std::uint32_t> crossing;  // new vertex -> a shared segment it cuts
+  std::unordered_map<std::uint32_t, std::uint32_t> crossing;  // new vertex -> a segment it cuts
   // Each end of each subsegment: a boundary subsegment has one half-edge, whose origin may be the
   // piece's own end.
   for (std::uint32_t i = 0; i < 2 * mesh.corner.size(); ++i) {
@@ -249,10 +267,11 @@ void SurfaceBuilder::refuse_foreign_vertex(std::uint32_t f) const {
     const Piece& piece = state.pieces[rec.segment];
     const std::uint32_t g = piece.g;
     if (v >= state.local.size()) {
-      if (!segments_[g].shared()) continue;
       const auto [it, added] = crossing.emplace(v, g);
-      if (!added && it->second != g)
-        refuse(f, "its segments " + name(it->second) + " and " + name(g) + " cross, and each is an edge of another facet too");
+      const std::uint32_t h = it->second;
+      if (!added && h != g && (segments_[g].shared() || segments_[h].shared()))
+        refuse(f, "its segments " + name(h) + " and " + name(g) + " cross, and " + name(segments_[g].shared() ? g : h) +
+                      " is an edge of another facet too");
       continue;
     }
     const Point& p = mesh.points[v];
@@ -430,6 +449,7 @@ void SurfaceBuilder::run_rounds(SurfaceReport& report, long& budget) {
 
 SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
   for (std::size_t f = 0; f < in_.facets.size(); ++f) planes_.push_back(fit_facet_plane(in_, f));
+  refuse_repeated_facets();
   collect_segments();
   // The rounds after the first re-mesh facets whose input grew by other facets' cuts, and their
   // 2-D guards, tied to that input, do not bound the whole run: one budget does (SurfaceReport).

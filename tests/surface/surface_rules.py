@@ -269,12 +269,13 @@ def case_inconsistent():
             if any(f.startswith(name + ".1.") for f in os.listdir(WORK)):
                 fail(f"{name} {switches}: files written")
             print(f"{name} {switches}: exit {r.returncode}: {lines[0]}")
-    # Two more fuzz_surface findings: an input point inside a segment that another facet holds
-    # without it, and two shared segments crossing inside a facet. Neither can be meshed so that the
-    # facets agree (the first cracks, the second makes two vertices at one point), so each is an
-    # input error naming the facet's line, in one line, exit 1, nothing written.
+    # Three more fuzz_surface findings: an input point inside a segment that another facet holds
+    # without it, a shared segment crossing another segment inside a facet, and one facet named
+    # twice. None can be meshed so that the facets agree (a crack, or two vertices at one point),
+    # so each is an input error naming the facet's line, in one line, exit 1, nothing written.
     for finding, line, words in (("surface-point-inside-shared-segment.smesh", 14, "point 8 lies inside segment 3-4"),
-                                 ("surface-shared-segments-cross.poly", 15, "segments 1-2 and 4-5 cross")):
+                                 ("surface-shared-segments-cross.poly", 15, "segments 1-2 and 4-5 cross"),
+                                 ("surface-repeated-facet.poly", 26, "facet 7: it has the corners of facet 1")):
         path = os.path.join(WORK, finding)
         shutil.copy(os.path.join(here, "..", "fuzz", "findings", finding), path)
         for switches in ("-p", "-pq30", "-pC"):
