@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "geometry/point.h"
@@ -57,11 +58,17 @@ class PetalSearch {
     double shape = 0.0;       // sin^2 of the smallest angle of the new triangles, at most the bound's
     double clearance2 = 0.0;  // squared distance to the nearest gathered vertex
   };
+  struct Box {
+    double x_lo, x_hi, y_lo, y_hi;
+    bool misses(const Point& a, const Point& b) const;  // segment ab's bounding box misses it
+  };
   static Petal petal_of(const Point& p, const Point& q, const Point& r, double theta_deg);
   void gather(const Mesh& mesh, TriangleId t, const Point& centre, double reach);
   void describe_gathered(const Mesh& mesh);
+  void note_vertex(const Mesh& mesh, VertexId v);
   void propose_corners(const Petal& petal);
   void propose_voronoi(const Petal& petal);
+  Box admissible_box() const;
   bool admissible(Predicates& pred, const Petal& petal, const Point& x) const;
   bool in_gathered(const Point& x) const;
   Score score(const Point& x, double bound_sin2);
@@ -76,8 +83,9 @@ class PetalSearch {
   std::vector<std::array<Point, 3>> corners_;  // per gathered triangle, counter-clockwise
   std::vector<std::array<int, 3>> neighbours_;  // per gathered triangle: the index across each side, or -1
   std::vector<char> in_cavity_;
-  std::vector<VertexId> vertex_ids_;  // the gathered triangles' corners, each once
-  std::vector<Point> vertices_;       // and their points
+  std::vector<Point> vertices_;       // the gathered triangles' corners, each once
+  std::vector<std::uint32_t> seen_;   // per vertex id: the search that last noted it (note_vertex)
+  std::uint32_t search_ = 0;
   std::vector<TriangleId> slots_;     // index_of's table: kSlots triangles or kNone
   std::vector<int> slot_index_ = std::vector<int>(kSlots, -1);
   std::vector<Point> candidates_;
