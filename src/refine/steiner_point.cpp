@@ -15,7 +15,8 @@ namespace {
 // dozen triangles. The cap bounds the work where the mesh is much finer than pq (next to a short
 // feature), where the off-centre is the candidate that matters anyway.
 constexpr std::size_t kGatherLimit = 96;
-static_assert(PetalSearch::kSlots > 2 * kGatherLimit);
+// The table holds the gathered triangles and those refused next to them: at most 1 + 3 per gathered.
+static_assert(PetalSearch::kSlots > 1 + 3 * kGatherLimit + kGatherLimit / 2);
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
@@ -177,10 +178,11 @@ double PetalSearch::clearance2(const Point& x) const {
   return nearest;
 }
 
-// A small open-addressed table from triangle to its place in triangles_ (kSlots is more than twice
-// kGatherLimit, so probes are short and it never fills).
+// A small open-addressed table from triangle to its place in triangles_ or kRefused (kSlots is
+// well above what a gather can enter, so probes are short and it never fills).
+static_assert(PetalSearch::kSlots == std::size_t{1} << (32 - 23));  // slot_of's shift
 std::size_t PetalSearch::slot_of(TriangleId t) const {
-  std::size_t slot = (static_cast<std::uint32_t>(t) * 2654435761u) >> 24;
+  std::size_t slot = (static_cast<std::uint32_t>(t) * 2654435761u) >> 23;
   while (slots_[slot] != kNone && slots_[slot] != t) slot = (slot + 1) % kSlots;
   return slot;
 }
@@ -188,6 +190,12 @@ std::size_t PetalSearch::slot_of(TriangleId t) const {
 int PetalSearch::index_of(TriangleId t) const {
   const std::size_t slot = slot_of(t);
   return slots_[slot] == kNone ? -1 : slot_index_[slot];
+}
+
+void PetalSearch::refuse(TriangleId t) {
+  const std::size_t slot = slot_of(t);
+  slots_[slot] = t;
+  slot_index_[slot] = kRefused;
 }
 
 void PetalSearch::remember(TriangleId t) {
@@ -209,11 +217,11 @@ void PetalSearch::gather(const Mesh& mesh, TriangleId t, const Point& centre, do
       const EdgeRef across = mesh.link[e];
       if (across == kNone || (mesh.has_subsegments() && mesh.subseg.has(e))) continue;
       const TriangleId u = triangle_of(across);
-      if (index_of(u) >= 0) continue;
+      if (index_of(u) != -1) continue;  // gathered, or refused already (the test is u's alone)
       const auto [a, b, c] = mesh.corner_points(u);
       const double dx = std::max({std::min({a.x, b.x, c.x}) - centre.x, 0.0, centre.x - std::max({a.x, b.x, c.x})});
       const double dy = std::max({std::min({a.y, b.y, c.y}) - centre.y, 0.0, centre.y - std::max({a.y, b.y, c.y})});
-      if (dx * dx + dy * dy <= reach * reach) remember(u);
+      if (dx * dx + dy * dy <= reach * reach) remember(u); else refuse(u);
     }
   }
   describe_gathered(mesh);
@@ -238,7 +246,7 @@ void PetalSearch::describe_gathered(const Mesh& mesh) {
       const EdgeRef e = edge_of(triangles_[i], side);
       const EdgeRef across = mesh.link[e];
       if (across == kNone || (mesh.has_subsegments() && mesh.subseg.has(e))) continue;
-      neighbours_[i][side] = index_of(triangle_of(across));
+      neighbours_[i][side] = std::max(index_of(triangle_of(across)), -1);
     }
   }
 }

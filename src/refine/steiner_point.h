@@ -41,7 +41,7 @@ inline constexpr double kPetalMarginDeg = 0.1;
 // must also lie inside pqr's circumcircle (exact incircle), or its insertion would leave pqr.
 class PetalSearch {
  public:
-  static constexpr std::size_t kSlots = 256;  // the gathered triangles' index table (steiner_point.cpp)
+  static constexpr std::size_t kSlots = 512;  // the gathered and refused triangles' index table (steiner_point.cpp)
   Point choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, double theta_deg, double off_center_factor);
 
  private:
@@ -74,8 +74,10 @@ class PetalSearch {
   Score score(const Point& x, double bound_sin2);
   double clearance2(const Point& x) const;
   std::size_t slot_of(TriangleId t) const;
-  int index_of(TriangleId t) const;  // in triangles_, or -1
+  int index_of(TriangleId t) const;  // in triangles_, kRefused, or -1 (not looked at yet)
   void remember(TriangleId t);
+  void refuse(TriangleId t);  // looked at by gather and left out
+  static constexpr int kRefused = -2;
 
   std::vector<TriangleId> triangles_;
   std::vector<Point> centres_;  // the circumcentres of triangles_: the Voronoi vertices near pq
