@@ -289,9 +289,9 @@ constexpr std::array kLongOptions = {
                "constrained Delaunay property still hold",
                set_smooth},
     LongOption{"steiner", "POLICY", false,
-               "where a skinny triangle's new vertex goes: offcentre (Ungor's off-centre; the default up to -q34), "
-               "circumcentre (as -k) or optimal (Erten and Ungor's locally optimal point in the petal of the shortest "
-               "edge; the default above -q34)",
+               "where a skinny triangle's new vertex goes: offcentre (Ungor's off-centre; the default below -q33, "
+               "and up to -q34 with -Y/-YY), circumcentre (as -k) or optimal (Erten and Ungor's locally optimal "
+               "point in the petal of the shortest edge; the default from -q33)",
                set_steiner},
     LongOption{"threads", "N", false,
                "refine large meshes (and build the triangulation, write the files) on up to N threads (default: all cores); "

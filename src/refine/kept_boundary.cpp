@@ -47,6 +47,8 @@ bool keeps_every_subsegment(const Mesh& mesh, int no_steiner_on_segments) {
 
 }  // namespace
 
+bool keeps_boundary(const RefineOptions& opt) { return opt.no_steiner_on_segments > 0; }
+
 KeptBoundary::KeptBoundary(const RefineOptions& opt)
     : level_(opt.no_steiner_on_segments),
       checks_splits_(opt.no_steiner_on_segments != 0 && !opt.conforming_delaunay),

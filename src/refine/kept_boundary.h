@@ -16,6 +16,9 @@ namespace deltri {
 struct RefineOptions;
 class Terminator;
 
+// Whether -Y or -YY keep subsegments whole (the Steiner policy's choice reads it: steiner_policy.h).
+bool keeps_boundary(const RefineOptions& opt);
+
 class KeptBoundary {
  public:
   explicit KeptBoundary(const RefineOptions& opt);

@@ -7,6 +7,7 @@
 
 #include "util/errors.h"
 #include "refine/area_field.h"
+#include "refine/kept_boundary.h"
 #include "refine/criteria.h"
 #include "refine/refine_in_parts.h"
 #include "refine/termination_guard.h"
@@ -116,7 +117,8 @@ RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& aske
   const bool given = asked.area_field != nullptr && !asked.area_field->empty();
   const AreaField field = asked.size.triangle_bounds && !given ? AreaField::of(mesh) : AreaField{};
   RefineOptions opt = asked;
-  opt.steiner = opt.off_centers ? resolved_policy(asked.steiner, asked.angle.degrees()) : SteinerPolicy::Circumcentre;
+  opt.steiner = opt.off_centers ? resolved_policy(asked.steiner, asked.angle.degrees(), keeps_boundary(asked))
+                                : SteinerPolicy::Circumcentre;
   if (!given) opt.area_field = &field;
   const RefineReport report = refine_in_stages(mesh, pred, opt);
   if (!opt.area_field->empty() && mesh.area_bound.size() == mesh.triangle_slots())

@@ -36,9 +36,12 @@ class Relocator {
  private:
   // sin^2 of the smallest angle of the star with its centre at p, or some value at or below floor
   // once that is below it (a candidate no better than floor is dropped whatever its exact measure).
-  double least_angle(const Mesh& mesh, const Point& p, double floor) const;
+  double least_angle(const Point& p, double floor) const;
+  void read_rim(const Mesh& mesh);
   bool acceptable(const Mesh& mesh, Predicates& pred, const EncroachRule& rule, const Point& p, double before) const;
   Star star_;  // the moving vertex's star (mesh/star.h)
+  std::vector<Point> rim_;     // the points of star_.ring
+  std::vector<double> rim2_;   // rim2_[i]: |rim_[i] rim_[i + 1]|^2
   mutable std::size_t worst_ = 0;  // where least_angle found the smallest last (where it starts)
 };
 

@@ -15,7 +15,8 @@ namespace {
 // dozen triangles. The cap bounds the work where the mesh is much finer than pq (next to a short
 // feature), where the off-centre is the candidate that matters anyway.
 constexpr std::size_t kGatherLimit = 96;
-static_assert(PetalSearch::kSlots > 2 * kGatherLimit);
+// The table holds the gathered triangles and those refused next to them: at most 1 + 3 per gathered.
+static_assert(PetalSearch::kSlots > 1 + 3 * kGatherLimit + kGatherLimit / 2);
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
@@ -121,18 +122,37 @@ void PetalSearch::propose_corners(const Petal& petal) {
 void PetalSearch::propose_voronoi(const Petal& petal) {
   Point crossings[2];
   Point at;
+  const Box near = admissible_box();
   for (std::size_t i = 0; i < triangles_.size(); ++i) {
     for (unsigned side = 0; side < 3; ++side) {
       const int j = neighbours_[i][side];
       if (j <= static_cast<int>(i)) continue;  // each edge once, both ends gathered
       const Point& a = centres_[i];
       const Point& b = centres_[static_cast<std::size_t>(j)];
+      if (near.misses(a, b)) continue;
       const int n = segment_circle_crossings(a, b, petal.arc_centre, petal.arc_radius, crossings);
       for (int k = 0; k < n; ++k) candidates_.push_back(crossings[k]);
       if (segment_crossing(a, b, petal.p, petal.ray_p, at)) candidates_.push_back(at);
       if (segment_crossing(a, b, petal.q, petal.ray_q, at)) candidates_.push_back(at);
     }
   }
+}
+
+// A box around pqr's circumcircle (triangles_[0] is pqr), widened far past rounding: an admissible
+// candidate is inside that circle (the exact incircle test), and a crossing on a Voronoi edge lies
+// in the edge's bounding box, so an edge whose box misses it proposes nothing admissible and its
+// crossings need not be computed (most of the gathered edges, which surround the petal).
+PetalSearch::Box PetalSearch::admissible_box() const {
+  const Point& c = centres_[0];
+  const double reach = std::sqrt(radii2_[0]) * (1.0 + 1e-3) + 1e-9 * (std::fabs(c.x) + std::fabs(c.y));
+  return {c.x - reach, c.x + reach, c.y - reach, c.y + reach};
+}
+
+// Disjoint for certain. An edge with a NaN or infinite end may count as disjoint either way: its
+// crossings are not finite, and admissible() refuses them.
+bool PetalSearch::Box::misses(const Point& a, const Point& b) const {
+  return std::max(a.x, b.x) < x_lo || std::min(a.x, b.x) > x_hi || std::max(a.y, b.y) < y_lo ||
+         std::min(a.y, b.y) > y_hi;
 }
 
 // In the petal (triangle pqx meets the bound, with the margin) and in pqr's circumcircle.
@@ -151,10 +171,11 @@ double PetalSearch::clearance2(const Point& x) const {
   return nearest;
 }
 
-// A small open-addressed table from triangle to its place in triangles_ (kSlots is more than twice
-// kGatherLimit, so probes are short and it never fills).
+// A small open-addressed table from triangle to its place in triangles_ or kRefused (kSlots is
+// well above what a gather can enter, so probes are short and it never fills).
+static_assert(PetalSearch::kSlots == std::size_t{1} << (32 - 23));  // slot_of's shift
 std::size_t PetalSearch::slot_of(TriangleId t) const {
-  std::size_t slot = (static_cast<std::uint32_t>(t) * 2654435761u) >> 24;
+  std::size_t slot = (static_cast<std::uint32_t>(t) * 2654435761u) >> 23;
   while (slots_[slot] != kNone && slots_[slot] != t) slot = (slot + 1) % kSlots;
   return slot;
 }
@@ -162,6 +183,12 @@ std::size_t PetalSearch::slot_of(TriangleId t) const {
 int PetalSearch::index_of(TriangleId t) const {
   const std::size_t slot = slot_of(t);
   return slots_[slot] == kNone ? -1 : slot_index_[slot];
+}
+
+void PetalSearch::refuse(TriangleId t) {
+  const std::size_t slot = slot_of(t);
+  slots_[slot] = t;
+  slot_index_[slot] = kRefused;
 }
 
 void PetalSearch::remember(TriangleId t) {
@@ -183,11 +210,11 @@ void PetalSearch::gather(const Mesh& mesh, TriangleId t, const Point& centre, do
       const EdgeRef across = mesh.link[e];
       if (across == kNone || (mesh.has_subsegments() && mesh.subseg.has(e))) continue;
       const TriangleId u = triangle_of(across);
-      if (index_of(u) >= 0) continue;
+      if (index_of(u) != -1) continue;  // gathered, or refused already (the test is u's alone)
       const auto [a, b, c] = mesh.corner_points(u);
       const double dx = std::max({std::min({a.x, b.x, c.x}) - centre.x, 0.0, centre.x - std::max({a.x, b.x, c.x})});
       const double dy = std::max({std::min({a.y, b.y, c.y}) - centre.y, 0.0, centre.y - std::max({a.y, b.y, c.y})});
-      if (dx * dx + dy * dy <= reach * reach) remember(u);
+      if (dx * dx + dy * dy <= reach * reach) remember(u); else refuse(u);
     }
   }
   describe_gathered(mesh);
@@ -198,7 +225,8 @@ void PetalSearch::describe_gathered(const Mesh& mesh) {
   centres_.clear();
   radii2_.clear();
   corners_.clear();
-  vertex_ids_.clear();
+  vertices_.clear();
+  if (++search_ == 0) std::fill(seen_.begin(), seen_.end(), 0), search_ = 1;
   neighbours_.assign(triangles_.size(), {-1, -1, -1});
   for (std::size_t i = 0; i < triangles_.size(); ++i) {
     const auto [a, b, c] = mesh.corner_points(triangles_[i]);
@@ -206,18 +234,24 @@ void PetalSearch::describe_gathered(const Mesh& mesh) {
     centres_.push_back(centre);
     radii2_.push_back(squared_distance(centre, a));
     corners_.push_back({a, b, c});
-    for (unsigned k = 0; k < 3; ++k) vertex_ids_.push_back(mesh.corner[edge_of(triangles_[i], k)]);
+    for (unsigned k = 0; k < 3; ++k) note_vertex(mesh, mesh.corner[edge_of(triangles_[i], k)]);
     for (unsigned side = 0; side < 3; ++side) {
       const EdgeRef e = edge_of(triangles_[i], side);
       const EdgeRef across = mesh.link[e];
       if (across == kNone || (mesh.has_subsegments() && mesh.subseg.has(e))) continue;
-      neighbours_[i][side] = index_of(triangle_of(across));
+      neighbours_[i][side] = std::max(index_of(triangle_of(across)), -1);
     }
   }
-  std::sort(vertex_ids_.begin(), vertex_ids_.end());
-  vertex_ids_.erase(std::unique(vertex_ids_.begin(), vertex_ids_.end()), vertex_ids_.end());
-  vertices_.clear();
-  for (const VertexId v : vertex_ids_) vertices_.push_back(mesh.point(v));
+}
+
+// Each corner once (clearance2 takes the least distance, so their order does not matter): a stamp
+// per vertex of the mesh marks those seen by this search, instead of sorting the ids each time.
+void PetalSearch::note_vertex(const Mesh& mesh, VertexId v) {
+  const auto i = static_cast<std::size_t>(static_cast<std::uint32_t>(v));
+  if (i >= seen_.size()) seen_.resize(std::max<std::size_t>(i + 1, 2 * seen_.size()), 0);
+  if (seen_[i] == search_) return;
+  seen_[i] = search_;
+  vertices_.push_back(mesh.point(v));
 }
 
 }  // namespace deltri

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "geometry/mesh_bounds.h"
@@ -41,7 +42,7 @@ inline constexpr double kPetalMarginDeg = 0.1;
 // must also lie inside pqr's circumcircle (exact incircle), or its insertion would leave pqr.
 class PetalSearch {
  public:
-  static constexpr std::size_t kSlots = 256;  // the gathered triangles' index table (steiner_point.cpp)
+  static constexpr std::size_t kSlots = 512;  // the gathered and refused triangles' index table (steiner_point.cpp)
   Point choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, double theta_deg, double off_center_factor);
   // For a triangle bad only for an angle above --max-angle, `longest` its edge opposite that
   // angle (obtuse_point.cpp): the candidate whose new triangles all meet both bounds, or else
@@ -63,22 +64,30 @@ class PetalSearch {
     double shape = 0.0;       // sin^2 of the smallest angle of the new triangles, at most the bound's
     double clearance2 = 0.0;  // squared distance to the nearest gathered vertex
   };
+  struct Box {
+    double x_lo, x_hi, y_lo, y_hi;
+    bool misses(const Point& a, const Point& b) const;  // segment ab's bounding box misses it
+  };
   static Petal petal_of(const Point& p, const Point& q, const Point& r, double theta_deg);
   void gather(const Mesh& mesh, TriangleId t, const Point& centre, double reach);
   void describe_gathered(const Mesh& mesh);
+  void note_vertex(const Mesh& mesh, VertexId v);
   void propose_corners(const Petal& petal);
   void propose_voronoi(const Petal& petal);
+  Box admissible_box() const;
   bool admissible(Predicates& pred, const Petal& petal, const Point& x) const;
   bool in_gathered(const Point& x) const;
   Score score(const Point& x, double bound_sin2);
   double clearance2(const Point& x) const;
   std::size_t slot_of(TriangleId t) const;
-  int index_of(TriangleId t) const;  // in triangles_, or -1
+  int index_of(TriangleId t) const;  // in triangles_, kRefused, or -1 (not looked at yet)
   void remember(TriangleId t);
   void propose_obtuse(const Point& p, const Point& q, const Point& fallback);
   double star_margin(const Point& x, const AngleBound& angle, const LargestAngleBound& max_angle);
   int container_of(const Point& x) const;  // the gathered triangle holding x, or -1
   void mark_walls(const Mesh& mesh);
+  void refuse(TriangleId t);  // looked at by gather and left out
+  static constexpr int kRefused = -2;
 
   std::vector<TriangleId> triangles_;
   std::vector<Point> centres_;  // the circumcentres of triangles_: the Voronoi vertices near pq
@@ -86,8 +95,9 @@ class PetalSearch {
   std::vector<std::array<Point, 3>> corners_;  // per gathered triangle, counter-clockwise
   std::vector<std::array<int, 3>> neighbours_;  // per gathered triangle: the index across each side, or -1
   std::vector<char> in_cavity_;
-  std::vector<VertexId> vertex_ids_;  // the gathered triangles' corners, each once
-  std::vector<Point> vertices_;       // and their points
+  std::vector<Point> vertices_;       // the gathered triangles' corners, each once
+  std::vector<std::uint32_t> seen_;   // per vertex id: the search that last noted it (note_vertex)
+  std::uint32_t search_ = 0;
   std::vector<TriangleId> slots_;     // index_of's table: kSlots triangles or kNone
   std::vector<int> slot_index_ = std::vector<int>(kSlots, -1);
   std::vector<Point> candidates_;

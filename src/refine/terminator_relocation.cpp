@@ -6,7 +6,9 @@ namespace deltri {
 // Above the off-centres' reach (the second stage, with locally optimal points), a bad triangle's
 // free corners first move where their stars' smallest angles are larger (relocation.h), and the
 // stars' triangles go back in the queue; a triangle that meets the bound then needs no new vertex.
-// Moves add no vertex, so the Steiner cap does not bound them: kRelocationsPerVertex does.
+// Moves add no vertex, so the Steiner cap does not bound them: kRelocationsPerVertex does. Once t
+// meets the bound its other corners stay: their searches were most of the second stage's time
+// and the moves they made gained nothing measurable (docs/refinement.md).
 bool Terminator::relocate_corners(TriangleId t) {
   if (!optimal_points_ || !opt_.angle.cascades()) return false;
   bool moved = false;
@@ -18,6 +20,7 @@ bool Terminator::relocate_corners(TriangleId t) {
     ++relocations_;
     moved = true;
     for (const EdgeRef s : relocator_.star_edges()) enqueue_if_bad(triangle_of(s));
+    if (!assess(t).bad()) return moved;  // the rest of t's corners need not move
   }
   return moved;
 }

@@ -171,10 +171,14 @@ TEST(steiner_policies_by_name) {
   CHECK(!parse({"--steiner=offcentre", "x"}).circumcenters_only);
   CHECK(parse({"--steiner=circumcentre", "x"}).circumcenters_only);  // as -k
   CHECK(usage_error({"--steiner=best", "x"}).find("offcentre, circumcentre or optimal") != std::string::npos);
-  // Automatic: the off-centres' meshes up to -q34, locally optimal points above.
-  CHECK(resolved_policy(SteinerPolicy::Automatic, 34.0) == SteinerPolicy::OffCentre);
-  CHECK(resolved_policy(SteinerPolicy::Automatic, 34.5) == SteinerPolicy::Optimal);
-  CHECK(resolved_policy(SteinerPolicy::OffCentre, 40.0) == SteinerPolicy::OffCentre);
+  // Automatic: the off-centres below -q33, locally optimal points from it (above -q34 under -Y/-YY).
+  CHECK(resolved_policy(SteinerPolicy::Automatic, 32.9, false) == SteinerPolicy::OffCentre);
+  CHECK(resolved_policy(SteinerPolicy::Automatic, 33.0, false) == SteinerPolicy::Optimal);
+  CHECK(resolved_policy(SteinerPolicy::Automatic, 34.0, false) == SteinerPolicy::Optimal);
+  CHECK(resolved_policy(SteinerPolicy::Automatic, 34.0, true) == SteinerPolicy::OffCentre);
+  CHECK(resolved_policy(SteinerPolicy::Automatic, 34.5, true) == SteinerPolicy::Optimal);
+  CHECK(resolved_policy(SteinerPolicy::Automatic, 34.5, false) == SteinerPolicy::Optimal);
+  CHECK(resolved_policy(SteinerPolicy::OffCentre, 40.0, false) == SteinerPolicy::OffCentre);
 }
 
 TEST(long_option_errors) {
