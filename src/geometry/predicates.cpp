@@ -62,6 +62,25 @@ bool incircle_extended(const Point& a, const Point& b, const Point& c, const Poi
   return true;
 }
 
+// Whether the four points are the corners of an axis-parallel rectangle (d, a point sharing its x,
+// one sharing its y, and the last sharing the x of one and the y of the other). Their lifts
+// x^2 + y^2 add a function of x to one of y, so on such a 2 x 2 grid they are coplanar and the
+// determinant is exactly zero, whatever the spacing. Refinement of a strip or a grid of rectangles
+// whose sides are not dyadic (a 1 x 1e-6 rectangle) meets such quadruples at every split, and
+// each otherwise went through every stage below to find the zero.
+bool rectangle_corners(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const Point* others[3] = {&a, &b, &c};
+  for (int i = 0; i < 3; ++i) {
+    if (others[i]->x != d.x) continue;
+    for (int j = 0; j < 3; ++j) {
+      if (j == i || others[j]->y != d.y) continue;
+      const Point& last = *others[3 - i - j];
+      if (last.x == others[j]->x && last.y == others[i]->y) return true;
+    }
+  }
+  return false;
+}
+
 // (dx^2 + dy^2) * minor exactly, for single-double dx, dy and minor of at most 4 components.
 int lifted_minor(const double* minor, int n, double dx, double dy, double* out) {
   double x1[8], x2[16], y1[8], y2[16];
@@ -274,6 +293,7 @@ double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c
   // million.
   if (scaled_ok && scaled.width <= 12 && scaled.fits_doubles())
     return plain_incircle(adx, ady, bdx, bdy, cdx, cdy).det;
+  if (rectangle_corners(a, b, c, d)) return 0.0;
   if constexpr (kWideLongDouble) {
     double extended = 0.0;
     if (incircle_extended(a, b, c, d, extended)) return extended;
