@@ -7,7 +7,7 @@
 // error bound proves the sign.
 //
 // incircle tries cheaper ways to the exact sign before stage B (ours, not the paper's), in this
-// order: plain doubles when the differences are exact and span at most 12 bits (lattice points,
+// order: comparisons that find the corners of an axis-parallel rectangle (exactly zero); plain doubles when the differences are exact and span at most 12 bits (lattice points,
 // whose zeros no filter can decide); the filter's evaluation repeated in long double, whose bound
 // with long double's unit roundoff is 2^11 times tighter where long double has a 64-bit significand
 // (x87, as on x86-64 Linux) and which decides most of the nearly cocircular quadruples of points
@@ -278,6 +278,7 @@ double Predicates::orient2d_adapt(const Point& a, const Point& b, const Point& c
 double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c, const Point& d,
                                   double permanent) {
   ++counters.incircle_adaptive;
+  if (rectangle_corners(a, b, c, d)) return 0.0;
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
   const bool exact_differences =
@@ -293,7 +294,6 @@ double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c
   // million.
   if (scaled_ok && scaled.width <= 12 && scaled.fits_doubles())
     return plain_incircle(adx, ady, bdx, bdy, cdx, cdy).det;
-  if (rectangle_corners(a, b, c, d)) return 0.0;
   if constexpr (kWideLongDouble) {
     double extended = 0.0;
     if (incircle_extended(a, b, c, d, extended)) return extended;

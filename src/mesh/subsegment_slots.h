@@ -54,6 +54,12 @@ class SubsegmentSlots {
   std::size_t size() const { return size_; }  // slots, 0 while the mesh has no segments
   bool empty() const { return size_ == 0; }
   std::size_t count() const { return count_; }  // slots that carry a value
+  // Whether some slot carries the value s: one walk over the table, for a question asked once.
+  bool holds(SubsegmentId s) const {
+    for (const Entry& x : table_)
+      if (x.slot != kNone && x.id == s) return true;
+    return false;
+  }
   // Bytes held (bits and table), for the memory accounting in tests and docs.
   std::size_t bytes() const { return bits_.capacity() * sizeof(std::uint64_t) + table_.capacity() * sizeof(Entry); }
 

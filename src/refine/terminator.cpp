@@ -186,6 +186,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       extent_(extent_with(mesh, start.extent)),
       bad_triangles_(opt.queue_order, squared_diameter(extent_), edge_level_bits(opt.angle.degrees())),
       locked_(std::move(start.locked)),
+      seams_(mesh.subseg.holds(kSeamEdge)),
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
   report_.guard_length = edge_floor_;
@@ -397,6 +398,7 @@ EdgeRef Terminator::current_edge(const EncroachedSubsegment& entry) {
 bool Terminator::is_splittable(EdgeRef e) const {
   if (kept_.keeps(mesh_, e)) return false;
   if (lopping_.is_spoke(mesh_, e)) return false;
+  if (!seams_ && locked_.empty()) return true;
   const SubsegmentId id = mesh_.subseg[e];
   if (id == kSeamEdge) return false;
   return id >= locked_.size() || !locked_[id];
