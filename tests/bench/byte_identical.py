@@ -23,7 +23,9 @@ import tempfile
 
 MODES = {
     "p": ["-p"],
+    "pq20": ["-pq20"],
     "pq30": ["-pq30"],
+    "pq33a0.01": ["-pq33a0.01"],
     "pq33a": ["-pq33a{area}"],
     "ruppert": ["--algorithm=ruppert", "-pq25"],
     "chew": ["--algorithm=chew", "-pq28"],
