@@ -7,7 +7,7 @@
 // error bound proves the sign.
 //
 // incircle tries cheaper ways to the exact sign before stage B (ours, not the paper's), in this
-// order: plain doubles when the differences are exact and span at most 12 bits (lattice points,
+// order: comparisons that find the corners of an axis-parallel rectangle (exactly zero); plain doubles when the differences are exact and span at most 12 bits (lattice points,
 // whose zeros no filter can decide); the filter's evaluation repeated in long double, whose bound
 // with long double's unit roundoff is 2^11 times tighter where long double has a 64-bit significand
 // (x87, as on x86-64 Linux) and which decides most of the nearly cocircular quadruples of points
@@ -60,6 +60,25 @@ bool incircle_extended(const Point& a, const Point& b, const Point& c, const Poi
   det = value > 0 ? std::max(static_cast<double>(value), std::numeric_limits<double>::denorm_min())
                   : std::min(static_cast<double>(value), -std::numeric_limits<double>::denorm_min());
   return true;
+}
+
+// Whether the four points are the corners of an axis-parallel rectangle (d, a point sharing its x,
+// one sharing its y, and the last sharing the x of one and the y of the other). Their lifts
+// x^2 + y^2 add a function of x to one of y, so on such a 2 x 2 grid they are coplanar and the
+// determinant is exactly zero, whatever the spacing. Refinement of a strip or a grid of rectangles
+// whose sides are not dyadic (a 1 x 1e-6 rectangle) meets such quadruples at every split, and
+// each otherwise went through every stage below to find the zero.
+bool rectangle_corners(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const Point* others[3] = {&a, &b, &c};
+  for (int i = 0; i < 3; ++i) {
+    if (others[i]->x != d.x) continue;
+    for (int j = 0; j < 3; ++j) {
+      if (j == i || others[j]->y != d.y) continue;
+      const Point& last = *others[3 - i - j];
+      if (last.x == others[j]->x && last.y == others[i]->y) return true;
+    }
+  }
+  return false;
 }
 
 // (dx^2 + dy^2) * minor exactly, for single-double dx, dy and minor of at most 4 components.
@@ -259,6 +278,7 @@ double Predicates::orient2d_adapt(const Point& a, const Point& b, const Point& c
 double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c, const Point& d,
                                   double permanent) {
   ++counters.incircle_adaptive;
+  if (rectangle_corners(a, b, c, d)) return 0.0;
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
   const bool exact_differences =

@@ -183,10 +183,19 @@ void SegmentPieces::record_split(const Mesh& mesh, VertexId v, const PieceEnds& 
   of_subsegment.resize(mesh.subsegments.size(), piece);  // the new half's record
 }
 
+// The split vertices are distinct and increasing, so split i is at least i ids after the first and
+// at least (n - 1 - i) before the last: v can only be at an index in [v's distance from the
+// last, counted back from the end; its distance from the first]. Where nearly every vertex is a
+// split (a thin strip, refined only along its sides) that range holds an entry or two, and the
+// search touches no more; elsewhere it is never wider than the whole list.
 const PieceEnds* SegmentPieces::piece_of(VertexId v) const {
-  const auto at = std::lower_bound(splits.begin(), splits.end(), v,
-                                   [](const Split& s, VertexId u) { return s.vertex < u; });
-  return at != splits.end() && at->vertex == v ? &at->piece : nullptr;
+  const std::size_t n = splits.size();
+  if (n == 0 || v < splits.front().vertex || v > splits.back().vertex) return nullptr;
+  const std::size_t after_first = v - splits.front().vertex, before_last = splits.back().vertex - v;
+  const auto lo = splits.begin() + static_cast<std::ptrdiff_t>(n - 1 - std::min(before_last, n - 1));
+  const auto hi = splits.begin() + static_cast<std::ptrdiff_t>(std::min(after_first, n - 1) + 1);
+  const auto at = std::lower_bound(lo, hi, v, [](const Split& s, VertexId u) { return s.vertex < u; });
+  return at != hi && at->vertex == v ? &at->piece : nullptr;
 }
 
 VertexId SegmentPieces::end_shared_with(const PieceEnds& mine, VertexId c) const {

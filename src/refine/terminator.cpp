@@ -182,6 +182,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       bottom_(mesh, opt, policy_, start.guard_floor, extent_, start.hopeless_edges),
       bad_triangles_(opt.queue_order, squared_diameter(extent_), edge_level_bits(opt.angle.degrees())),
       locked_(std::move(start.locked)),
+      seams_(mesh.subseg.holds(kSeamEdge)),
       small_pages_(start.small_pages),
       warmer_(opt.threads > 1) {
   report_.guard_length = edge_floor_;
@@ -387,6 +388,7 @@ EdgeRef Terminator::current_edge(const EncroachedSubsegment& entry) {
 bool Terminator::is_splittable(EdgeRef e) const {
   if (kept_.keeps(mesh_, e)) return false;
   if (lopping_.is_spoke(mesh_, e)) return false;
+  if (!seams_ && locked_.empty()) return true;
   const SubsegmentId id = mesh_.subseg[e];
   if (id == kSeamEdge) return false;
   return id >= locked_.size() || !locked_[id];

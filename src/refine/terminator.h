@@ -234,6 +234,11 @@ class Terminator {
   RefineReport report_;
   ProgressShare progress_share_;  // this Terminator's part of opt_.progress
   std::vector<char> locked_;  // by subsegment record: a split failed for want of precision
+  // Whether the mesh carries a cut's marks (kSeamEdge). They are set before a Terminator starts
+  // and stay as they are while it runs; without them and without locks, is_splittable needs no
+  // subsegment id, whose lookup missed the cache on every call where every triangle has a
+  // subsegment (a thin strip).
+  bool seams_ = true;
   // Ruppert, Chew: by vertex id, the insertion radius of each refinement split this Terminator
   // made, 0 for every other vertex (refused_by_sure_fire_rule).
   std::vector<double> split_radius_;

@@ -30,6 +30,7 @@ MODES = {
     "pq20": ["-pq20"],
     "pq30": ["-pq30"],
     "pq33": ["-pq33"],
+    "pq33a0.01": ["-pq33a0.01"],
     "pq33a": ["-pq33a{area}"],
     "ruppert": ["--algorithm=ruppert", "-pq25"],
     "chew": ["--algorithm=chew", "-pq28"],

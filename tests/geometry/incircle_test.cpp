@@ -228,3 +228,30 @@ TEST(incircle_wide_exactly_cocircular_rectangles) {
     CHECK_EQ(sign_of(pred.incircle(a, b, c, d1)), incircle_sign(a, b, c, d1));
   }
 }
+
+// Corners of axis-parallel rectangles with sides that are not dyadic (a thin strip's cells): the
+// lifts x^2 + y^2 of a 2 x 2 grid are coplanar, so every order of the four is exactly zero, as the
+// reference says; one corner moved by an ulp in either coordinate gives the reference's sign.
+TEST(incircle_rectangle_corners_are_zero_and_their_neighbours_are_not) {
+  Predicates pred;
+  Random rng(31);
+  for (int i = 0; i < 2000; ++i) {
+    const double x0 = rng.uniform(-1, 1), y0 = rng.uniform(-1, 1) * 1e-3;
+    const double x1 = x0 + rng.uniform(1e-9, 1e-6), y1 = y0 + (i % 2 ? 1e-6 : rng.uniform(1e-12, 1e3));
+    const Point p[4] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+    std::array<int, 4> perm{0, 1, 2, 3};
+    do {
+      const Point &a = p[perm[0]], &b = p[perm[1]], &c = p[perm[2]], &d = p[perm[3]];
+      CHECK_EQ(incircle_sign(a, b, c, d), 0);
+      CHECK_EQ(pred.incircle(a, b, c, d), 0.0);
+    } while (std::next_permutation(perm.begin(), perm.end()));
+    for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        const Point moved = nudge(p[i % 4], dx, dy);
+        const Point q[4] = {i % 4 == 0 ? moved : p[0], i % 4 == 1 ? moved : p[1], i % 4 == 2 ? moved : p[2],
+                            i % 4 == 3 ? moved : p[3]};
+        CHECK_EQ(sign_of(pred.incircle(q[0], q[1], q[2], q[3])), incircle_sign(q[0], q[1], q[2], q[3]));
+      }
+    }
+  }
+}
