@@ -141,7 +141,8 @@ def judge(k, pts, segs, holes, s, letters, longs, angle):
         r = subprocess.run([DELTRI, '-' + letters] + longs + [name], capture_output=True, text=True, timeout=60)
     except subprocess.TimeoutExpired:
         return 'timeout'
-    refining = 'q' in letters or 'a' in letters or 'D' in letters
+    # --corner-lopping puts vertices on segments at rounded points (its shields), as refinement does.
+    refining = 'q' in letters or 'a' in letters or 'D' in letters or '--corner-lopping' in longs
     if r.returncode != 0:
         if len(r.stderr.strip().splitlines()) != 1:
             return 'exit %d with %d lines on stderr' % (r.returncode, len(r.stderr.strip().splitlines()))

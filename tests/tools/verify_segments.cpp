@@ -13,7 +13,9 @@
 // docs/manual.md "Repaired PSLG input") takes it there: its distance from the segment's line is at
 // most kSnapUlps ulps of the largest x and of the largest y of the three points, each weighted by
 // the normal's component (a decimal T-junction one rounding off the segment). With --exact-input
-// deltri does not snap, and its exact edge along the segment is then found first.
+// deltri does not snap, and its exact edge along the segment is then found first. With --refined or
+// a crossing, a vertex that is not an input vertex also counts within kSnapUlps + 1 of that measure:
+// refinement splits the pieces of a segment bent through a snapped vertex at rounded points.
 // Every other decision (collinear vertices, whether a gap between two vertices on the segment
 // meets a triangle) is exact.
 // Where two segments' chains lie within the tolerance of each other (vertices a few ulps apart),
@@ -183,16 +185,19 @@ class SegmentWalk {
     return it == c_.topo.used_at.end() ? -1 : it->second;
   }
   bool exactly_on(const Point& p) { return on_closed_segment(c_.pred, a_, b_, p); }
-  bool snapped(const Point& p) const {
+  bool snapped(const Point& p, long double ulps) const {
     const long double dx = static_cast<long double>(b_.x) - a_.x, dy = static_cast<long double>(b_.y) - a_.y;
     const long double cross = dx * (static_cast<long double>(p.y) - a_.y) - dy * (static_cast<long double>(p.x) - a_.x);
     const long double ux = 0x1p-52L * std::max({std::fabs(a_.x), std::fabs(b_.x), std::fabs(p.x)});
     const long double uy = 0x1p-52L * std::max({std::fabs(a_.y), std::fabs(b_.y), std::fabs(p.y)});
-    return std::fabs(cross) <= kSnapUlps * (std::fabs(dy) * std::max(ux, 0x1p-1074L) + std::fabs(dx) * std::max(uy, 0x1p-1074L));
+    return std::fabs(cross) <= ulps * (std::fabs(dy) * std::max(ux, 0x1p-1074L) + std::fabs(dx) * std::max(uy, 0x1p-1074L));
   }
   bool near(const Point& p) const {
-    if (input_.count(p)) return snapped(p);
+    if (input_.count(p)) return snapped(p, kSnapUlps);
     if (!crosses_) return false;
+    // Where snapping bent the segment through an input vertex (up to kSnapUlps off it), a refined
+    // mesh splits the bent pieces at points rounded on them: within that bound and an ulp more.
+    if (snapped(p, kSnapUlps + 1)) return true;
     const long double dx = static_cast<long double>(b_.x) - a_.x, dy = static_cast<long double>(b_.y) - a_.y;
     const long double cross = dx * (static_cast<long double>(p.y) - a_.y) - dy * (static_cast<long double>(p.x) - a_.x);
     const double m = std::max({std::fabs(a_.x), std::fabs(a_.y), std::fabs(b_.x), std::fabs(b_.y), std::fabs(p.x), std::fabs(p.y)});
