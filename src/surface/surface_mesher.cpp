@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -58,7 +60,8 @@ class SurfaceBuilder {
 
  private:
   void collect_segments();
-  void run_rounds(SurfaceReport& report, long& budget);
+  void run_rounds(SurfaceReport& report, long& budget, bool give_up_on_stall);
+  std::size_t shared_split_count() const;
   std::uint32_t segment_of(std::uint32_t a, std::uint32_t b);
   Pslg facet_pslg(std::uint32_t f);
   std::vector<std::pair<std::uint32_t, double>> new_cuts(std::uint32_t f) const;
@@ -68,7 +71,7 @@ class SurfaceBuilder {
   std::string name(std::uint32_t g) const { return id(segments_[g].a) + "-" + id(segments_[g].b); }
   std::string id(std::uint32_t i) const { return std::to_string(i + static_cast<std::uint32_t>(in_.first_index)); }
   bool holds_without(std::uint32_t other, const LocalVertex& v) const;
-  bool add_splits_near(std::uint32_t g, double t);
+  bool add_splits_near(std::uint32_t g, double t, std::set<double>& splits) const;
   std::vector<std::uint32_t> mesh_facets(const std::vector<std::uint32_t>& facets, const FacetMeshOptions& options,
                                          bool record = true);
   std::vector<std::uint32_t> facet_vertices(std::uint32_t f, const std::vector<std::uint32_t>& split_base,
@@ -311,25 +314,25 @@ double tree_split(double u, double v, double length, bool shells_at_a, bool shel
 // (midpoints, shells, mirrored across thin wedges, measured in its own plane) interleaved with the
 // others' and cut the pieces near small corners down to 1e-10 (the gear at -pq30a2). False when t
 // is (within kSameParameter) a split or an end already: nothing was added.
-bool SurfaceBuilder::add_splits_near(std::uint32_t g, double t) {
-  Segment3& s = segments_[g];
+bool SurfaceBuilder::add_splits_near(std::uint32_t g, double t, std::set<double>& splits) const {
+  const Segment3& s = segments_[g];
   if (!one_tree_) {
-    const auto at = std::lower_bound(s.splits.begin(), s.splits.end(), t);
-    const bool near_next = at != s.splits.end() && *at - t < kSameParameter;
-    const bool near_prev = at != s.splits.begin() && t - *(at - 1) < kSameParameter;
+    const auto at = splits.lower_bound(t);
+    const bool near_next = at != splits.end() && *at - t < kSameParameter;
+    const bool near_prev = at != splits.begin() && t - *std::prev(at) < kSameParameter;
     if (near_next || near_prev || t < kSameParameter || t > 1.0 - kSameParameter) return false;
-    s.splits.insert(at, t);
+    splits.insert(at, t);
     return true;
   }
   const double length = norm(in_.points[s.b] - in_.points[s.a]);
   bool added = false;
   for (;;) {
-    const auto at = std::lower_bound(s.splits.begin(), s.splits.end(), t);
-    const double u = at == s.splits.begin() ? 0.0 : *(at - 1), v = at == s.splits.end() ? 1.0 : *at;
+    const auto at = splits.lower_bound(t);
+    const double u = at == splits.begin() ? 0.0 : *std::prev(at), v = at == splits.end() ? 1.0 : *at;
     if (t - u < kSameParameter || v - t < kSameParameter) return added;
     const double m = tree_split(u, v, length, acute_[s.a] != 0, acute_[s.b] != 0);
     if (!(m - u >= kSameParameter && v - m >= kSameParameter)) return added;
-    s.splits.insert(std::lower_bound(s.splits.begin(), s.splits.end(), m), m);
+    splits.insert(m);
     added = true;
     if (std::abs(t - m) <= 0.25 * (v - u)) return added;
   }
@@ -370,15 +373,22 @@ std::vector<std::uint32_t> SurfaceBuilder::mesh_facets(const std::vector<std::ui
   // A facet whose cut another facet's split (or a segment's end) stood in for has a vertex of its
   // own on the segment where the others have none: it is meshed again on the splits as they are.
   // Declaring the surface converged with such a facet left subsegments that are no edge of it.
+  // The cuts are merged into ordered sets, not the sorted vectors: one round can bring a segment
+  // hundreds of thousands of cuts (fuzz_surface's finding F4 with its point at x = -4000, -pq30:
+  // the first round ran for minutes inserting them into a vector one by one).
+  std::unordered_map<std::uint32_t, std::set<double>> merging;
   std::vector<std::uint32_t> again;
   for (std::size_t i = 0; i < facets.size(); ++i)
     for (const auto& [g, t] : cuts[i]) {
-      if (!add_splits_near(g, t)) {
+      auto [at, fresh] = merging.try_emplace(g);
+      if (fresh) at->second.insert(segments_[g].splits.begin(), segments_[g].splits.end());
+      if (!add_splits_near(g, t, at->second)) {
         again.push_back(facets[i]);
         continue;
       }
       again.insert(again.end(), segments_[g].facets.begin(), segments_[g].facets.end());
     }
+  for (const auto& [g, splits] : merging) segments_[g].splits.assign(splits.begin(), splits.end());
   std::sort(again.begin(), again.end());
   again.erase(std::unique(again.begin(), again.end()), again.end());
   return again;
@@ -408,8 +418,38 @@ FacetMeshOptions SurfaceBuilder::share_of_budget(const FacetMeshOptions& options
   return o;
 }
 
-// Rounds until the facets agree, the round cap, or the budget.
-void SurfaceBuilder::run_rounds(SurfaceReport& report, long& budget) {
+std::size_t SurfaceBuilder::shared_split_count() const {
+  std::size_t n = 0;
+  for (const Segment3& s : segments_) n += s.shared() ? s.splits.size() : 0;
+  return n;
+}
+
+// Facets that chase each other's cuts round after round: in the last kStallWindow rounds no
+// fewer facets were left to mesh again than before them, and the shared segments gained at least
+// as many splits as in the kStallWindow rounds before. Rounds that converge shed facets or add
+// fewer splits from round to round. Seen in the first try only (run): the pynastran gear at
+// -pq30a20 (22 facets again in every round from round 20 on, 45 to 71 splits each; the second try
+// agrees after 19 rounds) and a facet point moved far out of its box (fuzz_surface's finding F4 at
+// x = 4000: 3 facets, 4,594 more splits every two rounds, 160,000 Steiner points by round 40).
+constexpr std::size_t kStallWindow = 4;
+
+struct RoundState {
+  std::size_t dirty = 0;
+  std::size_t shared_splits = 0;
+};
+
+bool stalled(const std::vector<RoundState>& history) {
+  const std::size_t n = history.size();
+  if (n < 2 * kStallWindow + 1) return false;
+  const RoundState &a = history[n - 1 - 2 * kStallWindow], &b = history[n - 1 - kStallWindow], &c = history[n - 1];
+  for (std::size_t k = n - kStallWindow; k < n; ++k)
+    if (history[k].dirty < b.dirty) return false;
+  return c.shared_splits - b.shared_splits >= b.shared_splits - a.shared_splits;
+}
+
+// Rounds until the facets agree, the round cap, the budget, or (give_up_on_stall) a stall.
+void SurfaceBuilder::run_rounds(SurfaceReport& report, long& budget, bool give_up_on_stall) {
+  std::vector<RoundState> history;
   std::vector<std::uint32_t> dirty(facets_.size());
   for (std::uint32_t f = 0; f < dirty.size(); ++f) dirty[f] = f;
   report.converged = false;
@@ -430,16 +470,13 @@ void SurfaceBuilder::run_rounds(SurfaceReport& report, long& budget) {
       const long guard = static_cast<long>(std::min(guard_total, 1e18));
       budget = budget < 0 ? guard : std::min(budget, guard);
     }
-    if (progress_)
-      progress_({report.rounds, meshed.size(), steiner_count(), budget, [&] {
-                   std::size_t n = 0;
-                   for (const Segment3& s : segments_) n += s.shared() ? s.splits.size() : 0;
-                   return n;
-                 }(), dirty.size()});
+    history.push_back({dirty.size(), shared_split_count()});
+    if (progress_) progress_({report.rounds, meshed.size(), steiner_count(), budget, history.back().shared_splits, dirty.size()});
     if (dirty.empty()) {
       report.converged = true;
       break;
     }
+    if (give_up_on_stall && stalled(history)) break;
     // A facet stopped by its share would be meshed again with its old vertices and the others'
     // new cuts and nothing to spend on them: slivers. The last pass below does better.
     if (budget >= 0 && steiner_count() >= static_cast<std::size_t>(budget)) report.budget_reached = true;
@@ -454,7 +491,7 @@ SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
   // The rounds after the first re-mesh facets whose input grew by other facets' cuts, and their
   // 2-D guards, tied to that input, do not bound the whole run: one budget does (SurfaceReport).
   long budget = options_.refine ? options_.steiner_total : -1;
-  run_rounds(report, budget);
+  run_rounds(report, budget, true);
   if (!report.converged && !report.budget_reached) {
     // The second try, from scratch: every facet splits a shared segment at the points of one tree
     // (add_splits_near), and takes other facets' cuts as splits of the straight chain they lie on
@@ -466,7 +503,7 @@ SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
     one_tree_ = true;
     for (Segment3& s : segments_) s.splits.clear();
     for (FacetState& state : facets_) state = FacetState{state.segments, 0, state.lone, {}, {}, {}};
-    run_rounds(report, budget);
+    run_rounds(report, budget, false);
   }
   report.steiner_budget = budget;
   if (!report.converged) {

@@ -288,6 +288,39 @@ def case_inconsistent():
             print(f"{finding} {switches}: {lines[0]}")
 
 
+def case_stalled_rounds():
+    # The finding's point at x = 4000 at -pq30 (docs/reliability.md, row 47.b): the first
+    # try's rounds never agreed, 3 facets meshed again in every round with 4,594 more splits on
+    # shared segments every two rounds, until the round cap (40: 160,000 Steiner points), then the
+    # second try agreed and the check refused the mesh (102 s). The first try now gives up once its
+    # rounds make no progress (surface_mesher.cpp, stalled). Each run must end in the same
+    # one-line refusal, nothing written, and -V must show the first try ending before the cap.
+    # (At x = -4000 the first round alone puts 4.9 million cuts on shared segments: open.)
+    here = os.path.dirname(os.path.abspath(__file__))
+    finding = open(os.path.join(here, "..", "fuzz", "findings", "surface-open-subsegment-no-edge.poly")).read()
+    moved = re.compile(r"^11 40000\.0*", re.M)
+    for name, x in (("at4000", "4000"),):
+        path = os.path.join(WORK, name + ".poly")
+        with open(path, "w") as out:
+            out.write(moved.sub("11 " + x, finding))
+        try:
+            r = run(path, "-pq30V", timeout=240)
+        except subprocess.TimeoutExpired:
+            fail(f"{name} -pq30: did not end within 240 s")
+        lines = [l for l in r.stderr.strip().splitlines() if not l.startswith("Round ")]
+        if r.returncode == 0 or len(lines) < 1 or "not consistent" not in lines[-1]:
+            fail(f"{name} -pq30: not the refusal: exit {r.returncode}, {r.stderr[-300:]!r}")
+        if any(f.startswith(name + ".1.") for f in os.listdir(WORK)):
+            fail(f"{name} -pq30: files written")
+        rounds = [int(m) for m in re.findall(r"^Round (\d+):", r.stderr + r.stdout, re.M)]
+        tries = [k for k, n in enumerate(rounds) if n == 1]
+        first = rounds[tries[1] - 1] if len(tries) > 1 else rounds[-1] if rounds else 0
+        if not rounds or first >= 40:
+            fail(f"{name} -pq30: the first try ran {first} rounds (the cap is 40)")
+        print(f"{name} -pq30: exit {r.returncode} after {len(rounds)} rounds ({first} in the first try): {lines[-1]}")
+
+
 {"inconsistent": case_inconsistent, "scale": case_scale, "duplicates": case_duplicates, "hole_inside": case_hole_inside,
- "hole_off_plane": case_hole_off_plane, "sphere": case_sphere, "steiner_total": case_steiner_total}[CASE]()
+ "hole_off_plane": case_hole_off_plane, "sphere": case_sphere, "steiner_total": case_steiner_total,
+ "stalled_rounds": case_stalled_rounds}[CASE]()
 print("ok")

@@ -9,6 +9,8 @@ library (the Python module on libdeltri). Every run is judged:
   * exit non-zero: stderr is one line, and no output file is left behind; the library raises.
 usage: random_sweep.py DELTRI VERIFY RUNS [SEED]     (prints one line per failure, then a summary;
        exit 1 if any run failed). Not part of CI at full size: see docs/reliability.md.
+       SWEEP_ONLY=K1,K2,... runs only those runs of the same sequence (the others' inputs are drawn
+       and skipped), to reproduce a failure without the whole sweep.
 """
 import math
 import os
@@ -109,6 +111,8 @@ def rescaled(name, out, pts, segs, holes):
     write_poly(name[:-5] + '.s.poly', [up(p) for p in pts], segs, [up(h) for h in holes])
     scale(out + '.node', name[:-5] + '.s.1.node', 1, 2)
     shutil.copy(out + '.ele', name[:-5] + '.s.1.ele')
+    if os.path.exists(out + '.poly'):  # the verifier reads the output's subsegments from it
+        scale(out + '.poly', name[:-5] + '.s.1.poly', 1, 2)
     return name[:-5] + '.s.poly', name[:-5] + '.s.1'
 
 
@@ -117,9 +121,14 @@ def triangles_of(path):
         return int(f.readline().split()[0])
 
 
+ONLY = {int(k) for k in os.environ.get('SWEEP_ONLY', '').split(',') if k}
+
+
 def one(k):
     pts, segs, holes, s = pslg()
     letters, longs, angle = switches(s)
+    if ONLY and k not in ONLY:
+        return None
     why = judge(k, pts, segs, holes, s, letters, longs, angle)
     return why and '%s (deltri -%s %s)' % (why, letters, ' '.join(longs))
 
@@ -132,7 +141,8 @@ def judge(k, pts, segs, holes, s, letters, longs, angle):
         r = subprocess.run([DELTRI, '-' + letters] + longs + [name], capture_output=True, text=True, timeout=60)
     except subprocess.TimeoutExpired:
         return 'timeout'
-    refining = 'q' in letters or 'a' in letters or 'D' in letters
+    # --corner-lopping puts vertices on segments at rounded points (its shields), as refinement does.
+    refining = 'q' in letters or 'a' in letters or 'D' in letters or '--corner-lopping' in longs
     if r.returncode != 0:
         if len(r.stderr.strip().splitlines()) != 1:
             return 'exit %d with %d lines on stderr' % (r.returncode, len(r.stderr.strip().splitlines()))

@@ -99,15 +99,25 @@ class Explainer {
     return false;
   }
 
-  // Where segments s1 and s2 meet: shared ends, an end of one on the other, or a proper crossing.
+  // An input point a few ulps off segment s that deltri's snapping put on it (the segment walk
+  // found its vertex on s, verify_segments.cpp): an end of one segment on the other as well.
+  bool snapped_onto(const Point& p, int s) const {
+    const auto it = c_.topo.used_at.find(p);
+    if (it == c_.topo.used_at.end()) return false;
+    const std::vector<int>& on = c_.segments_at[it->second];
+    return std::find(on.begin(), on.end(), s) != on.end();
+  }
+
+  // Where segments s1 and s2 meet: shared ends, an end of one on the other (snapped onto it
+  // included), or a proper crossing.
   std::vector<Point> meeting_points(int s1, int s2) {
     const Point &a = in_point(c_.in.segments[s1].a), &b = in_point(c_.in.segments[s1].b);
     const Point &d = in_point(c_.in.segments[s2].a), &e = in_point(c_.in.segments[s2].b);
     std::vector<Point> meet;
     for (const Point* p : {&a, &b})
-      if (on_closed_segment(c_.pred, d, e, *p)) meet.push_back(*p);
+      if (on_closed_segment(c_.pred, d, e, *p) || snapped_onto(*p, s2)) meet.push_back(*p);
     for (const Point* p : {&d, &e})
-      if (on_closed_segment(c_.pred, a, b, *p) && std::find(meet.begin(), meet.end(), *p) == meet.end())
+      if ((on_closed_segment(c_.pred, a, b, *p) || snapped_onto(*p, s1)) && std::find(meet.begin(), meet.end(), *p) == meet.end())
         meet.push_back(*p);
     if (!meet.empty()) return meet;
     if (properly_cross(c_.pred, a, b, d, e)) {
