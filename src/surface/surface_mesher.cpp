@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "geometry/predicates.h"
 #include "refine/termination_guard.h"
 #include "util/errors.h"
 #include "util/run_both.h"
@@ -67,6 +68,7 @@ class SurfaceBuilder {
   std::vector<std::pair<std::uint32_t, double>> new_cuts(std::uint32_t f) const;
   void refuse_foreign_vertex(std::uint32_t f) const;
   void refuse_repeated_facets() const;
+  void refuse_overlapping_segments() const;
   [[noreturn]] void refuse(std::uint32_t f, const std::string& what) const;
   std::string name(std::uint32_t g) const { return id(segments_[g].a) + "-" + id(segments_[g].b); }
   std::string id(std::uint32_t i) const { return std::to_string(i + static_cast<std::uint32_t>(in_.first_index)); }
@@ -240,6 +242,31 @@ void SurfaceBuilder::refuse_repeated_facets() const {
     const auto [it, added] = first.emplace(std::move(corners), f);
     if (!added) refuse(f, "it has the corners of facet " + id(it->second) + ", one piece of surface twice");
   }
+}
+
+// Two segments from one point along one ray overlap: the shorter one's far end lies inside the
+// longer, and a facet holding the longer one alone splits it there only if a split of its own
+// happens to land on that point (the midpoint of a segment twice as long did: two vertices at one
+// point, a cracked surface). Refused unless one facet holds both and no other holds either (its
+// 2-D repair then merges them, as for a PSLG). Exact: collinear in all three coordinate planes.
+void SurfaceBuilder::refuse_overlapping_segments() const {
+  std::vector<std::vector<std::uint32_t>> at(in_.points.size());
+  for (std::uint32_t g = 0; g < segments_.size(); ++g) at[segments_[g].a].push_back(g), at[segments_[g].b].push_back(g);
+  Predicates pred;
+  const auto far_end = [&](std::uint32_t g, std::uint32_t v) { return segments_[g].a == v ? segments_[g].b : segments_[g].a; };
+  for (std::uint32_t v = 0; v < at.size(); ++v)
+    for (std::size_t i = 0; i < at[v].size(); ++i)
+      for (std::size_t j = i + 1; j < at[v].size(); ++j) {
+        const Segment3 &s = segments_[at[v][i]], &t = segments_[at[v][j]];
+        if (s.facets == t.facets && s.facets.size() == 1) continue;
+        const Point3 o = in_.points[v], a = in_.points[far_end(at[v][i], v)], b = in_.points[far_end(at[v][j], v)];
+        const bool collinear = pred.orient2d({o.x, o.y}, {a.x, a.y}, {b.x, b.y}) == 0.0 &&
+                               pred.orient2d({o.y, o.z}, {a.y, a.z}, {b.y, b.z}) == 0.0 &&
+                               pred.orient2d({o.x, o.z}, {a.x, a.z}, {b.x, b.z}) == 0.0;
+        if (collinear && dot(a - o, b - o) > 0.0)
+          refuse(t.facets.front(), "its segment " + name(at[v][j]) + " overlaps segment " + name(at[v][i]) + " of facet " +
+                                       id(s.facets.front()));
+      }
 }
 
 // The one-line refusal of an input whose facets cannot agree on a segment (refuse_foreign_vertex).
@@ -488,6 +515,7 @@ SurfaceMesh SurfaceBuilder::run(SurfaceReport& report) {
   for (std::size_t f = 0; f < in_.facets.size(); ++f) planes_.push_back(fit_facet_plane(in_, f));
   refuse_repeated_facets();
   collect_segments();
+  refuse_overlapping_segments();
   // The rounds after the first re-mesh facets whose input grew by other facets' cuts, and their
   // 2-D guards, tied to that input, do not bound the whole run: one budget does (SurfaceReport).
   long budget = options_.refine ? options_.steiner_total : -1;

@@ -277,11 +277,11 @@ def case_inconsistent():
             if any(f.startswith(name + ".1.") for f in os.listdir(WORK)):
                 fail(f"{name} {switches}: files written")
             print(f"{name} {switches}: exit {r.returncode}: {lines[0]}")
-    # Three more fuzz_surface findings: an input point inside a segment that another facet holds
-    # without it, a shared segment crossing another segment inside a facet, and one facet named
-    # twice. None can be meshed so that the facets agree (a crack, or two vertices at one point),
+    # Three more fuzz_surface findings: two segments from one point along one ray (an input point
+    # inside a segment another facet holds without it), a shared segment crossing another segment
+    # inside a facet, and one facet named twice. None can be meshed so that the facets agree (a crack, or two vertices at one point),
     # so each is an input error naming the facet's line, in one line, exit 1, nothing written.
-    for finding, line, words in (("surface-point-inside-shared-segment.smesh", 14, "point 8 lies inside segment 3-4"),
+    for finding, line, words in (("surface-point-inside-shared-segment.smesh", 14, "its segment 4-8 overlaps segment 3-4"),
                                  ("surface-shared-segments-cross.poly", 15, "segments 1-2 and 4-5 cross"),
                                  ("surface-repeated-facet.poly", 26, "facet 7: it has the corners of facet 1")):
         path = os.path.join(WORK, finding)
