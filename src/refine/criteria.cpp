@@ -175,11 +175,11 @@ double angle_margin(const Point& a, const Point& b, const Point& c, const AngleB
   if (!(sine2 > 0.0)) return -2.0;  // clockwise or flat
   double margin = angle.sin2() > 0.0 ? sine2 - angle.sin2() : 1.0;
   if (!max_angle.asked()) return margin;
-  const Point* corner[3] = {&a, &b, &c};
+  const Point* at[3] = {&a, &b, &c};
   for (unsigned k = 0; k < 3; ++k) {
-    const Point& p = *corner[k];
-    const Point& u = *corner[(k + 1) % 3];
-    const Point& v = *corner[(k + 2) % 3];
+    const Point& p = *at[k];
+    const Point& u = *at[(k + 1) % 3];
+    const Point& v = *at[(k + 2) % 3];
     const double ux = u.x - p.x, uy = u.y - p.y, vx = v.x - p.x, vy = v.y - p.y;
     const double cosine = (ux * vx + uy * vy) / std::sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy));
     margin = std::min(margin, cosine - max_angle.cosine());

@@ -15,8 +15,9 @@ namespace {
 // dozen triangles. The cap bounds the work where the mesh is much finer than pq (next to a short
 // feature), where the off-centre is the candidate that matters anyway.
 constexpr std::size_t kGatherLimit = 96;
-// The table holds the gathered triangles and those refused next to them: at most 1 + 3 per gathered.
-static_assert(PetalSearch::kSlots > 1 + 3 * kGatherLimit + kGatherLimit / 2);
+// The table holds the gathered triangles and those refused next to them (at most three neighbours
+// per gathered one), with room to spare for short probes.
+static_assert(PetalSearch::kSlots > 1 + kGatherLimit * 7 / 2);
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
