@@ -67,6 +67,8 @@ class SurfaceBuilder {
   Pslg facet_pslg(std::uint32_t f);
   std::vector<std::pair<std::uint32_t, double>> new_cuts(std::uint32_t f) const;
   void refuse_foreign_vertex(std::uint32_t f) const;
+  void refuse_crossing(std::uint32_t f, std::uint32_t g, std::uint32_t h) const;
+  void refuse_inside(std::uint32_t f, const LocalVertex& v, std::uint32_t g) const;
   void refuse_repeated_facets() const;
   void refuse_overlapping_segments() const;
   [[noreturn]] void refuse(std::uint32_t f, const std::string& what) const;
@@ -286,34 +288,39 @@ void SurfaceBuilder::refuse_foreign_vertex(std::uint32_t f) const {
   const Mesh& mesh = state.result.mesh;
   if (!mesh.has_subsegments()) return;
   std::unordered_map<std::uint32_t, std::uint32_t> crossing;  // new vertex -> a segment it cuts
-  // Each end of each subsegment: a boundary subsegment has one half-edge, whose origin may be the
+  // Both ends of each subsegment: a boundary subsegment has one half-edge, whose origin may be the
   // piece's own end.
-  for (std::uint32_t i = 0; i < 2 * mesh.corner.size(); ++i) {
-    const EdgeRef edge{i / 2};
-    if (!mesh.subseg.has(edge)) continue;
-    const std::uint32_t v = i % 2 == 0 ? mesh.org(edge) : mesh.dest(edge);
-    const Subsegment& rec = mesh.subsegments[mesh.subseg[edge]];
+  for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
+    if (!mesh.subseg.has(e)) continue;
+    const Subsegment& rec = mesh.subsegments[mesh.subseg[e]];
     if (rec.segment >= state.pieces.size()) continue;
     const Piece& piece = state.pieces[rec.segment];
-    const std::uint32_t g = piece.g;
-    if (v >= state.local.size()) {
-      const auto [it, added] = crossing.emplace(v, g);
-      const std::uint32_t h = it->second;
-      if (!added && h != g && (segments_[g].shared() || segments_[h].shared()))
-        refuse(f, "its segments " + name(h) + " and " + name(g) + " cross, and " + name(segments_[g].shared() ? g : h) +
-                      " is an edge of another facet too");
-      continue;
+    for (const std::uint32_t v : {mesh.org(e), mesh.dest(e)}) {
+      if (v >= state.local.size()) {
+        const auto [it, added] = crossing.emplace(v, piece.g);
+        if (!added && it->second != piece.g) refuse_crossing(f, it->second, piece.g);
+      } else if (mesh.points[v] != mesh.points[piece.la] && mesh.points[v] != mesh.points[piece.lb]) {
+        refuse_inside(f, state.local[v], piece.g);  // not the piece's end, nor a copy of it
+      }
     }
-    const Point& p = mesh.points[v];
-    if (p == mesh.points[piece.la] || p == mesh.points[piece.lb]) continue;  // the piece's end, or a copy of it
-    const LocalVertex& lv = state.local[v];
-    for (std::uint32_t other : segments_[g].facets)
-      if (other != f && holds_without(other, lv))
-        refuse(f, (lv.input != kNone ? "point " + id(lv.input)
-                   : lv.g != kNone ? "a point of segment " + name(lv.g)
-                                   : std::string("a vertex")) +
-                      " lies inside segment " + name(g) + ", which facet " + id(other) + " holds without it");
   }
+}
+
+// Two segments of facet f cross at a vertex its mesh made: refused where either is shared.
+void SurfaceBuilder::refuse_crossing(std::uint32_t f, std::uint32_t g, std::uint32_t h) const {
+  if (!segments_[g].shared() && !segments_[h].shared()) return;
+  refuse(f, "its segments " + name(g) + " and " + name(h) + " cross, and " + name(segments_[h].shared() ? h : g) +
+                " is an edge of another facet too");
+}
+
+// Vertex v of facet f's PSLG lies inside segment g: refused where a facet holds g without v.
+void SurfaceBuilder::refuse_inside(std::uint32_t f, const LocalVertex& v, std::uint32_t g) const {
+  for (std::uint32_t other : segments_[g].facets)
+    if (other != f && holds_without(other, v))
+      refuse(f, (v.input != kNone ? "point " + id(v.input)
+                 : v.g != kNone   ? "a point of segment " + name(v.g)
+                                  : std::string("a vertex")) +
+                    " lies inside segment " + name(g) + ", which facet " + id(other) + " holds without it");
 }
 
 // The power of two in (d/3, 2d/3]: a concentric shell's radius (Sec. 6) for a piece of length d
