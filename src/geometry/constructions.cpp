@@ -62,7 +62,7 @@ Point off_center(const Point& p, const Point& q, const Point& r, double factor) 
   if (factor <= 0.0) return centre;
   // The circumcentre lies on pq's bisector, on r's side when the angle at r is acute (the smallest
   // angle is), so the off-centre is the point at the wanted height on the way to it.
-  const Point mid{0.5 * (p.x + q.x), 0.5 * (p.y + q.y)};
+  const Point mid = midpoint(p, q);
   const double dx = centre.x - mid.x, dy = centre.y - mid.y;
   const double to_centre = std::sqrt(dx * dx + dy * dy);
   const double height = factor * std::sqrt(b2);

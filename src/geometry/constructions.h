@@ -45,6 +45,9 @@ bool segment_crossing(const Point& a, const Point& b, const Point& c, const Poin
 // Signed area: positive when a, b, c are counter-clockwise. Plain floating point.
 double triangle_area(const Point& a, const Point& b, const Point& c);
 
+// The midpoint of ab, halves of the sums (the same double whichever of a and b comes first).
+inline Point midpoint(const Point& a, const Point& b) { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}; }
+
 // Inline: the refinement's hot loops (cavity search, triangle shapes) call it for every vertex.
 inline double squared_distance(const Point& a, const Point& b) {
   const double dx = b.x - a.x, dy = b.y - a.y;

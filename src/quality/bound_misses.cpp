@@ -6,6 +6,7 @@
 #include <numbers>
 #include <vector>
 
+#include "geometry/constructions.h"
 #include "refine/criteria.h"
 #include "util/prefetch.h"
 #include "util/run_both.h"
@@ -253,7 +254,7 @@ class ClusterDisks {
         if (phi == HUGE_VAL) continue;
         const Point& a = m.points[j];
         const Point& b = m.points[list[i].to];
-        const Point centre{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+        const Point centre = midpoint(a, b);
         disks_.push_back({j, phi, centre, 0.25 * ((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y))});
       }
     }

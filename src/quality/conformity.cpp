@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <cmath>
 
+#include "geometry/constructions.h"
 #include "geometry/predicates.h"
 #include "quality/bound_misses.h"
 
@@ -19,7 +20,7 @@ bool at_precision_limit(const Mesh& m, Predicates& pred, EdgeRef e) {
   const Point& b = m.point(m.dest(e));
   const double largest = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y), DBL_MIN});
   if (std::hypot(b.x - a.x, b.y - a.y) <= kPrecisionUlps * (std::nextafter(largest, INFINITY) - largest)) return true;
-  const Point mid{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+  const Point mid = midpoint(a, b);
   for (const EdgeRef side : {e, m.link[e]}) {
     const Point& o = m.point(m.org(side));
     const Point& d = m.point(m.dest(side));

@@ -21,8 +21,6 @@ constexpr double kObtuseReach = 1.5;
 constexpr double kBeyond[] = {0.05, 0.15, 0.3, 0.45};
 constexpr double kBefore[] = {0.05, 0.15};
 
-Point mid(const Point& a, const Point& b) { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}; }
-
 }  // namespace
 
 Point PetalSearch::choose_for_obtuse(const Mesh& mesh, Predicates& pred, EdgeRef longest, const Point& fallback,
@@ -31,7 +29,7 @@ Point PetalSearch::choose_for_obtuse(const Mesh& mesh, Predicates& pred, EdgeRef
   const Point& q = mesh.point(mesh.dest(longest));
   const Point& r = mesh.point(mesh.apex(longest));
   if (!std::isfinite(fallback.x) || !std::isfinite(fallback.y)) return fallback;
-  gather(mesh, triangle_of(longest), mid(p, q), kObtuseReach * std::sqrt(squared_distance(p, q)));
+  gather(mesh, triangle_of(longest), midpoint(p, q), kObtuseReach * std::sqrt(squared_distance(p, q)));
   mark_walls(mesh);
   propose_obtuse(p, q, fallback);
   Point best = fallback;
@@ -49,7 +47,7 @@ Point PetalSearch::choose_for_obtuse(const Mesh& mesh, Predicates& pred, EdgeRef
 // gathered triangles' circumcentres) and the midpoints of the Voronoi edges between them.
 void PetalSearch::propose_obtuse(const Point& p, const Point& q, const Point& fallback) {
   candidates_.assign(1, fallback);
-  const Point m = mid(p, q);
+  const Point m = midpoint(p, q);
   const double nx = -(q.y - p.y), ny = q.x - p.x;  // the left normal of p -> q, pq long: towards the apex
   for (const double h : kBeyond) candidates_.push_back({m.x - h * nx, m.y - h * ny});
   for (const double h : kBefore) candidates_.push_back({m.x + h * nx, m.y + h * ny});
@@ -57,7 +55,7 @@ void PetalSearch::propose_obtuse(const Point& p, const Point& q, const Point& fa
   for (std::size_t i = 0; i < triangles_.size(); ++i)
     for (unsigned side = 0; side < 3; ++side) {
       const int j = neighbours_[i][side];
-      if (j > static_cast<int>(i)) candidates_.push_back(mid(centres_[i], centres_[static_cast<std::size_t>(j)]));
+      if (j > static_cast<int>(i)) candidates_.push_back(midpoint(centres_[i], centres_[static_cast<std::size_t>(j)]));
     }
 }
 

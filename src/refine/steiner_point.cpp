@@ -45,7 +45,7 @@ PetalSearch::Petal PetalSearch::petal_of(const Point& p, const Point& q, const P
   const double phi = radians(theta_deg + kPetalMarginDeg);
   const double lx = q.x - p.x, ly = q.y - p.y, l = std::sqrt(lx * lx + ly * ly);
   const double ux = lx / l, uy = ly / l, nx = -uy, ny = ux;  // along pq, and its left normal
-  const Point mid{0.5 * (p.x + q.x), 0.5 * (p.y + q.y)};
+  const Point mid = midpoint(p, q);
   petal.top = along(mid, nx, ny, 0.5 * l / std::tan(0.5 * phi));
   petal.arc_centre = along(mid, nx, ny, 0.5 * l / std::tan(phi));
   petal.arc_radius = 0.5 * l / std::sin(phi);
@@ -67,7 +67,7 @@ Point PetalSearch::choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, 
   const Point fallback = off_center(p, q, r, off_center_factor);
   const Petal petal = petal_of(p, q, r, theta_deg);
   if (!std::isfinite(fallback.x) || !std::isfinite(fallback.y) || !std::isfinite(petal.reach)) return fallback;
-  gather(mesh, triangle_of(shortest), Point{0.5 * (p.x + q.x), 0.5 * (p.y + q.y)}, petal.reach);
+  gather(mesh, triangle_of(shortest), midpoint(p, q), petal.reach);
   candidates_.assign(1, petal.top);
   propose_corners(petal);
   for (const Point& c : centres_) candidates_.push_back(c);
