@@ -325,7 +325,56 @@ def case_stalled_rounds():
     print(f"gear -pq30a20: the first try stopped after {first} rounds, the second agreed after {rounds[-1]}")
 
 
+def case_point_inside_segment():
+    # A corner of one facet strictly inside a segment (a polygon edge) of another facet that has
+    # no corner there: a square A (z = 0) and a triangle B standing on the midpoint of A's edge 1-2.
+    # Meshed, A's edge passed through B's corner (a T-junction -C cannot see, exit 0), and a split
+    # of the edge landing on it (-a0.1) gave two vertices at one point (exit 5). Refused before
+    # meshing at B's line, naming both facets and the point, exit 1, nothing written; exact at any
+    # scale and off the axes. Legal neighbours still mesh: A naming the point as a corner of its
+    # own, B touching A's corner, and B's corner an ulp-sized step off the edge.
+    square = [(0.0, 0.0, 0.0), (2.0, 0.0, 0.0), (2.0, 2.0, 0.0), (0.0, 2.0, 0.0)]
+    standing = [(1.0, 0.0, 0.0), (1.0, -1.0, 1.0), (1.0, 1.0, 1.0)]
+    # Off the axes: A's edge from (0,0,0) to (3,6,9), B's corner at its third (1,2,3).
+    tilted = [(0.0, 0.0, 0.0), (3.0, 6.0, 9.0), (0.0, 6.0, 0.0)]
+    refused = [("t", square + standing, [[1, 2, 3, 4], [5, 6, 7]], 12, "point 5 lies inside segment 1-2, which facet 1 holds"),
+               ("tilted", tilted + [(1.0, 2.0, 3.0), (1.0, 2.0, 10.0), (5.0, 2.0, 3.0)], [[1, 2, 3], [4, 5, 6]], 11,
+                "point 4 lies inside segment 1-2, which facet 1 holds"),
+               # B's edge 5-8 lies along A's edge 1-2, both ends inside it: an overlap with no common end.
+               ("along", square + standing + [(1.5, 0.0, 0.0)], [[1, 2, 3, 4], [5, 8, 6]], 13,
+                "point 5 lies inside segment 1-2, which facet 1 holds")]
+    for name, pts, faces, line, words in refused:
+        # Powers of two keep the points on one line exactly (1e100 times (1, 2, 3) is off it).
+        for s in (1.0, 2.0 ** -340, 2.0 ** 340, 2.0 ** 1000):
+            path = write_poly(f"{name}{s:g}.poly", [tuple(c * s for c in p) for p in pts], faces)
+            for switches in ("-p", "-pa0.1", "-pq30C"):
+                sw = switches if s == 1.0 or "a" not in switches else "-pq30"
+                r = run(path, sw)
+                lines = r.stderr.strip().splitlines()
+                if r.returncode != 1 or len(lines) != 1 or f"{name}{s:g}.poly:{line}: facet 2: " not in lines[0] or words not in lines[0]:
+                    fail(f"{name} at {s:g} {sw}: exit {r.returncode}, not the one-line input error: {r.stderr!r}")
+                if any(f.startswith(f"{name}{s:g}.1.") for f in os.listdir(WORK)):
+                    fail(f"{name} at {s:g} {sw}: files written")
+        print(f"{name}: {lines[0]}")
+    legal = [("corner", square + standing, [[1, 5, 2, 3, 4], [5, 6, 7]]),
+             ("end", square + [(2.0, -1.0, 1.0), (2.0, 1.0, 1.0)], [[1, 2, 3, 4], [2, 5, 6]]),
+             ("offside", square + [(1.0, -2.0 ** -40, 0.0), (1.0, -1.0, 1.0), (1.0, -1.0, -1.0)], [[1, 2, 3, 4], [5, 6, 7]])]
+    for name, pts, faces in legal:
+        path = write_poly(name + ".poly", pts, faces)
+        for switches in ("-pC", "-pa0.1C", "-pq30a0.05C"):
+            r = run(path, switches)
+            expect_ok(r, f"{name} {switches}")
+            mp, mt = read_mesh(path)
+            used = sorted({v for t in mt for v in t}, key=lambda v: mp[v])
+            if any(mp[a] == mp[b] for a, b in zip(used, used[1:])):
+                fail(f"{name} {switches}: two vertices at one point")
+            facets_at = {i for i, t in enumerate(mt) if 5 in t}
+            if not facets_at:
+                fail(f"{name} {switches}: input point 5 is in no triangle")
+        print(f"{name}: meshed, {len(mt)} triangles at -pq30a0.05C")
+
+
 {"inconsistent": case_inconsistent, "scale": case_scale, "duplicates": case_duplicates, "hole_inside": case_hole_inside,
  "hole_off_plane": case_hole_off_plane, "sphere": case_sphere, "steiner_total": case_steiner_total,
- "stalled_rounds": case_stalled_rounds}[CASE]()
+ "stalled_rounds": case_stalled_rounds, "point_inside_segment": case_point_inside_segment}[CASE]()
 print("ok")
