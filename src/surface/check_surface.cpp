@@ -6,6 +6,7 @@
 #include <tuple>
 #include <utility>
 
+#include "geometry/collinear3.h"
 #include "geometry/predicates.h"
 #include "quality/check_mesh.h"
 
@@ -105,6 +106,7 @@ void check_cracks(const SurfaceMesh& m, SurfaceCheck& c) {
 }
 
 void check_planar(const SurfaceMesh& m, SurfaceCheck& c) {
+  Predicates pred;
   for (std::size_t t = 0; t < m.triangle_count(); ++t) {
     const FacetPlane& plane = m.planes[m.triangle_facet[t]];
     const Point3& a = m.points[m.triangles[t][0]];
@@ -114,7 +116,9 @@ void check_planar(const SurfaceMesh& m, SurfaceCheck& c) {
     if (off > kPlanarTolerance * plane.diameter)
       fault(c, "triangle " + std::to_string(t + 1) + " lies off the plane of facet " +
                    std::to_string(m.triangle_facet[t] + 1));
-    if (norm(cross(b - a, d - a)) == 0.0) fault(c, "triangle " + std::to_string(t + 1) + " has zero area in space");
+    // Exactly: the length of the cross product underflowed to 0 for triangles of size 1e-148 (a unit
+    // cube meshed scaled by 2^-492 beside a point at 1e148).
+    if (collinear3(pred, a, b, d)) fault(c, "triangle " + std::to_string(t + 1) + " has zero area in space");
   }
 }
 

@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "geometry/collinear3.h"
 #include "geometry/predicates.h"
 #include "refine/termination_guard.h"
 #include "util/errors.h"
@@ -233,13 +234,6 @@ bool SurfaceBuilder::holds_without(std::uint32_t other, const LocalVertex& v) co
   return v.g == kNone || !std::binary_search(held.begin(), held.end(), v.g);
 }
 
-// Three points on one line in space, exactly: collinear in all three coordinate planes.
-bool collinear(Predicates& pred, const Point3& o, const Point3& a, const Point3& b) {
-  return pred.orient2d({o.x, o.y}, {a.x, a.y}, {b.x, b.y}) == 0.0 &&
-         pred.orient2d({o.y, o.z}, {a.y, a.z}, {b.y, b.z}) == 0.0 &&
-         pred.orient2d({o.x, o.z}, {a.x, a.z}, {b.x, b.z}) == 0.0;
-}
-
 // Two facets with the same corners cover one piece of surface twice: each meshes it with Steiner
 // points of its own, two vertices at one point, a surface cracked between them. Refused as a
 // facet meeting another other than at whole segments and corners.
@@ -272,7 +266,7 @@ void SurfaceBuilder::refuse_overlapping_segments() const {
         const Segment3 &s = segments_[at[v][i]], &t = segments_[at[v][j]];
         if (s.facets == t.facets && s.facets.size() == 1) continue;
         const Point3 o = in_.points[v], a = in_.points[far_end(at[v][i], v)], b = in_.points[far_end(at[v][j], v)];
-        if (collinear(pred, o, a, b) && dot(a - o, b - o) > 0.0)
+        if (collinear3(pred, o, a, b) && dot(a - o, b - o) > 0.0)
           refuse(t.facets.front(), "its segment " + name(at[v][j]) + " overlaps segment " + name(at[v][i]) + " of facet " +
                                        id(s.facets.front()));
       }
@@ -329,7 +323,7 @@ bool strictly_inside(Predicates& pred, const Point3& v, const Point3& p, const P
     if (coordinate(v, k) < std::min(coordinate(p, k), coordinate(q, k)) ||
         coordinate(v, k) > std::max(coordinate(p, k), coordinate(q, k)))
       return false;
-  return collinear(pred, p, q, v);
+  return collinear3(pred, p, q, v);
 }
 
 // A corner of one facet strictly inside a segment that another facet holds without that corner:

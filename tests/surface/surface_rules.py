@@ -115,6 +115,20 @@ def case_scale():
         if len(set(counts.values())) != 1 or counts[1.0] < 12:
             fail(f"{shape} {switches}: triangle counts by scale {counts}")
         print(f"{shape} {switches}: {counts[1.0]} triangles at every scale")
+    # A unit cube beside a point far out (in no facet): the input is meshed scaled by 2^-492 (or
+    # 2^-997), the cube's triangles of size 1e-148; the check's zero-area test took the length
+    # of their cross products, which underflowed to 0: exit 5 on a right mesh (fuzz_surface).
+    for far in (1e148, 1e300):
+        pts, faces = box()
+        path = write_poly(f"far{far:g}.poly", pts + [(0.0, far, 0.0)], faces)
+        for switches in ("-p", "-pq30C"):
+            r = run(path, switches)
+            expect_ok(r, f"unit cube beside a point at {far:g} {switches}")
+            mp, mt = read_mesh(path)
+            faults = manifold_faults(mp, mt)
+            if faults or len(mt) != 12:
+                fail(f"unit cube beside a point at {far:g} {switches}: {len(mt)} triangles, {faults[:3]}")
+        print(f"unit cube beside a point at {far:g}: 12 triangles")
 
 
 def case_duplicates():

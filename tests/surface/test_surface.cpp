@@ -253,3 +253,19 @@ TEST(corner_inside_another_facets_segment_is_refused) {
   CHECK(m.triangle_count() > 20);
   CHECK(check_surface(m).faults == 0);
 }
+
+// A cube of size 2^-492 (what the pipeline meshes for a unit cube beside a point at 1e148): no
+// triangle has zero area, which the check decided by the length of a cross product that
+// underflowed to 0 (12 faults); now by exact collinearity.
+TEST(check_keeps_tiny_triangles_apart_from_zero_area_ones) {
+  FacetInput in = cube_with_copied_top();
+  in.facets[1].polygons = {{4, 5, 7, 6}};
+  in.points.resize(8);
+  for (Point3& p : in.points) p = {std::ldexp(p.x, -492), std::ldexp(p.y, -492), std::ldexp(p.z, -492)};
+  SurfaceReport report;
+  SurfaceMesh m = mesh_surface(in, FacetMeshOptions{}, report);
+  CHECK(m.triangle_count() == 12);
+  CHECK(check_surface(m).faults == 0);
+  m.points[m.triangles[0][2]] = m.points[m.triangles[0][0]] + 0.5 * (m.points[m.triangles[0][1]] - m.points[m.triangles[0][0]]);
+  CHECK(check_surface(m).summary().find("triangle 1 has zero area in space") != std::string::npos);
+}
