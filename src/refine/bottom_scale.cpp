@@ -38,8 +38,17 @@ BottomScale::BottomScale(const Mesh& mesh, const RefineOptions& opt, const Algor
 
 // How candidate c for bad triangle t scores at the bottom scale (its cavity just probed): the
 // smallest angle sines of the new triangles joining c to the cavity's boundary, those up to twice
-// t's scale (`near`) and all of them; nullopt if c is unusable. The new triangles no longer-edged
-// than t must be good, better than t, or no worse than the triangle they replace on their edge.
+// t's scale (`near`) and all of them; nullopt if c is unusable. The new triangles whose shortest
+// edge is under sqrt(2) times t's must be good, better than t, or no worse than the triangle they
+// replace on their edge. Checking only those no longer-edged than t let a bad lattice triangle
+// make bad ones a little longer-edged (26.6 degrees from 31, at -q34), which made more: a front
+// that crept out through good territory at one scale without end (issue 47, row 47.d4: 12,000
+// Steiner points 1,800 ulps out from a tiny crossing under -S12000). Now badness passes on at
+// t's scale only to better triangles or in place of no better ones; otherwise the scale grows by
+// sqrt(2), and twelve such steps leave the bottom scale (docs/refinement.md, Termination, item 5).
+// sqrt(2) rather than 2: robustness1.node's hull edge at -q20 needs such a step
+// (test_bottom_scale.cpp).
+constexpr double kGrowth2 = 2.0;  // sqrt(2) times t's shortest edge, squared
 std::optional<BottomScale::Score> BottomScale::rate(Terminator& term, const Point& c, const KnownCavity& cavity,
                                                     double l2, double t_sine2) const {
   const Mesh& mesh = term.mesh_;
@@ -51,7 +60,7 @@ std::optional<BottomScale::Score> BottomScale::rate(Terminator& term, const Poin
     if (term.pred_.orient2d(p, q, c) <= 0) return std::nullopt;
     const double s2 = smallest_angle_sine2(p, q, c);
     const double shortest2 = std::min({squared_distance(p, q), squared_distance(p, c), squared_distance(q, c)});
-    if (shortest2 <= l2 && below_angle(s2, good2) && !(s2 > t_sine2) && s2 < triangle_sine2(mesh, triangle_of(e)))
+    if (shortest2 < kGrowth2 * l2 && below_angle(s2, good2) && !(s2 > t_sine2) && s2 < triangle_sine2(mesh, triangle_of(e)))
       return std::nullopt;
     if (shortest2 <= 4.0 * l2) score.near = std::min(score.near, s2);
     score.all = std::min(score.all, s2);

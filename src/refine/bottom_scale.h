@@ -8,9 +8,9 @@
 //  - otherwise tries the doubles near the ideal point (lattice_neighbourhood) and inserts the one
 //    whose new triangles are best, those up to twice t's shortest edge first, among the points
 //    whose cavity holds t, whose insertion radius is at least kBottomRadius2 (squared) of t's
-//    shortest edge (so no shorter scale is started), and whose new triangles with an edge no
-//    longer than t's shortest are good, better than t, or no worse than the triangle they replace
-//    on that edge; if there is none, no point is inserted for t (the rounded ideal point may
+//    shortest edge (so no shorter scale is started), and whose new triangles with no edge as long
+//    as sqrt(2) times t's shortest are good, better than t, or no worse than the triangle they
+//    replace on that edge (so bad triangles cannot spread at one scale); if there is none, no point is inserted for t (the rounded ideal point may
 //    still ask for the subsegments it encroaches upon to be split; otherwise it is a guard
 //    refusal), so a triangle that no nearby double improves does not start a cascade;
 //  - splits a subsegment at the double near its midpoint closest to the line of its segment piece

@@ -48,6 +48,9 @@ MODES = {
     "chew_interior2": ["--algorithm=chew", "--interior-bound=2", "-pq25"],
     "decline": ["--decline-cluster-splits", "-pq30"],
     "pq40": ["-pq40"],
+    "pq34": ["-pq34"],
+    "offcentre34": ["--steiner=offcentre", "-pq34"],
+    "lopping34": ["--corner-lopping", "-pq34"],
     "own": [],
 }
 COMPARED = (".node", ".ele", ".poly", ".edge")
