@@ -13,7 +13,10 @@ has angles above 100; a trapezoid whose input angles of 116.6 degrees force tria
 passes); the square with inner points at --max-angle=90, which the circumcentre alone never
 finished (the guard stopped it) and the star-checked point choice meshes non-obtuse; a run the
 termination guard stops (a fan of segments with a 7.1-degree input angle), whose JSON count of
-triangles above the bound must be the exact count and --strict must fail; A below 90 refused.
+triangles above the bound must be the exact count and --strict must fail; data/touching-holes6.poly,
+whose obtuse triangles must all lie between input segments or where the small-angle rules
+(checked here exactly) excuse them, counted forced; two segments crossing at 2e-6 radians, which
+must stop at the stall check with its warning; A below 90 refused.
 
 usage: max_angle.py DELTRI"""
 import json
@@ -98,10 +101,14 @@ def above(nodes, triangles, degrees):
     return out
 
 
-def run(deltri, work, name, text, args, expect_rc=0):
+def run(deltri, work, name, text, args, expect_rc=0, timeout=600):
     with open(os.path.join(work, name + ".poly"), "w") as f:
         f.write(text)
-    r = subprocess.run([deltri, *args, "-Q", name + ".poly"], cwd=work, capture_output=True, text=True, timeout=600)
+    try:
+        r = subprocess.run([deltri, *args, "-Q", name + ".poly"], cwd=work, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        fail(f"{name} {' '.join(args)}: still running after {timeout} s")
+        raise
     if r.returncode != expect_rc:
         fail(f"{name} {' '.join(args)}: exit {r.returncode}, expected {expect_rc}: {r.stderr.strip()}")
     return r
@@ -304,6 +311,29 @@ def main():
     if report.get("triangles_above_max_angle") != len(bad) or report.get("triangles_missing_bounds_not_forced_by_input"):
         fail(f"touching-holes6: JSON counts {report.get('triangles_above_max_angle')} above the bound and "
              f"{report.get('triangles_missing_bounds_not_forced_by_input')} unforced; exact count {len(bad)}, all forced")
+
+    # Two segments crossing at 2e-6 radians inside a square: obtuse triangles along the crossing
+    # remake each other without end, and the work cap from the input's features is millions of
+    # points away (VVingerfly's test.poly, alike, ran past two minutes). The run must stop at the
+    # stall (refine/terminator_policies.cpp, stall_check_passed) with its warning, its misses
+    # counted and --strict failing. (The 120 s guard is far above the second or so it takes.)
+    a, e, r = math.atan2(0.5, 0.8), 2e-6, 0.9
+    crossing = square_of(1) + [(-0.8, -0.5), (0.8, 0.5)] + [
+        (round(s * r * math.cos(a + e), 9), round(s * r * math.sin(a + e), 9)) for s in (-1, 1)]
+    segments = [(i, (i + 1) % 4) for i in range(4)] + [(4, 5), (6, 7)]
+    try:
+        run(deltri, work, "crossing", poly_with(crossing, segments),
+            ["-pq20", "--max-angle=90", "--json=crossing.json", "--strict"], expect_rc=3, timeout=120)
+        report = json.load(open(os.path.join(work, "crossing.json")))
+        with open(os.path.join(work, "crossing.1.ele")) as f:
+            written = sum(1 for line in f if line.split() and not line.startswith("#")) - 1
+        stalled = [w for w in report["warnings"] if "did not fall over its last doubling" in w]
+        print(f"crossing -pq20 --max-angle=90: {written} triangles, "
+              f"{report['quality'].get('triangles_above_max_angle')} above 90, stall warning: {bool(stalled)}")
+        if not stalled or report["mesh"]["triangles"] != written or not report["quality"].get("triangles_above_max_angle"):
+            fail("crossing --max-angle=90: no stall warning, or its counts disagree with the mesh written")
+    except subprocess.TimeoutExpired:
+        pass
 
     for a in ("89.9", "abc", "180"):
         r = run(deltri, work, "refused", poly(square), ["-p", f"--max-angle={a}"], expect_rc=2)
