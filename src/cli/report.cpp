@@ -265,6 +265,8 @@ std::string cap_explanation(const RefineReport& q) {
              " Steiner points)";
     case CapKind::Memory:
       return stopped + " from the memory available: a finer mesh would not fit";
+    case CapKind::Stalled:
+      return stopped + ": the triangles still bad for --max-angle did not fall over its last doubling of points";
     case CapKind::Work:
       break;
   }

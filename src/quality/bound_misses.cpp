@@ -350,16 +350,24 @@ VertexId large_angle_corner(const Mesh& m, TriangleId t, const BoundCheck& test)
 }
 
 // The vertex whose input angles explain every angle t misses, or kNone: a size miss is never
-// explained. With both a small and a large angle, the one made by deltri (a repair) if either is.
+// explained. An angle above --max-angle is explained by the larger input angle it lies in
+// (large_angle_corner) or, failing that, as a small angle is (explaining_junction: next to an input
+// angle under 60 degrees, where the Terminator declines or the guard refuses the splits that would
+// remove it; docs/refinement.md, "Largest-angle bound"). With both a small and a large angle, the
+// one made by deltri (a repair) if either is. `by_large` says which explained it.
 VertexId explaining_vertex(const Mesh& m, const SegmentVertices& s, const ClusterDisks& disks, TriangleId t, char missing,
-                           const BoundCheck& test, double bound_deg) {
+                           const BoundCheck& test, double bound_deg, bool& by_large) {
+  by_large = false;
   if (missing & kMissesSize) return kNone;
-  const VertexId small = (missing & kMissesAngle) ? explaining_junction(m, s, disks, t, bound_deg) : kNone;
-  if (!(missing & kMissesMaxAngle)) return small;
-  const VertexId large = large_angle_corner(m, t, test);
-  if (!(missing & kMissesAngle) || large == kNone) return large;
+  const VertexId large = (missing & kMissesMaxAngle) ? large_angle_corner(m, t, test) : kNone;
+  const bool small_needed = (missing & kMissesAngle) || large == kNone;
+  const VertexId small = small_needed ? explaining_junction(m, s, disks, t, bound_deg) : kNone;
+  if (large == kNone) return small;
+  by_large = true;
+  if (!(missing & kMissesAngle)) return large;
   if (small == kNone) return kNone;
-  return m.kind[small] == VertexKind::Input ? large : small;
+  by_large = m.kind[small] == VertexKind::Input;
+  return by_large ? large : small;
 }
 
 // Slots from which the first pass takes two threads, as the Terminator's closing survey does.
@@ -416,14 +424,15 @@ BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
   const ClusterDisks disks(m, s);
   for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t) || !missing[t]) continue;
-    const VertexId j = explaining_vertex(m, s, disks, t, missing[t], test, r.angle.degrees());
+    bool by_large = false;
+    const VertexId j = explaining_vertex(m, s, disks, t, missing[t], test, r.angle.degrees(), by_large);
     bool touches_repair = false, touches_segment = false;
     for (int i = 0; i < 3; ++i) {
       const VertexId v = m.corner[edge_of(t, i)];
       touches_repair = touches_repair || repaired_vertex(m, s, v);
       touches_segment = touches_segment || !s.spokes[v].empty();
     }
-    if (j != kNone && m.kind[j] == VertexKind::Input) ++((missing[t] & kMissesAngle) ? out.small_input_angle : out.large_input_angle);
+    if (j != kNone && m.kind[j] == VertexKind::Input) ++(by_large ? out.large_input_angle : out.small_input_angle);
     else if (j != kNone || touches_repair) ++out.repaired_input;
     else if (at_precision_limit(m, t)) ++out.double_precision;
     else if (r.steiner_limited || (r.segments_kept_whole && touches_segment)) ++out.steiner_limits;

@@ -8,7 +8,8 @@
 // BoundCheck).
 // Each such triangle gets the first of these causes that applies (docs/manual.md, "Quality
 // accounting"):
-//   small_input_angle  it misses no size bound, and its angle miss is explained by the input, at an
+//   small_input_angle  it misses no size bound, and its angle miss (below -q, or above --max-angle
+//                      without lying between two segments) is explained by the input, at an
 //                      input vertex j where segments meet at an input angle phi under 60 degrees:
 //                      (1) a corner j, with the other two corners inside the sector between two
 //                      neighbouring segments at j, that sector under 60 degrees (the input angle

@@ -109,6 +109,7 @@ enum class CapKind : std::uint8_t {
   Work,     // the feature work of the input and the size bounds
   Cascade,  // beyond kCascadeAngleDeg: an allowance per vertex of the mesh refined to that angle
   Memory,   // the memory budget
+  Stalled,  // --max-angle beyond -q: the bad triangles did not fall over a doubling of the points
 };
 
 // The counts of work done that add up over the parts of one refinement (stages, halves): only

@@ -191,6 +191,8 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
   report_.hopeless_edges = bottom_.hopeless_edges();
   report_.steiner_cap = steiner_cap_;
   report_.cap_kind = cap_kind_;
+  checks_stall_ = !proven_range_ && !max_angle_implied(opt.max_angle, opt.angle);
+  next_stall_check_ = kStallCheckFrom;
 }
 
 // Fig. 38, DELAUNAYTERMINATOR; l.1-2 (the CDT, exterior removed) are the caller's.

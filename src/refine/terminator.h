@@ -161,6 +161,7 @@ class Terminator {
   bool below_asked_bound(const Assessment& a) const;   // under -q, not only under Sec. 7.2's bound
   bool only_for_interior_bound(TriangleId t, const Assessment& a) const;  // bad for Sec. 7.2's bound alone
   bool shell_exempt(EdgeRef shortest) const;
+  bool stall_check_passed(std::uint64_t used);
   // The subsegment to split of a spared triangle beyond a corner whose angle is below the corner's
   // (kNone for any other), and that split, served in place of the triangle's point.
   EdgeRef beyond_corner_subsegment(EdgeRef shortest) const;
@@ -223,6 +224,12 @@ class Terminator {
   double edge_floor_ = 0.0;
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;
+  // --max-angle beyond what -q implies (no theorem ends it): at each doubling of the Steiner points
+  // from kStallCheckFrom, the queue of bad triangles must have shrunk since the last (budget_left).
+  static constexpr std::uint64_t kStallCheckFrom = 1u << 16;
+  bool checks_stall_ = false;
+  std::uint64_t next_stall_check_ = 0;
+  std::size_t queued_at_last_check_ = SIZE_MAX;
   SegmentPieces pieces_;  // the piece of each subsegment and refinement split
   SegmentApices apices_;
   EdgeFinder finder_;

@@ -13,7 +13,10 @@ has angles above 100; a trapezoid whose input angles of 116.6 degrees force tria
 passes); the square with inner points at --max-angle=90, which the circumcentre alone never
 finished (the guard stopped it) and the star-checked point choice meshes non-obtuse; a run the
 termination guard stops (a fan of segments with a 7.1-degree input angle), whose JSON count of
-triangles above the bound must be the exact count and --strict must fail; A below 90 refused.
+triangles above the bound must be the exact count and --strict must fail; data/touching-holes6.poly,
+whose obtuse triangles must all lie between input segments or where the small-angle rules
+(checked here exactly) excuse them, counted forced; two segments crossing at 2e-6 radians, which
+must stop at the stall check with its warning; A below 90 refused.
 
 usage: max_angle.py DELTRI"""
 import json
@@ -98,10 +101,14 @@ def above(nodes, triangles, degrees):
     return out
 
 
-def run(deltri, work, name, text, args, expect_rc=0):
+def run(deltri, work, name, text, args, expect_rc=0, timeout=600):
     with open(os.path.join(work, name + ".poly"), "w") as f:
         f.write(text)
-    r = subprocess.run([deltri, *args, "-Q", name + ".poly"], cwd=work, capture_output=True, text=True, timeout=600)
+    try:
+        r = subprocess.run([deltri, *args, "-Q", name + ".poly"], cwd=work, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        fail(f"{name} {' '.join(args)}: still running after {timeout} s")
+        raise
     if r.returncode != expect_rc:
         fail(f"{name} {' '.join(args)}: exit {r.returncode}, expected {expect_rc}: {r.stderr.strip()}")
     return r
@@ -110,6 +117,87 @@ def run(deltri, work, name, text, args, expect_rc=0):
 def on_segment(q, s, e):
     cross = (e[0] - s[0]) * (q[1] - s[1]) - (e[1] - s[1]) * (q[0] - s[0])
     return cross == 0 and min(s[0], e[0]) <= q[0] <= max(s[0], e[0]) and min(s[1], e[1]) <= q[1] <= max(s[1], e[1])
+
+
+def read_segments(path):
+    """The input segments of a .poly, as pairs of exact points (zero-length ones dropped)."""
+    with open(path) as f:
+        data = [r for r in (l.split("#")[0].split() for l in f) if r]
+    n = int(data[0][0])
+    pts = {int(r[0]): (Fraction(float(r[1])), Fraction(float(r[2]))) for r in data[1:1 + n]}
+    m = int(data[1 + n][0])
+    return [(pts[int(r[1])], pts[int(r[2])]) for r in data[2 + n:2 + n + m] if pts[int(r[1])] != pts[int(r[2])]]
+
+
+def along(q, s, e):
+    """q on segment se up to the rounding of a split point written in doubles (within 1e-12 |se|)."""
+    c = cross(s, e, q)
+    return (c * c <= Fraction(1, 10 ** 24) * dot(s, e, e) ** 2 and min(s[0], e[0]) <= q[0] <= max(s[0], e[0])
+            and min(s[1], e[1]) <= q[1] <= max(s[1], e[1]))
+
+
+def cross(o, a, b):
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+
+def under_60(j, a, b):
+    d = dot(j, a, b)
+    return d > 0 and 4 * d * d > dot(j, a, a) * dot(j, b, b)
+
+
+def in_wedge(j, a, b, p):
+    """p in the closed wedge at j between the rays to a and b (an angle under 180 degrees)."""
+    if cross(j, a, b) < 0:
+        a, b = b, a
+    return cross(j, a, p) >= 0 and cross(j, p, b) >= 0
+
+
+def small_wedges(segments):
+    """(j, a, b): two segments ja, jb meeting at j at under 60 degrees with no segment between them."""
+    ends = {}
+    for a, b in segments:
+        ends.setdefault(a, set()).add(b)
+        ends.setdefault(b, set()).add(a)
+    out = []
+    for j, es in ends.items():
+        es = list(es)
+        for i, a in enumerate(es):
+            for b in es[i + 1:]:
+                if under_60(j, a, b) and not any(c not in (a, b) and in_wedge(j, a, b, c) for c in es):
+                    out.append((j, a, b))
+    return out
+
+
+def forced_by_small_angle(tri, wedges, bound=20):
+    """Whether an obtuse triangle (three exact points) lies where a small input angle excuses it
+    (quality/bound_misses.h, rules 1 and 2, without rule 2's Theorem 12 floor, which a triangle
+    meeting -q20 passes at every input angle under 60): a corner at the wedge's apex j with the two
+    others in the wedge; or its shortest edge pq joining points on the wedge's two segments (neither
+    at j) and its third corner in the closed triangle jpq, or, the wedge under the -q bound, p and q
+    at distances from j equal within 0.1% (a shell edge)."""
+    for k in range(3):
+        j, p, q = tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]
+        if any(w[0] == j and in_wedge(j, w[1], w[2], p) and in_wedge(j, w[1], w[2], q) for w in wedges):
+            return True
+    lengths = [dot(tri[k], tri[(k + 1) % 3], tri[(k + 1) % 3]) for k in range(3)]
+    for k in range(3):
+        p, q, r = tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]
+        if lengths[k] != min(lengths):
+            continue
+        for j, a, b in wedges:
+            if j in (p, q):
+                continue
+            for u, v in ((p, q), (q, p)):
+                if not (along(u, j, a) and along(v, j, b)):
+                    continue
+                if in_wedge(j, u, v, r) and cross(u, v, r) * cross(u, v, j) >= 0:
+                    return True
+                du, dv = (math.sqrt(float(dot(j, x, x))) for x in (u, v))
+                cos_bound = Fraction(math.cos(math.radians(bound)))
+                d = dot(j, a, b)
+                if d * d > cos_bound * cos_bound * dot(j, a, a) * dot(j, b, b) and abs(du - dv) <= 0.001 * max(du, dv):
+                    return True
+    return False
 
 
 def main():
@@ -193,6 +281,59 @@ def main():
         fail("fan --max-angle=90: no triangle above 90 degrees, so the guard case shows nothing")
     if report.get("triangles_above_max_angle") != len(bad):
         fail("fan --max-angle=90: the JSON count differs from the exact count")
+
+    # Obtuse triangles next to a small input angle, where the Terminator's shells and the guard stop
+    # refinement, are forced by the input as skinny ones are there (quality/bound_misses.h, rules 1
+    # and 2). data/touching-holes6.poly (earcut's test: holes touching the outline at angles down to
+    # 6 degrees) left two such triangles counted as unforced, failing --strict. Every triangle
+    # above 90 must lie between two input segments at a larger input angle or where those rules,
+    # checked here exactly, place it.
+    source = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data", "touching-holes6.poly")
+    with open(source) as f:
+        text = f.read()
+    run(deltri, work, "touching", text, ["-pq20", "--max-angle=90", "--json=touching.json", "--strict"])
+    nodes, triangles = read_mesh(os.path.join(work, "touching.1"))
+    segments = read_segments(source)
+    wedges = small_wedges(segments)
+    bad = above(nodes, triangles, 90)
+    # Between input segments: both edges at the obtuse corner lie along input segments through it.
+    between = [t for t, c in bad
+               if all(any(along(nodes[c], s0, s1) and along(nodes[v], s0, s1) for s0, s1 in segments)
+                      for v in t if v != c)]
+    near_small = [t for t, c in bad if t not in between and forced_by_small_angle([nodes[v] for v in t], wedges)]
+    report = json.load(open(os.path.join(work, "touching.json")))["quality"]
+    print(f"touching-holes6 -pq20 --max-angle=90: {len(triangles)} triangles, {len(bad)} above 90, "
+          f"{len(between)} between input segments, {len(near_small)} next to a small input angle")
+    if len(between) + len(near_small) != len(bad):
+        fail(f"touching-holes6: {len(bad) - len(between) - len(near_small)} triangles above 90 degrees not forced by the input")
+    if not near_small:
+        fail("touching-holes6: no obtuse triangle next to a small input angle, so the case shows nothing")
+    if report.get("triangles_above_max_angle") != len(bad) or report.get("triangles_missing_bounds_not_forced_by_input"):
+        fail(f"touching-holes6: JSON counts {report.get('triangles_above_max_angle')} above the bound and "
+             f"{report.get('triangles_missing_bounds_not_forced_by_input')} unforced; exact count {len(bad)}, all forced")
+
+    # Two segments crossing at 2e-6 radians inside a square: obtuse triangles along the crossing
+    # remake each other without end, and the work cap from the input's features is millions of
+    # points away (VVingerfly's test.poly, alike, ran past two minutes). The run must stop at the
+    # stall (refine/terminator_policies.cpp, stall_check_passed) with its warning, its misses
+    # counted and --strict failing. (The 120 s guard is far above the second or so it takes.)
+    a, e, r = math.atan2(0.5, 0.8), 2e-6, 0.9
+    crossing = square_of(1) + [(-0.8, -0.5), (0.8, 0.5)] + [
+        (round(s * r * math.cos(a + e), 9), round(s * r * math.sin(a + e), 9)) for s in (-1, 1)]
+    segments = [(i, (i + 1) % 4) for i in range(4)] + [(4, 5), (6, 7)]
+    try:
+        run(deltri, work, "crossing", poly_with(crossing, segments),
+            ["-pq20", "--max-angle=90", "--json=crossing.json", "--strict"], expect_rc=3, timeout=120)
+        report = json.load(open(os.path.join(work, "crossing.json")))
+        with open(os.path.join(work, "crossing.1.ele")) as f:
+            written = sum(1 for line in f if line.split() and not line.startswith("#")) - 1
+        stalled = [w for w in report["warnings"] if "did not fall over its last doubling" in w]
+        print(f"crossing -pq20 --max-angle=90: {written} triangles, "
+              f"{report['quality'].get('triangles_above_max_angle')} above 90, stall warning: {bool(stalled)}")
+        if not stalled or report["mesh"]["triangles"] != written or not report["quality"].get("triangles_above_max_angle"):
+            fail("crossing --max-angle=90: no stall warning, or its counts disagree with the mesh written")
+    except subprocess.TimeoutExpired:
+        pass
 
     for a in ("89.9", "abc", "180"):
         r = run(deltri, work, "refused", poly(square), ["-p", f"--max-angle={a}"], expect_rc=2)
