@@ -106,9 +106,7 @@ Outcome Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_
   if (const auto refusal = plan_split(s, owed_to_size, plan)) return *refusal;  // l.39
   if (kept_.refuses_split(*this, s, plan.point)) return Outcome::KeptBoundary;
   if (refused_by_sure_fire_rule(s, plan)) return Outcome::SureFire;
-  // Without a free vertex in the mesh the step deletes nothing, and the plan stands as made: its
-  // radius after the step is its radius now, and the orientation check ignored no free apex.
-  if (policy_.deletes_before_split && free_vertices_) {  // l.40-43
+  if (policy_.deletes_before_split && free_vertices_) {  // l.40-43; else the plan stands (free_vertices_)
     s = delete_free_vertices_near(s, plan.point, queue_triangles);
     if (s == kNone) return Outcome::Gone;
     if (const auto refusal = replan_after_deletions(s, plan)) return *refusal;
