@@ -193,6 +193,12 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
   report_.cap_kind = cap_kind_;
   checks_stall_ = !proven_range_ && !max_angle_implied(opt.max_angle, opt.angle);
   next_stall_check_ = kStallCheckFrom;
+  look_for_free_vertices();
+}
+
+// One pass over a byte per vertex, where a refinement starts (other stages make free vertices too).
+void Terminator::look_for_free_vertices() {
+  free_vertices_ = std::find(mesh_.kind.begin(), mesh_.kind.end(), VertexKind::Free) != mesh_.kind.end();
 }
 
 // Fig. 38, DELAUNAYTERMINATOR; l.1-2 (the CDT, exterior removed) are the caller's.
@@ -202,6 +208,7 @@ RefineReport Terminator::run() {
 }
 
 void Terminator::split_initial_encroachments() {
+  look_for_free_vertices();
   reserve_for_refinement(mesh_, opt_);
   if (small_pages_) {
     prefer_small_pages(mesh_.corner.data(), mesh_.corner.capacity() * sizeof(VertexId));
@@ -243,6 +250,7 @@ std::vector<EdgeRef> Terminator::initially_encroached() {
 
 // Triangles split on the way are queued as they are made (queue_triangles), as after l.10 starts.
 void Terminator::refine_around(std::span<const TriangleId> triangles) {
+  look_for_free_vertices();
   for (TriangleId t : triangles) {
     if (t >= mesh_.triangle_slots() || !mesh_.is_live(t)) continue;
     for (EdgeRef e : edges_of(t))
@@ -325,8 +333,22 @@ void Terminator::prefetch_queued() const {
   if (nearer == nullptr) return;
   const TriangleId t = nearer->triangle;
   if (edge_of(t, 0) >= mesh_.corner.size()) return;
-  for (const EdgeRef e : edges_of(t))
+  for (const EdgeRef e : edges_of(t)) {
     if (const EdgeRef twin = mesh_.link[e]; twin != kNone) prefetch(mesh_.corners_at(twin.triangle()));
+    // The table entry of a subsegment beside it, which a split reads (its bits came with the
+    // farther fetch): on a strip every triangle has one, each entry a miss in a table of megabytes.
+    if (mesh_.has_subsegments() && mesh_.subseg.has(e)) prefetch(mesh_.subseg.home_of(e));
+  }
+}
+
+// A split appends two triangles (none is free while nothing is deleted) and puts a subsegment on
+// the first one's slot: the table entries of their slots' blocks, a miss for each new block, are
+// fetched while the split is planned.
+void Terminator::prefetch_new_subsegment_homes() const {
+  if (!mesh_.free_triangles.empty()) return;
+  const std::size_t e = edge_of(TriangleId{mesh_.triangle_slots()}, 0);
+  prefetch(mesh_.subseg.home_of(e));
+  prefetch(mesh_.subseg.home_of(e + 3));
 }
 
 void Terminator::enqueue_if_bad(TriangleId t) {
@@ -341,6 +363,7 @@ void Terminator::enqueue_if_bad(TriangleId t) {
 // Vertex attributes are interpolated linearly over the triangle the point falls in.
 VertexId Terminator::add_free_vertex(const Point& p, EdgeRef container) {
   const VertexId v = mesh_.add_vertex(p, VertexKind::Free);
+  free_vertices_ = true;
   const int na = mesh_.num_attributes;
   if (na == 0) return v;
   const TriangleId t = triangle_of(container);

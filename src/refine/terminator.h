@@ -246,6 +246,15 @@ class Terminator {
   // subsegment id, whose lookup missed the cache on every call where every triangle has a
   // subsegment (a thin strip).
   bool seams_ = true;
+  // Whether the mesh may hold a free vertex (VertexKind::Free), the only kind Chew's step deletes:
+  // without one, the step's search around every subsegment split finds nothing (a thin strip,
+  // whose every vertex is on its boundary, spent a tenth of its instructions there). Looked for
+  // where a refinement starts (look_for_free_vertices) and set by add_free_vertex. Without one the
+  // split's plan also stands as made: its radius after the step is its radius now, and its
+  // orientation check ignored no free apex, so replan_after_deletions is not needed.
+  bool free_vertices_ = true;
+  void look_for_free_vertices();
+  void prefetch_new_subsegment_homes() const;
   // Ruppert, Chew: by vertex id, the insertion radius of each refinement split this Terminator
   // made, 0 for every other vertex (refused_by_sure_fire_rule).
   std::vector<double> split_radius_;

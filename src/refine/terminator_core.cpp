@@ -101,11 +101,12 @@ std::uint64_t Terminator::split_encroached_subsegments(bool queue_triangles, boo
 // Fig. 39 l.39-49 for one subsegment.
 Outcome Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_to_size) {
   if (!owed_to_size && bottom_.in_strip_below_an_ulp(mesh_, pred_, s)) return Outcome::Hopeless;
+  prefetch_new_subsegment_homes();
   SplitPlan plan;
   if (const auto refusal = plan_split(s, owed_to_size, plan)) return *refusal;  // l.39
   if (kept_.refuses_split(*this, s, plan.point)) return Outcome::KeptBoundary;
   if (refused_by_sure_fire_rule(s, plan)) return Outcome::SureFire;
-  if (policy_.deletes_before_split) {                                                  // l.40-43
+  if (policy_.deletes_before_split && free_vertices_) {  // l.40-43; else the plan stands (free_vertices_)
     s = delete_free_vertices_near(s, plan.point, queue_triangles);
     if (s == kNone) return Outcome::Gone;
     if (const auto refusal = replan_after_deletions(s, plan)) return *refusal;
