@@ -150,9 +150,10 @@ std::uint32_t QualityQueue::take_block() {
 
 // Beyond kSpareBlocks, a block given back returns its pages to the system: the queue then holds
 // about its live entries rather than the most it ever held. It peaks halfway through refinement,
-// the mesh at the end, and the pool at its peak size had set the peak memory there.
+// the mesh at the end, and the pool at its peak size had set the peak memory there. A queue that
+// never grew past kResidentBlocks keeps its pages.
 void QualityQueue::give_back(std::uint32_t block) {
-  if (free_blocks_.size() < kSpareBlocks) {
+  if (free_blocks_.size() < kSpareBlocks || blocks_.size() <= kResidentBlocks) {
     free_blocks_.push_back(block);
     return;
   }

@@ -196,6 +196,9 @@ class QualityQueue {
   std::vector<std::uint32_t> released_blocks_;  // given back, pages returned (give_back)
   // Spare blocks kept with their pages: 32 had kept 0.5 MiB resident per refining part (benchmarks.md).
   static constexpr std::size_t kSpareBlocks = 8;
+  // A queue of at most this many blocks (0.5 MiB) returns no pages: a small run's madvise calls
+  // and the faults that follow them cost more than its whole queue (benchmarks.md, small runs).
+  static constexpr std::size_t kResidentBlocks = 32;
   std::vector<Keyed> heap_;
   std::uint64_t next_age_ = ~std::uint64_t{0};
   std::uint64_t nonempty_ = 0;

@@ -26,3 +26,10 @@ for t in 2 1; do
     [ "$points" = 0 ] && [ "$holes" = 0 ] && [ "$again" = 0 ] || fail "--threads=1 started threads"
   fi
 done
+# The default thread count is the affinity mask's: pinned to one core, deltri starts no thread.
+if command -v taskset >/dev/null 2>&1 && taskset -c 0 true 2>/dev/null; then
+  LD_PRELOAD="$probe" taskset -c 0 "$deltri" -Q "$work/pts.node" 2>"$work/err.txt" || { cat "$work/err.txt" >&2; fail "pinned deltri failed"; }
+  pinned=$(grep -c "thread_probe: a thread was started" "$work/err.txt")
+  echo "taskset -c 0, default threads: $pinned threads for the points"
+  [ "$pinned" = 0 ] || fail "pinned to one core, the default threads started $pinned"
+fi
