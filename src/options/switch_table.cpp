@@ -1,6 +1,7 @@
 #include "options/switch_table.h"
 
 #include <array>
+#include <limits>
 #include <string_view>
 #include <utility>
 
@@ -30,7 +31,12 @@ void set_u(S& s, bool has, double v) {
   s.user_test = true;
   s.max_edge_length = v;
 }
-void set_S(S& s, bool has, double v) { s.max_steiner = has ? static_cast<long>(v) : 0; }
+// A count past what a long holds (-S2000777777777777777777) is no limit in practice; casting
+// such a double to long is undefined behaviour (fuzz_library, run F14), so it is clamped first.
+void set_S(S& s, bool has, double v) {
+  constexpr double kLongLimit = 9.2e18;  // just below 2^63
+  s.max_steiner = !has ? 0 : v < kLongLimit ? static_cast<long>(v) : std::numeric_limits<long>::max();
+}
 void set_o(S& s, bool has, double v) {
   if (has && v == 2.0) {
     s.order = 2;

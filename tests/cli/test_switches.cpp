@@ -1,5 +1,6 @@
 // The switch parser against Triangle's syntax: letters run together, numbers glued to their
 // letter, repeated letters, and clear errors for what is not a switch.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,9 @@ TEST(defaults_and_bare_letters) {
   CHECK_EQ(parse({"-S", "x"}).max_steiner, 0L);
   CHECK_EQ(parse({"-S25", "x"}).max_steiner, 25L);
   CHECK_EQ(parse({"x"}).max_steiner, -1L);
+  // Past a long's range: no limit in practice, not a cast out of range (fuzz_library F14).
+  CHECK_EQ(parse({"-S2000777777777777777777", "x"}).max_steiner, std::numeric_limits<long>::max());
+  CHECK_EQ(parse({"-S9223372036854775807", "x"}).max_steiner, std::numeric_limits<long>::max());
 }
 
 TEST(exponent_only_when_a_digit_follows) {
