@@ -10,9 +10,9 @@
 //    whose cavity holds t, whose insertion radius is at least kBottomRadius2 (squared) of t's
 //    shortest edge (so no shorter scale is started), and whose new triangles with no edge as long
 //    as sqrt(2) times t's shortest are good, better than t, or no worse than the triangle they
-//    replace on that edge (so bad triangles cannot spread at one scale); if there is none, no point is inserted for t (the rounded ideal point may
-//    still ask for the subsegments it encroaches upon to be split; otherwise it is a guard
-//    refusal), so a triangle that no nearby double improves does not start a cascade;
+//    replace on that edge (so bad triangles cannot spread at one scale); if there is none, no
+//    point is inserted for t (the rounded ideal point may still ask for the subsegments it
+//    encroaches upon to be split; otherwise it is a guard refusal), so a triangle that no nearby double improves does not start a cascade;
 //  - splits a subsegment at the double near its midpoint closest to the line of its segment piece
 //    that keeps the triangles beside it counter-clockwise (BottomScale::split), which is also
 //    tried at any scale when the rounded midpoint fails (a neighbour flush with the subsegment),
