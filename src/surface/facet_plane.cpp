@@ -106,10 +106,17 @@ FacetPlane fit_facet_plane(const FacetInput& input, std::size_t f) {
   double scaled_distance = 0.0;
   for (const Point3& p : points) scaled_distance = std::max(scaled_distance, std::abs(dot(p - centroid, plane.normal)));
   plane.max_distance = scaled_distance * unit;
-  if (scaled_distance > kPlanarTolerance * diameter) {
-    char text[160];
-    std::snprintf(text, sizeof text, "not planar: a point lies %.3g from the best plane (facet size %.3g, tolerance %.3g)",
-                  plane.max_distance, plane.diameter, kPlanarTolerance * plane.diameter);
+  // The widest triangle's height over the chord of length diameter / 2; the tolerance is the
+  // tighter of the two, and the message names the measure it came from.
+  const double width = 2.0 * norm(guide) / diameter;
+  const bool thin = kWidthTolerance * width < kPlanarTolerance * diameter;
+  const double tolerance = thin ? kWidthTolerance * width : kPlanarTolerance * diameter;
+  char measure[80];
+  std::snprintf(measure, sizeof measure, "facet %s %.3g, tolerance %.3g", thin ? "width" : "size",
+                (thin ? width : diameter) * unit, tolerance * unit);
+  if (scaled_distance > tolerance) {
+    char text[200];
+    std::snprintf(text, sizeof text, "not planar: a point lies %.3g from the best plane (%s)", plane.max_distance, measure);
     fail(input, f, text);
   }
   // A hole point is a point of the facet: one off its plane would be projected onto it silently,
@@ -118,10 +125,9 @@ FacetPlane fit_facet_plane(const FacetInput& input, std::size_t f) {
     const Point3 d = facet.holes[h] - first;
     const Point3 scaled{std::ldexp(d.x, -std::ilogb(unit)), std::ldexp(d.y, -std::ilogb(unit)), std::ldexp(d.z, -std::ilogb(unit))};
     const double off = std::abs(dot(scaled - centroid, plane.normal));
-    if (!(off <= kPlanarTolerance * diameter)) {
+    if (!(off <= tolerance)) {
       char text[200];
-      std::snprintf(text, sizeof text, "hole %zu lies %.3g from the facet's plane (facet size %.3g, tolerance %.3g)", h + 1,
-                    off * unit, plane.diameter, kPlanarTolerance * plane.diameter);
+      std::snprintf(text, sizeof text, "hole %zu lies %.3g from the facet's plane (%s)", h + 1, off * unit, measure);
       const long line = h < facet.hole_lines.size() ? facet.hole_lines[h] : facet.line;
       throw InputError(input.source_name, line,
                        "facet " + std::to_string(f + static_cast<std::size_t>(input.first_index)) + ": " + text);

@@ -13,6 +13,11 @@ namespace deltri {
 // from the plane, measured along the normal); coordinates written with ten or more significant
 // digits pass easily.
 inline constexpr double kPlanarTolerance = 1e-6;
+// And up to this fraction of their width (the widest triangle's height over the facet's longest
+// chord from its first point): a facet whose one far point sets its diameter would otherwise let
+// the others lie far off the plane, where their projections may fall on a line and its segments
+// overlap in the plane (fuzz finding F13). Ten digits pass on any facet up to 1e6 times longer than wide.
+inline constexpr double kWidthTolerance = 1e-3;
 
 struct FacetPlane {
   Point3 origin, u, v, normal;
@@ -29,7 +34,8 @@ struct FacetPlane {
 
 // The plane of facet `f` (0-based): Newell's normal summed over its polygons, through the
 // centroid of its points. Throws InputError naming the facet when its points are all collinear
-// or when one lies farther than kPlanarTolerance times the facet's diameter from that plane.
+// or when one lies farther than kPlanarTolerance times the facet's diameter, or kWidthTolerance
+// times its width, from that plane.
 FacetPlane fit_facet_plane(const FacetInput& input, std::size_t f);
 
 }  // namespace deltri

@@ -70,6 +70,7 @@ class SurfaceBuilder {
   Pslg facet_pslg(std::uint32_t f);
   std::vector<std::pair<std::uint32_t, double>> new_cuts(std::uint32_t f) const;
   void refuse_foreign_vertex(std::uint32_t f) const;
+  void refuse_lost_pieces(std::uint32_t f, const std::vector<char>& has_edge) const;
   void refuse_crossing(std::uint32_t f, std::uint32_t g, std::uint32_t h) const;
   void refuse_inside(std::uint32_t f, const LocalVertex& v, std::uint32_t g) const;
   void refuse_repeated_facets() const;
@@ -366,6 +367,7 @@ void SurfaceBuilder::refuse_foreign_vertex(std::uint32_t f) const {
   const Mesh& mesh = state.result.mesh;
   if (!mesh.has_subsegments()) return;
   std::unordered_map<std::uint32_t, std::uint32_t> crossing;  // new vertex -> a segment it cuts
+  std::vector<char> has_edge(state.pieces.size(), 0);
   // Both ends of each subsegment: a boundary subsegment has one half-edge, whose origin may be the
   // piece's own end.
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e) {
@@ -373,6 +375,7 @@ void SurfaceBuilder::refuse_foreign_vertex(std::uint32_t f) const {
     const Subsegment& rec = mesh.subsegments[mesh.subseg[e]];
     if (rec.segment >= state.pieces.size()) continue;
     const Piece& piece = state.pieces[rec.segment];
+    has_edge[rec.segment] = 1;
     for (const std::uint32_t v : {mesh.org(e), mesh.dest(e)}) {
       if (v >= state.local.size()) {
         const auto [it, added] = crossing.emplace(v, piece.g);
@@ -381,6 +384,24 @@ void SurfaceBuilder::refuse_foreign_vertex(std::uint32_t f) const {
         refuse_inside(f, state.local[v], piece.g);  // not the piece's end, nor a copy of it
       }
     }
+  }
+  refuse_lost_pieces(f, has_edge);
+}
+
+// A piece of a shared segment with no subsegment of its own in facet f's mesh: in the plane it
+// merged with another of f's segments that overlaps it (or lies in a hole), so the other facets'
+// edges along it would meet no edge of f. A safety net behind the planarity test (fuzz finding
+// F13: a facet's points far off its plane projected onto one line).
+void SurfaceBuilder::refuse_lost_pieces(std::uint32_t f, const std::vector<char>& has_edge) const {
+  const FacetState& state = facets_[f];
+  const Mesh& mesh = state.result.mesh;
+  for (std::size_t p = 0; p < state.pieces.size(); ++p) {
+    const Piece& piece = state.pieces[p];
+    if (has_edge[p] || !segments_[piece.g].shared() || mesh.points[piece.la] == mesh.points[piece.lb]) continue;
+    for (std::uint32_t other : segments_[piece.g].facets)
+      if (other != f)
+        refuse(f, "its segment " + name(piece.g) + ", an edge of facet " + id(other) +
+                      " too, is no edge of its mesh (in its plane it overlaps another of its segments or lies in a hole)");
   }
 }
 

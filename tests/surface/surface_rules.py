@@ -388,7 +388,52 @@ def case_point_inside_segment():
         print(f"{name}: meshed, {len(mt)} triangles at -pq30a0.05C")
 
 
+def case_far_point():
+    # A facet point far off its plane set the facet's diameter, and the planarity tolerance relative to
+    # that diameter let the others lie far off the fitted plane (fuzz_surface's F13: a ring point read
+    # as z = 9.87e12); projected, they fell on one line, a shared segment merged with another in the
+    # plane, and the mesh had a crack: exit 5 under -C, exit 0 or an empty facet for variants. Now the
+    # deviation is measured against the facet's width too: refused in one line, nothing written.
+    here = os.path.dirname(os.path.abspath(__file__))
+    finding = os.path.join(WORK, "finding.poly")
+    shutil.copy(os.path.join(here, "..", "fuzz", "findings", "surface-far-point-off-plane.poly"), finding)
+    pts = [(4, 0, 1), (1, 0, 1), (1, 0, 4), (1, 2, 1), (3, 4, 1), (3, 1, 1), (3, 1, None), (2, 0, 1)]
+    inputs = [(finding, 51)]
+    for z in ("1e10", "1e4", "10"):
+        text = [f"8 3 0 0"] + [f"{i + 1} {x} {y} {z if c is None else c}" for i, (x, y, c) in enumerate(pts)]
+        text += ["2 1", "2 0 5", "3 1 2 4", "4 5 6 7 8", "1 0 6", "3 2 3 4", "0", "0"]
+        path = os.path.join(WORK, f"far{z}.poly")
+        with open(path, "w") as out:
+            out.write("\n".join(text) + "\n")
+        inputs.append((path, 11))
+    for path, line in inputs:
+        name = os.path.basename(path)
+        for switches in ("-p", "-pq30", "-pCS500"):
+            r = run(path, switches)
+            lines = r.stderr.strip().splitlines()
+            if r.returncode != 1 or len(lines) != 1 or f"{name}:{line}:" not in lines[0] or "not planar" not in lines[0]:
+                fail(f"{name} {switches}: exit {r.returncode}, not the one-line refusal: {r.stderr!r}")
+            if any(f.startswith(name[:-5] + ".1.") for f in os.listdir(WORK)):
+                fail(f"{name} {switches}: files written")
+            print(f"{name} {switches}: {lines[0]}")
+    # The width test's line on a box 1e5 long and 1 wide, one far corner lifted: 1e-5 (ten digits)
+    # is meshed, closed, -C agreeing; 0.01 (1% of the width, 1e-7 of the diameter) is refused.
+    for lift, good in ((1e-5, True), (0.01, False)):
+        pts, faces = box(1e5, 1.0, 1.0)
+        pts[7] = (pts[7][0], pts[7][1], pts[7][2] + lift)
+        path = write_poly(f"lifted{lift}.poly", pts, faces)
+        r = run(path, "-pC")
+        if good:
+            expect_ok(r, f"lifted by {lift}")
+            if manifold_faults(*read_mesh(path)):
+                fail(f"lifted by {lift}: not closed: {manifold_faults(*read_mesh(path))[:3]}")
+        elif r.returncode != 1 or "not planar" not in r.stderr or "width" not in r.stderr:
+            fail(f"lifted by {lift}: exit {r.returncode}, not refused as not planar: {r.stderr!r}")
+        print(f"lifted by {lift}: exit {r.returncode} {r.stderr.strip()}")
+
+
 {"inconsistent": case_inconsistent, "scale": case_scale, "duplicates": case_duplicates, "hole_inside": case_hole_inside,
  "hole_off_plane": case_hole_off_plane, "sphere": case_sphere, "steiner_total": case_steiner_total,
- "stalled_rounds": case_stalled_rounds, "point_inside_segment": case_point_inside_segment}[CASE]()
+ "stalled_rounds": case_stalled_rounds, "point_inside_segment": case_point_inside_segment,
+ "far_point": case_far_point}[CASE]()
 print("ok")
