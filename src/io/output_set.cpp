@@ -226,8 +226,8 @@ std::string file_identity(const std::string& path) {
 
 // Writes to a held temporary file through a buffer of its own of up to 64 KiB (a small output is
 // one write), reporting failures under the final name the user knows. The buffer grows from 8 KiB
-// as the output does: a small run's three 64 KiB buffers took heap pages (about 7 faults) for a
-// few KiB each. The descriptor stays open after close(): its lock is held until the renames are done.
+// as the output does: a small run's three 64 KiB buffers took heap pages for a few KiB each. The
+// descriptor stays open after close(): its lock is held until the renames are done.
 class FileSink final : public ByteSink {
  public:
   FileSink(const std::string& temp_path, int fd, const std::string& final_path, RangePool* pool)
@@ -244,6 +244,7 @@ class FileSink final : public ByteSink {
     if (file_) std::fclose(file_);
   }
   void write(const char* data, std::size_t size) override {
+    if (size == 0) return;  // no buffer may be there yet to copy nothing into
     if (size > capacity_ - used_) grow(used_ + size);
     if (size > capacity_ - used_) {
       flush();
