@@ -133,11 +133,48 @@ bool still_at(int fd, const std::string& path) {
          mine.st_ino == there.st_ino;
 }
 
+#ifdef O_TMPFILE
+// Creates `temp` already locked: the inode is made unnamed (O_TMPFILE), locked, then linked at the
+// name. Making the inode is most of the cost of creating a file (ext4 without a journal steps past
+// every inode freed in the last minutes), and an O_CREAT open does it holding the directory's lock,
+// so runs creating files in one folder took turns at it; an unnamed inode is made without that
+// lock. Locked before it has a name, the file is never seen unlocked. Returns -1 where the kernel or
+// file system does not allow this (then `works` is cleared: the run's other outputs go by name at
+// once), or the name is taken: the caller then goes by the name.
+int create_locked(const std::string& temp, bool& works) {
+  const int fd = open(directory_of(temp).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    works = false;
+    return -1;
+  }
+  if (flock(fd, LOCK_EX | LOCK_NB) == 0) {
+    if (linkat(fd, "", AT_FDCWD, temp.c_str(), AT_EMPTY_PATH) == 0) return fd;
+    if (errno != EEXIST) {  // AT_EMPTY_PATH asks for CAP_DAC_READ_SEARCH; /proc does not
+      char self[40];
+      std::snprintf(self, sizeof self, "/proc/self/fd/%d", fd);
+      if (linkat(AT_FDCWD, self, AT_FDCWD, temp.c_str(), AT_SYMLINK_FOLLOW) == 0) return fd;
+      works = errno == EEXIST;
+    }
+  } else {
+    works = false;
+  }
+  close(fd);
+  return -1;
+}
+#endif
+
 // Opens `temp` for writing, created if absent, locked exclusively and still at its name; returns
 // the descriptor, which holds the lock until it is closed. `waited`: another run held it first.
 // `stale`: a file with no holder was there (a killed run's), now emptied for reuse.
 // Where the file system has no flock the temporary is used unlocked, as a run alone would.
-int hold_temporary(const std::string& temp, const std::string& final_path, bool& waited, bool& stale) {
+// `unnamed`: whether to try create_locked first (cleared where it cannot work).
+int hold_temporary(const std::string& temp, const std::string& final_path, bool& waited, bool& stale, bool& unnamed) {
+#ifdef O_TMPFILE
+  if (unnamed)
+    if (const int fd = create_locked(temp, unnamed); fd >= 0) return fd;
+#else
+  (void)unnamed;
+#endif
   for (;;) {
     bool fresh = true;
     int fd = open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
@@ -187,9 +224,10 @@ std::string file_identity(const std::string& path) {
 #endif
 }
 
-// Writes to a held temporary file through a 64 KiB buffer of its own (a small output is one
-// write), reporting failures under the final name the user knows. The descriptor stays open
-// after close(): its lock is held until the renames are done.
+// Writes to a held temporary file through a buffer of its own of up to 64 KiB (a small output is
+// one write), reporting failures under the final name the user knows. The buffer grows from 8 KiB
+// as the output does: a small run's three 64 KiB buffers took heap pages for a few KiB each. The
+// descriptor stays open after close(): its lock is held until the renames are done.
 class FileSink final : public ByteSink {
  public:
   FileSink(const std::string& temp_path, int fd, const std::string& final_path, RangePool* pool)
@@ -206,7 +244,9 @@ class FileSink final : public ByteSink {
     if (file_) std::fclose(file_);
   }
   void write(const char* data, std::size_t size) override {
-    if (size > kBuffer - used_) {
+    if (size == 0) return;  // no buffer may be there yet to copy nothing into
+    if (size > capacity_ - used_) grow(used_ + size);
+    if (size > capacity_ - used_) {
       flush();
       if (size >= kBuffer) return put(data, size);
     }
@@ -227,6 +267,16 @@ class FileSink final : public ByteSink {
     put(buffer_.get(), used_);
     used_ = 0;
   }
+  // Doubles the buffer until it holds `wanted` bytes or reaches kBuffer; what it holds is kept.
+  void grow(std::size_t wanted) {
+    std::size_t capacity = capacity_;
+    while (capacity < kBuffer && capacity < wanted) capacity = capacity ? 2 * capacity : kFirstBuffer;
+    if (capacity == capacity_) return;
+    auto bigger = std::make_unique_for_overwrite<char[]>(capacity);
+    if (used_ > 0) std::memcpy(bigger.get(), buffer_.get(), used_);
+    buffer_ = std::move(bigger);
+    capacity_ = capacity;
+  }
   void put(const char* data, std::size_t size) {
     while (size > 0) {
       errno = 0;
@@ -242,12 +292,14 @@ class FileSink final : public ByteSink {
     }
   }
   static constexpr std::size_t kBuffer = 65536;
+  static constexpr std::size_t kFirstBuffer = 8192;
   std::string final_path_;
   RangePool* pool_;
   int fd_;
   std::FILE* file_ = nullptr;  // without POSIX: the temporary, opened by name
   std::size_t used_ = 0;
-  std::unique_ptr<char[]> buffer_ = std::make_unique_for_overwrite<char[]>(kBuffer);
+  std::size_t capacity_ = 0;
+  std::unique_ptr<char[]> buffer_;
 };
 
 void remove_quietly(const std::vector<std::string>& paths) {
@@ -385,7 +437,7 @@ class HeldTemporaries {
   void hold(std::size_t t, const std::string& temp, const std::string& final_path, CommitNotes& notes) {
 #ifdef DELTRI_POSIX_OUTPUT
     bool stale = false;
-    fds_[t] = hold_temporary(temp, final_path, notes.waited_for_other_run, stale);
+    fds_[t] = hold_temporary(temp, final_path, notes.waited_for_other_run, stale, unnamed_);
     notes.stale_temporaries_removed += stale;
 #else
     (void)temp, (void)final_path, (void)notes;
@@ -401,6 +453,7 @@ class HeldTemporaries {
  private:
   std::vector<std::size_t> order_;
   std::vector<int> fds_;
+  bool unnamed_ = true;  // temporaries made unnamed first (hold_temporary)
 };
 
 }  // namespace

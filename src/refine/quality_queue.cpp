@@ -75,9 +75,9 @@ template <class Visit, class Done>
 void QualityQueue::for_each_entry(const Fifo& fifo, Visit&& visit, Done&& done) {
   for (std::uint32_t block = fifo.first; block != kNoBlock;) {
     const std::uint32_t from = block == fifo.first ? fifo.head : 0;
-    const std::uint32_t to = block == fifo.last ? fifo.tail : kBlock;
-    for (std::uint32_t i = from; i < to; ++i) visit(blocks_[block]->items[i], block, i);
-    const std::uint32_t next = block == fifo.last ? kNoBlock : blocks_[block]->next;
+    const std::uint32_t to = block == fifo.last ? fifo.tail : capacity_[block];
+    for (std::uint32_t i = from; i < to; ++i) visit(blocks_[block][i], block, i);
+    const std::uint32_t next = block == fifo.last ? kNoBlock : next_[block];
     done(block);
     block = next;
   }
@@ -140,10 +140,13 @@ std::uint32_t QualityQueue::take_block() {
     if (spares->empty()) continue;
     const std::uint32_t block = spares->back();
     spares->pop_back();
-    blocks_[block]->next = kNoBlock;
+    next_[block] = kNoBlock;
     return block;
   }
-  blocks_.push_back(std::make_unique_for_overwrite<Block>());  // entries written before read: no 16 KiB clear
+  const std::uint32_t capacity = blocks_.size() < kSmallBlocks ? kSmallBlock : kBlock;
+  blocks_.push_back(std::make_unique_for_overwrite<QueuedTriangle[]>(capacity));  // written before read: no clear
+  next_.push_back(kNoBlock);
+  capacity_.push_back(capacity);
   levels_.emplace_back();
   return static_cast<std::uint32_t>(blocks_.size() - 1);
 }
@@ -151,13 +154,13 @@ std::uint32_t QualityQueue::take_block() {
 // Beyond kSpareBlocks, a block given back returns its pages to the system: the queue then holds
 // about its live entries rather than the most it ever held. It peaks halfway through refinement,
 // the mesh at the end, and the pool at its peak size had set the peak memory there. A queue that
-// never grew past kResidentBlocks keeps its pages.
+// never grew past kResidentBlocks keeps its pages, and a small block holds no whole page.
 void QualityQueue::give_back(std::uint32_t block) {
-  if (free_blocks_.size() < kSpareBlocks || blocks_.size() <= kResidentBlocks) {
+  if (free_blocks_.size() < kSpareBlocks || blocks_.size() <= kResidentBlocks || capacity_[block] < kBlock) {
     free_blocks_.push_back(block);
     return;
   }
-  release_pages(blocks_[block].get(), sizeof(Block));
+  release_pages(blocks_[block].get(), kBlock * sizeof(QueuedTriangle));
   levels_[block].reset();
   released_blocks_.push_back(block);
 }
@@ -166,9 +169,9 @@ void QualityQueue::append_leveled(const QueuedTriangle& entry, unsigned level, u
   append(entry, bucket);
   if (bucket != 1) return;  // buckets 2..63 imply the level
   const Fifo& fifo = buckets_[1];
-  std::unique_ptr<Levels>& levels = levels_[fifo.last];
-  if (!levels) levels = std::make_unique_for_overwrite<Levels>();
-  (*levels)[fifo.tail - 1] = static_cast<std::uint16_t>(level);
+  std::unique_ptr<std::uint16_t[]>& levels = levels_[fifo.last];
+  if (!levels) levels = std::make_unique_for_overwrite<std::uint16_t[]>(capacity_[fifo.last]);
+  levels[fifo.tail - 1] = static_cast<std::uint16_t>(level);
 }
 
 void QualityQueue::append(const QueuedTriangle& entry, unsigned bucket) {
@@ -176,13 +179,15 @@ void QualityQueue::append(const QueuedTriangle& entry, unsigned bucket) {
   if (fifo.last == kNoBlock) {
     fifo.first = fifo.last = take_block();
     fifo.head = fifo.tail = 0;
-  } else if (fifo.tail == kBlock) {
+    fifo.first_end = fifo.last_end = capacity_[fifo.last];
+  } else if (fifo.tail == fifo.last_end) {
     const std::uint32_t block = take_block();
-    blocks_[fifo.last]->next = block;
+    next_[fifo.last] = block;
     fifo.last = block;
     fifo.tail = 0;
+    fifo.last_end = capacity_[block];
   }
-  blocks_[fifo.last]->items[fifo.tail++] = entry;
+  blocks_[fifo.last][fifo.tail++] = entry;
   nonempty_ |= std::uint64_t{1} << bucket;
 }
 
@@ -202,25 +207,26 @@ const QueuedTriangle* QualityQueue::peek(std::size_t ahead) const {
   const Fifo& fifo = buckets_[top_bucket()];
   std::uint32_t block = fifo.first;
   std::size_t at = fifo.head + ahead;
-  while (at >= kBlock && block != fifo.last) {
-    block = blocks_[block]->next;
-    at -= kBlock;
+  while (at >= capacity_[block] && block != fifo.last) {
+    at -= capacity_[block];
+    block = next_[block];
   }
   if (block == fifo.last && at >= fifo.tail) return nullptr;
-  return at < kBlock ? &blocks_[block]->items[at] : nullptr;
+  return at < capacity_[block] ? &blocks_[block][at] : nullptr;
 }
 
 QueuedTriangle QualityQueue::take_front(unsigned bucket) {
   Fifo& fifo = buckets_[bucket];
-  const QueuedTriangle entry = blocks_[fifo.first]->items[fifo.head++];
+  const QueuedTriangle entry = blocks_[fifo.first][fifo.head++];
   if (fifo.first == fifo.last && fifo.head == fifo.tail) {  // the bucket is empty
     give_back(fifo.first);
     fifo = Fifo{};
     nonempty_ &= ~(std::uint64_t{1} << bucket);
-  } else if (fifo.head == kBlock) {  // the front block is used up
+  } else if (fifo.head == fifo.first_end) {  // the front block is used up
     const std::uint32_t used = fifo.first;
-    fifo.first = blocks_[used]->next;
+    fifo.first = next_[used];
     fifo.head = 0;
+    fifo.first_end = capacity_[fifo.first];
     give_back(used);
   }
   return entry;

@@ -35,9 +35,10 @@
 // inside move as a whole, the ones that fall below join bucket 1. So the order is exact by level
 // (FIFO within a level), and each entry moves once per window move that passes it.
 //
-// Each bucket is a chain of fixed-size blocks taken from one pool and given back when emptied, so
-// the queue holds about its live entries (plus one partial block per bucket at each end) instead
-// of the doubled capacities and consumed fronts of 64 growing arrays: on the 45x45-hole workload
+// Each bucket is a chain of blocks (16 KiB; the first few 1 KiB, for small runs) taken from one
+// pool and given back when emptied, so the queue holds about its live entries (plus one partial
+// block per bucket at each end) instead of the doubled capacities and consumed fronts of 64
+// growing arrays: on the 45x45-hole workload
 // at -q30, 25.7 MB of vectors for a peak of 453,518 entries (7.3 MB).
 #pragma once
 
@@ -143,16 +144,18 @@ class QualityQueue {
 
  private:
   static constexpr std::uint32_t kBlock = 1024;  // entries per block (16 KiB)
+  // The first kSmallBlocks blocks hold kSmallBlock entries (1 KiB) each: a small run touches one
+  // page per bucket in use with 16 KiB blocks (about 20 page faults), with these about one per 4
+  // buckets. They are never released (below a page), and a large run soon takes 16 KiB ones.
+  static constexpr std::uint32_t kSmallBlock = 64;
+  static constexpr std::size_t kSmallBlocks = 32;
   static constexpr std::uint32_t kNoBlock = ~std::uint32_t{0};
-  struct Block {
-    std::array<QueuedTriangle, kBlock> items;
-    std::uint32_t next = kNoBlock;
-  };
-  using Levels = std::array<std::uint16_t, kBlock>;  // a bucket-1 block's entries' edge levels
-  // A FIFO of blocks: entries [head, ...) of block `first` up to [..., tail) of block `last`.
+  // A FIFO of blocks: entries [head, ...) of block `first` up to [..., tail) of block `last`;
+  // first_end and last_end are those blocks' capacities.
   struct Fifo {
     std::uint32_t first = kNoBlock, last = kNoBlock;
     std::uint32_t head = 0, tail = 0;
+    std::uint32_t first_end = 0, last_end = 0;
   };
   std::uint32_t take_block();
   void give_back(std::uint32_t block);
@@ -173,7 +176,7 @@ class QualityQueue {
   // The ShortestEdge order: appends an entry of edge level `level` to `bucket`, keeping the level beside
   // its block when that is bucket 1.
   void append_leveled(const QueuedTriangle& entry, unsigned level, unsigned bucket);
-  std::uint16_t level_at(std::uint32_t block, std::uint32_t i) const { return (*levels_[block])[i]; }
+  std::uint16_t level_at(std::uint32_t block, std::uint32_t i) const { return levels_[block][i]; }
   QueuedTriangle take_front(unsigned bucket);                 // the oldest entry of a non-empty bucket
   // The ShortestEdge order's bucket for a skinny triangle of edge level `level` in the current window.
   unsigned window_bucket(unsigned level) const;
@@ -190,8 +193,11 @@ class QualityQueue {
   // every level, so everything waits in bucket 1 until move_window() places it.
   int window_base_ = static_cast<int>(kTopLevel) + 1;
   std::array<Fifo, kBuckets> buckets_;
-  std::vector<std::unique_ptr<Block>> blocks_;
-  std::vector<std::unique_ptr<Levels>> levels_;  // by block: null until it serves in bucket 1
+  // By block: its entries, the next block of its chain, its capacity (kSmallBlock or kBlock).
+  std::vector<std::unique_ptr<QueuedTriangle[]>> blocks_;
+  std::vector<std::uint32_t> next_;
+  std::vector<std::uint32_t> capacity_;
+  std::vector<std::unique_ptr<std::uint16_t[]>> levels_;  // by block: null until it serves in bucket 1
   std::vector<std::uint32_t> free_blocks_;      // given back, pages resident
   std::vector<std::uint32_t> released_blocks_;  // given back, pages returned (give_back)
   // Spare blocks kept with their pages: 32 had kept 0.5 MiB resident per refining part (benchmarks.md).

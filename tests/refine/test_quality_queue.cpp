@@ -115,6 +115,60 @@ TEST(queue_keeps_order_across_reclaiming) {
   CHECK(q.nonempty_mask() == 0);
 }
 
+// Chains that mix the first small blocks (64 entries) with 16 KiB ones, in many buckets at once,
+// against a model of one FIFO per bucket: every pop takes the oldest entry of the highest
+// non-empty bucket, and peek(ahead) names the entry that many places behind it.
+TEST(queue_matches_a_model_across_small_and_large_blocks) {
+  std::mt19937_64 rng(3);
+  std::uniform_int_distribution<unsigned> bucket_of(0, 63), ahead_of(0, 1500);
+  std::uniform_real_distribution<double> coin(0.0, 1.0);
+  QualityQueue q(QueueOrder::Paper);  // plain FIFO buckets (the ShortestEdge order re-deals bucket 1)
+  std::vector<std::vector<std::uint32_t>> model(64);  // per bucket, oldest first
+  std::vector<std::size_t> front(64, 0);
+  std::uint32_t next = 0;
+  const auto top = [&] {
+    for (unsigned b = 64; b-- > 0;)
+      if (front[b] < model[b].size()) return static_cast<int>(b);
+    return -1;
+  };
+  for (int step = 0; step < 60000; ++step) {
+    // Mostly pushes at first (few buckets, then many), mostly pops later.
+    const bool push = coin(rng) < (step < 30000 ? 0.7 : 0.3);
+    if (push) {
+      const unsigned b = step < 3000 ? bucket_of(rng) % 4 : bucket_of(rng);
+      q.push_to_bucket(entry(next), b);
+      model[b].push_back(next++);
+      continue;
+    }
+    const int b = top();
+    if (b >= 0) {
+      const std::size_t ahead = ahead_of(rng);
+      const QueuedTriangle* seen = q.peek(ahead);
+      const std::size_t at = front[b] + ahead;
+      if (at < model[b].size()) {
+        REQUIRE(seen != nullptr);
+        CHECK_EQ(seen->triangle, model[b][at]);
+      } else {
+        CHECK(seen == nullptr);
+      }
+    }
+    auto e = q.pop();
+    if (b < 0) {
+      CHECK(!e.has_value());
+      continue;
+    }
+    REQUIRE(e.has_value());
+    CHECK_EQ(e->triangle, model[b][front[b]++]);
+  }
+  while (top() >= 0) {
+    auto e = q.pop();
+    REQUIRE(e.has_value());
+    const int b = top();
+    CHECK_EQ(e->triangle, model[b][front[b]++]);
+  }
+  CHECK(q.empty());
+}
+
 TEST(edge_bucket_is_one_plus_log2_of_the_squared_length_ratio) {
   // Checked against an integer count of halvings, not against frexp.
   std::mt19937_64 rng(2);
