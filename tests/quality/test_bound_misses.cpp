@@ -2,6 +2,8 @@
 // triangles miss the bounds, and the cause each is given, known from the drawing.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <initializer_list>
 #include <numbers>
 
 #include "harness/check.h"
@@ -377,6 +379,21 @@ TEST(the_first_pass_in_two_halves_counts_what_one_pass_counts) {
 
 namespace {
 
+// A subsegment of input segment `segment` from a to b on edge `edge` (a -> b) of the mesh.
+struct OnEdge {
+  EdgeRef edge;
+  VertexId a, b;
+  std::uint32_t segment;
+};
+
+void put_subsegments(Mesh& m, std::initializer_list<OnEdge> list) {
+  m.enable_subsegments();
+  for (const OnEdge& s : list) {
+    m.set_subsegment(s.edge, SubsegmentId{static_cast<std::uint32_t>(m.subsegments.size())});
+    m.subsegments.push_back({s.a, s.b, 1, s.segment});
+  }
+}
+
 // --max-angle=degrees alone (no -q).
 BoundRequest max_angle(double degrees) {
   BoundRequest r;
@@ -391,13 +408,8 @@ Mesh open_corner(int segments, VertexKind apex) {
   Mesh m = mesh_of({{0, 0}, {2, 0}, {-1, 2}});
   m.kind[0] = apex;
   m.add_triangle(0_v, 1_v, 2_v);
-  m.enable_subsegments();
-  m.subsegments.push_back({0_v, 1_v, 1, 0});
-  m.set_subsegment(0_e, 0_s);  // o -> a
-  if (segments == 2) {
-    m.subsegments.push_back({2_v, 0_v, 1, 1});
-    m.set_subsegment(2_e, 1_s);  // b -> o
-  }
+  if (segments == 2) put_subsegments(m, {{0_e, 0_v, 1_v, 0}, {2_e, 2_v, 0_v, 1}});  // o -> a, b -> o
+  else put_subsegments(m, {{0_e, 0_v, 1_v, 0}});
   return m;
 }
 
@@ -447,11 +459,7 @@ TEST(an_angle_above_the_bound_inside_a_larger_input_angle_is_not_forced) {
   m.add_triangle(0_v, 1_v, 3_v);  // o, a, c
   m.add_triangle(0_v, 3_v, 2_v);  // o, c, b
   bond_all(m);
-  m.enable_subsegments();
-  m.subsegments.push_back({0_v, 1_v, 1, 0});
-  m.subsegments.push_back({2_v, 0_v, 1, 1});
-  m.set_subsegment(0_e, 0_s);  // o -> a
-  m.set_subsegment(5_e, 1_s);  // b -> o
+  put_subsegments(m, {{0_e, 0_v, 1_v, 0}, {5_e, 2_v, 0_v, 1}});  // o -> a, b -> o
   const BoundMisses b = count_bound_misses(m, max_angle(90));
   CHECK_EQ(b.total, 1u);
   CHECK_EQ(b.above_max_angle, 1u);
@@ -477,15 +485,8 @@ TEST(an_angle_above_the_bound_beside_a_small_input_angle_is_forced_only_inside_t
   m.add_triangle(1_v, 2_v, 3_v);  // r, p, q: edges 3 r->p, 4 p->q, 5 q->r
   m.add_triangle(2_v, 4_v, 3_v);  // p, s, q: edges 6 p->s, 7 s->q, 8 q->p
   bond_all(m);
-  m.enable_subsegments();
-  m.subsegments.push_back({0_v, 1_v, 1, 0});
-  m.subsegments.push_back({1_v, 2_v, 1, 0});
-  m.subsegments.push_back({2_v, 4_v, 1, 0});
-  m.subsegments.push_back({3_v, 0_v, 1, 1});
-  m.set_subsegment(0_e, 0_s);  // o -> r
-  m.set_subsegment(3_e, 1_s);  // r -> p
-  m.set_subsegment(6_e, 2_s);  // p -> s
-  m.set_subsegment(2_e, 3_s);  // q -> o
+  // o -> r, r -> p, p -> s on A; q -> o on B
+  put_subsegments(m, {{0_e, 0_v, 1_v, 0}, {3_e, 1_v, 2_v, 0}, {6_e, 2_v, 4_v, 0}, {2_e, 3_v, 0_v, 1}});
   const BoundMisses b = count_bound_misses(m, max_angle(90));
   CHECK_EQ(b.above_max_angle, 3u);
   CHECK_EQ(b.small_input_angle, 2u);
