@@ -11,13 +11,14 @@ Cases: a square and a rotated L (a 3-4-5 rotation: integer coordinates, right an
 has angles above 100; a trapezoid whose input angles of 116.6 degrees force triangles above 100
 (only at those corners, between the two segments, counted as forced in the JSON, and --strict
 passes); the square with inner points at --max-angle=90, which the circumcentre alone never
-finished (the guard stopped it) and the star-checked point choice meshes non-obtuse; a run the
+finished (the guard stopped it) and the star-checked point choice meshes non-obtuse; a
 fan of segments with a 7.1-degree input angle and data/touching-holes6.poly, whose obtuse triangles
 must all lie between input segments or where the small-angle rules (checked here exactly) excuse
 them, counted forced, --strict content (the fan failed it until refinement spared obtuse triangles
-on the shells' rungs); two segments crossing at 2e-6 radians, which the guard stops beside the
-crossing at -pq20 (the JSON's count of triangles above the bound must be the exact count, --strict
-must fail) and which must stop at the stall check with its warning at -pq30; A below 90 refused.
+on the shells' rungs); two segments crossing at 2e-6 radians, which keeps obtuse triangles beside
+the repaired crossing at -pq20 (the JSON's count of triangles above the bound must be the exact
+count, --strict must fail) and which must stop at the stall check with its warning at -pq30; A
+below 90 refused.
 
 usage: max_angle.py DELTRI"""
 import json
@@ -324,9 +325,9 @@ def main():
     run(deltri, work, "touching", text, ["-pq20", "--max-angle=90", "--json=touching.json", "--strict"])
     check_all_forced(work, "touching", read_segments_of(text), "touching-holes6 -pq20 --max-angle=90")
 
-    # Two segments crossing at 2e-6 radians inside a square. At -pq20 the guard's floor stops the
-    # run beside the crossing deltri made (its obtuse triangles are a repair, not the input's): the
-    # JSON must count the triangles above 90 exactly and --strict must fail.
+    # Two segments crossing at 2e-6 radians inside a square. At -pq20 refinement leaves obtuse
+    # triangles on the shells' rungs around the vertex deltri made at the crossing (a repair's, not
+    # forced by the input): the JSON must count the triangles above 90 exactly and --strict must fail.
     a, e, r = math.atan2(0.5, 0.8), 2e-6, 0.9
     crossing = square_of(1) + [(-0.8, -0.5), (0.8, 0.5)] + [
         (round(s * r * math.cos(a + e), 9), round(s * r * math.sin(a + e), 9)) for s in (-1, 1)]
