@@ -341,7 +341,10 @@ bool Terminator::stall_check_passed(std::uint64_t used) {
 }
 
 // The equal-shell exemption is the Terminator's (Ruppert's and Chew's algorithms split every skinny
-// triangle); the fans of lopped corners stay as they are (Sec. 6.1).
+// triangle); the fans of lopped corners stay as they are (Sec. 6.1). It spares a triangle bad only
+// for --max-angle as it spares a skinny one: a point for it in the corner makes a new obtuse
+// triangle one shell further in, or splits the shells, without end (docs/refinement.md,
+// "Largest-angle bound"; the quality account forces it by the same rule).
 Assessment Terminator::assess_with(TriangleId t, const Criteria& rules) const {
   Assessment a = assess_triangle(mesh_, t, rules);
   if (lopping_.spares(mesh_, t)) a.skinny = a.too_large = false;
@@ -349,6 +352,8 @@ Assessment Terminator::assess_with(TriangleId t, const Criteria& rules) const {
     a.split_instead = beyond_corner_subsegment(a.shape.shortest);
     a.skinny = a.split_instead != kNone;
   }
+  if (a.too_obtuse && !a.skinny && !a.too_large && policy_.shell_exemption && shell_exempt(a.shape.shortest))
+    a.too_obtuse = false;
   return a;
 }
 

@@ -8,7 +8,8 @@ For each .poly under each CORPUS_DIR runs `DELTRI FLAGS --json` alone and with -
 every A (in a scratch directory, killed after TIMEOUT seconds) and prints, per file and in total,
 the triangles, those above A, those above A not forced by the input (the JSON report's counts,
 which tests/refine/max_angle.py checks against an exact count of the written mesh) and whether the
-run met A everywhere the input allows."""
+run met A everywhere the input allows, and per A the slowest run (the JSON's seconds before
+writing)."""
 import argparse
 import concurrent.futures
 import glob
@@ -55,7 +56,8 @@ def run(path, angle):
         causes = q['missing_bounds_by_cause']
         return {'triangles': r['mesh']['triangles'], 'above': q.get('triangles_above_max_angle', 0),
                 'not_forced': q['triangles_missing_bounds_not_forced_by_input'],
-                'large_input': causes.get('large_input_angle', 0)}
+                'large_input': causes.get('large_input_angle', 0),
+                'seconds': r.get('seconds', {}).get('total_before_writing', 0.0)}
     finally:
         shutil.rmtree(d, ignore_errors=True)
 
@@ -92,3 +94,6 @@ for a in modes[1:]:
           f'{args.timeout:g} s), every triangle at A or forced {len(met)}, triangles {tri} vs {tri0} alone on '
           f'those {len(both)} ({tri / max(tri0, 1):.2f}x), above A {above} ({forced} between input segments)')
     print('  not met:', ' '.join(os.path.basename(f) for f in ok if f not in met))
+    if ok:
+        slowest = max(ok, key=lambda f: results[(f, a)]['seconds'])
+        print(f"  slowest: {os.path.relpath(slowest)}, {results[(slowest, a)]['seconds']:.2f} s before writing")

@@ -2,6 +2,8 @@
 // triangles miss the bounds, and the cause each is given, known from the drawing.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <initializer_list>
 #include <numbers>
 
 #include "harness/check.h"
@@ -373,4 +375,122 @@ TEST(the_first_pass_in_two_halves_counts_what_one_pass_counts) {
     CHECK_EQ(b.double_precision, precision);
     CHECK_EQ(b.other, total - precision);
   }
+}
+
+namespace {
+
+// A subsegment of input segment `segment` from a to b on edge `edge` (a -> b) of the mesh.
+struct OnEdge {
+  EdgeRef edge;
+  VertexId a, b;
+  std::uint32_t segment;
+};
+
+void put_subsegments(Mesh& m, std::initializer_list<OnEdge> list) {
+  m.enable_subsegments();
+  for (const OnEdge& s : list) {
+    m.set_subsegment(s.edge, SubsegmentId{static_cast<std::uint32_t>(m.subsegments.size())});
+    m.subsegments.push_back({s.a, s.b, 1, s.segment});
+  }
+}
+
+// --max-angle=degrees alone (no -q).
+BoundRequest max_angle(double degrees) {
+  BoundRequest r;
+  r.max_angle = LargestAngleBound(degrees);
+  return r;
+}
+
+// One triangle o = (0, 0), a = (2, 0), b = (-1, 2): its angle at o is 180 - atan(2) = 116.57
+// degrees (the dot product (2, 0).(-1, 2) = -2 < 0), at a 33.69 and at b 29.74. `segments` of its
+// sides o-a (edge 0) and b-o (edge 2) are subsegments of input segments 0 and 1.
+Mesh open_corner(int segments, VertexKind apex) {
+  Mesh m = mesh_of({{0, 0}, {2, 0}, {-1, 2}});
+  m.kind[0] = apex;
+  m.add_triangle(0_v, 1_v, 2_v);
+  if (segments == 2) put_subsegments(m, {{0_e, 0_v, 1_v, 0}, {2_e, 2_v, 0_v, 1}});  // o -> a, b -> o
+  else put_subsegments(m, {{0_e, 0_v, 1_v, 0}});
+  return m;
+}
+
+}  // namespace
+
+// An angle above --max-angle between two input segments meeting at a larger angle still: no point
+// can remove it, so it is forced by the input (large_input_angle), also under a -q bound the
+// triangle meets; a bound above the angle (120) finds nothing.
+TEST(an_angle_above_the_bound_between_two_input_segments_is_forced_by_the_input) {
+  for (double bound : {90.0, 100.0, 116.0}) {
+    const BoundMisses b = count_bound_misses(open_corner(2, VertexKind::Input), max_angle(bound));
+    CHECK_EQ(b.total, 1u);
+    CHECK_EQ(b.above_max_angle, 1u);
+    CHECK_EQ(b.large_input_angle, 1u);
+    CHECK_EQ(b.not_forced_by_input(), 0u);
+  }
+  BoundRequest r = max_angle(90);
+  r.angle = AngleBound(20);
+  const BoundMisses both = count_bound_misses(open_corner(2, VertexKind::Input), r);
+  CHECK_EQ(both.below_angle, 0u);
+  CHECK_EQ(both.large_input_angle, 1u);
+  CHECK_EQ(count_bound_misses(open_corner(2, VertexKind::Input), max_angle(120)).total, 0u);
+}
+
+// The same angle with only one side on a segment is not the input's: a point splits it (other).
+// Between two segments that meet at a vertex deltri made (a crossing), it is a repair, not forced.
+TEST(an_angle_above_the_bound_not_between_two_input_segments_is_not_forced) {
+  const BoundMisses one = count_bound_misses(open_corner(1, VertexKind::Input), max_angle(90));
+  CHECK_EQ(one.above_max_angle, 1u);
+  CHECK_EQ(one.large_input_angle, 0u);
+  CHECK_EQ(one.other, 1u);
+  CHECK_EQ(one.not_forced_by_input(), 1u);
+  const BoundMisses repaired = count_bound_misses(open_corner(2, VertexKind::Segment), max_angle(90));
+  CHECK_EQ(repaired.large_input_angle, 0u);
+  CHECK_EQ(repaired.repaired_input, 1u);
+  CHECK_EQ(repaired.not_forced_by_input(), 1u);
+}
+
+// Part of a large input angle is not the angle: the 116.57 degrees at o between segments o-a and
+// o-b split by a free edge o-c, c at sqrt 5 from o and 100 degrees from a. The triangle o, a, c has
+// 100 degrees at o between a segment and a free edge (a point on its bisector could split it), so
+// at --max-angle=90 it is not forced; o, c, b (16.57 degrees at o, isosceles) meets the bound.
+TEST(an_angle_above_the_bound_inside_a_larger_input_angle_is_not_forced) {
+  const double at_c = 100.0 * std::numbers::pi / 180.0;
+  Mesh m = mesh_of({{0, 0}, {2, 0}, {-1, 2}, {std::sqrt(5.0) * std::cos(at_c), std::sqrt(5.0) * std::sin(at_c)}});
+  m.kind[3] = VertexKind::Free;
+  m.add_triangle(0_v, 1_v, 3_v);  // o, a, c
+  m.add_triangle(0_v, 3_v, 2_v);  // o, c, b
+  bond_all(m);
+  put_subsegments(m, {{0_e, 0_v, 1_v, 0}, {5_e, 2_v, 0_v, 1}});  // o -> a, b -> o
+  const BoundMisses b = count_bound_misses(m, max_angle(90));
+  CHECK_EQ(b.total, 1u);
+  CHECK_EQ(b.above_max_angle, 1u);
+  CHECK_EQ(b.large_input_angle, 0u);
+  CHECK_EQ(b.other, 1u);
+  CHECK_EQ(count_bound_misses(m, max_angle(101)).total, 0u);
+}
+
+// Next to a small input angle an angle above --max-angle is forced by the rules that force a small
+// one there (docs/refinement.md, "Largest-angle bound"). Segments A (o = (0, 0) along the x axis,
+// split at r = (3, 0), p = (5, 0) and s = (9, 0)) and B (o towards (10, 1), split at q = (5.1, 0.51))
+// meet at o at 5.71 degrees. r, p, q has 101.1 degrees at p ((-2, 0).(0.1, 0.51) = -0.2 < 0), its
+// shortest edge p-q joins A and B and r lies in the corner triangle o, p, q that edge cuts off
+// (rule 2; its smallest angle, 13.7, above Theorem 12's floor of 2.02 for 5.71): forced. p, s, q
+// has 93.6 degrees at q ((-0.1, -0.51).(3.9, -0.51) = -0.13 < 0) with the same shortest edge, but
+// s lies beyond the corner triangle and its circumcentre ((7, -0.13), below A) in no diametral
+// disk of a subsegment at o: nothing in the input forces it. o, r, q (166 degrees at r) has a
+// corner at o and the others in the sector (rule 1): forced.
+TEST(an_angle_above_the_bound_beside_a_small_input_angle_is_forced_only_inside_the_corner) {
+  Mesh m = mesh_of({{0, 0}, {3, 0}, {5, 0}, {5.1, 0.51}, {9, 0}});
+  m.kind[1] = m.kind[2] = m.kind[3] = m.kind[4] = VertexKind::Segment;
+  m.add_triangle(0_v, 1_v, 3_v);  // o, r, q: edges 0 o->r, 1 r->q, 2 q->o
+  m.add_triangle(1_v, 2_v, 3_v);  // r, p, q: edges 3 r->p, 4 p->q, 5 q->r
+  m.add_triangle(2_v, 4_v, 3_v);  // p, s, q: edges 6 p->s, 7 s->q, 8 q->p
+  bond_all(m);
+  // o -> r, r -> p, p -> s on A; q -> o on B
+  put_subsegments(m, {{0_e, 0_v, 1_v, 0}, {3_e, 1_v, 2_v, 0}, {6_e, 2_v, 4_v, 0}, {2_e, 3_v, 0_v, 1}});
+  const BoundMisses b = count_bound_misses(m, max_angle(90));
+  CHECK_EQ(b.above_max_angle, 3u);
+  CHECK_EQ(b.small_input_angle, 2u);
+  CHECK_EQ(b.large_input_angle, 0u);
+  CHECK_EQ(b.other, 1u);
+  CHECK_EQ(b.not_forced_by_input(), 1u);
 }
