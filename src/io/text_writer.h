@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -57,6 +58,7 @@ char* format_integer(char* p, long long value);
 class TextWriter {
   static constexpr std::size_t kChunk = 1 << 16;
   static constexpr std::size_t kLongestField = 32;  // a separator and a double (at most 24 characters)
+  static constexpr std::size_t kLongestDouble = 24;
 
  public:
   explicit TextWriter(ByteSink& sink) : sink_(sink) {}
@@ -109,14 +111,14 @@ class TextWriter {
   class Line {
    public:
     void integer(long long value) { cur_ = format_integer(cur_, value); }
-    void real(double value) { cur_ = format_real(cur_, value); }
+    void real(double value) { cur_ = writer_.format_real(cur_, value); }
     void next_integer(long long value) {
       *cur_++ = ' ';
       cur_ = format_integer(cur_, value);
     }
     void next_real(double value) {
       *cur_++ = ' ';
-      cur_ = format_real(cur_, value);
+      cur_ = writer_.format_real(cur_, value);
     }
     void end_line() {
       *cur_++ = '\n';
@@ -138,7 +140,13 @@ class TextWriter {
   static_assert(kMaxLineFields * kLongestField + 1 <= kChunk);
 
   // Shortest text that reads back as the identical double.
-  static char* format_real(char* p, double value);
+  char* format_real(char* p, double value);
+  // The last value other than 0 that format_shortest_fixed left to std::to_chars, and its text: a
+  // mesh repeats such values line after line (a strip's vertices alternate between its sides, y = 0
+  // and y = 1e-05), and a copy is a tenth of the conversion.
+  std::uint64_t slow_bits_ = 0;
+  std::uint32_t slow_length_ = 0;  // 0: nothing kept
+  char slow_text_[kLongestField] = {};
   void make_room(std::size_t bytes) {
     if (static_cast<std::size_t>(limit() - cur_) < bytes) flush();
   }
