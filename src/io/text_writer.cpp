@@ -85,9 +85,8 @@ char* format_integer(char* p, long long value) {
   return format_unsigned(p, magnitude);
 }
 
-char* TextWriter::format_real(char* p, double value) {
-  static_assert(kShortestFixedScratch <= kLongestField - 1);  // room is made for a separator too
-  if (char* end = format_shortest_fixed(p, value)) return end;
+char* TextWriter::format_declined_real(char* p, double value) {
+  static_assert(kShortestFixedScratch <= kLongestField - 1);  // format_real: room is made for a separator too
   const auto bits = std::bit_cast<std::uint64_t>(value);  // -0.0 and 0.0 print differently
   if (bits == 0) {  // 0.0, the other value a strip's vertices alternate with
     *p = '0';

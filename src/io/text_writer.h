@@ -11,6 +11,8 @@
 #include <string>
 #include <string_view>
 
+#include "io/shortest_fixed.h"
+
 namespace deltri {
 
 class TextWriter;
@@ -111,14 +113,14 @@ class TextWriter {
   class Line {
    public:
     void integer(long long value) { cur_ = format_integer(cur_, value); }
-    void real(double value) { cur_ = writer_.format_real(cur_, value); }
+    void real(double value) { cur_ = format_real(cur_, value); }
     void next_integer(long long value) {
       *cur_++ = ' ';
       cur_ = format_integer(cur_, value);
     }
     void next_real(double value) {
       *cur_++ = ' ';
-      cur_ = writer_.format_real(cur_, value);
+      cur_ = format_real(cur_, value);
     }
     void end_line() {
       *cur_++ = '\n';
@@ -128,6 +130,10 @@ class TextWriter {
    private:
     friend class TextWriter;
     explicit Line(TextWriter& writer) : writer_(writer), cur_(writer.cur_) {}
+    char* format_real(char* p, double value) {
+      if (char* end = format_shortest_fixed(p, value)) return end;
+      return writer_.format_declined_real(p, value);
+    }
     TextWriter& writer_;
     char* cur_;
   };
@@ -140,7 +146,12 @@ class TextWriter {
   static_assert(kMaxLineFields * kLongestField + 1 <= kChunk);
 
   // Shortest text that reads back as the identical double.
-  char* format_real(char* p, double value);
+  char* format_real(char* p, double value) {
+    if (char* end = format_shortest_fixed(p, value)) return end;
+    return format_declined_real(p, value);
+  }
+  // What format_shortest_fixed declines: std::to_chars's text.
+  char* format_declined_real(char* p, double value);
   // The last value other than 0 that format_shortest_fixed left to std::to_chars, and its text: a
   // mesh repeats such values line after line (a strip's vertices alternate between its sides, y = 0
   // and y = 1e-05), and a copy is a tenth of the conversion.
