@@ -2,7 +2,8 @@
 // l.44). A segment split point is rounded, so it is rarely exactly on the subsegment and
 // insert_vertex's exact location would not put it there; the split is made by hand and the
 // link of the new vertex is then flipped by Lawson's rule, never across a subsegment; and since
-// the rounded point is not exactly on the subsegment, the edges at the new vertex are checked too.
+// the rounded point is rarely exactly on the subsegment, the edges at the new vertex are checked
+// too, unless the caller knows it is on it (exactly_on).
 #pragma once
 
 #include "geometry/predicates.h"
