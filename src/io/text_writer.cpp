@@ -1,6 +1,7 @@
 #include "io/text_writer.h"
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
@@ -84,10 +85,20 @@ char* format_integer(char* p, long long value) {
   return format_unsigned(p, magnitude);
 }
 
-char* TextWriter::format_real(char* p, double value) {
-  static_assert(kShortestFixedScratch <= kLongestField - 1);  // room is made for a separator too
-  if (char* end = format_shortest_fixed(p, value)) return end;
-  return std::to_chars(p, p + kLongestField, value).ptr;
+char* TextWriter::format_declined_real(char* p, double value) {
+  static_assert(kShortestFixedScratch <= kLongestField - 1);  // format_real: room is made for a separator too
+  const auto bits = std::bit_cast<std::uint64_t>(value);  // -0.0 and 0.0 print differently
+  if (bits == 0) {  // 0.0, the other value a strip's vertices alternate with
+    *p = '0';
+    return p + 1;
+  }
+  if (slow_length_ == 0 || bits != slow_bits_) {
+    slow_length_ = static_cast<std::uint32_t>(std::to_chars(slow_text_, slow_text_ + kLongestField, value).ptr - slow_text_);
+    slow_bits_ = bits;
+  }
+  static_assert(kLongestDouble <= kLongestField - 1);  // room is made for a separator too
+  std::memcpy(p, slow_text_, kLongestDouble);
+  return p + slow_length_;
 }
 
 void TextWriter::text(std::string_view s) {

@@ -6,9 +6,12 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <string_view>
+
+#include "io/shortest_fixed.h"
 
 namespace deltri {
 
@@ -57,6 +60,7 @@ char* format_integer(char* p, long long value);
 class TextWriter {
   static constexpr std::size_t kChunk = 1 << 16;
   static constexpr std::size_t kLongestField = 32;  // a separator and a double (at most 24 characters)
+  static constexpr std::size_t kLongestDouble = 24;
 
  public:
   explicit TextWriter(ByteSink& sink) : sink_(sink) {}
@@ -126,6 +130,10 @@ class TextWriter {
    private:
     friend class TextWriter;
     explicit Line(TextWriter& writer) : writer_(writer), cur_(writer.cur_) {}
+    char* format_real(char* p, double value) {
+      if (char* end = format_shortest_fixed(p, value)) return end;
+      return writer_.format_declined_real(p, value);
+    }
     TextWriter& writer_;
     char* cur_;
   };
@@ -138,7 +146,18 @@ class TextWriter {
   static_assert(kMaxLineFields * kLongestField + 1 <= kChunk);
 
   // Shortest text that reads back as the identical double.
-  static char* format_real(char* p, double value);
+  char* format_real(char* p, double value) {
+    if (char* end = format_shortest_fixed(p, value)) return end;
+    return format_declined_real(p, value);
+  }
+  // What format_shortest_fixed declines: std::to_chars's text.
+  char* format_declined_real(char* p, double value);
+  // The last value other than 0 that format_shortest_fixed left to std::to_chars, and its text: a
+  // mesh repeats such values line after line (a strip's vertices alternate between its sides, y = 0
+  // and y = 1e-05), and a copy is a tenth of the conversion.
+  std::uint64_t slow_bits_ = 0;
+  std::uint32_t slow_length_ = 0;  // 0: nothing kept
+  char slow_text_[kLongestField] = {};
   void make_room(std::size_t bytes) {
     if (static_cast<std::size_t>(limit() - cur_) < bytes) flush();
   }

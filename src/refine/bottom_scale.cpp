@@ -167,15 +167,16 @@ bool BottomScale::in_strip_below_an_ulp(const Mesh& mesh, Predicates& pred, Edge
   for (EdgeRef e : {s, mesh.link[s]}) {
     if (e == kNone) continue;
     const Point& c = mesh.point(mesh.apex(e));
-    // A vertex at the bottom scale from an end is a flush neighbour (split()'s case),
-    // not the far side of a strip.
-    if (at_bottom_scale(squared_distance(a, c), a) || at_bottom_scale(squared_distance(b, c), b)) continue;
     const double twice_area = std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
     const double ulp = ulps_at(std::max({magnitude(a), magnitude(b), magnitude(c)}), 1.0);
     // width below an ulp, or below kStripUlps along a subsegment over kLongStripUlps long
     const double width_ulps = kStripUlps * static_cast<double>(length2 > kLongStripUlps * kLongStripUlps * ulp * ulp);
     const double limit = std::max(1.0, width_ulps) * ulp;
-    if (twice_area * twice_area < limit * limit * length2 && encroaches(pred, a, b, c, rule_)) return true;
+    if (!(twice_area * twice_area < limit * limit * length2)) continue;  // first: nearly every apex is far
+    // A vertex at the bottom scale from an end is a flush neighbour (split()'s case),
+    // not the far side of a strip.
+    if (at_bottom_scale(squared_distance(a, c), a) || at_bottom_scale(squared_distance(b, c), b)) continue;
+    if (encroaches(pred, a, b, c, rule_)) return true;
   }
   return false;
 }
@@ -194,7 +195,14 @@ double lattice_step(double u, double v) {
   const double m = std::max(std::fabs(u), std::fabs(v));
   return std::nextafter(m, HUGE_VAL) - m;
 }
+// Surely more than lattice_step(u, v) apart, without nextafter: a step is at most 2^-52 of the
+// larger magnitude (2^-1074 below the normal range).
+bool far_apart(double u, double v) {
+  const double m = std::max(std::fabs(u), std::fabs(v)), d = std::fabs(u - v);
+  return m < 0x1p1000 && d > m * 0x1p-51 && d > 0x1p-1000;
+}
 bool neighbouring_doubles(const Point& a, const Point& b) {
+  if (far_apart(a.x, b.x) || far_apart(a.y, b.y)) return false;  // every split but the last few ulps
   return std::fabs(a.x - b.x) <= lattice_step(a.x, b.x) && std::fabs(a.y - b.y) <= lattice_step(a.y, b.y);
 }
 }  // namespace

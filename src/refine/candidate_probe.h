@@ -32,12 +32,38 @@ enum class ProbeStatus {
                // split (blocked), or leaves the mesh through an unprotected edge
 };
 
+// The subsegments a candidate encroaches upon: one or two nearly always (a strip's rejected
+// circumcentre, one per side), kept in place; more spill to the heap. A probe runs for every bad
+// triangle, and an allocation for each rejected one cost a tenth as much as the probe itself.
+class EncroachedEdges {
+ public:
+  void push_back(EdgeRef e) {
+    if (count_ < kInPlace) in_place_[count_] = e;
+    else {
+      if (count_ == kInPlace) spilled_.assign(in_place_, in_place_ + kInPlace);
+      spilled_.push_back(e);
+    }
+    ++count_;
+  }
+  bool empty() const { return count_ == 0; }
+  std::size_t size() const { return count_; }
+  EdgeRef operator[](std::size_t i) const { return begin()[i]; }
+  const EdgeRef* begin() const { return count_ <= kInPlace ? in_place_ : spilled_.data(); }
+  const EdgeRef* end() const { return begin() + count_; }
+
+ private:
+  static constexpr std::size_t kInPlace = 4;
+  EdgeRef in_place_[kInPlace];
+  std::size_t count_ = 0;
+  std::vector<EdgeRef> spilled_;
+};
+
 struct Probe {
   ProbeStatus status = ProbeStatus::Unusable;
   EdgeRef container = kNone;           // an edge of the triangle containing c (Clear only)
   bool strictly_inside = false;        // c is inside that triangle, not on its sides (Clear only)
   bool blocked = false;                // the walk stopped at a subsegment or the boundary
-  std::vector<EdgeRef> encroached;     // edges carrying the encroached subsegments
+  EncroachedEdges encroached;          // edges carrying the encroached subsegments
   double insertion_radius = 0.0;       // distance from c to the nearest vertex it would join
 };
 

@@ -4,6 +4,7 @@
 #include "mesh/lawson.h"
 #include "mesh/operations.h"
 #include "refine/edge_finder.h"
+#include "util/invariant.h"
 
 namespace deltri {
 namespace {
@@ -41,8 +42,12 @@ EdgeRef bad_spoke(const Mesh& mesh, Predicates& pred, EdgeRef out) {
 
 }  // namespace
 
-EdgeRef restore_delaunay_around(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef out) {
+EdgeRef restore_delaunay_around(Mesh& mesh, Predicates& pred, VertexId v, EdgeRef out, bool exactly_on) {
   EdgeRef leaving = flip_link_of(mesh, pred, v, out);
+  if (exactly_on) {
+    DELTRI_ASSERT(bad_spoke(mesh, pred, leaving) == kNone);
+    return leaving;
+  }
   // Each flip removes a locally non-Delaunay edge, so the loop ends (Lawson).
   for (EdgeRef spoke = bad_spoke(mesh, pred, leaving); spoke != kNone; spoke = bad_spoke(mesh, pred, leaving)) {
     const EdgeRef g = flip(mesh, spoke);       // apex -> far apex; its twin's triangle keeps v

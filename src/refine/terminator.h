@@ -135,6 +135,7 @@ class Terminator {
     Point point;
     double floor = 0.0;  // the guard's floor for the split
     SplitRadius radius{};
+    bool exactly_on = false;  // on the subsegment exactly (restore_delaunay_around)
   };
   std::optional<Outcome> plan_split(EdgeRef s, bool owed_to_size, SplitPlan& plan);  // Fig. 39 l.39
   Point split_point(EdgeRef s);  // l.39: the split-point policy plan_split consults

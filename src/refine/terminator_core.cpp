@@ -119,7 +119,7 @@ Outcome Terminator::split_subsegment(EdgeRef s, bool queue_triangles, bool owed_
   const PieceEnds piece = pieces_.of_subsegment[mesh_.subseg[s]];
   EdgeRef out = split_edge(mesh_, s, v);  // l.44
   pieces_.record_split(mesh_, v, piece);
-  out = restore_delaunay_around(mesh_, pred_, v, out);
+  out = restore_delaunay_around(mesh_, pred_, v, out, plan.exactly_on);
   DELTRI_ASSERT(mesh_.org(out) == v);  // new_vertex walks v's star from out
   new_vertex(out, queue_triangles);     // l.45
   for_each_around(mesh_, out, [&](EdgeRef e) {  // l.46-49: the halves s1 and s2

@@ -15,6 +15,7 @@
 #include "refine/concentric_shells.h"
 #include "refine/mirrored_split.h"
 #include "refine/range_restricted.h"
+#include "refine/restore_delaunay.h"
 #include "refine/split_permitted.h"
 #include "refine/steiner_point.h"
 #include "refine/termination_guard.h"
@@ -81,6 +82,7 @@ std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, Spli
     }
   }
   plan.point = p;
+  plan.exactly_on = exactly_on_axis_parallel_line(pa, pb, p);
   plan.floor = owed_to_size ? bottom_.precision_floor(p) : floor_at(p);
   plan.radius = split_radius(s, p);
   if (plan.radius.after_chew < plan.floor) return Outcome::BelowFloor;
@@ -111,7 +113,10 @@ Point Terminator::split_point(EdgeRef s) {
 // After Chew's step (Fig. 39 l.40-43) the split point is checked again: a free vertex flush with
 // s that the step did not delete, or one its search could not reach, still counts.
 std::optional<Outcome> Terminator::replan_after_deletions(EdgeRef s, SplitPlan& plan) {
-  if (!split_keeps_orientation(s, plan.point, false)) plan.point = bottom_.split(*this, s, plan.point, false);
+  if (!split_keeps_orientation(s, plan.point, false)) {
+    plan.point = bottom_.split(*this, s, plan.point, false);
+    plan.exactly_on = false;  // the edges at the new vertex are checked
+  }
   if (!split_keeps_orientation(s, plan.point, false)) {
     lock(s);
     return Outcome::Locked;

@@ -99,3 +99,31 @@ TEST(text_writer_reals_match_to_chars) {
   out.finish();
   CHECK(text == expected);
 }
+
+// The writer keeps the text of the last value the fast path declined (and writes 0.0 itself): a
+// repeat, a value of the same magnitude, -0.0 beside 0.0, NaN and the infinities must still come
+// out as std::to_chars writes each of them alone, through fields and through lines.
+TEST(text_writer_repeated_slow_reals_match_to_chars) {
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const double values[] = {1e-05, 0.0, 1e-05, 1e-05, -0.0, 0.0, -1e-05, 1.0000000000000002e-05, 0.0, nan, nan,
+                           inf,   -inf, 5e-324, 5e-324, 1e300, 0.5,   1e300,  2e-05, 0.0, -0.0, -0.0, 1e-05};
+  std::string text, expected;
+  StringSink sink(text);
+  TextWriter out(sink);
+  for (int pass = 0; pass < 2; ++pass) {
+    for (double v : values) {
+      if (pass == 0) out.next_real(v);
+      else {
+        TextWriter::Line line = out.line(1);
+        line.next_real(v);
+        line.end_line();
+      }
+      char buf[64];
+      expected += ' ';
+      expected.append(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+      if (pass == 1) expected += '\n';
+    }
+  }
+  out.finish();
+  CHECK(text == expected);
+}
