@@ -75,7 +75,7 @@ template <class Visit, class Done>
 void QualityQueue::for_each_entry(const Fifo& fifo, Visit&& visit, Done&& done) {
   for (std::uint32_t block = fifo.first; block != kNoBlock;) {
     const std::uint32_t from = block == fifo.first ? fifo.head : 0;
-    const std::uint32_t to = block == fifo.last ? fifo.tail : capacity_[block];
+    const std::uint32_t to = block == fifo.last ? fifo.tail : capacity(block);
     for (std::uint32_t i = from; i < to; ++i) visit(blocks_[block][i], block, i);
     const std::uint32_t next = block == fifo.last ? kNoBlock : next_[block];
     done(block);
@@ -143,10 +143,9 @@ std::uint32_t QualityQueue::take_block() {
     next_[block] = kNoBlock;
     return block;
   }
-  const std::uint32_t capacity = blocks_.size() < kSmallBlocks ? kSmallBlock : kBlock;
-  blocks_.push_back(std::make_unique_for_overwrite<QueuedTriangle[]>(capacity));  // written before read: no clear
+  const auto block = static_cast<std::uint32_t>(blocks_.size());
+  blocks_.push_back(std::make_unique_for_overwrite<QueuedTriangle[]>(capacity(block)));  // written before read: no clear
   next_.push_back(kNoBlock);
-  capacity_.push_back(capacity);
   levels_.emplace_back();
   return static_cast<std::uint32_t>(blocks_.size() - 1);
 }
@@ -156,7 +155,7 @@ std::uint32_t QualityQueue::take_block() {
 // the mesh at the end, and the pool at its peak size had set the peak memory there. A queue that
 // never grew past kResidentBlocks keeps its pages, and a small block holds no whole page.
 void QualityQueue::give_back(std::uint32_t block) {
-  if (free_blocks_.size() < kSpareBlocks || blocks_.size() <= kResidentBlocks || capacity_[block] < kBlock) {
+  if (free_blocks_.size() < kSpareBlocks || blocks_.size() <= kResidentBlocks || capacity(block) < kBlock) {
     free_blocks_.push_back(block);
     return;
   }
@@ -170,7 +169,7 @@ void QualityQueue::append_leveled(const QueuedTriangle& entry, unsigned level, u
   if (bucket != 1) return;  // buckets 2..63 imply the level
   const Fifo& fifo = buckets_[1];
   std::unique_ptr<std::uint16_t[]>& levels = levels_[fifo.last];
-  if (!levels) levels = std::make_unique_for_overwrite<std::uint16_t[]>(capacity_[fifo.last]);
+  if (!levels) levels = std::make_unique_for_overwrite<std::uint16_t[]>(capacity(fifo.last));
   levels[fifo.tail - 1] = static_cast<std::uint16_t>(level);
 }
 
@@ -179,13 +178,11 @@ void QualityQueue::append(const QueuedTriangle& entry, unsigned bucket) {
   if (fifo.last == kNoBlock) {
     fifo.first = fifo.last = take_block();
     fifo.head = fifo.tail = 0;
-    fifo.first_end = fifo.last_end = capacity_[fifo.last];
-  } else if (fifo.tail == fifo.last_end) {
+  } else if (fifo.tail == capacity(fifo.last)) {
     const std::uint32_t block = take_block();
     next_[fifo.last] = block;
     fifo.last = block;
     fifo.tail = 0;
-    fifo.last_end = capacity_[block];
   }
   blocks_[fifo.last][fifo.tail++] = entry;
   nonempty_ |= std::uint64_t{1} << bucket;
@@ -207,12 +204,12 @@ const QueuedTriangle* QualityQueue::peek(std::size_t ahead) const {
   const Fifo& fifo = buckets_[top_bucket()];
   std::uint32_t block = fifo.first;
   std::size_t at = fifo.head + ahead;
-  while (at >= capacity_[block] && block != fifo.last) {
-    at -= capacity_[block];
+  while (at >= capacity(block) && block != fifo.last) {
+    at -= capacity(block);
     block = next_[block];
   }
   if (block == fifo.last && at >= fifo.tail) return nullptr;
-  return at < capacity_[block] ? &blocks_[block][at] : nullptr;
+  return at < capacity(block) ? &blocks_[block][at] : nullptr;
 }
 
 QueuedTriangle QualityQueue::take_front(unsigned bucket) {
@@ -222,11 +219,10 @@ QueuedTriangle QualityQueue::take_front(unsigned bucket) {
     give_back(fifo.first);
     fifo = Fifo{};
     nonempty_ &= ~(std::uint64_t{1} << bucket);
-  } else if (fifo.head == fifo.first_end) {  // the front block is used up
+  } else if (fifo.head == capacity(fifo.first)) {  // the front block is used up
     const std::uint32_t used = fifo.first;
     fifo.first = next_[used];
     fifo.head = 0;
-    fifo.first_end = capacity_[fifo.first];
     give_back(used);
   }
   return entry;

@@ -150,13 +150,13 @@ class QualityQueue {
   static constexpr std::uint32_t kSmallBlock = 64;
   static constexpr std::size_t kSmallBlocks = 32;
   static constexpr std::uint32_t kNoBlock = ~std::uint32_t{0};
-  // A FIFO of blocks: entries [head, ...) of block `first` up to [..., tail) of block `last`;
-  // first_end and last_end are those blocks' capacities.
+  // A FIFO of blocks: entries [head, ...) of block `first` up to [..., tail) of block `last`.
   struct Fifo {
     std::uint32_t first = kNoBlock, last = kNoBlock;
     std::uint32_t head = 0, tail = 0;
-    std::uint32_t first_end = 0, last_end = 0;
   };
+  // Blocks are only ever appended, so a block's number says whether it is one of the small ones.
+  static constexpr std::uint32_t capacity(std::uint32_t block) { return block < kSmallBlocks ? kSmallBlock : kBlock; }
   std::uint32_t take_block();
   void give_back(std::uint32_t block);
   struct Keyed {
@@ -196,7 +196,6 @@ class QualityQueue {
   // By block: its entries, the next block of its chain, its capacity (kSmallBlock or kBlock).
   std::vector<std::unique_ptr<QueuedTriangle[]>> blocks_;
   std::vector<std::uint32_t> next_;
-  std::vector<std::uint32_t> capacity_;
   std::vector<std::unique_ptr<std::uint16_t[]>> levels_;  // by block: null until it serves in bucket 1
   std::vector<std::uint32_t> free_blocks_;      // given back, pages resident
   std::vector<std::uint32_t> released_blocks_;  // given back, pages returned (give_back)
