@@ -92,7 +92,7 @@ char* TextWriter::format_declined_real(char* p, double value) {
     *p = '0';
     return p + 1;
   }
-  if (slow_length_ == 0 || bits != slow_bits_) {
+  if (bits != slow_bits_) {
     slow_length_ = static_cast<std::uint32_t>(std::to_chars(slow_text_, slow_text_ + kLongestField, value).ptr - slow_text_);
     slow_bits_ = bits;
   }

@@ -113,14 +113,14 @@ class TextWriter {
   class Line {
    public:
     void integer(long long value) { cur_ = format_integer(cur_, value); }
-    void real(double value) { cur_ = format_real(cur_, value); }
+    void real(double value) { cur_ = writer_.format_real(cur_, value); }
     void next_integer(long long value) {
       *cur_++ = ' ';
       cur_ = format_integer(cur_, value);
     }
     void next_real(double value) {
       *cur_++ = ' ';
-      cur_ = format_real(cur_, value);
+      cur_ = writer_.format_real(cur_, value);
     }
     void end_line() {
       *cur_++ = '\n';
@@ -130,10 +130,6 @@ class TextWriter {
    private:
     friend class TextWriter;
     explicit Line(TextWriter& writer) : writer_(writer), cur_(writer.cur_) {}
-    char* format_real(char* p, double value) {
-      if (char* end = format_shortest_fixed(p, value)) return end;
-      return writer_.format_declined_real(p, value);
-    }
     TextWriter& writer_;
     char* cur_;
   };
@@ -155,8 +151,8 @@ class TextWriter {
   // The last value other than 0 that format_shortest_fixed left to std::to_chars, and its text: a
   // mesh repeats such values line after line (a strip's vertices alternate between its sides, y = 0
   // and y = 1e-05), and a copy is a tenth of the conversion.
-  std::uint64_t slow_bits_ = 0;
-  std::uint32_t slow_length_ = 0;  // 0: nothing kept
+  std::uint64_t slow_bits_ = 0;  // 0 (the bits of 0.0, never kept): nothing kept
+  std::uint32_t slow_length_ = 0;
   char slow_text_[kLongestField] = {};
   void make_room(std::size_t bytes) {
     if (static_cast<std::size_t>(limit() - cur_) < bytes) flush();
