@@ -12,7 +12,8 @@
 //    as sqrt(2) times t's shortest are good, better than t, or no worse than the triangle they
 //    replace on that edge (so bad triangles cannot spread at one scale); if there is none, no
 //    point is inserted for t (the rounded ideal point may still ask for the subsegments it
-//    encroaches upon to be split; otherwise it is a guard refusal), so a triangle that no nearby double improves does not start a cascade;
+//    encroaches upon to be split; otherwise it is a guard refusal), so a triangle that no nearby
+//    double improves does not start a cascade;
 //  - splits a subsegment at the double near its midpoint closest to the line of its segment piece
 //    that keeps the triangles beside it counter-clockwise (BottomScale::split), which is also
 //    tried at any scale when the rounded midpoint fails (a neighbour flush with the subsegment),
