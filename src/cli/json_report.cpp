@@ -182,6 +182,7 @@ std::string json_report(const Mesh& mesh, const Switches& sw, const RunReport& r
   j.integer("other", b.other);
   j.close();
   j.integer("triangles_missing_bounds_not_forced_by_input", b.not_forced_by_input());
+  j.integer("triangles_missing_bounds_at_input_crossings", b.at_input_crossings);
   if (sw.interior_bound != 0)
     j.integer("interior_bound_left_at_double_precision", q ? q->interior_bound_refusals : 0);
   if (sw.refinement != RefinementAlgorithm::Terminator || sw.range_restricted) {  // where the sure-fire rule applies

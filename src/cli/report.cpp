@@ -109,6 +109,9 @@ std::vector<std::string> run_warnings(const Mesh& mesh, const RunReport& r) {
          " the requested bounds for a reason other than a small input angle (" + std::to_string(b->repaired_input) +
          " next to repaired crossings or overlaps, " + std::to_string(b->double_precision) + " at the limit of double precision, " +
          std::to_string(b->steiner_limits) + " at -S/-Y limits, " + std::to_string(b->other) + " other)");
+  if (const auto& b = r.misses; b && b->at_input_crossings > 0)  // forced, yet not the input's own vertices: said
+    warn(plural(b->at_input_crossings, "triangle misses", "triangles miss") +
+         " the requested bounds next to crossings of input segments, forced by the angles the segments cross at");
   if (const auto& c = r.conformity; c && c->total > 0) warn(conformity_warning(*c, r.refine && r.refine->stopped_by_guard));
   if (mesh.live_triangles() == 0) {
     if (r.pslg && r.pslg->has_segment_section && mesh.vertex_count() >= 3 && r.holes && r.holes->triangles_removed > 0)
@@ -238,6 +241,9 @@ void Messages::verbose_report(const Mesh& mesh, const RunReport& r) const {
                 static_cast<unsigned long long>(b->small_input_angle), static_cast<unsigned long long>(b->repaired_input),
                 static_cast<unsigned long long>(b->double_precision), static_cast<unsigned long long>(b->steiner_limits),
                 static_cast<unsigned long long>(b->other));
+    if (b->at_input_crossings > 0)
+      std::fprintf(out_, "  of those forced by input angles, %llu at crossings of input segments\n",
+                  static_cast<unsigned long long>(b->at_input_crossings));
   }
   if (const auto& c = r.conformity; c && c->total > 0)
     std::fprintf(out_, "Conforming Delaunay (-D): %llu subsegments not Delaunay (%llu at the limit of double precision, %llu other)\n",

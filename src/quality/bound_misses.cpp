@@ -129,6 +129,14 @@ bool repaired_vertex(const Mesh& m, const SegmentVertices& s, VertexId v) {
   return m.kind[v] != VertexKind::Input && s.segments[v].size() >= 2;
 }
 
+// A vertex whose angles between segments are the input's: an input vertex, or one deltri made where
+// input segments cross (any mesh keeping the segments has a vertex at the crossing, and the angles
+// the segments cross at are there whatever the mesh; tests/tools/verify_quality.cpp's junctions
+// include crossings likewise).
+bool input_angle_vertex(const Mesh& m, const SegmentVertices& s, VertexId v) {
+  return m.kind[v] == VertexKind::Input || repaired_vertex(m, s, v);
+}
+
 double angle_between(double from, double to) {  // counter-clockwise, in [0, 2 pi)
   double a = to - from;
   while (a < 0) a += 2 * std::numbers::pi;
@@ -353,8 +361,8 @@ VertexId large_angle_corner(const Mesh& m, TriangleId t, const BoundCheck& test)
 // explained. An angle above --max-angle is explained by the larger input angle it lies in
 // (large_angle_corner) or, failing that, as a small angle is (explaining_junction: next to an input
 // angle under 60 degrees, where the Terminator declines or the guard refuses the splits that would
-// remove it; docs/refinement.md, "Largest-angle bound"). With both a small and a large angle, the
-// one made by deltri (a repair) if either is. `by_large` says which explained it.
+// remove it; docs/refinement.md, "Largest-angle bound"). With both a small and a large angle, both
+// must be explained; the large one's vertex is returned. `by_large` says which explained it.
 VertexId explaining_vertex(const Mesh& m, const SegmentVertices& s, const ClusterDisks& disks, TriangleId t, char missing,
                            const BoundCheck& test, double bound_deg, bool& by_large) {
   by_large = false;
@@ -365,9 +373,7 @@ VertexId explaining_vertex(const Mesh& m, const SegmentVertices& s, const Cluste
   if (large == kNone) return small;
   by_large = true;
   if (!(missing & kMissesAngle)) return large;
-  if (small == kNone) return kNone;
-  by_large = m.kind[small] == VertexKind::Input;
-  return by_large ? large : small;
+  return small == kNone ? kNone : large;
 }
 
 // Slots from which the first pass takes two threads, as the Terminator's closing survey does.
@@ -432,8 +438,12 @@ BoundMisses count_bound_misses(const Mesh& m, const BoundRequest& r) {
       touches_repair = touches_repair || repaired_vertex(m, s, v);
       touches_segment = touches_segment || !s.spokes[v].empty();
     }
-    if (j != kNone && m.kind[j] == VertexKind::Input) ++(by_large ? out.large_input_angle : out.small_input_angle);
-    else if (j != kNone || touches_repair) ++out.repaired_input;
+    if (j != kNone && input_angle_vertex(m, s, j)) {
+      ++(by_large ? out.large_input_angle : out.small_input_angle);
+      out.at_input_crossings += m.kind[j] != VertexKind::Input;
+    } else if (j != kNone || touches_repair) {
+      ++out.repaired_input;
+    }
     else if (at_precision_limit(m, t)) ++out.double_precision;
     else if (r.steiner_limited || (r.segments_kept_whole && touches_segment)) ++out.steiner_limits;
     else ++out.other;

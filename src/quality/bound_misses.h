@@ -9,8 +9,10 @@
 // Each such triangle gets the first of these causes that applies (docs/manual.md, "Quality
 // accounting"):
 //   small_input_angle  it misses no size bound, and its angle miss (below -q, or above --max-angle
-//                      without lying between two segments) is explained by the input, at an
-//                      input vertex j where segments meet at an input angle phi under 60 degrees:
+//                      without lying between two segments) is explained by the input, at a vertex
+//                      j where input segments meet at an input angle phi under 60 degrees: an input
+//                      vertex, or a vertex deltri made where two input segments cross (every mesh
+//                      that keeps the segments has a vertex there, with the angles they cross at):
 //                      (1) a corner j, with the other two corners inside the sector between two
 //                      neighbouring segments at j, that sector under 60 degrees (the input angle
 //                      itself); or, with its smallest angle at least Theorem 12's floor for phi,
@@ -27,10 +29,12 @@
 //                      is not forced by the input angle (docs/manual.md, "Quality accounting");
 //                      tests/tools/verify_quality.cpp checks meshes by the same rules;
 //   large_input_angle  it misses only --max-angle (or that and a small angle explained as above), and
-//                      its angle above the bound lies between two segments at an input vertex;
-//   repaired_input     the same explanation at a vertex deltri made where input segments cross or
-//                      overlap (not an input vertex, yet on two or more input segments), or a corner
-//                      at such a vertex;
+//                      its angle above the bound lies between two segments at an input vertex or a
+//                      crossing;
+//                      (at_input_crossings counts those of these two explained at a crossing.)
+//   repaired_input     a corner at a vertex deltri made where input segments cross or overlap (not
+//                      an input vertex, yet on two or more input segments), the miss not explained
+//                      by the angles there;
 //   double_precision   its shortest edge is at most kPrecisionUlps ulps of its largest corner
 //                      coordinate: no double lies close enough to split it usefully;
 //   steiner_limits     -S stopped refinement, or -Y/-YY kept segments whole and the triangle has a
@@ -65,10 +69,13 @@ struct BoundMisses {
   std::uint64_t small_input_angle = 0;
   std::uint64_t large_input_angle = 0;  // --max-angle: the angle lies between two input segments
   std::uint64_t repaired_input = 0;
+  // Of small_input_angle and large_input_angle: those explained at a crossing of input segments.
+  std::uint64_t at_input_crossings = 0;
   std::uint64_t double_precision = 0;
   std::uint64_t steiner_limits = 0;
   std::uint64_t other = 0;
-  // What --strict refuses: misses not forced by a small (or, --max-angle, large) input angle.
+  // What --strict refuses: misses not forced by a small (or, --max-angle, large) input angle, at an
+  // input vertex or a crossing.
   std::uint64_t not_forced_by_input() const { return total - small_input_angle - large_input_angle; }
 };
 

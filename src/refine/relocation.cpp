@@ -57,9 +57,19 @@ double Relocator::least_angle(const Point& p, double floor) const {
   return least;
 }
 
+// The least angle_margin of the star's triangles with p at the centre, or least_angle without a
+// largest-angle goal. Like least_angle it may stop once below floor.
+double Relocator::measure(const Point& p, double floor) const {
+  if (goal_.max_angle == nullptr) return least_angle(p, floor);
+  double least = 1.0;
+  for (std::size_t i = 0; i + 1 < rim_.size() && least > floor; ++i)
+    least = std::min(least, angle_margin(p, rim_[i], rim_[i + 1], *goal_.angle, *goal_.max_angle));
+  return least;
+}
+
 bool Relocator::acceptable(const Mesh& m, Predicates& pred, const EncroachRule& rule, const Point& p,
                            double before) const {
-  if (!(least_angle(p, before + kSlack) > before + kSlack)) return false;
+  if (!(measure(p, before + kSlack) > before + kSlack)) return false;
   const std::size_t n = star_.out.size();
   for (std::size_t i = 0; i < n; ++i)
     if (!(pred.orient2d(p, m.points[star_.ring[i]], m.points[star_.ring[i + 1]]) > 0.0)) return false;
@@ -78,8 +88,9 @@ bool Relocator::acceptable(const Mesh& m, Predicates& pred, const EncroachRule& 
   return true;
 }
 
-bool Relocator::relocate(Mesh& m, Predicates& pred, const EncroachRule& rule, EdgeRef first) {
+bool Relocator::relocate(Mesh& m, Predicates& pred, const EncroachRule& rule, EdgeRef first, StarGoal goal) {
   if (!gather_star(m, first, star_)) return false;
+  goal_ = goal;
   read_rim(m);
   const VertexId v = m.org(first);
   const Point old = m.points[v];
@@ -87,13 +98,13 @@ bool Relocator::relocate(Mesh& m, Predicates& pred, const EncroachRule& rule, Ed
   for (VertexId w : star_.ring) least = std::min(least, std::hypot(m.points[w].x - old.x, m.points[w].y - old.y));
   double h = 0.1 * least;
   Point at = old;
-  double best = least_angle(old, 0.0);
+  double best = measure(old, -INFINITY);
   for (int k = 0; k < kSearchSteps && h > 0.0; ++k) {
     Point pick = at;
     double gain = best;
     for (const auto& d : kCompassDirections) {
       const Point p{at.x + h * d[0], at.y + h * d[1]};
-      const double q = least_angle(p, gain + kSlack);
+      const double q = measure(p, gain + kSlack);
       if (q > gain + kSlack) gain = q, pick = p;
     }
     if (pick != at && acceptable(m, pred, rule, pick, best)) {

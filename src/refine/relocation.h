@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "geometry/encroachment.h"
+#include "geometry/mesh_bounds.h"
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
 #include "mesh/star.h"
@@ -26,23 +27,33 @@ namespace deltri {
 // shortest-edge order; refinement.md).
 inline constexpr double kRelocationsPerVertex = 4.0;
 
+// What a move raises: the star's smallest angle, or, for a triangle bad only for an angle above
+// --max-angle whose point the guard refused, the star's least margin against both angle bounds
+// (criteria.h, angle_margin), so that an obtuse corner can open up without a new vertex.
+struct StarGoal {
+  const AngleBound* angle = nullptr;             // null: the smallest angle alone
+  const LargestAngleBound* max_angle = nullptr;
+};
+
 class Relocator {
  public:
-  // Moves org(first), a free vertex, to raise its star's smallest angle; true when it moved. The
-  // star's edges leaving it are in star_edges() afterwards.
-  bool relocate(Mesh& mesh, Predicates& pred, const EncroachRule& rule, EdgeRef first);
+  // Moves org(first), a free vertex, to raise its star's measure under `goal`; true when it moved.
+  // The star's edges leaving it are in star_edges() afterwards.
+  bool relocate(Mesh& mesh, Predicates& pred, const EncroachRule& rule, EdgeRef first, StarGoal goal = {});
   const std::vector<EdgeRef>& star_edges() const { return star_.out; }
 
  private:
   // sin^2 of the smallest angle of the star with its centre at p, or some value at or below floor
   // once that is below it (a candidate no better than floor is dropped whatever its exact measure).
   double least_angle(const Point& p, double floor) const;
+  double measure(const Point& p, double floor) const;  // least_angle, or the least margin under goal_
   void read_rim(const Mesh& mesh);
   bool acceptable(const Mesh& mesh, Predicates& pred, const EncroachRule& rule, const Point& p, double before) const;
   Star star_;  // the moving vertex's star (mesh/star.h)
   std::vector<Point> rim_;     // the points of star_.ring
   std::vector<double> rim2_;   // rim2_[i]: |rim_[i] rim_[i + 1]|^2
   mutable std::size_t worst_ = 0;  // where least_angle found the smallest last (where it starts)
+  StarGoal goal_;                  // the current move's
 };
 
 }  // namespace deltri

@@ -152,6 +152,8 @@ class Terminator {
   std::array<VertexId, 2> sure_fire_ancestors(EdgeRef shortest) const;
   bool budget_left();                   // the Steiner cap and -S
   bool relocate_corners(TriangleId t);  // relocation.h: true when a corner of t moved
+  void open_obtuse_corner(TriangleId t, const Assessment& a);  // after a guard refusal (relocation.h)
+  Outcome refused_for(TriangleId t, const Assessment& a, Outcome refusal);  // the same for a refused point
   double floor_at(const Point& p) const;  // the guard's edge floor where p lies
   double floor_for(const Assessment& a, const Point& p) const;  // the floor for splitting that triangle
   // assess_triangle plus the equal-shell exemption (shell_exempt), under t's bound (rules_for);

@@ -45,7 +45,7 @@ Outcome Terminator::insert_point(TriangleId t, const Assessment& a, const Candid
   // l.18 with a subsegment that -Y/-YY keep whole: nothing may be split, so t stays as it is
   // (counted by the closing survey).
   if (kept_.refuses_insertion(*this, c.point, t)) return Outcome::KeptBoundary;
-  if (const auto refusal = guard_insertion(a, c, probe.insertion_radius)) return *refusal;
+  if (const auto refusal = guard_insertion(a, c, probe.insertion_radius)) return refused_for(t, a, *refusal);
   return insert_free_vertex(c.point, probe);
 }
 
@@ -71,12 +71,12 @@ Outcome Terminator::split_encroached_instead(const QueuedTriangle& entry, const 
     if (split_allowed(s, a, d)) enqueue_subsegment(s);    // l.21-22
   if (encroached_.empty()) return Outcome::Declined;  // l.23: never try t again
   // l.24-25, in the other order: t goes back only if something was split, so that a guard refusal
-  // cannot repeat the same attempt forever. Splits owed to a size bound meet only the precision
-  // floor, as t itself does (floor_for).
+  // cannot repeat the same attempt forever (nothing split: an obtuse-only t's corners may move instead).
+  // Splits owed to a size bound meet only the precision floor, as t itself does (floor_for).
   if (policy_.tracks_split_radii) sure_fire_parents_ = sure_fire_ancestors(a.shape.shortest);
   const std::uint64_t splits = split_encroached_subsegments(true, a.too_large);
   sure_fire_parents_ = {kNone, kNone};
-  if (splits > 0 && is_current(mesh_, entry)) enqueue_if_bad(entry.triangle);
+  if (is_current(mesh_, entry)) splits > 0 ? enqueue_if_bad(entry.triangle) : open_obtuse_corner(entry.triangle, a);
   return Outcome::Deferred;
 }
 

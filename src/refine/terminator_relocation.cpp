@@ -25,4 +25,29 @@ bool Terminator::relocate_corners(TriangleId t) {
   return moved;
 }
 
+// A triangle bad only for an angle above --max-angle whose point or subsegment split the guard
+// refused (norway.poly: a 103-degree triangle over a subsegment 1.7 times the floor, which no split
+// can halve above it): its free corners move instead where their stars' least margin against both
+// angle bounds rises (StarGoal), which opens the obtuse corner without a shorter edge. A move makes
+// no star worse and adds no vertex; kRelocationsPerVertex bounds them, as above.
+void Terminator::open_obtuse_corner(TriangleId t, const Assessment& a) {
+  if (!a.too_obtuse || a.skinny || a.too_large) return;
+  const Criteria& rules = rules_for(t);
+  const StarGoal goal{&rules.angle, &rules.max_angle};
+  for (unsigned k = 0; k < 3; ++k) {
+    const EdgeRef e = edge_of(t, k);
+    if (mesh_.kind[mesh_.org(e)] != VertexKind::Free) continue;
+    if (relocations_ >= static_cast<std::uint64_t>(kRelocationsPerVertex * mesh_.vertex_count())) return;
+    if (!relocator_.relocate(mesh_, pred_, policy_.rule, e, goal)) continue;
+    ++relocations_;
+    for (const EdgeRef s : relocator_.star_edges()) enqueue_if_bad(triangle_of(s));
+    if (!assess(t).bad()) return;
+  }
+}
+
+Outcome Terminator::refused_for(TriangleId t, const Assessment& a, Outcome refusal) {
+  if (refusal == Outcome::BelowFloor) open_obtuse_corner(t, a);
+  return refusal;
+}
+
 }  // namespace deltri

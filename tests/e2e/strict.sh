@@ -9,6 +9,7 @@
 #     computed here from the .node/.ele (the causes must add up to the total);
 #   * a run refused for misses the input does not force names them in a warning, exactly (the
 #     line's numbers are the JSON's), unless refinement's own "triangles miss" warning does;
+#   * misses forced at crossings of input segments are said in a warning, exactly, and only then;
 #   * the same run with -V prints the same counts in its "Bounds (final mesh)" lines.
 set -u
 deltri=$1 input=$2 switches=$3 expect=$4 warning=$5 json_check=$6
@@ -86,11 +87,20 @@ reason = (f"deltri: warning: {name}: {q['triangles_missing_bounds_not_forced_by_
           f"{causes['steiner_limits']} at -S/-Y limits, {causes['other']} other)")
 if q["triangles_missing_bounds_not_forced_by_input"] > 0 and reason not in stderr and not any(refine_line.match(l) for l in stderr):
     fail(f"stderr lacks the line '{reason}'")
+crossings = q["triangles_missing_bounds_at_input_crossings"]
+if crossings > causes["small_input_angle"] + causes.get("large_input_angle", 0):
+    fail(f"{crossings} misses at crossings of input segments, more than the {causes} forced by input angles")
+said = (f"deltri: warning: {name}: {crossings} {'triangle misses' if crossings == 1 else 'triangles miss'} the requested "
+        f"bounds next to crossings of input segments, forced by the angles the segments cross at")
+if (said in stderr) != (crossings > 0):
+    fail(f"stderr {'lacks' if crossings else 'has'} the line '{said}'")
 verbose = open("verbose/report").read()
 want = (f"Bounds (final mesh): {q['triangles_missing_bounds']} triangles miss them ({q['triangles_below_angle_bound']} below the angle, "
         f"{q['triangles_above_size_bound']} above the size)\n  by cause: {causes['small_input_angle']} next to a small input angle, "
         f"{causes['repaired_crossing_or_overlap']} next to a repaired crossing or overlap, {causes['double_precision']} at the limit "
         f"of double precision, {causes['steiner_limits']} at -S/-Y limits, {causes['other']} other\n")
+if crossings:
+    want += f"  of those forced by input angles, {crossings} at crossings of input segments\n"
 if want not in verbose:
     fail(f"-V does not print the JSON's counts:\n{want}")
 if not eval(json_check):

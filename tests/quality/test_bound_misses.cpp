@@ -91,10 +91,15 @@ TEST(an_edge_along_a_segment_to_the_junction_spans_no_wedge) {
   CHECK_EQ(b.other, 1u);
 }
 
-TEST(the_same_angle_at_a_crossing_deltri_made_is_a_repair_not_the_input) {
+// Where two input segments cross, deltri makes the vertex (a Segment vertex on two segments), but
+// the angle they cross at is the input's: every mesh keeping the segments has it.
+TEST(the_same_angle_at_a_crossing_deltri_made_is_the_inputs) {
   const BoundMisses b = count_bound_misses(wedge(true, VertexKind::Segment), angle(30));
-  CHECK_EQ(b.repaired_input, 1u);
-  CHECK_EQ(b.not_forced_by_input(), 1u);
+  CHECK_EQ(b.small_input_angle, 1u);
+  CHECK_EQ(b.at_input_crossings, 1u);
+  CHECK_EQ(b.repaired_input, 0u);
+  CHECK_EQ(b.not_forced_by_input(), 0u);
+  CHECK_EQ(count_bound_misses(wedge(true, VertexKind::Input), angle(30)).at_input_crossings, 0u);
   // Beyond 60 degrees an angle explains nothing: the 5.71 degree triangle is not inside a small sector
   // when the segments at o meet at 90 degrees (o-a and o-(0,10)).
   Mesh m = mesh_of({{0, 0}, {10, 0}, {10, 1}, {0, 10}});
@@ -108,6 +113,12 @@ TEST(the_same_angle_at_a_crossing_deltri_made_is_a_repair_not_the_input) {
   const BoundMisses wide = count_bound_misses(m, angle(30));
   CHECK_EQ(wide.total, 1u);
   CHECK_EQ(wide.other, 1u);
+  // The same at a crossing deltri made: a repair's neighbour the crossing's angles do not explain.
+  m.kind[0] = VertexKind::Segment;
+  const BoundMisses crossing = count_bound_misses(m, angle(30));
+  CHECK_EQ(crossing.repaired_input, 1u);
+  CHECK_EQ(crossing.at_input_crossings, 0u);
+  CHECK_EQ(crossing.not_forced_by_input(), 1u);
 }
 
 namespace {
@@ -432,20 +443,20 @@ TEST(an_angle_above_the_bound_between_two_input_segments_is_forced_by_the_input)
   CHECK_EQ(both.below_angle, 0u);
   CHECK_EQ(both.large_input_angle, 1u);
   CHECK_EQ(count_bound_misses(open_corner(2, VertexKind::Input), max_angle(120)).total, 0u);
+  // The same between two segments crossing at a vertex deltri made: the input's angle all the same.
+  const BoundMisses crossing = count_bound_misses(open_corner(2, VertexKind::Segment), max_angle(90));
+  CHECK_EQ(crossing.large_input_angle, 1u);
+  CHECK_EQ(crossing.at_input_crossings, 1u);
+  CHECK_EQ(crossing.not_forced_by_input(), 0u);
 }
 
 // The same angle with only one side on a segment is not the input's: a point splits it (other).
-// Between two segments that meet at a vertex deltri made (a crossing), it is a repair, not forced.
 TEST(an_angle_above_the_bound_not_between_two_input_segments_is_not_forced) {
   const BoundMisses one = count_bound_misses(open_corner(1, VertexKind::Input), max_angle(90));
   CHECK_EQ(one.above_max_angle, 1u);
   CHECK_EQ(one.large_input_angle, 0u);
   CHECK_EQ(one.other, 1u);
   CHECK_EQ(one.not_forced_by_input(), 1u);
-  const BoundMisses repaired = count_bound_misses(open_corner(2, VertexKind::Segment), max_angle(90));
-  CHECK_EQ(repaired.large_input_angle, 0u);
-  CHECK_EQ(repaired.repaired_input, 1u);
-  CHECK_EQ(repaired.not_forced_by_input(), 1u);
 }
 
 // Part of a large input angle is not the angle: the 116.57 degrees at o between segments o-a and
