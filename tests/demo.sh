@@ -47,6 +47,8 @@ misses_note() {
     n=$(field "$1" "${cause%%:*}")
     [ "${n:-0}" != 0 ] && why="${why:+$why, }$n ${cause#*:}"
   done
+  crossings=$(field "$1" triangles_missing_bounds_at_input_crossings)
+  [ "${crossings:-0}" != 0 ] && why="$why ($crossings of them at crossings of input segments)"
   echo "$missing < 30: $why"
 }
 
