@@ -66,13 +66,16 @@ def run(argv, cwd, timeout):
 
 
 def interleaved(make_argv, setup, timeout):
-    """Runs each program --runs times, alternating, each in a fresh folder set up by setup(dir);
+    """Runs each program --runs times, alternating (the order reversed every other run), each in a
+    fresh folder set up by setup(dir);
     returns {name: (median wall, max peak KiB, stderr bytes)} or the failure's description."""
     walls = {name: [] for name, _ in programs}
     peaks = {name: 0 for name, _ in programs}
     errs = {name: 0 for name, _ in programs}
-    for _ in range(args.runs):
-        for name, prog in programs:
+    for r in range(args.runs):
+        # The order alternates from run to run: a run can pay for what the one before it left
+        # (deleted inodes that file creation steps past, a cold cache).
+        for name, prog in programs if r % 2 == 0 else programs[::-1]:
             work = tempfile.mkdtemp()
             try:
                 argv = setup(work) or []
