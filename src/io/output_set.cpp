@@ -41,7 +41,7 @@ std::string directory_of(const std::string& path) {
 std::string file_name_of(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 // The longest file name the directory takes (255 on most file systems).
-std::size_t longest_name(const std::string& dir) {
+[[maybe_unused]] std::size_t longest_name(const std::string& dir) {
 #ifdef DELTRI_POSIX_OUTPUT
   errno = 0;
   const long n = pathconf(dir.c_str(), _PC_NAME_MAX);
@@ -67,7 +67,6 @@ struct Target {
   std::uint64_t device = 0, inode = 0;
   bool identified = false;
   std::string name;
-  std::size_t longest = 255;  // the directory's longest file name
   std::tuple<bool, std::uint64_t, std::uint64_t, std::string, std::string> key() const {
     return {identified, device, inode, identified ? std::string() : dir, name};
   }
@@ -75,21 +74,22 @@ struct Target {
   bool operator==(const Target& o) const { return key() == o.key(); }
 };
 
-// The targets of `paths`, each directory asked once for its identity and longest name, however
-// many outputs it holds.
+// The targets of `paths`. A directory is asked for its identity (once, however many outputs it
+// holds) only where the outputs spell two or more directories: with one spelling, the spelling
+// tells the files apart and orders them as the identity would (by name within the directory), so
+// the order every run takes its temporaries in stays one order.
 std::vector<Target> targets_of(const std::vector<std::string>& paths) {
   std::vector<Target> targets;
-  for (const std::string& path : paths) {
-    Target t;
-    t.dir = directory_of(path);
-    t.name = file_name_of(path);
-    const auto known = std::find_if(targets.begin(), targets.end(), [&](const Target& o) { return o.dir == t.dir; });
-    if (known != targets.end()) {
-      std::tie(t.identified, t.device, t.inode, t.longest) = std::tuple{known->identified, known->device, known->inode, known->longest};
-      targets.push_back(std::move(t));
+  for (const std::string& path : paths) targets.push_back({directory_of(path), 0, 0, false, file_name_of(path)});
+  const bool one_spelling = std::all_of(targets.begin(), targets.end(), [&](const Target& t) { return t.dir == targets[0].dir; });
+  if (one_spelling) return targets;
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    Target& t = targets[k];
+    const auto known = std::find_if(targets.begin(), targets.begin() + static_cast<std::ptrdiff_t>(k), [&](const Target& o) { return o.dir == t.dir; });
+    if (known != targets.begin() + static_cast<std::ptrdiff_t>(k)) {
+      std::tie(t.identified, t.device, t.inode) = std::tuple{known->identified, known->device, known->inode};
       continue;
     }
-    t.longest = longest_name(t.dir);
 #ifdef DELTRI_POSIX_OUTPUT
     struct stat st;
     if (stat(t.dir.c_str(), &st) == 0) {
@@ -98,7 +98,6 @@ std::vector<Target> targets_of(const std::vector<std::string>& paths) {
       t.identified = true;
     }
 #endif
-    targets.push_back(std::move(t));
   }
   return targets;
 }
@@ -115,6 +114,7 @@ std::uint64_t name_hash(const std::string& name) {
 // final name alone is what lets a later run of the same output find what a killed run left (no
 // directory scan) and makes two runs writing one output meet at one file, whose lock puts them in
 // turn (no lock file); the hash keeps names apart where FINAL has to be cut short.
+constexpr std::size_t kAnyLength = SIZE_MAX;  // a directory's longest name not asked: the whole name
 std::string temporary_name(const std::string& final_path, std::size_t longest) {
   const std::string name = file_name_of(final_path);
   char hex[17];
@@ -123,6 +123,8 @@ std::string temporary_name(const std::string& final_path, std::size_t longest) {
   const std::string dir_part = final_path.substr(0, final_path.size() - name.size());
   return dir_part + name.substr(0, stem_size(name.size(), suffix.size(), longest)) + suffix;
 }
+
+constexpr int kNameTooLong = -2;  // hold_temporary's answer to a name the directory does not take
 
 #ifdef DELTRI_POSIX_OUTPUT
 // Whether the open file `fd` is still the one at `path` (another run may have renamed it away
@@ -140,7 +142,8 @@ bool still_at(int fd, const std::string& path) {
 // so runs creating files in one folder took turns at it; an unnamed inode is made without that
 // lock. Locked before it has a name, the file is never seen unlocked. Returns -1 where the kernel or
 // file system does not allow this (then `works` is cleared: the run's other outputs go by name at
-// once), or the name is taken: the caller then goes by the name.
+// once), or the name is taken: the caller then goes by the name; kNameTooLong for a name longer
+// than the directory takes.
 int create_locked(const std::string& temp, bool& works) {
   const int fd = open(directory_of(temp).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
   if (fd < 0) {
@@ -149,6 +152,10 @@ int create_locked(const std::string& temp, bool& works) {
   }
   if (flock(fd, LOCK_EX | LOCK_NB) == 0) {
     if (linkat(fd, "", AT_FDCWD, temp.c_str(), AT_EMPTY_PATH) == 0) return fd;
+    if (errno == ENAMETOOLONG) {
+      close(fd);
+      return kNameTooLong;
+    }
     if (errno != EEXIST) {  // AT_EMPTY_PATH asks for CAP_DAC_READ_SEARCH; /proc does not
       char self[40];
       std::snprintf(self, sizeof self, "/proc/self/fd/%d", fd);
@@ -167,11 +174,12 @@ int create_locked(const std::string& temp, bool& works) {
 // the descriptor, which holds the lock until it is closed. `waited`: another run held it first.
 // `stale`: a file with no holder was there (a killed run's), now emptied for reuse.
 // Where the file system has no flock the temporary is used unlocked, as a run alone would.
-// `unnamed`: whether to try create_locked first (cleared where it cannot work).
+// `unnamed`: whether to try create_locked first (cleared where it cannot work). kNameTooLong
+// (nothing made) where `temp` is longer than the directory takes.
 int hold_temporary(const std::string& temp, const std::string& final_path, bool& waited, bool& stale, bool& unnamed) {
 #ifdef O_TMPFILE
   if (unnamed)
-    if (const int fd = create_locked(temp, unnamed); fd >= 0) return fd;
+    if (const int fd = create_locked(temp, unnamed); fd >= 0 || fd == kNameTooLong) return fd;
 #else
   (void)unnamed;
 #endif
@@ -183,6 +191,7 @@ int hold_temporary(const std::string& temp, const std::string& final_path, bool&
       fd = open(temp.c_str(), O_WRONLY | O_CLOEXEC | O_NOFOLLOW);
       if (fd < 0 && errno == ENOENT) continue;  // renamed or removed meanwhile: create it now
     }
+    if (fd < 0 && errno == ENAMETOOLONG) return kNameTooLong;
     if (fd < 0) fail(final_path, "cannot be created: " + errno_text(errno));
     if (flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
       waited = true;
@@ -206,15 +215,24 @@ int hold_temporary(const std::string& temp, const std::string& final_path, bool&
 
 // An identity of what is at `path` now (inode, size and time; of a symbolic link itself, which is
 // what a rename replaces), to see whether another process replaced it; empty when nothing is
-// there. Throws OutputError when it is something a rename could not replace (a directory, say).
-std::string file_identity(const std::string& path) {
+// there. Throws OutputError when it is something a rename could not replace (a directory, say), or
+// (with `inputs`) one of the files this run reads, also through a symbolic link.
+std::string file_identity(const std::string& path, const std::vector<FileId>* inputs = nullptr) {
 #ifdef DELTRI_POSIX_OUTPUT
   struct stat st;
   if (lstat(path.c_str(), &st) != 0) return {};
   if (!S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode)) fail(path, "cannot be replaced: it exists and is not a regular file");
+  if (inputs && !inputs->empty()) {
+    struct stat target = st;
+    if (S_ISLNK(st.st_mode) && stat(path.c_str(), &target) != 0) target = st;
+    const FileId id{static_cast<std::uint64_t>(target.st_dev), static_cast<std::uint64_t>(target.st_ino)};
+    if (std::find(inputs->begin(), inputs->end(), id) != inputs->end())
+      fail(path, "is an input of this run, not overwritten (no files written)");
+  }
   return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" + std::to_string(st.st_size) + ":" +
          std::to_string(st.st_mtim.tv_sec) + "." + std::to_string(st.st_mtim.tv_nsec);
 #else
+  (void)inputs;
   std::error_code ec;
   const auto status = std::filesystem::symlink_status(path, ec);
   if (!ec && status.type() != std::filesystem::file_type::not_found && status.type() != std::filesystem::file_type::regular &&
@@ -434,10 +452,17 @@ class HeldTemporaries {
   // The targets in the order they are taken and renamed (the last one renamed last).
   const std::vector<std::size_t>& order() const { return order_; }
   int fd(std::size_t t) const { return fds_[t]; }
-  void hold(std::size_t t, const std::string& temp, const std::string& final_path, CommitNotes& notes) {
+  // Holds `temp`, cut short to the directory's longest name where the whole is longer (asked only
+  // then: a statfs a run saved).
+  void hold(std::size_t t, std::string& temp, const std::string& final_path, CommitNotes& notes) {
 #ifdef DELTRI_POSIX_OUTPUT
     bool stale = false;
     fds_[t] = hold_temporary(temp, final_path, notes.waited_for_other_run, stale, unnamed_);
+    if (fds_[t] == kNameTooLong) {
+      temp = temporary_name(final_path, longest_name(directory_of(final_path)));
+      fds_[t] = hold_temporary(temp, final_path, notes.waited_for_other_run, stale, unnamed_);
+      if (fds_[t] == kNameTooLong) fail(final_path, "cannot be created: " + errno_text(ENAMETOOLONG));
+    }
     notes.stale_temporaries_removed += stale;
 #else
     (void)temp, (void)final_path, (void)notes;
@@ -469,8 +494,8 @@ CommitNotes OutputSet::commit(const CommitListener& listener) {
   std::vector<std::string> temps(files_.size()), held(files_.size()), finals, before(files_.size());
   std::vector<int> fds(files_.size(), -1);
   for (std::size_t t = 0; t < paths.size(); ++t) {
-    temps[file_of[t]] = temporary_name(paths[t], targets[t].longest);
-    before[file_of[t]] = file_identity(paths[t]);
+    temps[file_of[t]] = temporary_name(paths[t], kAnyLength);
+    before[file_of[t]] = file_identity(paths[t], &inputs_);
   }
   for (const File& f : files_) finals.push_back(f.final_path);
   struct Unlisten {

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <functional>
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/text_writer.h"
@@ -42,6 +44,9 @@ struct CommitListener {
 };
 
 class RangePool;
+
+// A file by device and inode.
+using FileId = std::pair<std::uint64_t, std::uint64_t>;
 
 class OutputSet {
  public:
@@ -94,6 +99,11 @@ class OutputSet {
 
   std::size_t size() const { return files_.size(); }
 
+  // The files this run reads: commit() refuses an output that is one of them (by another name or
+  // through a symbolic link too) with OutputError before anything is written. Checked in the one
+  // look commit() takes at each output name before writing, not in a second one of its own.
+  void keep_intact(std::vector<FileId> inputs) { inputs_ = std::move(inputs); }
+
  private:
   struct File {
     std::string final_path;
@@ -104,6 +114,7 @@ class OutputSet {
   static void write_standard_output(File& f);
   std::size_t workers_;
   std::vector<File> files_;
+  std::vector<FileId> inputs_;
 };
 
 }  // namespace deltri

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include <sys/stat.h>
+
 #include "harness/check.h"
 #include "io/output_set.h"
 #include "io_test_util.h"
@@ -185,6 +187,41 @@ TEST(output_set_writes_names_near_the_longest) {
   set.commit();
   CHECK_EQ(iotest::read_file((dir / name).string()), "ele\n");
   CHECK_EQ(files_in(dir), 1u);
+}
+
+TEST(output_set_keeps_inputs_intact) {
+  // An output that is an input of the run (by its own name, or a symbolic link to it) is refused
+  // before anything is written; an output beside them is not (the check looks at each name once).
+  const fs::path dir = iotest::scratch_dir() / "out_inputs";
+  fs::create_directories(dir);
+  iotest::write_file("out_inputs/in.poly", "input\n");
+  const fs::path input = dir / "in.poly", link = dir / "link.msh";
+  fs::remove(link);
+  fs::create_symlink("in.poly", link);
+  struct stat st;
+  CHECK(stat(input.c_str(), &st) == 0);
+  const FileId id{static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino)};
+  for (const fs::path& named : {input, link}) {
+    OutputSet set;
+    set.keep_intact({id});
+    set.add((dir / "in.1.node").string(), "node\n");
+    set.add(named.string(), "not the input\n");
+    bool threw = false;
+    try {
+      set.commit();
+    } catch (const OutputError& e) {
+      threw = std::string(e.what()) == named.string() + ": is an input of this run, not overwritten (no files written)";
+    }
+    CHECK(threw);
+    CHECK_EQ(iotest::read_file(input.string()), "input\n");
+    CHECK(fs::is_symlink(link));
+    CHECK_EQ(files_in(dir), 2u);
+  }
+  OutputSet set;
+  set.keep_intact({id});
+  set.add((dir / "in.1.node").string(), "node\n");
+  set.commit();
+  CHECK_EQ(files_in(dir), 3u);
 }
 
 TEST(output_set_tells_the_listener_each_phase) {
