@@ -136,6 +136,16 @@ bool still_at(int fd, const std::string& path) {
 }
 
 #ifdef O_TMPFILE
+#define DELTRI_UNNAMED_OUTPUT 1
+// Links the unnamed file `fd` at `path`: 0, or the errno (EEXIST: the name is taken).
+int link_unnamed(int fd, const std::string& path) {
+  if (linkat(fd, "", AT_FDCWD, path.c_str(), AT_EMPTY_PATH) == 0) return 0;
+  if (errno == EEXIST) return EEXIST;
+  char self[40];  // AT_EMPTY_PATH asks for CAP_DAC_READ_SEARCH; /proc does not
+  std::snprintf(self, sizeof self, "/proc/self/fd/%d", fd);
+  return linkat(AT_FDCWD, self, AT_FDCWD, path.c_str(), AT_SYMLINK_FOLLOW) == 0 ? 0 : errno;
+}
+
 // Creates `temp` already locked: the inode is made unnamed (O_TMPFILE), locked, then linked at the
 // name. Making the inode is most of the cost of creating a file (ext4 without a journal steps past
 // every inode freed in the last minutes), and an O_CREAT open does it holding the directory's lock,
@@ -151,17 +161,13 @@ int create_locked(const std::string& temp, bool& works) {
     return -1;
   }
   if (flock(fd, LOCK_EX | LOCK_NB) == 0) {
-    if (linkat(fd, "", AT_FDCWD, temp.c_str(), AT_EMPTY_PATH) == 0) return fd;
-    if (errno == ENAMETOOLONG) {
+    const int error = link_unnamed(fd, temp);
+    if (error == 0) return fd;
+    if (error == ENAMETOOLONG) {
       close(fd);
       return kNameTooLong;
     }
-    if (errno != EEXIST) {  // AT_EMPTY_PATH asks for CAP_DAC_READ_SEARCH; /proc does not
-      char self[40];
-      std::snprintf(self, sizeof self, "/proc/self/fd/%d", fd);
-      if (linkat(AT_FDCWD, self, AT_FDCWD, temp.c_str(), AT_SYMLINK_FOLLOW) == 0) return fd;
-      works = errno == EEXIST;
-    }
+    works = error == EEXIST;
   } else {
     works = false;
   }
@@ -213,6 +219,14 @@ int hold_temporary(const std::string& temp, const std::string& final_path, bool&
 }
 #endif
 
+#ifdef DELTRI_POSIX_OUTPUT
+// A file's inode, size and time as file_identity() tells them.
+std::string identity_text(const struct stat& st) {
+  return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" + std::to_string(st.st_size) + ":" +
+         std::to_string(st.st_mtim.tv_sec) + "." + std::to_string(st.st_mtim.tv_nsec);
+}
+#endif
+
 // An identity of what is at `path` now (inode, size and time; of a symbolic link itself, which is
 // what a rename replaces), to see whether another process replaced it; empty when nothing is
 // there. Throws OutputError when it is something a rename could not replace (a directory, say), or
@@ -229,8 +243,7 @@ std::string file_identity(const std::string& path, const std::vector<FileId>* in
     if (std::find(inputs->begin(), inputs->end(), id) != inputs->end())
       fail(path, "is an input of this run, not overwritten (no files written)");
   }
-  return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" + std::to_string(st.st_size) + ":" +
-         std::to_string(st.st_mtim.tv_sec) + "." + std::to_string(st.st_mtim.tv_nsec);
+  return identity_text(st);
 #else
   (void)inputs;
   std::error_code ec;
@@ -436,16 +449,20 @@ std::exception_ptr rename_into_place(std::vector<std::string>& temps, const std:
   return error;
 }
 
+// The targets in the one order every run takes them in: by directory, then by name.
+std::vector<std::size_t> taking_order(const std::vector<Target>& targets) {
+  std::vector<std::size_t> order(targets.size());
+  for (std::size_t t = 0; t < order.size(); ++t) order[t] = t;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return targets[a] < targets[b]; });
+  return order;
+}
+
 // The temporaries a commit holds: taken in one order by every run (directory, then final name),
 // so that two runs with some output names in common never wait for each other in a circle, and
 // let go (closed) only after the renames.
 class HeldTemporaries {
  public:
-  explicit HeldTemporaries(const std::vector<Target>& targets) : fds_(targets.size(), -1) {
-    order_.resize(targets.size());
-    for (std::size_t t = 0; t < order_.size(); ++t) order_[t] = t;
-    std::sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) { return targets[a] < targets[b]; });
-  }
+  explicit HeldTemporaries(const std::vector<Target>& targets) : order_(taking_order(targets)), fds_(targets.size(), -1) {}
   ~HeldTemporaries() { release(); }
   HeldTemporaries(const HeldTemporaries&) = delete;
   HeldTemporaries& operator=(const HeldTemporaries&) = delete;
@@ -483,35 +500,125 @@ class HeldTemporaries {
 
 }  // namespace
 
-CommitNotes OutputSet::commit(const CommitListener& listener) {
+// What commit() works from: the output files' names and targets, the temporaries' names, what was
+// at each name when the run looked first, and the notes so far.
+struct OutputSet::Plan {
   std::vector<std::string> paths;  // of the files, standard output left out
   std::vector<std::size_t> file_of;  // the file of each path
-  for (std::size_t k = 0; k < files_.size(); ++k)
-    if (files_[k].final_path != kStandardOutput) paths.push_back(files_[k].final_path), file_of.push_back(k);
-  const std::vector<Target> targets = targets_of(paths);
-  refuse_duplicate_names(paths, targets);
+  std::vector<Target> targets;  // of the paths
+  std::vector<std::string> temps, finals, before;  // of the files
   CommitNotes notes;
-  std::vector<std::string> temps(files_.size()), held(files_.size()), finals, before(files_.size());
-  std::vector<int> fds(files_.size(), -1);
-  for (std::size_t t = 0; t < paths.size(); ++t) {
-    temps[file_of[t]] = temporary_name(paths[t], kAnyLength);
-    before[file_of[t]] = file_identity(paths[t], &inputs_);
+};
+
+CommitNotes OutputSet::commit(const CommitListener& listener) {
+  Plan p;
+  for (std::size_t k = 0; k < files_.size(); ++k)
+    if (files_[k].final_path != kStandardOutput) p.paths.push_back(files_[k].final_path), p.file_of.push_back(k);
+  p.targets = targets_of(p.paths);
+  refuse_duplicate_names(p.paths, p.targets);
+  p.temps.resize(files_.size());
+  p.before.resize(files_.size());
+  for (std::size_t t = 0; t < p.paths.size(); ++t) {
+    p.temps[p.file_of[t]] = temporary_name(p.paths[t], kAnyLength);
+    p.before[p.file_of[t]] = file_identity(p.paths[t], &inputs_);
   }
-  for (const File& f : files_) finals.push_back(f.final_path);
+  for (const File& f : files_) p.finals.push_back(f.final_path);
   struct Unlisten {
     const CommitListener& l;
     ~Unlisten() {
       if (l.pending) l.pending({}, {});
     }
   } unlisten{listener};
+  if (!put_unnamed(p, listener)) put_by_temporaries(p, listener, false);
+  for (const File& f : files_) {
+    if (f.final_path != kStandardOutput) continue;
+    errno = 0;
+    if (std::fwrite(f.contents.data(), 1, f.contents.size(), stdout) != f.contents.size() || std::fflush(stdout) != 0)
+      fail("standard output", errno_text(errno));
+  }
+  files_.clear();
+  return p.notes;
+}
+
+// Where every output name and every temporary name is free (a batch's fresh folder), each file is
+// written to an unnamed file and then linked at its final name: one new directory entry a file,
+// with no lock and no rename. A run on other names meets nothing here. Two runs on one name
+// cannot both link it: the one that finds a name taken (or any other file there, from any
+// process) puts its whole set in place again by temporaries (put_by_temporaries, files written
+// anew), which meets every other run as that protocol does, so the last run to put a set in place
+// leaves all of it. A run by temporaries that renames over a name this run linked does so before
+// this run links its later names (or this run finds one taken and goes by temporaries after it),
+// since both go through the names in one order: either way no two runs' files are mixed. A
+// temporary already at one of the names (a killed run's, or one another run is writing) sends the
+// run by temporaries from the start, which meets the other run or removes the killed one's.
+// Signals wait until the set is in place (CommitListener). Returns false, having changed nothing,
+// where this does not apply or the file system makes no unnamed files.
+bool OutputSet::put_unnamed(Plan& p, const CommitListener& listener) {
+#ifdef DELTRI_UNNAMED_OUTPUT
+  struct stat st;
+  for (std::size_t t = 0; t < p.paths.size(); ++t)
+    if (!p.before[p.file_of[t]].empty() || lstat(p.temps[p.file_of[t]].c_str(), &st) == 0 || errno != ENOENT) return false;
+  std::vector<int> fds(files_.size(), -1);
+  struct Close {
+    std::vector<int>& fds;
+    ~Close() {
+      for (const int fd : fds)
+        if (fd >= 0) close(fd);
+    }
+  } close_all{fds};
+  for (std::size_t t = 0; t < p.paths.size(); ++t)
+    if ((fds[p.file_of[t]] = open(directory_of(p.paths[t]).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666)) < 0) return false;
+  const std::size_t writers = std::max<std::size_t>(1, workers_);
+  RangePool pool(writers);
+  if (const std::exception_ptr error = run_in_order(files_.size(), writers, [&](std::size_t k) {
+        write_temporary(files_[k], p.temps[k], fds[k], &pool);
+      }, &pool))
+    std::rethrow_exception(error);  // nothing has a name: nothing to remove
+  if (listener.begin_renames && !listener.begin_renames()) throw OutputError("interrupted before the outputs were put in place");
+  struct EndRenames {
+    const CommitListener& l;
+    ~EndRenames() {
+      if (l.end_renames) l.end_renames();
+    }
+  } end_renames{listener};
+  const std::vector<std::size_t> order = taking_order(p.targets);
+  std::size_t linked = 0;
+  for (; linked < order.size(); ++linked) {
+    const std::size_t t = order[linked];
+    const int error = link_unnamed(fds[p.file_of[t]], p.paths[t]);
+    if (error == EEXIST) break;
+    if (error != 0) fail(p.paths[t], "cannot be put in place: " + errno_text(error));
+  }
+  if (linked == order.size()) return true;
+  for (std::size_t i = 0; i < linked; ++i) {  // this run's own files are not "changed meanwhile"
+    const std::size_t k = p.file_of[order[i]];
+    p.before[k] = fstat(fds[k], &st) == 0 ? identity_text(st) : std::string();
+  }
+  put_by_temporaries(p, listener, true);
+  return true;
+#else
+  (void)p, (void)listener;
+  return false;
+#endif
+}
+
+// Writes every file to its temporary FINAL.tmp.HASH, held locked from its creation until after
+// the renames, checks the final names, then renames the temporaries into place (see commit()).
+// `renames_begun`: called by put_unnamed() after some files were linked (the listener was told).
+void OutputSet::put_by_temporaries(Plan& p, const CommitListener& listener, bool renames_begun) {
+  CommitNotes& notes = p.notes;
+  std::vector<std::string>& temps = p.temps;
+  const std::vector<std::string>& finals = p.finals;
+  std::vector<std::string> held(files_.size());
+  std::vector<int> fds(files_.size(), -1);
   // A temporary that cannot be created fails its file's write, so that with several failures the
   // one of the earliest-added file is still the one reported.
   std::vector<std::exception_ptr> cannot_hold(files_.size());
-  HeldTemporaries holder(targets);
+  HeldTemporaries holder(p.targets);
   for (const std::size_t t : holder.order()) {
-    const std::size_t k = file_of[t];
+    const std::size_t k = p.file_of[t];
     try {
-      holder.hold(t, temps[k], paths[t], notes);
+      holder.hold(t, temps[k], p.paths[t], notes);
     } catch (...) {
       cannot_hold[k] = std::current_exception();
       temps[k].clear();
@@ -534,7 +641,7 @@ CommitNotes OutputSet::commit(const CommitListener& listener) {
   if (!error) {
     try {
       for (std::size_t k = 0; k < files_.size(); ++k)
-        if (!temps[k].empty() && file_identity(files_[k].final_path) != before[k]) ++notes.replaced_meanwhile;
+        if (!temps[k].empty() && file_identity(files_[k].final_path) != p.before[k]) ++notes.replaced_meanwhile;
     } catch (...) {
       error = std::current_exception();
     }
@@ -542,11 +649,11 @@ CommitNotes OutputSet::commit(const CommitListener& listener) {
   // Past this point a signal finishes the renames instead of removing the temporaries left (see
   // cli/interrupt_cleanup.h); if one is already being handled, nothing is renamed.
   bool renaming = false;
-  if (!error && listener.begin_renames && !(renaming = listener.begin_renames()))
+  if (!error && !renames_begun && listener.begin_renames && !(renaming = listener.begin_renames()))
     error = std::make_exception_ptr(OutputError("interrupted before the outputs were put in place"));
   if (!error) {
     std::vector<std::size_t> rename_order;  // files, in the order their temporaries were taken
-    for (const std::size_t t : holder.order()) rename_order.push_back(file_of[t]);
+    for (const std::size_t t : holder.order()) rename_order.push_back(p.file_of[t]);
     error = rename_into_place(temps, finals, rename_order, std::min(workers_, files_.size()));
   }
   if (renaming && listener.end_renames) listener.end_renames();
@@ -556,14 +663,6 @@ CommitNotes OutputSet::commit(const CommitListener& listener) {
     std::rethrow_exception(error);
   }
   holder.release();
-  for (const File& f : files_) {
-    if (f.final_path != kStandardOutput) continue;
-    errno = 0;
-    if (std::fwrite(f.contents.data(), 1, f.contents.size(), stdout) != f.contents.size() || std::fflush(stdout) != 0)
-      fail("standard output", errno_text(errno));
-  }
-  files_.clear();
-  return notes;
 }
 
 }  // namespace deltri
