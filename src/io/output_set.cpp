@@ -551,6 +551,7 @@ CommitNotes OutputSet::commit(const CommitListener& listener) {
 // since both go through the names in one order: either way no two runs' files are mixed. A
 // temporary already at one of the names (a killed run's, or one another run is writing) sends the
 // run by temporaries from the start, which meets the other run or removes the killed one's.
+// A link that fails for another reason goes the same way (the temporaries report what fails).
 // Signals wait until the set is in place (CommitListener). Returns false, having changed nothing,
 // where this does not apply or the file system makes no unnamed files.
 bool OutputSet::put_unnamed(Plan& p, const CommitListener& listener) {
@@ -585,9 +586,9 @@ bool OutputSet::put_unnamed(Plan& p, const CommitListener& listener) {
   std::size_t linked = 0;
   for (; linked < order.size(); ++linked) {
     const std::size_t t = order[linked];
-    const int error = link_unnamed(fds[p.file_of[t]], p.paths[t]);
-    if (error == EEXIST) break;
-    if (error != 0) fail(p.paths[t], "cannot be put in place: " + errno_text(error));
+    // A taken name (EEXIST), or a link the kernel refuses here (no /proc for a caller without
+    // CAP_DAC_READ_SEARCH, say): the temporaries below do without links to final names.
+    if (link_unnamed(fds[p.file_of[t]], p.paths[t]) != 0) break;
   }
   if (linked == order.size()) return true;
   for (std::size_t i = 0; i < linked; ++i) {  // this run's own files are not "changed meanwhile"
