@@ -15,9 +15,9 @@ namespace {
 // What the handler is to do with the published files.
 enum Phase : int {
   kWriting = 0,   // remove the temporaries
-  kRenaming = 1,  // finish the renames
+  kRenaming = 1,  // leave them: the committing thread puts the set in place, then ends the run
   kHandling = 2,  // a handler is removing them: nothing may be renamed any more
-  kFinishing = 3, // a handler is finishing the renames: the temporaries' locks are its until the process ends
+  kDeferred = 3,  // a signal came while renaming: the committing thread ends the run by it afterwards
 };
 
 // The paths are copied into `storage` in normal context; the handler sees them only through
@@ -29,6 +29,7 @@ struct Registry {
   std::atomic<const char* const*> published{nullptr};
   std::atomic<std::size_t> count{0};  // pairs
   std::atomic<int> phase{kWriting};
+  std::atomic<int> deferred_signal{0};
   bool installed = false;
 };
 
@@ -37,28 +38,40 @@ Registry& registry() {
   return r;
 }
 
-extern "C" void finish_or_remove_and_reraise(int signal_number) {
+extern "C" void remove_or_defer(int signal_number) {
   Registry& r = registry();
   // Either this claims the files before any rename (and the committing thread will not start
-  // renaming), or the renames have begun and this claims finishing them (and the committing
-  // thread will not let go of the locks). A second signal while a handler runs finds kHandling
-  // (remove again) or kFinishing (rename again): both harmless repeats.
+  // renaming), or the renames have begun and this leaves the signal to the committing thread,
+  // which ends the run by it once the set is in place. A second signal while a handler removes
+  // finds kHandling (remove again: a harmless repeat); one after a deferred one, kDeferred.
+  r.deferred_signal.store(signal_number);
   int phase = r.phase.load();
   while ((phase == kWriting && !r.phase.compare_exchange_weak(phase, kHandling)) ||
-         (phase == kRenaming && !r.phase.compare_exchange_weak(phase, kFinishing))) {
+         (phase == kRenaming && !r.phase.compare_exchange_weak(phase, kDeferred))) {
   }
-  const bool remove = phase == kWriting || phase == kHandling;
+  if (phase == kRenaming || phase == kDeferred) return;
   const char* const* paths = r.published.load();
   const std::size_t n = r.count.load();
 #ifdef DELTRI_HAVE_UNLINK
-  for (std::size_t i = 0; paths && i < n; ++i) {
-    // A temporary already renamed is no longer there: the call fails with ENOENT, harmlessly.
-    if (remove) unlink(paths[2 * i]);
-    else std::rename(paths[2 * i], paths[2 * i + 1]);
-  }
+  for (std::size_t i = 0; paths && i < n; ++i) unlink(paths[2 * i]);
 #endif
   std::signal(signal_number, SIG_DFL);
   std::raise(signal_number);
+}
+
+// The handlers, once: before the first temporary has a name, or before the first file is put in
+// place where none ever has one (unnamed files).
+void install(Registry& r) {
+  if (r.installed) return;
+  for (const int s : {SIGINT, SIGTERM,
+#ifdef SIGHUP
+                      SIGHUP
+#endif
+       }) {
+    // A signal the user chose to ignore (nohup) stays ignored.
+    if (std::signal(s, remove_or_defer) == SIG_IGN) std::signal(s, SIG_IGN);
+  }
+  r.installed = true;
 }
 
 }  // namespace
@@ -75,23 +88,14 @@ void set_interrupt_cleanup(const std::vector<std::string>& temporaries, const st
       r.storage.push_back(finals[k]);
     }
   for (const std::string& p : r.storage) r.pointers.push_back(p.c_str());
-  if (!r.installed && !r.storage.empty()) {
-    for (const int s : {SIGINT, SIGTERM,
-#ifdef SIGHUP
-                        SIGHUP
-#endif
-         }) {
-      // A signal the user chose to ignore (nohup) stays ignored.
-      if (std::signal(s, finish_or_remove_and_reraise) == SIG_IGN) std::signal(s, SIG_IGN);
-    }
-    r.installed = true;
-  }
+  if (!r.storage.empty()) install(r);
   r.published.store(r.pointers.data());
   r.count.store(r.pointers.size() / 2);
 }
 
 bool begin_interrupt_renames() {
   Registry& r = registry();
+  install(r);
   int phase = kWriting;
   return r.phase.compare_exchange_strong(phase, kRenaming);
 }
@@ -99,15 +103,11 @@ bool begin_interrupt_renames() {
 void end_interrupt_renames() {
   Registry& r = registry();
   int phase = kRenaming;
-  if (!r.phase.compare_exchange_strong(phase, kWriting)) {
-    // A handler on another thread is finishing the renames and then ends the process; letting go
-    // of the temporaries' locks now would let another run take the names it is renaming.
-    for (;;) {
-#ifdef DELTRI_HAVE_UNLINK
-      pause();
-#endif
-    }
-  }
+  if (r.phase.compare_exchange_strong(phase, kWriting)) return;
+  // A signal came while the set was put in place; it is whole now: the run ends by that signal.
+  const int signal_number = r.deferred_signal.load();
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
 }
 
 CommitListener interrupt_listener() { return {set_interrupt_cleanup, begin_interrupt_renames, end_interrupt_renames}; }

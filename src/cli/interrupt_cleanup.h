@@ -5,13 +5,15 @@
 // CLI, not in the library (io/output_set.h only reports its temporaries to a listener).
 //
 // While the temporaries are being written, the handler removes them: the old outputs stay as they
-// were. Once the renames onto the final names have begun, removing the temporaries not yet renamed
-// would leave a mixed set (a new .node beside an old .ele), so the handler finishes the renames
-// instead, with rename(2), and the new set is complete. Finishing was chosen over rolling back:
-// a rollback would need a copy of every old file kept aside until the end, and its own renames
-// could be cut short just the same; the renames left are few, of temporaries this run holds
-// locked, and each is one system call. Blocking the signals around the renames would not do
-// either: a signal to the process goes to any thread that has not blocked it.
+// were (unnamed temporaries need nothing: the kernel frees them with the process). Once the files
+// are being put in place (renamed, or linked at their names), removing what is left would leave a
+// mixed or partial set (a new .node beside an old .ele), so the handler only notes the signal and
+// returns: the committing thread puts the whole set in place and then ends the run by that signal
+// (end_interrupt_renames), and the new set is complete. Finishing was chosen over rolling back: a
+// rollback would need a copy of every old file kept aside until the end, and its own renames could
+// be cut short just the same; what is left are a few system calls. Blocking the signals around the
+// renames would not do: a signal to the process goes to any thread that has not blocked it; noting
+// it works on whichever thread the handler runs.
 //
 // Which of the two the handler does is decided by one atomic exchange, so that the handler and the
 // thread about to start renaming can never both act (the handler may run on another thread). The
@@ -33,12 +35,13 @@ namespace deltri {
 // that commits the outputs.
 void set_interrupt_cleanup(const std::vector<std::string>& temporaries, const std::vector<std::string>& finals);
 
-// Called before the first rename: from then on the handler finishes the renames. false if a
-// signal is already being handled (then nothing may be renamed).
+// Called before the first rename or link at a final name (installs the handlers if no temporary
+// did): from then on a signal waits for end_interrupt_renames. false if a signal is already being
+// handled (then nothing may be put in place).
 bool begin_interrupt_renames();
 
-// Called after the renames, before the temporaries' locks are let go: back to removing. If a handler is
-// finishing the renames meanwhile (on another thread), waits for it to end the process.
+// Called once the set is in place (or the renames failed): back to removing. If a signal came
+// meanwhile, ends the run by it here.
 void end_interrupt_renames();
 
 // The two above, as OutputSet::commit() takes them.

@@ -188,26 +188,22 @@ void schedule_outputs(OutputSet& outputs, const OutputContext& c) {
 }
 
 // A long option may name any file, also the one this run reads (--msh=box.poly for box.poly):
-// replacing the input is never what was meant. (Triangle's own names cannot clash with this run's
-// input, -rI aside, which parse_switches refuses; an older output under them is replaced, as in
-// Triangle.)
-void refuse_overwriting_inputs(const RunReport& report, const InputFiles& in, const Pslg& pslg) {
+// replacing the input is never what was meant, so the outputs keep the inputs intact (the commit
+// refuses an output that is one of them before writing). (Triangle's own names cannot clash with
+// this run's input, -rI aside, which parse_switches refuses; an older output under them is
+// replaced, as in Triangle.)
+void refuse_overwriting_inputs(OutputSet& outputs, const InputFiles& in, const Pslg& pslg) {
   std::vector<std::string> names = {in.path, pslg.source_name};
   if (in.refine) names.push_back(in.base + ".ele");
   if (in.area_file) names.push_back(in.base + ".area");
-  // Each file stat'ed once (outputs times inputs had been a dozen calls in a small run).
-  std::vector<std::pair<dev_t, ino_t>> inputs;
+  std::vector<FileId> inputs;  // each file stat'ed once
   for (std::size_t k = 0; k < names.size(); ++k) {
     struct stat st;
     const bool again = std::find(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(k), names[k]) != names.begin() + static_cast<std::ptrdiff_t>(k);
-    if (!again && !names[k].empty() && names[k] != "-" && stat(names[k].c_str(), &st) == 0) inputs.emplace_back(st.st_dev, st.st_ino);
+    if (!again && !names[k].empty() && names[k] != "-" && stat(names[k].c_str(), &st) == 0)
+      inputs.emplace_back(static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino));
   }
-  for (const std::string& output : report.written) {
-    struct stat st;
-    if (stat(output.c_str(), &st) != 0) continue;  // not there yet: not an input
-    if (std::find(inputs.begin(), inputs.end(), std::pair{st.st_dev, st.st_ino}) != inputs.end())
-      throw OutputError(output + ": is an input of this run, not overwritten (no files written)");
-  }
+  outputs.keep_intact(std::move(inputs));
 }
 
 // Whether the .node is left out because of -I alone (it would overwrite the input's vertices; as in
@@ -343,7 +339,7 @@ int run(const Switches& sw) {
                                            static_cast<std::size_t>(threads_to_use(sw))));  // --threads writes too
   schedule_outputs(outputs, {mesh, pslg, in, sw, numbering.empty() ? nullptr : &numbering,
                              sw.order == 2 ? &result.midpoints : nullptr, report, status});
-  refuse_overwriting_inputs(report, in, pslg);
+  refuse_overwriting_inputs(outputs, in, pslg);
   refuse_vertices_in_no_file(sw, in, pslg, &mesh, report.input_vertices);
   const CommitNotes notes = outputs.commit(interrupt_listener());
   timer.stage("write", -1);

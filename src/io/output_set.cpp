@@ -41,7 +41,7 @@ std::string directory_of(const std::string& path) {
 std::string file_name_of(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 // The longest file name the directory takes (255 on most file systems).
-std::size_t longest_name(const std::string& dir) {
+[[maybe_unused]] std::size_t longest_name(const std::string& dir) {
 #ifdef DELTRI_POSIX_OUTPUT
   errno = 0;
   const long n = pathconf(dir.c_str(), _PC_NAME_MAX);
@@ -67,7 +67,6 @@ struct Target {
   std::uint64_t device = 0, inode = 0;
   bool identified = false;
   std::string name;
-  std::size_t longest = 255;  // the directory's longest file name
   std::tuple<bool, std::uint64_t, std::uint64_t, std::string, std::string> key() const {
     return {identified, device, inode, identified ? std::string() : dir, name};
   }
@@ -75,21 +74,22 @@ struct Target {
   bool operator==(const Target& o) const { return key() == o.key(); }
 };
 
-// The targets of `paths`, each directory asked once for its identity and longest name, however
-// many outputs it holds.
+// The targets of `paths`. A directory is asked for its identity (once, however many outputs it
+// holds) only where the outputs spell two or more directories: with one spelling, the spelling
+// tells the files apart and orders them as the identity would (by name within the directory), so
+// the order every run takes its temporaries in stays one order.
 std::vector<Target> targets_of(const std::vector<std::string>& paths) {
   std::vector<Target> targets;
-  for (const std::string& path : paths) {
-    Target t;
-    t.dir = directory_of(path);
-    t.name = file_name_of(path);
-    const auto known = std::find_if(targets.begin(), targets.end(), [&](const Target& o) { return o.dir == t.dir; });
-    if (known != targets.end()) {
-      std::tie(t.identified, t.device, t.inode, t.longest) = std::tuple{known->identified, known->device, known->inode, known->longest};
-      targets.push_back(std::move(t));
+  for (const std::string& path : paths) targets.push_back({directory_of(path), 0, 0, false, file_name_of(path)});
+  const bool one_spelling = std::all_of(targets.begin(), targets.end(), [&](const Target& t) { return t.dir == targets[0].dir; });
+  if (one_spelling) return targets;
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    Target& t = targets[k];
+    const auto known = std::find_if(targets.begin(), targets.begin() + static_cast<std::ptrdiff_t>(k), [&](const Target& o) { return o.dir == t.dir; });
+    if (known != targets.begin() + static_cast<std::ptrdiff_t>(k)) {
+      std::tie(t.identified, t.device, t.inode) = std::tuple{known->identified, known->device, known->inode};
       continue;
     }
-    t.longest = longest_name(t.dir);
 #ifdef DELTRI_POSIX_OUTPUT
     struct stat st;
     if (stat(t.dir.c_str(), &st) == 0) {
@@ -98,7 +98,6 @@ std::vector<Target> targets_of(const std::vector<std::string>& paths) {
       t.identified = true;
     }
 #endif
-    targets.push_back(std::move(t));
   }
   return targets;
 }
@@ -115,6 +114,7 @@ std::uint64_t name_hash(const std::string& name) {
 // final name alone is what lets a later run of the same output find what a killed run left (no
 // directory scan) and makes two runs writing one output meet at one file, whose lock puts them in
 // turn (no lock file); the hash keeps names apart where FINAL has to be cut short.
+constexpr std::size_t kAnyLength = SIZE_MAX;  // a directory's longest name not asked: the whole name
 std::string temporary_name(const std::string& final_path, std::size_t longest) {
   const std::string name = file_name_of(final_path);
   char hex[17];
@@ -123,6 +123,8 @@ std::string temporary_name(const std::string& final_path, std::size_t longest) {
   const std::string dir_part = final_path.substr(0, final_path.size() - name.size());
   return dir_part + name.substr(0, stem_size(name.size(), suffix.size(), longest)) + suffix;
 }
+
+constexpr int kNameTooLong = -2;  // hold_temporary's answer to a name the directory does not take
 
 #ifdef DELTRI_POSIX_OUTPUT
 // Whether the open file `fd` is still the one at `path` (another run may have renamed it away
@@ -134,13 +136,24 @@ bool still_at(int fd, const std::string& path) {
 }
 
 #ifdef O_TMPFILE
+#define DELTRI_UNNAMED_OUTPUT 1
+// Links the unnamed file `fd` at `path`: 0, or the errno (EEXIST: the name is taken).
+int link_unnamed(int fd, const std::string& path) {
+  if (linkat(fd, "", AT_FDCWD, path.c_str(), AT_EMPTY_PATH) == 0) return 0;
+  if (errno == EEXIST) return EEXIST;
+  char self[40];  // AT_EMPTY_PATH asks for CAP_DAC_READ_SEARCH; /proc does not
+  std::snprintf(self, sizeof self, "/proc/self/fd/%d", fd);
+  return linkat(AT_FDCWD, self, AT_FDCWD, path.c_str(), AT_SYMLINK_FOLLOW) == 0 ? 0 : errno;
+}
+
 // Creates `temp` already locked: the inode is made unnamed (O_TMPFILE), locked, then linked at the
 // name. Making the inode is most of the cost of creating a file (ext4 without a journal steps past
 // every inode freed in the last minutes), and an O_CREAT open does it holding the directory's lock,
 // so runs creating files in one folder took turns at it; an unnamed inode is made without that
 // lock. Locked before it has a name, the file is never seen unlocked. Returns -1 where the kernel or
 // file system does not allow this (then `works` is cleared: the run's other outputs go by name at
-// once), or the name is taken: the caller then goes by the name.
+// once), or the name is taken: the caller then goes by the name; kNameTooLong for a name longer
+// than the directory takes.
 int create_locked(const std::string& temp, bool& works) {
   const int fd = open(directory_of(temp).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
   if (fd < 0) {
@@ -148,13 +161,13 @@ int create_locked(const std::string& temp, bool& works) {
     return -1;
   }
   if (flock(fd, LOCK_EX | LOCK_NB) == 0) {
-    if (linkat(fd, "", AT_FDCWD, temp.c_str(), AT_EMPTY_PATH) == 0) return fd;
-    if (errno != EEXIST) {  // AT_EMPTY_PATH asks for CAP_DAC_READ_SEARCH; /proc does not
-      char self[40];
-      std::snprintf(self, sizeof self, "/proc/self/fd/%d", fd);
-      if (linkat(AT_FDCWD, self, AT_FDCWD, temp.c_str(), AT_SYMLINK_FOLLOW) == 0) return fd;
-      works = errno == EEXIST;
+    const int error = link_unnamed(fd, temp);
+    if (error == 0) return fd;
+    if (error == ENAMETOOLONG) {
+      close(fd);
+      return kNameTooLong;
     }
+    works = error == EEXIST;
   } else {
     works = false;
   }
@@ -167,11 +180,12 @@ int create_locked(const std::string& temp, bool& works) {
 // the descriptor, which holds the lock until it is closed. `waited`: another run held it first.
 // `stale`: a file with no holder was there (a killed run's), now emptied for reuse.
 // Where the file system has no flock the temporary is used unlocked, as a run alone would.
-// `unnamed`: whether to try create_locked first (cleared where it cannot work).
+// `unnamed`: whether to try create_locked first (cleared where it cannot work). kNameTooLong
+// (nothing made) where `temp` is longer than the directory takes.
 int hold_temporary(const std::string& temp, const std::string& final_path, bool& waited, bool& stale, bool& unnamed) {
 #ifdef O_TMPFILE
   if (unnamed)
-    if (const int fd = create_locked(temp, unnamed); fd >= 0) return fd;
+    if (const int fd = create_locked(temp, unnamed); fd >= 0 || fd == kNameTooLong) return fd;
 #else
   (void)unnamed;
 #endif
@@ -183,6 +197,7 @@ int hold_temporary(const std::string& temp, const std::string& final_path, bool&
       fd = open(temp.c_str(), O_WRONLY | O_CLOEXEC | O_NOFOLLOW);
       if (fd < 0 && errno == ENOENT) continue;  // renamed or removed meanwhile: create it now
     }
+    if (fd < 0 && errno == ENAMETOOLONG) return kNameTooLong;
     if (fd < 0) fail(final_path, "cannot be created: " + errno_text(errno));
     if (flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
       waited = true;
@@ -204,17 +219,33 @@ int hold_temporary(const std::string& temp, const std::string& final_path, bool&
 }
 #endif
 
+#ifdef DELTRI_POSIX_OUTPUT
+// A file's inode, size and time as file_identity() tells them.
+std::string identity_text(const struct stat& st) {
+  return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" + std::to_string(st.st_size) + ":" +
+         std::to_string(st.st_mtim.tv_sec) + "." + std::to_string(st.st_mtim.tv_nsec);
+}
+#endif
+
 // An identity of what is at `path` now (inode, size and time; of a symbolic link itself, which is
 // what a rename replaces), to see whether another process replaced it; empty when nothing is
-// there. Throws OutputError when it is something a rename could not replace (a directory, say).
-std::string file_identity(const std::string& path) {
+// there. Throws OutputError when it is something a rename could not replace (a directory, say), or
+// (with `inputs`) one of the files this run reads, also through a symbolic link.
+std::string file_identity(const std::string& path, const std::vector<FileId>* inputs = nullptr) {
 #ifdef DELTRI_POSIX_OUTPUT
   struct stat st;
   if (lstat(path.c_str(), &st) != 0) return {};
   if (!S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode)) fail(path, "cannot be replaced: it exists and is not a regular file");
-  return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" + std::to_string(st.st_size) + ":" +
-         std::to_string(st.st_mtim.tv_sec) + "." + std::to_string(st.st_mtim.tv_nsec);
+  if (inputs && !inputs->empty()) {
+    struct stat target = st;
+    if (S_ISLNK(st.st_mode) && stat(path.c_str(), &target) != 0) target = st;
+    const FileId id{static_cast<std::uint64_t>(target.st_dev), static_cast<std::uint64_t>(target.st_ino)};
+    if (std::find(inputs->begin(), inputs->end(), id) != inputs->end())
+      fail(path, "is an input of this run, not overwritten (no files written)");
+  }
+  return identity_text(st);
 #else
+  (void)inputs;
   std::error_code ec;
   const auto status = std::filesystem::symlink_status(path, ec);
   if (!ec && status.type() != std::filesystem::file_type::not_found && status.type() != std::filesystem::file_type::regular &&
@@ -418,26 +449,37 @@ std::exception_ptr rename_into_place(std::vector<std::string>& temps, const std:
   return error;
 }
 
+// The targets in the one order every run takes them in: by directory, then by name.
+std::vector<std::size_t> taking_order(const std::vector<Target>& targets) {
+  std::vector<std::size_t> order(targets.size());
+  for (std::size_t t = 0; t < order.size(); ++t) order[t] = t;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return targets[a] < targets[b]; });
+  return order;
+}
+
 // The temporaries a commit holds: taken in one order by every run (directory, then final name),
 // so that two runs with some output names in common never wait for each other in a circle, and
 // let go (closed) only after the renames.
 class HeldTemporaries {
  public:
-  explicit HeldTemporaries(const std::vector<Target>& targets) : fds_(targets.size(), -1) {
-    order_.resize(targets.size());
-    for (std::size_t t = 0; t < order_.size(); ++t) order_[t] = t;
-    std::sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) { return targets[a] < targets[b]; });
-  }
+  explicit HeldTemporaries(const std::vector<Target>& targets) : order_(taking_order(targets)), fds_(targets.size(), -1) {}
   ~HeldTemporaries() { release(); }
   HeldTemporaries(const HeldTemporaries&) = delete;
   HeldTemporaries& operator=(const HeldTemporaries&) = delete;
   // The targets in the order they are taken and renamed (the last one renamed last).
   const std::vector<std::size_t>& order() const { return order_; }
   int fd(std::size_t t) const { return fds_[t]; }
-  void hold(std::size_t t, const std::string& temp, const std::string& final_path, CommitNotes& notes) {
+  // Holds `temp`, cut short to the directory's longest name where the whole is longer (asked only
+  // then: a statfs a run saved).
+  void hold(std::size_t t, std::string& temp, const std::string& final_path, CommitNotes& notes) {
 #ifdef DELTRI_POSIX_OUTPUT
     bool stale = false;
     fds_[t] = hold_temporary(temp, final_path, notes.waited_for_other_run, stale, unnamed_);
+    if (fds_[t] == kNameTooLong) {
+      temp = temporary_name(final_path, longest_name(directory_of(final_path)));
+      fds_[t] = hold_temporary(temp, final_path, notes.waited_for_other_run, stale, unnamed_);
+      if (fds_[t] == kNameTooLong) fail(final_path, "cannot be created: " + errno_text(ENAMETOOLONG));
+    }
     notes.stale_temporaries_removed += stale;
 #else
     (void)temp, (void)final_path, (void)notes;
@@ -458,35 +500,126 @@ class HeldTemporaries {
 
 }  // namespace
 
-CommitNotes OutputSet::commit(const CommitListener& listener) {
+// What commit() works from: the output files' names and targets, the temporaries' names, what was
+// at each name when the run looked first, and the notes so far.
+struct OutputSet::Plan {
   std::vector<std::string> paths;  // of the files, standard output left out
   std::vector<std::size_t> file_of;  // the file of each path
-  for (std::size_t k = 0; k < files_.size(); ++k)
-    if (files_[k].final_path != kStandardOutput) paths.push_back(files_[k].final_path), file_of.push_back(k);
-  const std::vector<Target> targets = targets_of(paths);
-  refuse_duplicate_names(paths, targets);
+  std::vector<Target> targets;  // of the paths
+  std::vector<std::string> temps, finals, before;  // of the files
   CommitNotes notes;
-  std::vector<std::string> temps(files_.size()), held(files_.size()), finals, before(files_.size());
-  std::vector<int> fds(files_.size(), -1);
-  for (std::size_t t = 0; t < paths.size(); ++t) {
-    temps[file_of[t]] = temporary_name(paths[t], targets[t].longest);
-    before[file_of[t]] = file_identity(paths[t]);
+};
+
+CommitNotes OutputSet::commit(const CommitListener& listener) {
+  Plan p;
+  for (std::size_t k = 0; k < files_.size(); ++k)
+    if (files_[k].final_path != kStandardOutput) p.paths.push_back(files_[k].final_path), p.file_of.push_back(k);
+  p.targets = targets_of(p.paths);
+  refuse_duplicate_names(p.paths, p.targets);
+  p.temps.resize(files_.size());
+  p.before.resize(files_.size());
+  for (std::size_t t = 0; t < p.paths.size(); ++t) {
+    p.temps[p.file_of[t]] = temporary_name(p.paths[t], kAnyLength);
+    p.before[p.file_of[t]] = file_identity(p.paths[t], &inputs_);
   }
-  for (const File& f : files_) finals.push_back(f.final_path);
+  for (const File& f : files_) p.finals.push_back(f.final_path);
   struct Unlisten {
     const CommitListener& l;
     ~Unlisten() {
       if (l.pending) l.pending({}, {});
     }
   } unlisten{listener};
+  if (!put_unnamed(p, listener)) put_by_temporaries(p, listener, false);
+  for (const File& f : files_) {
+    if (f.final_path != kStandardOutput) continue;
+    errno = 0;
+    if (std::fwrite(f.contents.data(), 1, f.contents.size(), stdout) != f.contents.size() || std::fflush(stdout) != 0)
+      fail("standard output", errno_text(errno));
+  }
+  files_.clear();
+  return p.notes;
+}
+
+// Where every output name and every temporary name is free (a batch's fresh folder), each file is
+// written to an unnamed file and then linked at its final name: one new directory entry a file,
+// with no lock and no rename. A run on other names meets nothing here. Two runs on one name
+// cannot both link it: the one that finds a name taken (or any other file there, from any
+// process) puts its whole set in place again by temporaries (put_by_temporaries, files written
+// anew), which meets every other run as that protocol does, so the last run to put a set in place
+// leaves all of it. A run by temporaries that renames over a name this run linked does so before
+// this run links its later names (or this run finds one taken and goes by temporaries after it),
+// since both go through the names in one order: either way no two runs' files are mixed. A
+// temporary already at one of the names (a killed run's, or one another run is writing) sends the
+// run by temporaries from the start, which meets the other run or removes the killed one's.
+// A link that fails for another reason goes the same way (the temporaries report what fails).
+// Signals wait until the set is in place (CommitListener). Returns false, having changed nothing,
+// where this does not apply or the file system makes no unnamed files.
+bool OutputSet::put_unnamed(Plan& p, const CommitListener& listener) {
+#ifdef DELTRI_UNNAMED_OUTPUT
+  struct stat st;
+  for (std::size_t t = 0; t < p.paths.size(); ++t)
+    if (!p.before[p.file_of[t]].empty() || lstat(p.temps[p.file_of[t]].c_str(), &st) == 0 || errno != ENOENT) return false;
+  std::vector<int> fds(files_.size(), -1);
+  struct Close {
+    std::vector<int>& fds;
+    ~Close() {
+      for (const int fd : fds)
+        if (fd >= 0) close(fd);
+    }
+  } close_all{fds};
+  for (std::size_t t = 0; t < p.paths.size(); ++t)
+    if ((fds[p.file_of[t]] = open(directory_of(p.paths[t]).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666)) < 0) return false;
+  const std::size_t writers = std::max<std::size_t>(1, workers_);
+  RangePool pool(writers);
+  if (const std::exception_ptr error = run_in_order(files_.size(), writers, [&](std::size_t k) {
+        write_temporary(files_[k], p.temps[k], fds[k], &pool);
+      }, &pool))
+    std::rethrow_exception(error);  // nothing has a name: nothing to remove
+  if (listener.begin_renames && !listener.begin_renames()) throw OutputError("interrupted before the outputs were put in place");
+  struct EndRenames {
+    const CommitListener& l;
+    ~EndRenames() {
+      if (l.end_renames) l.end_renames();
+    }
+  } end_renames{listener};
+  const std::vector<std::size_t> order = taking_order(p.targets);
+  std::size_t linked = 0;
+  for (; linked < order.size(); ++linked) {
+    const std::size_t t = order[linked];
+    // A taken name (EEXIST), or a link the kernel refuses here (no /proc for a caller without
+    // CAP_DAC_READ_SEARCH, say): the temporaries below do without links to final names.
+    if (link_unnamed(fds[p.file_of[t]], p.paths[t]) != 0) break;
+  }
+  if (linked == order.size()) return true;
+  for (std::size_t i = 0; i < linked; ++i) {  // this run's own files are not "changed meanwhile"
+    const std::size_t k = p.file_of[order[i]];
+    p.before[k] = fstat(fds[k], &st) == 0 ? identity_text(st) : std::string();
+  }
+  put_by_temporaries(p, listener, true);
+  return true;
+#else
+  (void)p, (void)listener;
+  return false;
+#endif
+}
+
+// Writes every file to its temporary FINAL.tmp.HASH, held locked from its creation until after
+// the renames, checks the final names, then renames the temporaries into place (see commit()).
+// `renames_begun`: called by put_unnamed() after some files were linked (the listener was told).
+void OutputSet::put_by_temporaries(Plan& p, const CommitListener& listener, bool renames_begun) {
+  CommitNotes& notes = p.notes;
+  std::vector<std::string>& temps = p.temps;
+  const std::vector<std::string>& finals = p.finals;
+  std::vector<std::string> held(files_.size());
+  std::vector<int> fds(files_.size(), -1);
   // A temporary that cannot be created fails its file's write, so that with several failures the
   // one of the earliest-added file is still the one reported.
   std::vector<std::exception_ptr> cannot_hold(files_.size());
-  HeldTemporaries holder(targets);
+  HeldTemporaries holder(p.targets);
   for (const std::size_t t : holder.order()) {
-    const std::size_t k = file_of[t];
+    const std::size_t k = p.file_of[t];
     try {
-      holder.hold(t, temps[k], paths[t], notes);
+      holder.hold(t, temps[k], p.paths[t], notes);
     } catch (...) {
       cannot_hold[k] = std::current_exception();
       temps[k].clear();
@@ -509,7 +642,7 @@ CommitNotes OutputSet::commit(const CommitListener& listener) {
   if (!error) {
     try {
       for (std::size_t k = 0; k < files_.size(); ++k)
-        if (!temps[k].empty() && file_identity(files_[k].final_path) != before[k]) ++notes.replaced_meanwhile;
+        if (!temps[k].empty() && file_identity(files_[k].final_path) != p.before[k]) ++notes.replaced_meanwhile;
     } catch (...) {
       error = std::current_exception();
     }
@@ -517,11 +650,11 @@ CommitNotes OutputSet::commit(const CommitListener& listener) {
   // Past this point a signal finishes the renames instead of removing the temporaries left (see
   // cli/interrupt_cleanup.h); if one is already being handled, nothing is renamed.
   bool renaming = false;
-  if (!error && listener.begin_renames && !(renaming = listener.begin_renames()))
+  if (!error && !renames_begun && listener.begin_renames && !(renaming = listener.begin_renames()))
     error = std::make_exception_ptr(OutputError("interrupted before the outputs were put in place"));
   if (!error) {
     std::vector<std::size_t> rename_order;  // files, in the order their temporaries were taken
-    for (const std::size_t t : holder.order()) rename_order.push_back(file_of[t]);
+    for (const std::size_t t : holder.order()) rename_order.push_back(p.file_of[t]);
     error = rename_into_place(temps, finals, rename_order, std::min(workers_, files_.size()));
   }
   if (renaming && listener.end_renames) listener.end_renames();
@@ -531,14 +664,6 @@ CommitNotes OutputSet::commit(const CommitListener& listener) {
     std::rethrow_exception(error);
   }
   holder.release();
-  for (const File& f : files_) {
-    if (f.final_path != kStandardOutput) continue;
-    errno = 0;
-    if (std::fwrite(f.contents.data(), 1, f.contents.size(), stdout) != f.contents.size() || std::fflush(stdout) != 0)
-      fail("standard output", errno_text(errno));
-  }
-  files_.clear();
-  return notes;
 }
 
 }  // namespace deltri

@@ -1,10 +1,13 @@
 // All-or-nothing output: a run either leaves every output file in place or changes nothing.
-// Each file is first written in full to a temporary name in its own directory, so the final
-// renames (atomic on POSIX) happen only once every byte is safely written and closed.
+// Each file is first written in full to a temporary (unnamed where the file system allows, else
+// named in its own directory), so it gets its final name (a link or an atomic rename) only once
+// every byte of every file is safely written.
 #pragma once
 
 #include <functional>
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/text_writer.h"
@@ -31,17 +34,19 @@ struct CommitListener {
   // temporary's name is shared with other runs writing the same output); two empty lists once
   // nothing is left to remove or rename.
   std::function<void(const std::vector<std::string>& temporaries, const std::vector<std::string>& finals)> pending;
-  // Asked just before the first rename. true: from now on an interrupted run must finish the
-  // renames rather than remove what is left (a mix of new and old files is never left); false:
-  // the run is already being interrupted and nothing may be renamed.
+  // Asked just before the first rename or link at a final name. true: from now on an interrupted
+  // run must put the whole set in place rather than remove what is left (a mix of new and old
+  // files is never left); false: the run is already being interrupted and nothing may be renamed.
   std::function<bool()> begin_renames;
-  // Told after the renames (done or failed), before the temporaries' locks are let go: an
-  // interrupted run no longer finishes renames. Does not return if a signal is being handled
-  // meanwhile (the handler owns the locks until the process ends).
+  // Told once the set is in place (or the renames failed), before the temporaries' locks are let
+  // go. Need not return if a signal came meanwhile (the run ends by it; the set is whole).
   std::function<void()> end_renames;
 };
 
 class RangePool;
+
+// A file by device and inode.
+using FileId = std::pair<std::uint64_t, std::uint64_t>;
 
 class OutputSet {
  public:
@@ -82,17 +87,29 @@ class OutputSet {
   // Two outputs naming the same file (also through another spelling of its directory) are refused
   // with OutputError before anything is written.
   //
-  // Temporaries are named FINAL.tmp.HASH (16 hex digits of the final file name's hash), FINAL cut
-  // short where the whole would exceed the directory's longest file name (so any output name the
-  // file system takes can be written). A temporary is held (an exclusive flock on the open file)
-  // from its creation until after the renames, the temporaries taken in one order (directory,
-  // then name) by every run. Two runs writing one output name meet at its temporary: the later
-  // waits until the earlier has renamed its whole set, so they leave one run's complete set, never
-  // a mix, while runs writing other names never wait for each other; no lock file and no
-  // directory scan. A temporary found at this run's name with no holder (a killed run's) is reused.
+  // Where every output name and its temporary's name are free (a batch's fresh folder) and the
+  // file system makes unnamed files (O_TMPFILE), each file is written unnamed and then linked at
+  // its final name: no temporary name, lock or rename. Should another run (or process) take one of
+  // the names meanwhile, the run puts its whole set in place again by temporaries, as below, so
+  // the last run leaves all of its set (put_unnamed in the .cpp has the argument).
+  //
+  // Otherwise temporaries are named FINAL.tmp.HASH (16 hex digits of the final file name's hash),
+  // FINAL cut short where the whole would exceed the directory's longest file name (so any output
+  // name the file system takes can be written). A temporary is held (an exclusive flock on the
+  // open file) from its creation until after the renames, the temporaries taken in one order
+  // (directory, then name) by every run. Two runs writing one output name meet at its temporary:
+  // the later waits until the earlier has renamed its whole set, so they leave one run's complete
+  // set, never a mix, while runs writing other names never wait for each other; no lock file and
+  // no directory scan. A temporary found at this run's name with no holder (a killed run's) is
+  // reused.
   CommitNotes commit(const CommitListener& listener = {});
 
   std::size_t size() const { return files_.size(); }
+
+  // The files this run reads: commit() refuses an output that is one of them (by another name or
+  // through a symbolic link too) with OutputError before anything is written. Checked in the one
+  // look commit() takes at each output name before writing, not in a second one of its own.
+  void keep_intact(std::vector<FileId> inputs) { inputs_ = std::move(inputs); }
 
  private:
   struct File {
@@ -100,10 +117,14 @@ class OutputSet {
     std::string contents;
     std::function<void(ByteSink&)> produce;  // empty: use contents
   };
+  struct Plan;
+  bool put_unnamed(Plan& p, const CommitListener& listener);
+  void put_by_temporaries(Plan& p, const CommitListener& listener, bool renames_begun);
   static void write_temporary(File& f, const std::string& temp_path, int fd, RangePool* pool);
   static void write_standard_output(File& f);
   std::size_t workers_;
   std::vector<File> files_;
+  std::vector<FileId> inputs_;
 };
 
 }  // namespace deltri

@@ -2,7 +2,8 @@
 # Concurrent runs in one folder (issue 45): runs writing other output names never wait for each
 # other and never warn; two runs writing the same names still leave one run's complete set, never
 # a mix. Made certain rather than left to a race: run A is stopped between two of its renames (a
-# preloaded hook, rename_hook.c, stops it right after its first rename, holding its locks), and
+# preloaded hook, rename_hook.c, stops it right after its first rename, holding its locks, or
+# right after it linked its first file at its final name, where no output was there before), and
 # run B goes ahead meanwhile.
 #   concurrent_names.sh DELTRI RENAME_HOOK DATA_DIR
 # (PATIENCE in the environment: how long B may take before A is let go anyway, 120 s; it only
@@ -71,9 +72,13 @@ for f in a.1.node a.1.ele a.1.poly b.1.node b.1.ele b.1.poly; do [ -s $f ] || fa
 
 # 2. The same names: both write out.1.* (a copy race: out.poly is guitar for A, then box for B,
 # which reads it while A is stopped), so that a mix would pair a .node of one mesh with an .ele
-# of the other. The result must be one complete set, byte for byte.
-for round in 1 2; do
-  rm -f out.1.*
+# of the other. The result must be one complete set, byte for byte. Round "fresh": no out.1.*
+# before; A has linked out.1.ele from an unnamed file and holds no lock, so B (finding a file
+# there) goes by temporaries and ends first; A then finds out.1.node taken and puts its whole set
+# in place again: A's set, and A says it met another run. Rounds 1 and 2: A's files of the round
+# before are there, A goes by temporaries and holds them; B waits, and its set is left.
+for round in fresh 1 2; do
+  [ $round = fresh ] && rm -f out.1.*
   cp a.poly out.poly
   start_a -pq30Q out.poly
   cp small.poly out.poly
@@ -83,9 +88,11 @@ for round in 1 2; do
   set_is=$(set_of out big little)
   echo "same names, round $round: A exit $status_a, B exit $status_b, outputs: $set_is; B said: $(cat err.b)"
   [ $status_a = 0 ] && [ $status_b = 0 ] || fail "same names: exit $status_a and $status_b"
-  [ $set_is = little ] || fail "same names: the outputs are '$set_is', not B's complete set (B ran last)"
-  grep -q "warning: \(waited for another deltri run writing the same output files\|.*changed on disk\)" err.b ||
-    fail "same names: run B did not say it met another run"
+  last=b set_last=little
+  [ $round = fresh ] && last=a set_last=big
+  [ $set_is = $set_last ] || fail "same names, round $round: the outputs are '$set_is', not run $last's complete set ($last ended last)"
+  grep -q "warning: \(waited for another deltri run writing the same output files\|.*changed on disk\)" err.$last ||
+    fail "same names, round $round: run $last did not say it met another run"
 done
 # 3. Started together with no hook, as a batch starts them (issue 45), PAIRS times each (20): two
 # runs on different files of the folder both exit 0, say nothing and write what a run alone writes;

@@ -3,6 +3,10 @@
 #include <cstdio>
 #include <filesystem>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "harness/check.h"
 #include "io/output_set.h"
 #include "io_test_util.h"
@@ -187,6 +191,41 @@ TEST(output_set_writes_names_near_the_longest) {
   CHECK_EQ(files_in(dir), 1u);
 }
 
+TEST(output_set_keeps_inputs_intact) {
+  // An output that is an input of the run (by its own name, or a symbolic link to it) is refused
+  // before anything is written; an output beside them is not (the check looks at each name once).
+  const fs::path dir = iotest::scratch_dir() / "out_inputs";
+  fs::create_directories(dir);
+  iotest::write_file("out_inputs/in.poly", "input\n");
+  const fs::path input = dir / "in.poly", link = dir / "link.msh";
+  fs::remove(link);
+  fs::create_symlink("in.poly", link);
+  struct stat st;
+  CHECK(stat(input.c_str(), &st) == 0);
+  const FileId id{static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino)};
+  for (const fs::path& named : {input, link}) {
+    OutputSet set;
+    set.keep_intact({id});
+    set.add((dir / "in.1.node").string(), "node\n");
+    set.add(named.string(), "not the input\n");
+    bool threw = false;
+    try {
+      set.commit();
+    } catch (const OutputError& e) {
+      threw = std::string(e.what()) == named.string() + ": is an input of this run, not overwritten (no files written)";
+    }
+    CHECK(threw);
+    CHECK_EQ(iotest::read_file(input.string()), "input\n");
+    CHECK(fs::is_symlink(link));
+    CHECK_EQ(files_in(dir), 2u);
+  }
+  OutputSet set;
+  set.keep_intact({id});
+  set.add((dir / "in.1.node").string(), "node\n");
+  set.commit();
+  CHECK_EQ(files_in(dir), 3u);
+}
+
 TEST(output_set_tells_the_listener_each_phase) {
   const fs::path dir = iotest::scratch_dir() / "out_listener";
   fs::create_directories(dir);
@@ -220,6 +259,43 @@ TEST(output_set_tells_the_listener_each_phase) {
     CHECK_EQ(cleared, 1);
     CHECK_EQ(iotest::read_file(node), allow ? "new\n" : "old\n");
     CHECK_EQ(files_in(dir), allow ? 2u : 1u);
+  }
+}
+
+TEST(output_set_links_unnamed_files_only_once_the_listener_allows) {
+  // No output name there yet: the files are written unnamed (where the file system makes such
+  // files) and linked at their names only after begin_renames allowed it; refused, nothing is
+  // left at all, and no temporary was ever named for a signal handler to remove. Where the file
+  // system makes no unnamed files (asked here directly), named temporaries stand in.
+  const fs::path dir = iotest::scratch_dir() / "out_unnamed";
+  fs::create_directories(dir);
+  bool unnamed_files = false;
+#ifdef O_TMPFILE
+  if (const int fd = open(dir.c_str(), O_TMPFILE | O_WRONLY, 0600); fd >= 0) unnamed_files = true, close(fd);
+#endif
+  for (const bool allow : {false, true}) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::size_t named = 0;
+    int begun = 0, ended = 0;
+    CommitListener listener;
+    listener.pending = [&](const std::vector<std::string>& t, const std::vector<std::string>&) { named += t.size(); };
+    listener.begin_renames = [&] {
+      ++begun;
+      if (unnamed_files) CHECK_EQ(files_in(dir), 0u);  // everything written, nothing named yet
+      return allow;
+    };
+    listener.end_renames = [&] { ++ended; };
+    OutputSet set;
+    set.add((dir / "a.1.node").string(), "node\n");
+    set.add((dir / "a.1.ele").string(), "ele\n");
+    if (allow) set.commit(listener);
+    else CHECK_THROWS(set.commit(listener));
+    CHECK_EQ(begun, 1);
+    CHECK_EQ(ended, allow ? 1 : 0);
+    if (unnamed_files) CHECK_EQ(named, 0u);
+    CHECK_EQ(files_in(dir), allow ? 2u : 0u);
+    if (allow) CHECK_EQ(iotest::read_file((dir / "a.1.ele").string()), "ele\n");
   }
 }
 
