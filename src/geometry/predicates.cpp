@@ -12,7 +12,8 @@
 // with long double's unit roundoff is 2^11 times tighter where long double has a 64-bit significand
 // (x87, as on x86-64 Linux) and which decides most of the nearly cocircular quadruples of points
 // rounded onto a circle (the analysis is the filter's: the inputs are doubles, exact in long
-// double, whose exponent range is wider; compiled out where long double is no wider than double);
+// double, whose exponent range is wider; compiled out where long double is no wider than double,
+// skipped where its arithmetic is not carried out in 64 bits: extended_precision.h);
 // and, with exact differences, double-word arithmetic with a proven bound, then 256-bit integers.
 #include <algorithm>
 #include <array>
@@ -24,6 +25,7 @@
 #include "geometry/expansion.h"
 #include "geometry/exact_determinants.h"
 #include "geometry/exact_integer.h"
+#include "geometry/extended_precision.h"
 #include "geometry/predicates.h"
 
 namespace deltri {
@@ -296,7 +298,7 @@ double Predicates::incircle_adapt(const Point& a, const Point& b, const Point& c
     return plain_incircle(adx, ady, bdx, bdy, cdx, cdy).det;
   if constexpr (kWideLongDouble) {
     double extended = 0.0;
-    if (incircle_extended(a, b, c, d, extended)) return extended;
+    if (extended_precision_active() && incircle_extended(a, b, c, d, extended)) return extended;
   }
   if (scaled_ok) {
     double quick = 0.0;

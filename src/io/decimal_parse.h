@@ -12,6 +12,8 @@
 #include <cstring>
 #include <limits>
 
+#include "geometry/extended_precision.h"
+
 namespace deltri::decimal {
 
 inline bool is_digit(char c) { return static_cast<unsigned char>(c - '0') < 10; }
@@ -59,12 +61,9 @@ inline constexpr long double kExtendedPowers[] = {
     1e14L, 1e15L, 1e16L, 1e17L, 1e18L, 1e19L, 1e20L, 1e21L, 1e22L, 1e23L, 1e24L, 1e25L, 1e26L, 1e27L};
 constexpr int kMaxExtendedPower = 27;
 
-// The x87 precision control could have been lowered to 53 bits by foreign code; then extended
-// arithmetic would round like double arithmetic and the reasoning above fails.
-inline bool extended_precision_active() {
-  volatile long double one = 1.0L, tiny = 0x1p-63L;
-  return one + tiny != one;
-}
+// The x87 precision control could have been lowered to 53 bits by foreign code (or valgrind runs
+// the program); then extended arithmetic rounds like double arithmetic and the reasoning above
+// fails: extended_precision_active (geometry/extended_precision.h) says so.
 
 // Whether the 64-bit significand of x has the bit pattern of a midpoint between two doubles:
 // the dropped 11 bits are exactly 100 0000 0000.
@@ -167,8 +166,7 @@ inline bool parse_double(const char* p, const char* last, double& value, const c
     result = scale < 0 ? d / detail::kPowers[-scale] : d * detail::kPowers[scale];
   } else if (detail::kExtendedAvailable && scale >= -detail::kMaxExtendedPower &&
              scale <= detail::kMaxExtendedPower) {
-    static const bool precise = detail::extended_precision_active();
-    if (!precise) return false;
+    if (!extended_precision_active()) return false;
     const long double x = static_cast<long double>(m);  // exact: m < 10^19 < 2^64
     const long double q = scale < 0 ? x / detail::kExtendedPowers[-scale] : x * detail::kExtendedPowers[scale];
     if (detail::halfway_between_doubles(q)) return false;

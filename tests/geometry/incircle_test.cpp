@@ -4,6 +4,10 @@
 #include <cmath>
 #include <vector>
 
+#if defined(__GLIBC__) && (defined(__x86_64__) || defined(__i386__))
+#include <fpu_control.h>
+#endif
+
 #include "geometry/exact_reference.h"
 #include "geometry/predicates.h"
 #include "geometry/random_support.h"
@@ -77,6 +81,25 @@ TEST(incircle_ulps_off_a_circle) {
   CHECK_EQ(near_cocircular_mismatches(pred, 22, {0.3, -0.2}, 0.01, 1000), 0);
   CHECK(pred.counters.incircle_adaptive > 0);
 }
+
+#if defined(__GLIBC__) && (defined(__x86_64__) || defined(__i386__))
+// With the x87 precision control lowered to 53 bits (as foreign code in a library's process may
+// do, and as valgrind runs x87 arithmetic), long double rounds like double: the incircle filter's
+// long double stage must not trust its 64-bit bound then. It did, and gave wrong signs here (under
+// valgrind, data/water.poly's refinement flipped edges forever).
+TEST(incircle_with_the_x87_precision_lowered) {
+  fpu_control_t saved;
+  _FPU_GETCW(saved);
+  const fpu_control_t lowered = (saved & ~_FPU_EXTENDED) | _FPU_DOUBLE;
+  _FPU_SETCW(lowered);
+  Predicates pred;
+  const int near = near_cocircular_mismatches(pred, 31, {0.0, 0.0}, 1.0, 1000) +
+                   near_cocircular_mismatches(pred, 32, {0.3, -0.2}, 0.01, 1000) +
+                   near_cocircular_mismatches(pred, 33, {1e9 + 0.3, 1e9 - 0.7}, 1.0, 500);
+  _FPU_SETCW(saved);
+  CHECK_EQ(near, 0);
+}
+#endif
 
 TEST(incircle_huge_tiny_and_offset_circles) {
   Predicates pred;
