@@ -84,8 +84,10 @@ std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, Spli
   plan.point = p;
   plan.exactly_on = exactly_on_axis_parallel_line(pa, pb, p);
   plan.floor = owed_to_size ? bottom_.precision_floor(p) : floor_at(p);
-  plan.radius = split_radius(s, p);
-  if (plan.radius.after_chew < plan.floor) return Outcome::BelowFloor;
+  if (split_radius_read() || !split_clear_of(s, p, plan.floor)) {
+    plan.radius = split_radius(s, p);
+    if (plan.radius.after_chew < plan.floor) return Outcome::BelowFloor;
+  }
   const PieceEnds& piece = pieces_.of_subsegment[mesh_.subseg[s]];
   if (!owed_to_size && BottomScale::creeping_split(pa, pb, p, mesh_.point(piece[0]), mesh_.point(piece[1])))
     return Outcome::BelowFloor;
@@ -259,6 +261,40 @@ bool Terminator::only_for_interior_bound(TriangleId t, const Assessment& a) cons
 // a was assessed under interior_rules_ (ratio2_over_bound2 against its sin^2): is it under -q?
 bool Terminator::below_asked_bound(const Assessment& a) const {
   return a.skinny && below_other_bound(a.shape, interior_rules_.angle.sin2(), opt_.angle.sin2());
+}
+
+// Whether anything reads a split's radius, or the cavity its search leaves, beyond plan_split's
+// comparison with the floor: Ruppert's and Chew's sure-fire rule (split_radius_), Chew's step with
+// a free vertex to delete (replan_after_deletions), -Y's check of a split (KeptBoundary). Without
+// a free vertex nothing has been inserted but segment splits, each followed by flips that restore
+// the constrained Delaunay property, and no vertex has been moved (relocation moves free ones).
+bool Terminator::split_radius_read() const {
+  return policy_.tracks_split_radii || free_vertices_ || kept_.checks_splits();
+}
+
+// Whether every vertex that splitting s at p would join is surely at least `floor` from p, seen
+// from the triangles on s alone: in a constrained Delaunay triangulation each vertex seen from a
+// triangle's inside lies outside its circumcircle, and the split's new edges go to vertices seen
+// from p on either side of s (p is on s, or within rounding of it). On a thin strip the search
+// for the split's radius, which this spares, was a sixth of every split's instructions.
+bool Terminator::split_clear_of(EdgeRef s, const Point& p, double floor) const {
+  for (EdgeRef e : {s, mesh_.link[s]}) {
+    if (e == kNone) continue;
+    const auto [a, b, c] = mesh_.corner_points(triangle_of(e));
+    if (!(depth_in_circumcircle(a, b, c, p) >= floor * (1.0 + 0x1p-40))) return false;
+  }
+  DELTRI_ASSERT(split_radius_at_least(s, p, floor));
+  return true;
+}
+
+// The check behind split_clear_of in builds with invariant checks; it leaves the predicate
+// counters as they were, so -V reports the same counts in every build.
+bool Terminator::split_radius_at_least(EdgeRef s, const Point& p, double floor) const {
+  const PredicateCounters counted = pred_.counters;
+  CavityMarks marks;
+  const bool at_least = split_insertion_radius(mesh_, pred_, s, p, marks) >= floor;
+  pred_.counters = counted;
+  return at_least;
 }
 
 // The length of the shortest edge that splitting s at p would make, now and once Chew's step (with
