@@ -326,6 +326,10 @@ Terminator::SplitRadius Terminator::split_radius(EdgeRef s, const Point& p) {
 // doubles resolve), p can land on the far side of the line through that apex and a clockwise
 // triangle would appear. Such a split is refused, like one whose point rounds onto an endpoint.
 bool Terminator::split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pending) {
+  // p exactly on s (an axis-parallel s, seen by comparisons) and strictly between its ends: each
+  // half is a positive fraction of s, so every apex, strictly left of its side, stays strictly
+  // left of both halves (a strip's every split; its orientation tests cost 140 instructions).
+  if (strictly_inside_axis_parallel(mesh_.point(mesh_.org(s)), mesh_.point(mesh_.dest(s)), p)) return true;
   for (EdgeRef e : {s, mesh_.link[s]}) {
     if (e == kNone) continue;
     const Point& o = mesh_.point(mesh_.org(e));
