@@ -74,8 +74,12 @@ std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, Spli
     return !std::isfinite(q.x) || !std::isfinite(q.y) || q == pa || q == pb ||
            !split_keeps_orientation(s, q, policy_.deletes_before_split);
   };
+  // A double chosen near the split point may lie some ulps off s: only a rounded point on s has
+  // its radius bounded by split_clear_of.
+  bool chosen_near = false;
   if (bottom_.reached(squared_distance(pa, pb), pa) || out_of_precision(p)) {
     p = bottom_.split(*this, s, p, policy_.deletes_before_split);
+    chosen_near = true;
     if (out_of_precision(p)) {
       lock(s);
       return Outcome::Locked;
@@ -84,7 +88,7 @@ std::optional<Outcome> Terminator::plan_split(EdgeRef s, bool owed_to_size, Spli
   plan.point = p;
   plan.exactly_on = exactly_on_axis_parallel_line(pa, pb, p);
   plan.floor = owed_to_size ? bottom_.precision_floor(p) : floor_at(p);
-  if (split_radius_read() || !split_clear_of(s, p, plan.floor)) {
+  if (chosen_near || split_radius_read() || !split_clear_of(s, p, plan.floor)) {
     plan.radius = split_radius(s, p);
     if (plan.radius.after_chew < plan.floor) return Outcome::BelowFloor;
   }
@@ -275,7 +279,8 @@ bool Terminator::split_radius_read() const {
 // Whether every vertex that splitting s at p would join is surely at least `floor` from p, seen
 // from the triangles on s alone: in a constrained Delaunay triangulation each vertex seen from a
 // triangle's inside lies outside its circumcircle, and the split's new edges go to vertices seen
-// from p on either side of s (p is on s, or within rounding of it). On a thin strip the search
+// from p on either side of s (p is on s, or within a rounding of it, which the slack of
+// depth_in_circumcircle covers: a few ulps of the coordinates). On a thin strip the search
 // for the split's radius, which this spares, was a sixth of every split's instructions.
 bool Terminator::split_clear_of(EdgeRef s, const Point& p, double floor) const {
   for (EdgeRef e : {s, mesh_.link[s]}) {
