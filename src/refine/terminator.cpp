@@ -76,10 +76,11 @@ constexpr double kQualityGrowth = 6.0;
 // rectangle 1 x 1e-6: 2 triangles, then 2,097,152), where the guess above left its arrays to
 // double twenty times: a third of that run's page faults were the copies and their fresh pages.
 // There the input's feature work (termination_guard.h: 0.7 triangles per unit on the strips, 0.02
-// to 2.4 on the corpus at -q30 and -q33) is the guess when it is larger, and on a small mesh it
-// costs nothing to compute. Such a mesh may have about as many vertices on segments as triangles
-// (every vertex of a strip is on its sides), so the vertices and subsegment records get as much.
-constexpr double kEstimatedUpToSlots = 4096;
+// to 2.4 on the corpus at -q30 and -q33) is the guess when it is larger. Such a mesh may have
+// about as many vertices on segments as triangles (every vertex of a strip is on its sides), so
+// the vertices and subsegment records get as much. Only for a few triangles: the estimate's pass
+// cost guitar.poly (148 slots, 351 triangles at -q30) 4% of its run's instructions, for nothing.
+constexpr double kEstimatedUpToSlots = 64;
 
 // Returns the room reserved for new subsegment records (0 where the guess is the slots').
 std::size_t reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
