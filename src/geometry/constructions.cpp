@@ -54,6 +54,27 @@ Point circumcenter(const Point& a, const Point& b, const Point& c) {
   return {a.x + (cy * b_len2 - by * c_len2) * inverse, a.y + (bx * c_len2 - cx * b_len2) * inverse};
 }
 
+// The slack is a generous multiple of the rounding analysis: o - a is two determinants over the
+// cross product, each off by a few ulps of its terms, so its error is a few ulps of the longest
+// edge times longest^2 / |cross| (the inverse sine of an angle); the differences from a and the
+// final additions add a few ulps of the coordinates.
+double depth_in_circumcircle(const Point& a, const Point& b, const Point& c, const Point& p) {
+  const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  const double cross = bx * cy - by * cx;
+  const double ox = (cy * b2 - by * c2) / (2.0 * cross), oy = (bx * c2 - cx * b2) / (2.0 * cross);  // o - a
+  const double radius = std::sqrt(ox * ox + oy * oy);
+  const double px = (p.x - a.x) - ox, py = (p.y - a.y) - oy;
+  const double off = std::sqrt(px * px + py * py);
+  const double longest2 = std::max({b2, c2, (cx - bx) * (cx - bx) + (cy - by) * (cy - by)});
+  const double flatness = 2.0 * longest2 / std::fabs(cross);
+  const double magnitude = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(p.x), std::fabs(p.y)});
+  constexpr double kSlackUlps = 64.0 * 0x1p-52;
+  const double slack = kSlackUlps * (flatness * (std::sqrt(longest2) + radius + off) + magnitude);
+  const double depth = radius - off - slack;
+  return std::isfinite(depth) ? depth : -HUGE_VAL;
+}
+
 Point off_center(const Point& p, const Point& q, const Point& r, double factor) {
   const double bx = q.x - p.x, by = q.y - p.y, cx = r.x - p.x, cy = r.y - p.y;
   const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;

@@ -16,6 +16,14 @@ namespace deltri {
 // or NaN).
 Point circumcenter(const Point& a, const Point& b, const Point& c);
 
+// How far p lies inside the circle through a, b, c: a lower bound on R - |p - o| (centre o, radius
+// R) that allows for the rounding of the construction, scaled by how flat the triangle is and by
+// the coordinates' magnitude; 0 or less when p may be outside, -inf for a flat triangle. Every
+// vertex a constrained Delaunay triangulation shows to the inside of a triangle lies outside its
+// circle, so a point in a triangle is at least this far from each of them (a subsegment split's
+// insertion radius, Terminator::plan_split).
+double depth_in_circumcircle(const Point& a, const Point& b, const Point& c, const Point& p);
+
 // Where Delaunay refinement splits a bad triangle pqr whose shortest edge is pq (Fig. 38 l.13):
 // Ungor's off-centre, the point on pq's bisector, on the side of r, at height factor |pq| above
 // pq's midpoint, when that is nearer the edge than the circumcentre; otherwise the circumcentre.

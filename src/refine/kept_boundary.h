@@ -33,6 +33,8 @@ class KeptBoundary {
   bool refuses_insertion(Terminator& term, const Point& c, TriangleId t) { return active() && refuses(term, c, t); }
   // Fig. 39 l.39: is the split of interior subsegment s at p, just probed, refused?
   bool refuses_split(Terminator& term, EdgeRef s, const Point& p) { return checks_splits_ && spoils_split(term, s, p); }
+  // Whether refuses_split reads the cavity of the split's radius search.
+  bool checks_splits() const { return checks_splits_; }
 
  private:
   bool refuses(Terminator& term, const Point& c, TriangleId t);

@@ -6,6 +6,8 @@
 // too, unless the caller knows it is on it (exactly_on).
 #pragma once
 
+#include <algorithm>
+
 #include "geometry/predicates.h"
 #include "mesh/mesh.h"
 
@@ -20,6 +22,13 @@ EdgeRef restore_delaunay_around(Mesh& mesh, Predicates& pred, VertexId v, EdgeRe
 // vertical a-b (orient2d's filter cannot decide a zero; its exact stage costs more than it saves).
 inline bool exactly_on_axis_parallel_line(const Point& a, const Point& b, const Point& p) {
   return (a.y == b.y && p.y == a.y) || (a.x == b.x && p.x == a.x);
+}
+
+// Whether p lies exactly on the axis-parallel segment a-b, strictly between its ends, by comparisons.
+inline bool strictly_inside_axis_parallel(const Point& a, const Point& b, const Point& p) {
+  if (a.y == b.y && p.y == a.y) return std::min(a.x, b.x) < p.x && p.x < std::max(a.x, b.x);
+  if (a.x == b.x && p.x == a.x) return std::min(a.y, b.y) < p.y && p.y < std::max(a.y, b.y);
+  return false;
 }
 
 }  // namespace deltri

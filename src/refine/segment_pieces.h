@@ -50,6 +50,11 @@ struct SegmentPieces {
 
   // v split a subsegment of `piece`; mesh's vertex and subsegment records now include the split.
   void record_split(const Mesh& mesh, VertexId v, const PieceEnds& piece);
+  // Room for `records` more subsegment records and splits without reallocating.
+  void reserve(std::size_t records) {
+    of_subsegment.reserve(of_subsegment.size() + records);
+    splits.reserve(splits.size() + records);
+  }
   // The end o of `mine` such that c lies on another piece from o: c splits such a piece, or c is
   // the far end of an initial one; kNone if there is none.
   VertexId end_shared_with(const PieceEnds& mine, VertexId c) const;

@@ -72,21 +72,37 @@ double squared_diameter(const Box& box) {
 // and one too low only leaves the last doublings.
 constexpr double kMaxReservedTriangles = 3.2e7;
 constexpr double kQualityGrowth = 6.0;
+// A small input refined for quality alone can end a million times larger than it starts (the
+// rectangle 1 x 1e-6: 2 triangles, then 2,097,152), where the guess above left its arrays to
+// double twenty times: a third of that run's page faults were the copies and their fresh pages.
+// There the input's feature work (termination_guard.h: 0.7 triangles per unit on the strips, 0.02
+// to 2.4 on the corpus at -q30 and -q33) is the guess when it is larger. Such a mesh may have
+// about as many vertices on segments as triangles (every vertex of a strip is on its sides), so
+// the vertices and subsegment records get as much. Only for a few triangles: the estimate's pass
+// cost guitar.poly (148 slots, 351 triangles at -q30) 4% of its run's instructions, for nothing.
+constexpr double kEstimatedUpToSlots = 64;
 
-void reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
+// Returns the room reserved for new subsegment records (0 where the guess is the slots').
+std::size_t reserve_for_refinement(Mesh& mesh, const RefineOptions& opt) {
   const double wanted = triangles_wanted(mesh, opt.size);
   const double slots = mesh.triangle_slots();
-  const double added = wanted > 0.0 ? 2.0 * wanted : opt.angle.asked() ? (kQualityGrowth - 1.0) * slots : 0.0;
-  if (!(added > 0.0) || slots + added > kMaxReservedTriangles) return;  // let such runs grow as needed
+  double added = wanted > 0.0 ? 2.0 * wanted : opt.angle.asked() ? (kQualityGrowth - 1.0) * slots : 0.0;
+  const bool estimated = wanted <= 0.0 && opt.angle.asked() && slots <= kEstimatedUpToSlots;
+  if (estimated) added = std::max(added, feature_work(mesh));
+  if (!(added > 0.0) || slots + added > kMaxReservedTriangles) return 0;  // let such runs grow as needed
   const std::size_t triangles = static_cast<std::size_t>(slots + added);
-  const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(added / 2.0);
+  const std::size_t vertices = mesh.vertex_count() + static_cast<std::size_t>(estimated ? added : added / 2.0);
+  const std::size_t records = estimated ? static_cast<std::size_t>(added) : 0;
   try {
     mesh.reserve_triangles(triangles);
     mesh.points.reserve(vertices);
     mesh.kind.reserve(vertices);
+    if (!mesh.marker.empty()) mesh.marker.reserve(vertices);
+    mesh.subsegments.reserve(mesh.subsegments.size() + records);
   } catch (const std::bad_alloc&) {
-    // address space is short (a ulimit): grow as needed instead
+    return 0;  // address space is short (a ulimit): grow as needed instead
   }
+  return records;
 }
 
 template <class Array>
@@ -209,7 +225,13 @@ RefineReport Terminator::run() {
 
 void Terminator::split_initial_encroachments() {
   look_for_free_vertices();
-  reserve_for_refinement(mesh_, opt_);
+  if (const std::size_t records = reserve_for_refinement(mesh_, opt_)) {
+    try {
+      pieces_.reserve(records);
+    } catch (const std::bad_alloc&) {
+      // as above: grow as needed
+    }
+  }
   if (small_pages_) {
     prefer_small_pages(mesh_.corner.data(), mesh_.corner.capacity() * sizeof(VertexId));
     prefer_small_pages(mesh_.link.data(), mesh_.link.capacity() * sizeof(EdgeRef));

@@ -141,6 +141,9 @@ class Terminator {
   Point split_point(EdgeRef s);  // l.39: the split-point policy plan_split consults
   std::optional<Outcome> replan_after_deletions(EdgeRef s, SplitPlan& plan);
   SplitRadius split_radius(EdgeRef s, const Point& p);
+  bool split_radius_read() const;  // beyond plan_split's comparison with the floor
+  bool split_clear_of(EdgeRef s, const Point& p, double floor) const;  // surely, without the search
+  bool split_radius_at_least(EdgeRef s, const Point& p, double floor) const;
   // Would splitting s at p leave every new triangle counter-clockwise?
   // chew_pending: free vertices in s's diametral circle do not count (Chew's step deletes them).
   bool split_keeps_orientation(EdgeRef s, const Point& p, bool chew_pending);

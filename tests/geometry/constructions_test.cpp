@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "geometry/constructions.h"
 #include "geometry/exact_reference.h"
@@ -149,6 +150,50 @@ TEST(circumcenter_exact_cases) {
 // circumcentre, or of the exact off-centre (the point at height factor |pq| on the way from pq's
 // midpoint to the exact circumcentre) when that is nearer pq. Where the two distances are too
 // close to call in doubles, either point may come out.
+// depth_in_circumcircle is a lower bound: every point q at that distance from p is strictly inside
+// the circle, decided by the exact incircle sign. p is placed at a random fraction of the way to
+// the circle, up to a few ulps from it, so that the bound's slack is what keeps q inside; the
+// triangles include the five kinds above and needles whose apex is a few ulps off the base
+// line, where the centre's rounding is largest. A bound without its slack fails here.
+TEST(depth_in_circumcircle_is_a_lower_bound) {
+  CHECK(reference::incircle_sign({0, 0}, {1, 0}, {0, 1}, {0.2, 0.2}) > 0);  // the sign's sense
+  Random rng(45);
+  int positive = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Triangle t = random_triangle(rng, i);
+    if (i % 3 == 0) {
+      const Point mid{(t.a.x + t.b.x) / 2, (t.a.y + t.b.y) / 2};
+      t.c = nudge(mid, rng.integer(-64, 64), rng.integer(-64, 64));
+    }
+    const int turn = orient_sign(t.a, t.b, t.c);
+    if (turn == 0) continue;
+    if (turn < 0) std::swap(t.b, t.c);
+    const Point o = deltri::circumcenter(t.a, t.b, t.c);
+    const double r = distance(o, t.a);
+    const double angle = rng.uniform(0.0, 2.0 * std::numbers::pi);
+    const double fraction = i % 2 == 0 ? rng.uniform(0.0, 1.0) : 1.0 - std::ldexp(1.0, -rng.integer(8, 50));
+    const Point p{o.x + fraction * r * std::cos(angle), o.y + fraction * r * std::sin(angle)};
+    const double depth = deltri::depth_in_circumcircle(t.a, t.b, t.c, p);
+    if (!(depth > 0.0)) continue;
+    ++positive;
+    for (int k = 0; k < 8; ++k) {
+      const double phi = k * std::numbers::pi / 4.0;
+      const Point q{p.x + depth * std::cos(phi), p.y + depth * std::sin(phi)};
+      CHECK(reference::incircle_sign(t.a, t.b, t.c, q) > 0);
+    }
+  }
+  CHECK(positive > 5000);
+}
+
+TEST(depth_in_circumcircle_exact_cases) {
+  // The circle through (0,0), (2,0), (0,2): centre (1,1), radius sqrt 2.
+  CHECK_NEAR(deltri::depth_in_circumcircle({0, 0}, {2, 0}, {0, 2}, {1, 1}), std::sqrt(2.0), 1e-12);
+  CHECK_NEAR(deltri::depth_in_circumcircle({0, 0}, {2, 0}, {0, 2}, {1, 0}), std::sqrt(2.0) - 1.0, 1e-12);
+  CHECK(deltri::depth_in_circumcircle({0, 0}, {2, 0}, {0, 2}, {3, 3}) < 0.0);
+  CHECK(deltri::depth_in_circumcircle({0, 0}, {2, 0}, {0, 2}, {0, 0}) <= 0.0);  // on the circle
+  CHECK(deltri::depth_in_circumcircle({0, 0}, {1, 0}, {2, 0}, {1, 0}) == -HUGE_VAL);  // flat
+}
+
 TEST(off_center_matches_the_exact_construction) {
   Random rng(42);
   const double thetas[] = {10.0, 20.0, 25.0, 30.0, 33.0, 34.0, 40.0};
