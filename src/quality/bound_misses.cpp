@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "geometry/constructions.h"
@@ -42,10 +43,27 @@ struct Spoke {
   std::uint32_t segment;
 };
 
+// A list per key, all in one array: vectors of vectors, an allocation and a free for each of a
+// few hundred thousand vertices, were most of this check's cost.
+template <class T>
+struct Rows {
+  std::vector<std::uint32_t> start{0};  // row k is items[start[k], start[k + 1])
+  std::vector<T> items;
+  std::size_t size() const { return start.size() - 1; }
+  std::span<T> operator[](std::size_t k) { return {items.data() + start[k], items.data() + start[k + 1]}; }
+  std::span<const T> operator[](std::size_t k) const { return {items.data() + start[k], items.data() + start[k + 1]}; }
+  // Rows 0 .. counts.size() - 1, row k with room for counts[k] items.
+  void size_rows(const std::vector<std::uint32_t>& counts) {
+    start.assign(counts.size() + 1, 0);
+    for (std::size_t k = 0; k < counts.size(); ++k) start[k + 1] = start[k] + counts[k];
+    items.resize(start.back());
+  }
+};
+
 struct SegmentVertices {
-  std::vector<std::vector<Spoke>> spokes;             // per vertex, by direction
-  std::vector<std::vector<std::uint32_t>> segments;   // per vertex: the input segments it lies on
-  std::vector<std::vector<VertexId>> junctions;       // per input segment: its vertices on other segments too
+  Rows<Spoke> spokes;             // per vertex, by direction
+  Rows<std::uint32_t> segments;   // per vertex: the input segments it lies on, in the spokes' order
+  Rows<VertexId> junctions;       // per input segment: its vertices on other segments too
 };
 
 // The number after every input segment's: the first number a hull edge can take.
@@ -86,41 +104,84 @@ void number_hull_edges(const Mesh& m, std::uint32_t first, SegmentVertices& s) {
       else parent[root_of(parent, k.segment - first)] = root_of(parent, joined);
     }
   }
-  for (auto& list : s.spokes)
-    for (Spoke& k : list)
-      if (k.segment != kNone && k.segment >= first) k.segment = first + root_of(parent, k.segment - first);
+  for (Spoke& k : s.spokes.items)
+    if (k.segment != kNone && k.segment >= first) k.segment = first + root_of(parent, k.segment - first);
 }
 
-SegmentVertices collect_spokes(const Mesh& m) {
-  SegmentVertices s;
-  s.spokes.resize(m.vertex_count());
-  s.segments.resize(m.vertex_count());
-  if (!m.has_subsegments()) return s;
+// The subsegments, each once (from its edge with the smaller id), in slot order: their ends and
+// input segment numbers.
+struct SpokePair {
+  VertexId a, b;
+  std::uint32_t segment;
+};
+
+std::vector<SpokePair> subsegment_list(const Mesh& m) {
+  std::vector<SpokePair> out;
   for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
     if (!m.is_live(t)) continue;
     for (EdgeRef e : edges_of(t)) {
       if (!m.subseg.has(e) || (m.link[e] != kNone && m.link[e] < e)) continue;
-      const VertexId a = m.org(e), b = m.dest(e);
-      const std::uint32_t seg = m.subsegments[m.subseg[e]].segment;
-      const Point &p = m.points[a], &q = m.points[b];
-      s.spokes[a].push_back({std::atan2(q.y - p.y, q.x - p.x), b, seg});
-      s.spokes[b].push_back({std::atan2(p.y - q.y, p.x - q.x), a, seg});
+      out.push_back({m.org(e), m.dest(e), m.subsegments[m.subseg[e]].segment});
     }
   }
+  return out;
+}
+
+// Each vertex's spokes in the order of the subsegment list (the order the sort by direction
+// starts from).
+void fill_spokes(const Mesh& m, const std::vector<SpokePair>& list, Rows<Spoke>& spokes) {
+  std::vector<std::uint32_t> count(m.vertex_count(), 0);
+  for (const SpokePair& k : list) ++count[k.a], ++count[k.b];
+  spokes.size_rows(count);
+  std::fill(count.begin(), count.end(), 0);
+  for (const SpokePair& k : list) {
+    const Point &p = m.points[k.a], &q = m.points[k.b];
+    spokes.items[spokes.start[k.a] + count[k.a]++] = {std::atan2(q.y - p.y, q.x - p.x), k.b, k.segment};
+    spokes.items[spokes.start[k.b] + count[k.b]++] = {std::atan2(p.y - q.y, p.x - q.x), k.a, k.segment};
+  }
+}
+
+// Each vertex's input segments (the distinct numbers of its spokes, in their order) and each
+// segment's junctions (its vertices on two or more), the vertices in increasing order.
+void list_segments(const Mesh& m, SegmentVertices& s) {
+  std::vector<std::uint32_t> junction_count;
+  s.segments.start.assign(m.vertex_count() + 1, 0);
+  for (VertexId v{0}; v < m.vertex_count(); ++v) {
+    for (const Spoke& k : s.spokes[v]) {
+      const auto mine = s.segments.items.begin() + s.segments.start[v];
+      if (std::find(mine, s.segments.items.end(), k.segment) == s.segments.items.end())
+        s.segments.items.push_back(k.segment);
+    }
+    s.segments.start[v + 1] = static_cast<std::uint32_t>(s.segments.items.size());
+    if (s.segments[v].size() < 2) continue;
+    for (std::uint32_t seg : s.segments[v])
+      if (seg != kNone) {
+        if (seg >= junction_count.size()) junction_count.resize(seg + 1, 0);
+        ++junction_count[seg];
+      }
+  }
+  s.junctions.size_rows(junction_count);
+  std::fill(junction_count.begin(), junction_count.end(), 0);
+  for (VertexId v{0}; v < m.vertex_count(); ++v)
+    if (s.segments[v].size() >= 2)
+      for (std::uint32_t seg : s.segments[v])
+        if (seg != kNone) s.junctions.items[s.junctions.start[seg] + junction_count[seg]++] = v;
+}
+
+SegmentVertices collect_spokes(const Mesh& m) {
+  SegmentVertices s;
+  if (!m.has_subsegments()) {
+    s.spokes.start.assign(m.vertex_count() + 1, 0);
+    s.segments.start.assign(m.vertex_count() + 1, 0);
+    return s;
+  }
+  fill_spokes(m, subsegment_list(m), s.spokes);
   number_hull_edges(m, first_hull_number(m), s);
   for (VertexId v{0}; v < m.vertex_count(); ++v) {
-    auto& list = s.spokes[v];
+    const std::span<Spoke> list = s.spokes[v];
     std::sort(list.begin(), list.end(), [](const Spoke& x, const Spoke& y) { return x.direction < y.direction; });
-    for (const Spoke& k : list)
-      if (std::find(s.segments[v].begin(), s.segments[v].end(), k.segment) == s.segments[v].end())
-        s.segments[v].push_back(k.segment);
-    if (s.segments[v].size() < 2) continue;
-    for (std::uint32_t seg : s.segments[v]) {
-      if (seg == kNone) continue;
-      if (seg >= s.junctions.size()) s.junctions.resize(seg + 1);
-      s.junctions[seg].push_back(v);
-    }
   }
+  list_segments(m, s);
   return s;
 }
 

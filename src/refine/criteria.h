@@ -182,8 +182,10 @@ class BoundCheck {
   // -1 below the limit, +1 not below, 0 a near tie.
   int clear_side(const Point& a, const Point& b, const Point& c) const;
   bool below(const Point& a, const Point& b, const Point& c) const;
+  bool clears_every_corner(const Point& a, const Point& b, const Point& c) const;
   double limit_ = 0.0;  // degrees; 0: no angle bound
   double tangent_ = 0.0;
+  double clear_sine2_ = 0.0;  // sin^2 of the limit, raised by a relative 1e-6 (clears_every_corner)
   SizeBounds size_;
   LargestAngleBound max_angle_;
 };

@@ -302,10 +302,13 @@ TEST(size_bounds_count_separately_and_good_triangles_not_at_all) {
 // The angle test decides most triangles without atan2 (by tan(bound) against cross / dot) and
 // near ties with it: either way a triangle misses exactly when its smallest angle, computed in
 // long double here, is below the bound less the relative margin of 1e-12. Bounds 1e-11 and 1e-6
-// (relative) either side of the angle take both paths, at scales whose products stay normal.
+// (relative) either side of the angle take both paths, at scales whose products stay normal. A
+// triangle that clears the bound by far is decided by one measure of its smallest angle, whose
+// products of squared lengths are subnormal at 1e-80 and 3e-81 (a few bits left): there the corner
+// tests must decide.
 TEST(the_angle_test_agrees_with_a_long_double_reference_at_and_away_from_ties) {
   int checked = 0;
-  for (double scale : {1.0, 1e-150, 1e150})
+  for (double scale : {1.0, 1e-150, 1e150, 1e-80, 3e-81})
     for (int n = 1; n <= 12; ++n)
       for (int k = 1; k <= 12; ++k) {
         // (0,0), (n,0), (n,k) scaled: right angle at (n,0); the smallest angle is at the origin
@@ -321,7 +324,7 @@ TEST(the_angle_test_agrees_with_a_long_double_reference_at_and_away_from_ties) {
           ++checked;
         }
       }
-  CHECK_EQ(checked, 3 * 12 * 12 * 5);
+  CHECK_EQ(checked, 5 * 12 * 12 * 5);
   // An obtuse triangle (120 degrees at the apex, 30 at the others) against 29.9 and 30.1.
   Mesh obtuse = mesh_of({{0, 0}, {std::sqrt(3.0), 0}, {std::sqrt(3.0) / 2, 0.5}});
   obtuse.add_triangle(0_v, 1_v, 2_v);
