@@ -11,9 +11,9 @@
 namespace deltri {
 namespace {
 
-// The neighbourhood searched is a few times pq's length across; in a graded mesh that is a few
-// dozen triangles. The cap bounds the work where the mesh is much finer than pq (next to a short
-// feature), where the off-centre is the candidate that matters anyway.
+// The triangles whose circumcircles may meet the petal are a few dozen in a graded mesh. The cap
+// bounds the work where the mesh is much finer than pq (next to a short feature), where the
+// off-centre is the candidate that matters anyway.
 constexpr std::size_t kGatherLimit = 96;
 // The table holds the gathered triangles and those refused next to them (at most three neighbours
 // per gathered one), with room to spare for short probes.
@@ -41,7 +41,7 @@ Point steiner_point_of(const Point& a, const Point& b, const Point& c, double of
 
 // pq counter-clockwise with r, so the petal is on the left of p -> q.
 PetalSearch::Petal PetalSearch::petal_of(const Point& p, const Point& q, const Point& r, double theta_deg) {
-  Petal petal{p, q, r, {}, {}, 0.0, {}, {}, 0.0, 0.0, {}, 0.0};
+  Petal petal{p, q, r, {}, {}, 0.0, {}, {}, 0.0, {}, 0.0};
   const double phi = radians(theta_deg + kPetalMarginDeg);
   const double lx = q.x - p.x, ly = q.y - p.y, l = std::sqrt(lx * lx + ly * ly);
   const double ux = lx / l, uy = ly / l, nx = -uy, ny = ux;  // along pq, and its left normal
@@ -53,7 +53,6 @@ PetalSearch::Petal PetalSearch::petal_of(const Point& p, const Point& q, const P
   const double ray = 2.5 * petal.arc_radius, c = std::cos(phi), s = std::sin(phi);
   petal.ray_p = along(p, ux * c - uy * s, uy * c + ux * s, ray);
   petal.ray_q = along(q, -ux * c - uy * s, -uy * c + ux * s, ray);
-  petal.reach = 0.5 * l / std::tan(0.5 * phi) + l / std::sin(phi);
   petal.holder = along(mid, nx, ny, 0.5 * l / std::tan(radians(theta_deg)));
   petal.holder_radius = 0.5 * l / std::sin(radians(theta_deg));
   const double s_min = std::sin(radians(theta_deg + 0.5 * kPetalMarginDeg));
@@ -68,7 +67,7 @@ Point PetalSearch::choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, 
   const Point& r = mesh.point(mesh.apex(shortest));
   const Point fallback = off_center(p, q, r, off_center_factor);
   const Petal petal = petal_of(p, q, r, theta_deg);
-  if (!std::isfinite(fallback.x) || !std::isfinite(fallback.y) || !std::isfinite(petal.reach)) return fallback;
+  if (!std::isfinite(fallback.x) || !std::isfinite(fallback.y) || !std::isfinite(petal.holder_radius)) return fallback;
   const Box box = gather_near(mesh, triangle_of(shortest), petal, fallback);
   in_cavity_.assign(triangles_.size(), 0);
   candidates_.assign(1, petal.top);
@@ -128,7 +127,7 @@ bool PetalSearch::star_meets(const Point& x, double bound_sin2, bool in_box) {
 // Whether a circumcircle (centre o, squared radius r2) may hold a point of the box: its bounding
 // box, widened by a millionth of its size and place (far past rounding), meets it. When not, a
 // point of the box is outside the circle in floating point too. A NaN counts as near.
-bool PetalSearch::Box::near(const Point& o, double r2) const {
+inline bool PetalSearch::Box::near(const Point& o, double r2) const {
   const double radius = std::sqrt(r2);
   const double reach = radius + 1e-6 * (radius + std::fabs(o.x) + std::fabs(o.y));
   return !(o.x + reach < x_lo || o.x - reach > x_hi || o.y + reach < y_lo || o.y - reach > y_hi);
@@ -178,7 +177,7 @@ PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const 
   return box;
 }
 
-void PetalSearch::describe(std::size_t i) {
+inline void PetalSearch::describe(std::size_t i) {
   const auto& [a, b, c] = corners_[i];
   centres_.push_back(circumcenter(a, b, c));
   radii2_.push_back(squared_distance(centres_.back(), a));
@@ -292,7 +291,7 @@ void PetalSearch::refuse(TriangleId t) {
 
 // What lies across side `side` of gathered triangle i: kWall (the hull or a subsegment), or a
 // triangle u (set) and its index_of.
-int PetalSearch::look_across(const Mesh& mesh, bool walls, std::size_t i, unsigned side, TriangleId& u) const {
+inline int PetalSearch::look_across(const Mesh& mesh, bool walls, std::size_t i, unsigned side, TriangleId& u) const {
   const EdgeRef e = edge_of(triangles_[i], side);
   const EdgeRef across = mesh.link[e];
   if (across == kNone || (walls && mesh.subseg.has(e))) return kWall;
@@ -300,7 +299,7 @@ int PetalSearch::look_across(const Mesh& mesh, bool walls, std::size_t i, unsign
   return index_of(u);
 }
 
-void PetalSearch::remember(TriangleId t, const Mesh::CornerPoints& at) {
+inline void PetalSearch::remember(TriangleId t, const Mesh::CornerPoints& at) {
   const std::size_t slot = slot_of(t);
   slots_[slot] = t;
   slot_index_[slot] = static_cast<int>(triangles_.size());
@@ -358,7 +357,7 @@ void PetalSearch::describe_gathered(const Mesh& mesh, std::size_t explored) {
 // Each corner once (clearance2 takes the least distance, so their order does not matter): a stamp
 // per vertex of the mesh (seen_, sized by describe_gathered) marks those seen by this search,
 // instead of sorting the ids each time.
-void PetalSearch::note_vertex(const Mesh& mesh, VertexId v) {
+inline void PetalSearch::note_vertex(const Mesh& mesh, VertexId v) {
   const auto i = static_cast<std::size_t>(static_cast<std::uint32_t>(v));
   if (seen_[i] == search_) return;
   seen_[i] = search_;

@@ -61,7 +61,6 @@ class PetalSearch {
     Point arc_centre;             // the arc's circle
     double arc_radius = 0.0;
     Point ray_p, ray_q;           // the far ends of the rays from p and q, beyond the arc
-    double reach = 0.0;           // every candidate's nearest vertex is within this of the midpoint of pq
     double sin2_min = 0.0;        // what triangle pqx must meet
     Point holder;                 // the disk from which pq subtends the bound itself: it holds the petal
     double holder_radius = 0.0;
