@@ -94,13 +94,8 @@ double PetalSearch::star_margin(const Point& x, const AngleBound& angle, const L
 // The first gathered triangle (closed) holding x: in the domain, on pq's side of the subsegments
 // around (in_gathered).
 int PetalSearch::container_of(const Point& x) const {
-  const auto left_of = [&](const Point& a, const Point& b) {
-    return (b.x - a.x) * (x.y - a.y) - (b.y - a.y) * (x.x - a.x) >= 0.0;
-  };
-  for (std::size_t i = 0; i < corners_.size(); ++i) {
-    const auto& [a, b, c] = corners_[i];
-    if (left_of(a, b) && left_of(b, c) && left_of(c, a)) return static_cast<int>(i);
-  }
+  for (std::size_t i = 0; i < corners_.size(); ++i)
+    if (holds(corners_[i], x)) return static_cast<int>(i);
   return -1;
 }
 

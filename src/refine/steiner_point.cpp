@@ -11,9 +11,9 @@
 namespace deltri {
 namespace {
 
-// The neighbourhood searched is a few times pq's length across; in a graded mesh that is a few
-// dozen triangles. The cap bounds the work where the mesh is much finer than pq (next to a short
-// feature), where the off-centre is the candidate that matters anyway.
+// The triangles whose circumcircles may meet the petal are a few dozen in a graded mesh. The cap
+// bounds the work where the mesh is much finer than pq (next to a short feature), where the
+// off-centre is the candidate that matters anyway.
 constexpr std::size_t kGatherLimit = 96;
 // The table holds the gathered triangles and those refused next to them (at most three neighbours
 // per gathered one), with room to spare for short probes.
@@ -41,7 +41,7 @@ Point steiner_point_of(const Point& a, const Point& b, const Point& c, double of
 
 // pq counter-clockwise with r, so the petal is on the left of p -> q.
 PetalSearch::Petal PetalSearch::petal_of(const Point& p, const Point& q, const Point& r, double theta_deg) {
-  Petal petal{p, q, r, {}, {}, 0.0, {}, {}, 0.0, 0.0};
+  Petal petal{p, q, r, {}, {}, 0.0, {}, {}, 0.0, {}, 0.0};
   const double phi = radians(theta_deg + kPetalMarginDeg);
   const double lx = q.x - p.x, ly = q.y - p.y, l = std::sqrt(lx * lx + ly * ly);
   const double ux = lx / l, uy = ly / l, nx = -uy, ny = ux;  // along pq, and its left normal
@@ -53,7 +53,8 @@ PetalSearch::Petal PetalSearch::petal_of(const Point& p, const Point& q, const P
   const double ray = 2.5 * petal.arc_radius, c = std::cos(phi), s = std::sin(phi);
   petal.ray_p = along(p, ux * c - uy * s, uy * c + ux * s, ray);
   petal.ray_q = along(q, -ux * c - uy * s, -uy * c + ux * s, ray);
-  petal.reach = 0.5 * l / std::tan(0.5 * phi) + l / std::sin(phi);
+  petal.holder = along(mid, nx, ny, 0.5 * l / std::tan(radians(theta_deg)));
+  petal.holder_radius = 0.5 * l / std::sin(radians(theta_deg));
   const double s_min = std::sin(radians(theta_deg + 0.5 * kPetalMarginDeg));
   petal.sin2_min = s_min * s_min;
   return petal;
@@ -66,46 +67,135 @@ Point PetalSearch::choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, 
   const Point& r = mesh.point(mesh.apex(shortest));
   const Point fallback = off_center(p, q, r, off_center_factor);
   const Petal petal = petal_of(p, q, r, theta_deg);
-  if (!std::isfinite(fallback.x) || !std::isfinite(fallback.y) || !std::isfinite(petal.reach)) return fallback;
-  gather(mesh, triangle_of(shortest), midpoint(p, q), petal.reach);
+  if (!std::isfinite(fallback.x) || !std::isfinite(fallback.y) || !std::isfinite(petal.holder_radius)) return fallback;
+  const Box box = gather_near(mesh, triangle_of(shortest), petal, fallback);
+  in_cavity_.assign(triangles_.size(), 0);
   candidates_.assign(1, petal.top);
   propose_corners(petal);
   for (const Point& c : centres_) candidates_.push_back(c);
-  propose_voronoi(petal);
+  propose_voronoi(petal, box);
   Point best = fallback;
-  Score best_score = score(fallback, petal.sin2_min);
+  bool best_good = star_meets(fallback, petal.sin2_min, box.holds(fallback));
+  double best_clearance = clearance2(fallback);
   for (const Point& x : candidates_) {
-    const bool best_good = best_score.shape >= petal.sin2_min;
-    // Behind a good point only a farther one can win: the distance is the cheap test.
-    if (best_good && !(clearance2(x) > best_score.clearance2)) continue;
+    if (!box.holds(x)) continue;  // outside pqr's circumcircle for certain: not admissible
+    if (best_good) {
+      // Behind a good point only a farther good one can win: the distance is the cheap test.
+      const double clearance = clearance2(x);
+      if (!(clearance > best_clearance)) continue;
+      if (admissible(pred, petal, x) && in_gathered(x) && star_meets(x, petal.sin2_min, true))
+        best = x, best_clearance = clearance;
+      continue;
+    }
     if (!admissible(pred, petal, x) || !in_gathered(x)) continue;
-    const Score s = score(x, petal.sin2_min);
-    const bool good = s.shape >= petal.sin2_min;
-    if ((good && !best_good) || (good == best_good && s.clearance2 > best_score.clearance2))
-      best = x, best_score = s;
+    const bool good = star_meets(x, petal.sin2_min, true);
+    const double clearance = clearance2(x);
+    if (good || clearance > best_clearance) best = x, best_good = good, best_clearance = clearance;
   }
   return best;
 }
 
-// A candidate's new triangles are those it makes with the boundary of its cavity: the gathered
-// triangles whose circumcircles contain it (the whole cavity, unless it reaches past the gathered
-// ones). Their smallest angle counts up to the bound: beyond it a larger star is worth more.
-PetalSearch::Score PetalSearch::score(const Point& x, double bound_sin2) {
-  in_cavity_.assign(triangles_.size(), 0);
-  for (std::size_t i = 0; i < triangles_.size(); ++i)
-    in_cavity_[i] = squared_distance(x, centres_[i]) < radii2_[i];
-  double shape = bound_sin2;
-  for (std::size_t i = 0; i < triangles_.size(); ++i) {
-    if (!in_cavity_[i]) continue;
+// Whether every triangle a candidate makes with the boundary of its cavity meets the bound: the
+// cavity is the gathered triangles whose circumcircles contain it (the whole cavity, unless it
+// reaches past the gathered ones). Only the first miss matters, so the search stops there. For x
+// in the admissible box only near_ can hold it (find_near); in_cavity_ is left all 0.
+bool PetalSearch::star_meets(const Point& x, double bound_sin2, bool in_box) {
+  if (!in_box) {
+    all_.resize(triangles_.size());
+    for (std::size_t i = 0; i < all_.size(); ++i) all_[i] = static_cast<int>(i);
+  }
+  const std::vector<int>& looked_at = in_box ? near_ : all_;
+  for (const int i : looked_at) in_cavity_[i] = squared_distance(x, centres_[i]) < radii2_[i];
+  bool meets = true;
+  for (auto i = looked_at.begin(); meets && i != looked_at.end(); ++i) {
+    if (!in_cavity_[*i]) continue;
+    const auto& corners = corners_[*i];
     for (unsigned side = 0; side < 3; ++side) {
-      const int j = neighbours_[i][side];
-      if (j >= 0 && in_cavity_[static_cast<std::size_t>(j)]) continue;
-      const Point& a = corners_[i][side];
-      const Point& b = corners_[i][(side + 1) % 3];
-      shape = std::min(shape, smallest_angle_sine2(a, b, x));
+      const int j = neighbours_[*i][side];
+      if (j >= 0 && in_cavity_[j]) continue;
+      // A NaN measure misses nothing, as the least taken with std::min did before.
+      if (smallest_angle_sine2(corners[side], corners[(side + 1) % 3], x) < bound_sin2) {
+        meets = false;
+        break;
+      }
     }
   }
-  return {shape, clearance2(x)};
+  for (const int i : looked_at) in_cavity_[i] = 0;
+  return meets;
+}
+
+// Whether a circumcircle (centre o, squared radius r2) may hold a point of the box: its bounding
+// box, widened by a millionth of its size and place (far past rounding), meets it. When not, a
+// point of the box is outside the circle in floating point too. A NaN counts as near.
+inline bool PetalSearch::Box::near(const Point& o, double r2) const {
+  const double radius = std::sqrt(r2);
+  const double reach = radius + 1e-6 * (radius + std::fabs(o.x) + std::fabs(o.y));
+  return !(o.x + reach < x_lo || o.x - reach > x_hi || o.y + reach < y_lo || o.y - reach > y_hi);
+}
+
+// The triangles that can matter to a candidate in the admissible box (returned): from t (pqr), the
+// triangles whose circumcircles may meet the box, reachable from t through such triangles without
+// crossing a subsegment (near_), and their other neighbours (the rim, not gone through), whose
+// circumcentres end the Voronoi edges that leave the near ones. That is all an admissible x needs:
+// in a constrained Delaunay mesh the triangles whose circumcircles hold x are connected and hold
+// pqr (x is in its circumcircle), so x's whole cavity is near, its nearest vertex is one of the
+// cavity's corners, a circumcentre in the box is a near triangle's, and a Voronoi edge reaches into
+// the box only from a near end (a point of it is inside one of its two ends' circumcircles).
+PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback) {
+  triangles_.clear();
+  corners_.clear();
+  neighbours_.clear();
+  centres_.clear();
+  radii2_.clear();
+  near_.clear();
+  slots_.assign(kSlots, kNone);
+  remember(t, mesh.corner_points(t));
+  describe(0);
+  near_.push_back(0);
+  const Box box = admissible_box(petal, fallback);
+  const bool walls = mesh.has_subsegments();
+  expanded_.assign(1, 0);
+  for (std::size_t k = 0; k < near_.size() && triangles_.size() < kGatherLimit; ++k) {
+    const auto next = static_cast<std::size_t>(near_[k]);
+    expanded_[next] = 1;
+    for (unsigned side = 0; side < 3; ++side) {
+      TriangleId u;
+      const int known = look_across(mesh, walls, next, side, u);
+      if (known != -1) {
+        neighbours_[next][side] = std::max(known, -1);
+        continue;
+      }
+      const auto i = static_cast<int>(triangles_.size());
+      neighbours_[next][side] = i;
+      remember(u, mesh.corner_points(u));
+      describe(static_cast<std::size_t>(i));
+      expanded_.push_back(0);
+      if (box.near(centres_.back(), radii2_.back())) near_.push_back(i);
+    }
+  }
+  note_vertices_and_rim(mesh);
+  return box;
+}
+
+inline void PetalSearch::describe(std::size_t i) {
+  const auto& [a, b, c] = corners_[i];
+  centres_.push_back(circumcenter(a, b, c));
+  radii2_.push_back(squared_distance(centres_.back(), a));
+}
+
+// The gathered triangles' corners, each once, and the neighbours of those not gone through
+// (expanded_ 0: gather_near's rim and near ones left at the limit; gather's last ones).
+void PetalSearch::note_vertices_and_rim(const Mesh& mesh) {
+  vertices_.clear();
+  if (++search_ == 0) std::fill(seen_.begin(), seen_.end(), 0), search_ = 1;
+  if (seen_.size() < mesh.vertex_count()) seen_.resize(std::max<std::size_t>(mesh.vertex_count(), 2 * seen_.size()), 0);
+  const bool walls = mesh.has_subsegments();
+  for (std::size_t i = 0; i < triangles_.size(); ++i) {
+    for (unsigned k = 0; k < 3; ++k) note_vertex(mesh, mesh.corner[edge_of(triangles_[i], k)]);
+    if (expanded_[i]) continue;
+    TriangleId u;
+    for (unsigned side = 0; side < 3; ++side) neighbours_[i][side] = std::max(look_across(mesh, walls, i, side, u), -1);
+  }
 }
 
 // The two ends of the arc, where the rays meet it: the petal's corners.
@@ -120,10 +210,9 @@ void PetalSearch::propose_corners(const Petal& petal) {
 
 // The crossings of the Voronoi edges between the gathered triangles (their circumcentres, joined
 // across edges that carry no subsegment) with the arc and the rays.
-void PetalSearch::propose_voronoi(const Petal& petal) {
+void PetalSearch::propose_voronoi(const Petal& petal, const Box& near) {
   Point crossings[2];
   Point at;
-  const Box near = admissible_box();
   for (std::size_t i = 0; i < triangles_.size(); ++i) {
     for (unsigned side = 0; side < 3; ++side) {
       const int j = neighbours_[i][side];
@@ -143,17 +232,20 @@ void PetalSearch::propose_voronoi(const Petal& petal) {
 // candidate is inside that circle (the exact incircle test), and a crossing on a Voronoi edge lies
 // in the edge's bounding box, so an edge whose box misses it proposes nothing admissible and its
 // crossings need not be computed (most of the gathered edges, which surround the petal).
-PetalSearch::Box PetalSearch::admissible_box() const {
-  const Point& c = centres_[0];
-  const double reach = std::sqrt(radii2_[0]) * (1.0 + 1e-3) + 1e-9 * (std::fabs(c.x) + std::fabs(c.y));
-  return {c.x - reach, c.x + reach, c.y - reach, c.y + reach};
-}
-
-// Disjoint for certain. An edge with a NaN or infinite end may count as disjoint either way: its
-// crossings are not finite, and admissible() refuses them.
-bool PetalSearch::Box::misses(const Point& a, const Point& b) const {
-  return std::max(a.x, b.x) < x_lo || std::min(a.x, b.x) > x_hi || std::max(a.y, b.y) < y_lo ||
-         std::min(a.y, b.y) > y_hi;
+// An admissible candidate also makes triangle pqx meet the bound, so its angle at x is at least
+// theta: x is in the disk through p and q from which pq subtends theta (Petal::holder), and in the
+// box around that disk too. Last, the box takes in the fallback, whose cavity is scored as well.
+PetalSearch::Box PetalSearch::admissible_box(const Petal& petal, const Point& fallback) const {
+  const auto around = [](const Point& c, double radius) {
+    const double reach = radius * (1.0 + 1e-3) + 1e-9 * (std::fabs(c.x) + std::fabs(c.y));
+    return Box{c.x - reach, c.x + reach, c.y - reach, c.y + reach};
+  };
+  const Box circle = around(centres_[0], std::sqrt(radii2_[0]));
+  const Box disk = around(petal.holder, petal.holder_radius);
+  const Box both{std::max(circle.x_lo, disk.x_lo), std::min(circle.x_hi, disk.x_hi), std::max(circle.y_lo, disk.y_lo),
+                 std::min(circle.y_hi, disk.y_hi)};
+  return {std::min(both.x_lo, fallback.x), std::max(both.x_hi, fallback.x), std::min(both.y_lo, fallback.y),
+          std::max(both.y_hi, fallback.y)};
 }
 
 // In the petal (triangle pqx meets the bound, with the margin) and in pqr's circumcircle.
@@ -164,7 +256,12 @@ bool PetalSearch::admissible(Predicates& pred, const Petal& petal, const Point& 
 }
 
 // In one of the gathered triangles (closed): in the domain, on pq's side of the subsegments around.
-bool PetalSearch::in_gathered(const Point& x) const { return container_of(x) >= 0; }
+// The near ones are looked at first; the others only when none of those holds x.
+bool PetalSearch::in_gathered(const Point& x) const {
+  for (const int i : near_)
+    if (holds(corners_[i], x)) return true;
+  return container_of(x) >= 0;
+}
 
 double PetalSearch::clearance2(const Point& x) const {
   double nearest = HUGE_VAL;
@@ -192,64 +289,76 @@ void PetalSearch::refuse(TriangleId t) {
   slot_index_[slot] = kRefused;
 }
 
-void PetalSearch::remember(TriangleId t) {
+// What lies across side `side` of gathered triangle i: kWall (the hull or a subsegment), or a
+// triangle u (set) and its index_of.
+inline int PetalSearch::look_across(const Mesh& mesh, bool walls, std::size_t i, unsigned side, TriangleId& u) const {
+  const EdgeRef e = edge_of(triangles_[i], side);
+  const EdgeRef across = mesh.link[e];
+  if (across == kNone || (walls && mesh.subseg.has(e))) return kWall;
+  u = triangle_of(across);
+  return index_of(u);
+}
+
+inline void PetalSearch::remember(TriangleId t, const Mesh::CornerPoints& at) {
   const std::size_t slot = slot_of(t);
   slots_[slot] = t;
   slot_index_[slot] = static_cast<int>(triangles_.size());
   triangles_.push_back(t);
+  corners_.push_back({at.a, at.b, at.c});
+  neighbours_.push_back({-1, -1, -1});
 }
 
 // The triangles reachable from t without crossing a subsegment whose bounding boxes meet the disk
-// of radius `reach` around `centre`.
+// of radius `reach` around `centre`. Each side looked across gives its neighbour's index at once
+// (the other end's status never changes after), so only the sides of the triangles the limit left
+// unexplored are looked up again (describe_gathered).
 void PetalSearch::gather(const Mesh& mesh, TriangleId t, const Point& centre, double reach) {
   triangles_.clear();
+  corners_.clear();
+  neighbours_.clear();
   slots_.assign(kSlots, kNone);
-  remember(t);
-  for (std::size_t next = 0; next < triangles_.size() && triangles_.size() < kGatherLimit; ++next) {
+  remember(t, mesh.corner_points(t));
+  const bool walls = mesh.has_subsegments();
+  std::size_t next = 0;
+  for (; next < triangles_.size() && triangles_.size() < kGatherLimit; ++next) {
     for (unsigned side = 0; side < 3; ++side) {
-      const EdgeRef e = edge_of(triangles_[next], side);
-      const EdgeRef across = mesh.link[e];
-      if (across == kNone || (mesh.has_subsegments() && mesh.subseg.has(e))) continue;
-      const TriangleId u = triangle_of(across);
-      if (index_of(u) != -1) continue;  // gathered, or refused already (the test is u's alone)
-      const auto [a, b, c] = mesh.corner_points(u);
+      TriangleId u;
+      const int known = look_across(mesh, walls, next, side, u);
+      if (known != -1) {  // a wall, gathered, or refused already (the test is u's alone)
+        neighbours_[next][side] = std::max(known, -1);
+        continue;
+      }
+      const auto at = mesh.corner_points(u);
+      const auto [a, b, c] = at;
       const double dx = std::max({std::min({a.x, b.x, c.x}) - centre.x, 0.0, centre.x - std::max({a.x, b.x, c.x})});
       const double dy = std::max({std::min({a.y, b.y, c.y}) - centre.y, 0.0, centre.y - std::max({a.y, b.y, c.y})});
-      if (dx * dx + dy * dy <= reach * reach) remember(u); else refuse(u);
+      if (dx * dx + dy * dy <= reach * reach) {
+        neighbours_[next][side] = static_cast<int>(triangles_.size());
+        remember(u, at);
+      } else {
+        refuse(u);
+      }
     }
   }
-  describe_gathered(mesh);
+  describe_gathered(mesh, next);
 }
 
-// Their corners, circumcircles and which of them are neighbours (across no subsegment).
-void PetalSearch::describe_gathered(const Mesh& mesh) {
+// Their circumcircles, their corners each once, and the neighbours (across no subsegment) of the
+// triangles from `explored` on, whose sides gather did not look across (note_vertices_and_rim).
+void PetalSearch::describe_gathered(const Mesh& mesh, std::size_t explored) {
   centres_.clear();
   radii2_.clear();
-  corners_.clear();
-  vertices_.clear();
-  if (++search_ == 0) std::fill(seen_.begin(), seen_.end(), 0), search_ = 1;
-  neighbours_.assign(triangles_.size(), {-1, -1, -1});
-  for (std::size_t i = 0; i < triangles_.size(); ++i) {
-    const auto [a, b, c] = mesh.corner_points(triangles_[i]);
-    const Point centre = circumcenter(a, b, c);
-    centres_.push_back(centre);
-    radii2_.push_back(squared_distance(centre, a));
-    corners_.push_back({a, b, c});
-    for (unsigned k = 0; k < 3; ++k) note_vertex(mesh, mesh.corner[edge_of(triangles_[i], k)]);
-    for (unsigned side = 0; side < 3; ++side) {
-      const EdgeRef e = edge_of(triangles_[i], side);
-      const EdgeRef across = mesh.link[e];
-      if (across == kNone || (mesh.has_subsegments() && mesh.subseg.has(e))) continue;
-      neighbours_[i][side] = std::max(index_of(triangle_of(across)), -1);
-    }
-  }
+  for (std::size_t i = 0; i < triangles_.size(); ++i) describe(i);
+  expanded_.assign(triangles_.size(), 0);
+  std::fill_n(expanded_.begin(), explored, 1);
+  note_vertices_and_rim(mesh);
 }
 
 // Each corner once (clearance2 takes the least distance, so their order does not matter): a stamp
-// per vertex of the mesh marks those seen by this search, instead of sorting the ids each time.
-void PetalSearch::note_vertex(const Mesh& mesh, VertexId v) {
+// per vertex of the mesh (seen_, sized by describe_gathered) marks those seen by this search,
+// instead of sorting the ids each time.
+inline void PetalSearch::note_vertex(const Mesh& mesh, VertexId v) {
   const auto i = static_cast<std::size_t>(static_cast<std::uint32_t>(v));
-  if (i >= seen_.size()) seen_.resize(std::max<std::size_t>(i + 1, 2 * seen_.size()), 0);
   if (seen_[i] == search_) return;
   seen_[i] = search_;
   vertices_.push_back(mesh.point(v));

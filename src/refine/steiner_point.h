@@ -4,6 +4,7 @@
 // Erten and Ungor's locally optimal one (PetalSearch below).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -49,6 +50,9 @@ class PetalSearch {
   // `fallback` (its circumcentre).
   Point choose_for_obtuse(const Mesh& mesh, Predicates& pred, EdgeRef longest, const Point& fallback,
                           const AngleBound& angle, const LargestAngleBound& max_angle);
+  // What the last search gathered (for tests): how many triangles, and whether t is among them.
+  std::size_t gathered_count() const { return triangles_.size(); }
+  bool gathered(TriangleId t) const { return index_of(t) >= 0; }
 
  private:
   struct Petal {
@@ -57,31 +61,47 @@ class PetalSearch {
     Point arc_centre;             // the arc's circle
     double arc_radius = 0.0;
     Point ray_p, ray_q;           // the far ends of the rays from p and q, beyond the arc
-    double reach = 0.0;           // every candidate's nearest vertex is within this of the midpoint of pq
     double sin2_min = 0.0;        // what triangle pqx must meet
-  };
-  struct Score {
-    double shape = 0.0;       // sin^2 of the smallest angle of the new triangles, at most the bound's
-    double clearance2 = 0.0;  // squared distance to the nearest gathered vertex
+    Point holder;                 // the disk from which pq subtends the bound itself: it holds the petal
+    double holder_radius = 0.0;
   };
   struct Box {
     double x_lo, x_hi, y_lo, y_hi;
-    bool misses(const Point& a, const Point& b) const;  // segment ab's bounding box misses it
+    // Disjoint from segment ab's bounding box for certain. An edge with a NaN or infinite end may
+    // count as disjoint either way: its crossings are not finite, and admissible() refuses them.
+    bool misses(const Point& a, const Point& b) const {
+      return std::max(a.x, b.x) < x_lo || std::min(a.x, b.x) > x_hi || std::max(a.y, b.y) < y_lo ||
+             std::min(a.y, b.y) > y_hi;
+    }
+    bool near(const Point& o, double r2) const;  // a circle (centre, squared radius) may meet it
+    bool holds(const Point& x) const { return x.x >= x_lo && x.x <= x_hi && x.y >= y_lo && x.y <= y_hi; }  // not a NaN
   };
   static Petal petal_of(const Point& p, const Point& q, const Point& r, double theta_deg);
   void gather(const Mesh& mesh, TriangleId t, const Point& centre, double reach);
-  void describe_gathered(const Mesh& mesh);
+  void describe_gathered(const Mesh& mesh, std::size_t explored);
   void note_vertex(const Mesh& mesh, VertexId v);
   void propose_corners(const Petal& petal);
-  void propose_voronoi(const Petal& petal);
-  Box admissible_box() const;
+  void propose_voronoi(const Petal& petal, const Box& near);
+  Box admissible_box(const Petal& petal, const Point& fallback) const;
+  Box gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback);
+  void describe(std::size_t i);
+  void note_vertices_and_rim(const Mesh& mesh);
   bool admissible(Predicates& pred, const Petal& petal, const Point& x) const;
   bool in_gathered(const Point& x) const;
-  Score score(const Point& x, double bound_sin2);
+  // Whether triangle t (counter-clockwise, closed) holds x, in floating point.
+  static bool holds(const std::array<Point, 3>& t, const Point& x) {
+    const auto left_of = [&](const Point& a, const Point& b) {
+      return (b.x - a.x) * (x.y - a.y) - (b.y - a.y) * (x.x - a.x) >= 0.0;
+    };
+    return left_of(t[0], t[1]) && left_of(t[1], t[2]) && left_of(t[2], t[0]);
+  }
+  bool star_meets(const Point& x, double bound_sin2, bool in_box);
   double clearance2(const Point& x) const;
   std::size_t slot_of(TriangleId t) const;
   int index_of(TriangleId t) const;  // in triangles_, kRefused, or -1 (not looked at yet)
-  void remember(TriangleId t);
+  void remember(TriangleId t, const Mesh::CornerPoints& at);
+  int look_across(const Mesh& mesh, bool walls, std::size_t i, unsigned side, TriangleId& u) const;
+  static constexpr int kWall = -3;
   void propose_obtuse(const Point& p, const Point& q, const Point& fallback);
   double star_margin(const Point& x, const AngleBound& angle, const LargestAngleBound& max_angle);
   int container_of(const Point& x) const;  // the gathered triangle holding x, or -1
@@ -94,7 +114,10 @@ class PetalSearch {
   std::vector<double> radii2_;  // their squared circumradii
   std::vector<std::array<Point, 3>> corners_;  // per gathered triangle, counter-clockwise
   std::vector<std::array<int, 3>> neighbours_;  // per gathered triangle: the index across each side, or -1
-  std::vector<char> in_cavity_;
+  std::vector<char> in_cavity_;  // all 0 between star_meets' calls
+  std::vector<int> near_;        // the gathered triangles whose circumcircles or corners may meet the admissible box
+  std::vector<char> expanded_;   // per gathered triangle: its sides were looked across while gathering
+  std::vector<int> all_;         // 0, 1, ... for star_meets outside that box
   std::vector<Point> vertices_;       // the gathered triangles' corners, each once
   std::vector<std::uint32_t> seen_;   // per vertex id: the search that last noted it (note_vertex)
   std::uint32_t search_ = 0;

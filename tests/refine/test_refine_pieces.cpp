@@ -497,3 +497,52 @@ TEST(known_cavity_fan_refuses_a_subsegment_seen_from_outside) {
   CHECK(detail::fill_star(m, pred, w, cavity) != kNone);  // inside: the fan of three
   CHECK_EQ(m.live_triangles(), 4u);
 }
+
+// The locally optimal point's search on a jittered grid (every triangle's shortest edge, -q33):
+// the point it returns is either the off-centre or one that is admissible (exactly inside the
+// triangle's circumcircle, triangle pqx at 33 degrees or more by trigonometry), and every triangle
+// of the mesh whose circumcircle holds it (exact incircle) was gathered, so its star was judged
+// whole. The search gathers only the triangles whose circumcircles may meet the petal: a few
+// dozen, where the disk of the petal's reach held the cap of 96 (docs/benchmarks.md, issue 45).
+TEST(petal_search_gathers_the_whole_cavity_and_little_else) {
+  std::mt19937 rng(45);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  std::vector<Point> points;
+  for (int i = 0; i < 24; ++i)
+    for (int j = 0; j < 24; ++j) points.push_back({i + jitter(rng), j + jitter(rng)});
+  Mesh m = triangulated(points);
+  mark_boundary(m);
+  Predicates pred;
+  PetalSearch petal;
+  const AngleBound bound(33);
+  std::size_t searches = 0, gathered = 0, moved = 0;
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t) {
+    EdgeRef shortest = edge_of(t, 0);
+    for (unsigned side = 1; side < 3; ++side) {
+      const EdgeRef e = edge_of(t, side);
+      if (squared_distance(m.point(m.org(e)), m.point(m.dest(e))) <
+          squared_distance(m.point(m.org(shortest)), m.point(m.dest(shortest))))
+        shortest = e;
+    }
+    const Point& p = m.point(m.org(shortest));
+    const Point& q = m.point(m.dest(shortest));
+    const Point& r = m.point(m.apex(shortest));
+    const Point x = petal.choose(m, pred, shortest, 33.0, bound.off_center_factor());
+    ++searches;
+    gathered += petal.gathered_count();
+    if (x == off_center(p, q, r, bound.off_center_factor())) continue;
+    ++moved;
+    CHECK(pred.incircle(p, q, r, x) > 0.0);
+    const double a = std::sqrt(squared_distance(q, x)), b = std::sqrt(squared_distance(p, x)),
+                 c = std::sqrt(squared_distance(p, q));
+    const double at_x = std::acos((a * a + b * b - c * c) / (2 * a * b)) * 180.0 / kPi;
+    const double at_p = std::acos((b * b + c * c - a * a) / (2 * b * c)) * 180.0 / kPi;
+    CHECK(std::min({at_x, at_p, 180.0 - at_x - at_p}) >= 33.0);
+    for (TriangleId u{0}; u < m.triangle_slots(); ++u) {
+      const auto [ua, ub, uc] = m.corner_points(u);
+      if (pred.incircle(ua, ub, uc, x) > 0.0 && !petal.gathered(u)) CHECK(!"a cavity triangle was not gathered");
+    }
+  }
+  CHECK(moved > searches / 4);  // the search's own points, not only the fallback, were checked
+  CHECK(gathered < 40 * searches);
+}
