@@ -48,6 +48,21 @@ struct PredicateCounters {
   }
 };
 
+// Keeps a block's predicate calls out of the counts (-V): checks made only in builds with invariant
+// checks must leave the counters as every build reports them.
+class Predicates;
+class UncountedCalls {
+ public:
+  explicit UncountedCalls(Predicates& pred);
+  ~UncountedCalls();
+  UncountedCalls(const UncountedCalls&) = delete;
+  UncountedCalls& operator=(const UncountedCalls&) = delete;
+
+ private:
+  Predicates& pred_;
+  PredicateCounters saved_;
+};
+
 // Error bounds of the filters (Shewchuk 1997, section 4); epsilon = 2^-53.
 namespace bounds {
 inline constexpr double kEpsilon = 1.1102230246251565e-16;
@@ -156,5 +171,8 @@ class Predicates {
   double incircle_adapt_perturbed(const Point& a, const Point& b, const Point& c, const Point& d,
                                   double permanent);
 };
+
+inline UncountedCalls::UncountedCalls(Predicates& pred) : pred_(pred), saved_(pred.counters) {}
+inline UncountedCalls::~UncountedCalls() { pred_.counters = saved_; }
 
 }  // namespace deltri

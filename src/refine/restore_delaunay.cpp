@@ -43,10 +43,8 @@ EdgeRef bad_spoke(const Mesh& mesh, Predicates& pred, EdgeRef out) {
 // The check behind exactly_on, made in builds with invariant checks only: its predicate calls are
 // not counted, so -V reports the same counts in every build (docs/manual.md's -V example).
 [[maybe_unused]] bool link_flips_sufficed(const Mesh& mesh, Predicates& pred, EdgeRef leaving) {
-  const PredicateCounters counted = pred.counters;
-  const bool sufficed = bad_spoke(mesh, pred, leaving) == kNone;
-  pred.counters = counted;
-  return sufficed;
+  const UncountedCalls uncounted(pred);
+  return bad_spoke(mesh, pred, leaving) == kNone;
 }
 
 }  // namespace

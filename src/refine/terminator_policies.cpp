@@ -295,11 +295,9 @@ bool Terminator::split_clear_of(EdgeRef s, const Point& p, double floor) const {
 // The check behind split_clear_of in builds with invariant checks; it leaves the predicate
 // counters as they were, so -V reports the same counts in every build.
 bool Terminator::split_radius_at_least(EdgeRef s, const Point& p, double floor) const {
-  const PredicateCounters counted = pred_.counters;
+  const UncountedCalls uncounted(pred_);
   CavityMarks marks;
-  const bool at_least = split_insertion_radius(mesh_, pred_, s, p, marks) >= floor;
-  pred_.counters = counted;
-  return at_least;
+  return split_insertion_radius(mesh_, pred_, s, p, marks) >= floor;
 }
 
 // The length of the shortest edge that splitting s at p would make, now and once Chew's step (with
