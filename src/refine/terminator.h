@@ -154,7 +154,8 @@ class Terminator {
   bool parent_is_input_feature(const PieceEnds& piece) const;
   std::array<VertexId, 2> sure_fire_ancestors(EdgeRef shortest) const;
   bool budget_left();                   // the Steiner cap and -S
-  bool relocate_corners(TriangleId t);  // relocation.h: true when a corner of t moved
+  bool move_corners(TriangleId t, StarGoal goal);  // relocation.h: true when a corner of t moved
+  bool relocate_corners(TriangleId t);  // move_corners in the second stage of locally optimal points
   void open_obtuse_corner(TriangleId t, const Assessment& a);  // after a guard refusal (relocation.h)
   Outcome refused_for(TriangleId t, const Assessment& a, Outcome refusal);  // the same for a refused point
   double floor_at(const Point& p) const;  // the guard's edge floor where p lies
