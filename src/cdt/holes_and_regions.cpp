@@ -1,6 +1,7 @@
 #include "cdt/holes_and_regions.h"
 
 #include "cdt/flood.h"
+#include "geometry/hilbert.h"
 #include "mesh/operations.h"
 #include "mesh/remove_triangles.h"
 #include "mesh/subsegments.h"
@@ -63,6 +64,20 @@ TriangleId hole_triangle(const Mesh& mesh, Predicates& pred, const Location& at,
   return kNone;
 }
 
+// Where each point lies, in the points' order. The points are located along a Hilbert curve, each
+// walk starting where the last one ended, so that a thousand holes cost a thousand short walks
+// rather than a thousand walks across the mesh. A location depends only on the point (a walk that
+// cannot decide ends in locate's scan), so the order changes no result.
+std::vector<Location> locate_all(const Mesh& mesh, Predicates& pred, std::span<const Point> points) {
+  std::vector<Location> where(points.size());
+  EdgeRef hint = kNone;
+  for (const std::uint32_t i : hilbert_order(points)) {
+    where[i] = locate(mesh, pred, points[i], hint);
+    if (where[i].status != LocateStatus::Outside) hint = where[i].edge;
+  }
+  return where;
+}
+
 std::vector<TriangleId> hull_seeds(const Mesh& mesh) {
   std::vector<TriangleId> seeds;
   for (EdgeRef e{0}; e < mesh.corner.size(); ++e)
@@ -80,10 +95,9 @@ HoleReport carve_holes(Mesh& mesh, Predicates& pred, const std::vector<Point>& h
   if (!keep_convex_hull) seeds = hull_seeds(mesh);
   // Locate every hole before anything is deleted, so that the flood starts from the mesh the
   // segments made (locate itself copes with non-convex meshes by its scan).
-  EdgeRef hint = kNone;
+  const std::vector<Location> where = locate_all(mesh, pred, holes);
   for (std::size_t i = 0; i < holes.size(); ++i) {
-    const Location at = locate(mesh, pred, holes[i], hint);
-    if (at.status != LocateStatus::Outside) hint = at.edge;
+    const Location& at = where[i];
     if (at.status == LocateStatus::Outside) {
       report.outside.push_back(i);
       continue;
@@ -113,14 +127,6 @@ void add_region_attribute(Mesh& mesh) {
   mesh.num_triangle_attributes = old + 1;
 }
 
-// The triangle a region point seeds, or kNone; `where` says why not.
-TriangleId region_triangle(const Mesh& mesh, Predicates& pred, const Point& at, EdgeRef hint,
-                           std::span<const Pslg::Segment> input, LocateStatus& where) {
-  const Location location = locate(mesh, pred, at, hint);
-  where = location.status;
-  return hole_triangle(mesh, pred, location, at, input);  // the same rule as for hole points
-}
-
 }  // namespace
 
 RegionReport spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg::Region>& regions,
@@ -131,13 +137,15 @@ RegionReport spread_regions(Mesh& mesh, Predicates& pred, const std::vector<Pslg
     mesh.area_bound.assign(mesh.triangle_slots(), -1.0);
   if (!attributes && !area_bounds) return report;
   // Find all seeds first: locating is read-only, flooding writes only attributes.
+  std::vector<Point> points;
+  for (const Pslg::Region& r : regions) points.push_back(r.at);
+  const std::vector<Location> where = locate_all(mesh, pred, points);
   std::vector<TriangleId> starts;
-  EdgeRef hint = kNone;
   for (std::size_t i = 0; i < regions.size(); ++i) {
-    LocateStatus where = LocateStatus::Outside;
-    starts.push_back(region_triangle(mesh, pred, regions[i].at, hint, input_segments, where));
-    if (starts.back() != kNone) hint = edge_of(starts.back(), 0);
-    else if (where == LocateStatus::Outside) report.outside.push_back(i);
+    // The same rule as for hole points.
+    starts.push_back(hole_triangle(mesh, pred, where[i], points[i], input_segments));
+    if (starts.back() != kNone) continue;
+    if (where[i].status == LocateStatus::Outside) report.outside.push_back(i);
     else report.on_segment.push_back(i);
   }
   std::vector<std::uint32_t> visited(mesh.triangle_slots(), 0);

@@ -9,6 +9,7 @@
 
 #include "delaunay/lawson_pass.h"
 #include "geometry/box.h"
+#include "geometry/hilbert.h"
 #include "mesh/assemble.h"
 #include "mesh/ghosts.h"
 #include "mesh/operations.h"
@@ -23,36 +24,12 @@ void shuffle(std::vector<VertexId>& order) {
   for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng() % i]);
 }
 
-// Position along a Hilbert curve over a 2^16 x 2^16 grid.
-std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
-  std::uint32_t d = 0;
-  for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
-    const std::uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
-    d += s * s * ((rx * 3) ^ ry);
-    if (ry == 0) {  // turn the lower-order quadrant so the curve stays continuous
-      if (rx == 1) {
-        x = ~x & 0xFFFFu;
-        y = ~y & 0xFFFFu;
-      }
-      std::swap(x, y);
-    }
-  }
-  return d;
-}
-
 std::vector<std::uint32_t> hilbert_keys(const Mesh& mesh, const std::vector<VertexId>& ids) {
   Box box;
   for (VertexId v : ids) box.add(mesh.point(v));
-  const double span = std::max(box.width(), box.height());
-  const double scale = span > 0 ? 65535.0 / span : 0.0;
+  const HilbertCurve curve(box);
   std::vector<std::uint32_t> keys(mesh.vertex_count(), 0);
-  for (VertexId v : ids) {
-    const Point& p = mesh.point(v);
-    const auto cell = [scale](double d) {
-      return static_cast<std::uint32_t>(std::min(65535.0, d * scale));
-    };
-    keys[v] = hilbert_index(cell(p.x - box.lo_x), cell(p.y - box.lo_y));
-  }
+  for (VertexId v : ids) keys[v] = curve.key(mesh.point(v));
   return keys;
 }
 
