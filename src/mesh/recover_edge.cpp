@@ -13,24 +13,34 @@ bool EdgeRecovery::crosses(EdgeRef e, VertexId u, VertexId v) {
   return (sa > 0.0 && sb < 0.0) || (sa < 0.0 && sb > 0.0);
 }
 
+EdgeRef EdgeRecovery::edge_of_crossing(const Crossing& c) {
+  const Mesh& mesh = ed_.mesh;
+  // Where it was seen, if no flip has moved it: a valid mesh has one edge a->b.
+  if (mesh.corner[c.seen] == c.a && mesh.corner[lnext(c.seen)] == c.b) return c.seen;
+  return ed_.find(c.a, c.b);
+}
+
 void EdgeRecovery::remove_crossings(VertexId u, VertexId v, const std::vector<EdgeRef>& crossed) {
   // Sloan's order: a crossing edge that cannot be flipped yet, or whose flip still crosses, goes
   // to the back of a FIFO holding each crossing edge once. Edges are named by their ends because
-  // flips move edges between slots; the vertex map finds them again.
+  // flips move edges between slots.
   Mesh& mesh = ed_.mesh;
   queue_.clear();
-  for (const EdgeRef g : crossed) queue_.push_back({mesh.org(g), mesh.dest(g)});
-  while (!queue_.empty()) {
-    const auto [a, b] = queue_.front();
-    queue_.pop_front();
-    const EdgeRef e = ed_.find(a, b);
+  for (const EdgeRef g : crossed) queue_.push_back({mesh.org(g), mesh.dest(g), g});
+  for (std::size_t head = 0; head < queue_.size(); ++head) {
+    if (head >= 1024 && 2 * head >= queue_.size()) {  // drop the consumed front: memory stays linear
+      queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(head));
+      head = 0;
+    }
+    const Crossing c = queue_[head];
+    const EdgeRef e = edge_of_crossing(c);
     if (!ed_.flippable(e)) {
-      queue_.push_back({a, b});
+      queue_.push_back({c.a, c.b, e});
       continue;
     }
     ed_.flip(e);
     const EdgeRef diagonal = lnext(e);
-    if (crosses(diagonal, u, v)) queue_.push_back({mesh.org(diagonal), mesh.dest(diagonal)});
+    if (crosses(diagonal, u, v)) queue_.push_back({mesh.org(diagonal), mesh.dest(diagonal), diagonal});
   }
 }
 

@@ -14,7 +14,6 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
 #include <utility>
 #include <vector>
 
@@ -41,7 +40,15 @@ class EdgeRecovery {
   std::vector<std::uint32_t> stamp_;  // stamp_[t] == round_: t is in the current cavity
   std::uint32_t round_ = 0;
   std::vector<TriangleId> cavity_;
-  std::deque<std::pair<VertexId, VertexId>> queue_;
+  // A crossing edge waiting in Sloan's FIFO: its ends, and the slot it was seen at (a flip of a
+  // neighbour may have moved it since; then the vertex map finds it again).
+  struct Crossing {
+    VertexId a, b;
+    EdgeRef seen;
+  };
+  std::vector<Crossing> queue_;  // the FIFO, from the loop's head on
+  // The edge a->b of a waiting crossing.
+  EdgeRef edge_of_crossing(const Crossing& c);
   std::vector<EdgeRef> stack_;
 };
 

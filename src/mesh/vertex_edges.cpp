@@ -65,12 +65,6 @@ void VertexEdges::grow_to(const Mesh& mesh, VertexId v) {
   out_.resize(std::min(out_.capacity(), std::size_t{v} + kGrowthStep), kNone);
 }
 
-void VertexEdges::note(const Mesh& mesh, EdgeRef e) {
-  const VertexId v = mesh.org(e);
-  if (v >= out_.size()) grow_to(mesh, v);
-  out_[v] = e;
-}
-
 void VertexEdges::note_star(const Mesh& mesh, EdgeRef out) {
   for_each_around(mesh, out, [&](EdgeRef e) {
     note(mesh, e);

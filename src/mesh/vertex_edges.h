@@ -18,8 +18,13 @@ class VertexEdges {
  public:
   // Every vertex of a live triangle gets its last edge in slot order.
   explicit VertexEdges(const Mesh& mesh);
-  // Records that e leaves org(e).
-  void note(const Mesh& mesh, EdgeRef e);
+  // Records that e leaves org(e). Inline: a flip notes six edges, an insertion its whole star.
+  void note(const Mesh& mesh, EdgeRef e) {
+    const VertexId v = mesh.org(e);
+    if (v >= out_.size()) [[unlikely]]
+      grow_to(mesh, v);
+    out_[v] = e;
+  }
   // Records the three edges of triangle t (after an edit rewrote it).
   void touch(const Mesh& mesh, TriangleId t) {
     for (unsigned i = 0; i < 3; ++i) note(mesh, edge_of(t, i));
