@@ -199,7 +199,8 @@ class QualityQueue {
   std::vector<std::unique_ptr<std::uint16_t[]>> levels_;  // by block: null until it serves in bucket 1
   std::vector<std::uint32_t> free_blocks_;      // given back, pages resident
   std::vector<std::uint32_t> released_blocks_;  // given back, pages returned (give_back)
-  // Spare blocks kept with their pages: 32 had kept 0.5 MiB resident per refining part (benchmarks.md).
+  // Spare blocks kept with their pages: 32 kept up to 0.5 MiB resident per refining part, 0.4 MiB
+  // more than 8 (benchmarks.md).
   static constexpr std::size_t kSpareBlocks = 8;
   // A queue of at most this many blocks (0.5 MiB) returns no pages: a small run's madvise calls
   // and the faults that follow them cost more than its whole queue (benchmarks.md, small runs).
