@@ -217,6 +217,20 @@ void refuse_corner_lopping_combinations(const Switches& s) {
   if (s.conforming_delaunay)
     throw RefusedSwitchError("--corner-lopping: cannot be combined with -D (the fans in the lopped corners need not be Delaunay)");
 }
+
+// --each runs the switches once per input, so an option naming one output file cannot follow it.
+void refuse_each_combinations(const Switches& s, SwitchSource source) {
+  if (!s.each) return;
+  if (source == SwitchSource::Library) throw UsageError("--each: only on the command line (the library meshes what it is given)");
+  if (s.inputs.size() < 2) return;
+  const std::pair<const Switches::FileRequest*, const char*> named[] = {
+      {&s.msh, "msh"}, {&s.vtu, "vtu"}, {&s.svg, "svg"}, {&s.json, "json"}, {&s.stl, "stl"}};
+  for (const auto& [request, name] : named)
+    if (request->wanted && !request->path.empty())
+      throw UsageError(std::string("--each: --") + name + "=" + request->path + " names one file for " +
+                       std::to_string(s.inputs.size()) + " inputs; give --" + name +
+                       " alone to write one beside each input's mesh");
+}
 }  // namespace
 
 Switches parse_switches(int argc, const char* const* argv, SwitchSource source) {
@@ -230,8 +244,10 @@ Switches parse_switches(int argc, const char* const* argv, SwitchSource source) 
       parse_word(word, s, source);
     } else {
       s.input = std::string(word);
+      s.inputs.push_back(s.input);
     }
   }
+  refuse_each_combinations(s, source);
   if (s.quality && !(s.min_angle >= 0.0 && s.min_angle < 60.0))
     throw UsageError("-q: the minimum angle must be at least 0 and below 60 degrees");
   if (const char* refused = refused_combination(s.refinement, s.interior_bound, s.quality, s.conforming_delaunay,

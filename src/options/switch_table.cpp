@@ -245,6 +245,11 @@ constexpr std::array kLongOptions = {
                [](S& s, const std::string* v) { request(s.stl, v, "stl"); }},
     LongOption{"json", "FILE", true, "also write a JSON report of the run; FILE - is standard output",
                [](S& s, const std::string* v) { request(s.json, v, "json"); }},
+    LongOption{"each", "", false,
+               "mesh every input file named, one after the other, each as if it were alone on the command line "
+               "(without it the last one named is the input, as in Triangle); the exit status is the first "
+               "non-zero one, and the inputs that failed are counted at the end",
+               [](S& s, const std::string*) { s.each = true; }},
     LongOption{"strict", "", false, "exit with status 3 when triangles miss the -q/-a/-u bounds for a reason other than a small "
                "input angle, when -D leaves subsegments not Delaunay, or when the mesh is empty (files are still written)",
                [](S& s, const std::string*) { s.strict = true; }},

@@ -29,7 +29,9 @@ struct Switches : Options {
   bool version = false;          // --version: print the version and exit
   bool help = false;             // -h
 
-  std::string input;             // the input file as given
+  std::string input;             // the input file as given (the last one named, as Triangle takes it)
+  std::vector<std::string> inputs;  // every input named, in order
+  bool each = false;             // --each: mesh every input named, one after the other
   std::string command_line;      // every argument, space-separated (for the JSON report)
   std::vector<std::string> notices;  // letters Triangle accepts that deltri reads its own way (-L, -w, -o3, ...)
 };

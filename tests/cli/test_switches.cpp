@@ -205,3 +205,24 @@ TEST(help_and_man_page_list_every_long_option) {
   CHECK(man.rfind(".\\\"", 0) == 0);
   CHECK(man.find("\n.TH DELTRI 1") != std::string::npos);
 }
+
+TEST(the_last_input_named_is_the_input_and_each_takes_them_all) {
+  const Switches s = parse({"-p", "a.poly", "b.poly"});
+  CHECK(s.input == "b.poly");  // Triangle's rule
+  CHECK(!s.each);
+  const Switches e = parse({"-p", "--each", "a.poly", "b.poly", "--json"});
+  CHECK(e.each);
+  REQUIRE(e.inputs.size() == 2u);
+  CHECK(e.inputs[0] == "a.poly" && e.inputs[1] == "b.poly");
+  CHECK(usage_error({"-p", "--each", "--json=r.json", "a.poly", "b.poly"}).find("--each: --json=r.json names one file") == 0);
+  CHECK(usage_error({"-p", "--each", "--msh=-", "a.poly", "b.poly"}).find("--each: --msh=- names one file") == 0);
+  CHECK(usage_error({"-p", "--each", "--json=r.json", "a.poly"}).empty());  // one input: one file
+  bool refused = false;
+  try {
+    const char* args[] = {"deltri", "-p", "--each"};
+    parse_switches(3, args, SwitchSource::Library);
+  } catch (const UsageError&) {
+    refused = true;
+  }
+  CHECK(refused);
+}

@@ -453,6 +453,9 @@ if(UNIX AND NOT APPLE)
 endif()
 add_test(NAME e2e.outputs.names COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/output_names.sh $<TARGET_FILE:deltri> ${E2E_DATA})
 set_tests_properties(e2e.outputs.names PROPERTIES TIMEOUT 300)
+add_test(NAME e2e.outputs.each COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/e2e/each.sh $<TARGET_FILE:deltri>
+                                   $<TARGET_FILE:deltri_mesh_verify> ${E2E_DATA})
+set_tests_properties(e2e.outputs.each PROPERTIES TIMEOUT 300)
 
 # ---- small input angles force only the triangles inside them (issue 42): guitar.poly at
 # -q30a0.054 kept three triangles of 28.7-29.3 degrees across equal-shell edges beside 45-degree
