@@ -14,7 +14,8 @@ PARTS (comma-separated, default all): cpu, batch, corpus, thin.
           `xargs -P 2 -n 1 PROGRAM -pq30Q` (the names listed, not globbed); wall seconds per round,
           the batch's CPU seconds (user + system, from xargs's wait4(), which counts the runs it
           waited for; load distorts it less than the wall time), and whatever the runs wrote on
-          standard error. The load average is printed first and after each round.
+          standard error. The load average is printed first and after each round. A third column
+          runs deltri --each, the names split in two lists over `xargs -P 2` (one process a core).
   corpus  every .poly under DIR at -pQ and -pq30Q (--switches), each program three times (alternating), the
           median wall time; the deltri/Triangle ratio over the files Triangle needs 20 ms or more
           for: median, worst, and the five worst files, and the same two of the CPU time; a file where a run fails (Triangle 1.6 crashes on
@@ -83,25 +84,27 @@ def part_cpu():
 
 def part_batch():
     load = os.getloadavg()
-    print(f"### {args.batch} copies of guitar.poly, `xargs -P 2 -n 1 PROGRAM -pq30Q` in one folder: wall s "
-          f"and their CPU s (user + system) "
+    half = (args.batch + 1) // 2
+    ways = [(name, ["-n", "1", argv[0], "-pq30Q"]) for name, argv in programs]  # default threads, as a batch runs it
+    ways.append(("deltri --each", ["-n", str(half), deltri, "-pq30Q", "--each"]))
+    print(f"### {args.batch} copies of guitar.poly, `xargs -P 2 -n 1 PROGRAM -pq30Q` in one folder (and deltri "
+          f"`--each` with `xargs -P 2 -n {half}`): wall s and their CPU s (user + system) "
           f"(load average at the start {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; per round, the 1-minute one at its end)\n")
-    print("| round | load | " + " | ".join(f"{name} wall | {name} CPU" for name, _ in programs) +
-          " | wall ratio | CPU ratio | stderr bytes |")
-    print("|---|---|" + "---|" * (2 * len(programs) + 3))
+    print("| round | load | " + " | ".join(f"{name} wall | {name} CPU" for name, _ in ways) +
+          " | wall ratio | CPU ratio | --each wall ratio | stderr bytes |")
+    print("|---|---|" + "---|" * (2 * len(ways) + 4))
     for r in range(args.rounds):
         walls, cpus, errs = [], [], []
-        for name, argv in programs:
+        for name, xargs_tail in ways:
             work = tempfile.mkdtemp()
             names = [f"f{i}.poly" for i in range(args.batch)]
             for n in names:
                 shutil.copy(guitar, os.path.join(work, n))
-            prog = argv[0]  # default threads, as a user's batch runs it
             with tempfile.TemporaryFile() as listing, tempfile.TemporaryFile() as err:
                 listing.write("\n".join(names).encode())
                 listing.seek(0)
                 start = time.perf_counter()
-                p = subprocess.Popen(["xargs", "-P", "2", "-n", "1", prog, "-pq30Q"], stdin=listing, cwd=work,
+                p = subprocess.Popen(["xargs", "-P", "2"] + xargs_tail, stdin=listing, cwd=work,
                                      stdout=subprocess.DEVNULL, stderr=err)
                 # xargs's rusage covers the runs it waited for: the CPU of the whole batch.
                 _, status, usage = os.wait4(p.pid, 0)
@@ -109,9 +112,13 @@ def part_batch():
                 cpus.append(usage.ru_utime + usage.ru_stime)
                 err.seek(0)
                 errs.append(len(err.read()) + (0 if os.waitstatus_to_exitcode(status) == 0 else 1))
+            written = sum(1 for f in os.listdir(work) if f.endswith(".1.ele"))
+            if written != args.batch:
+                errs[-1] += 1000000  # a batch that did not mesh every file: shown, not compared
             shutil.rmtree(work)
         print(f"| {r + 1} | {os.getloadavg()[0]:.1f} | " + " | ".join(f"{w:.2f} | {c:.2f}" for w, c in zip(walls, cpus)) +
-              f" | {walls[1] / walls[0]:.2f} | {cpus[1] / cpus[0]:.2f} | " + ", ".join(map(str, errs)) + " |")
+              f" | {walls[1] / walls[0]:.2f} | {cpus[1] / cpus[0]:.2f} | {walls[2] / walls[0]:.2f} | " +
+              ", ".join(map(str, errs)) + " |")
     print()
 
 
