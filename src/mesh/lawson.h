@@ -13,37 +13,13 @@
 
 #include "mesh/mesh.h"
 #include "mesh/operations.h"
+#include "util/small_vector.h"
 
 namespace deltri {
-namespace detail {
 
 // The flip stack: a vertex's link is short, so the common case needs no allocation (insertion
 // runs once per Steiner point, and the allocator showed in refinement's profile).
-class EdgeStack {
- public:
-  void push_back(EdgeRef e) {
-    if (size_ < kInline) {
-      inline_[size_++] = e;
-      return;
-    }
-    spill_.push_back(e);
-    ++size_;
-  }
-  EdgeRef back() const { return size_ > kInline ? spill_.back() : inline_[size_ - 1]; }
-  void pop_back() {
-    if (size_ > kInline) spill_.pop_back();
-    --size_;
-  }
-  bool empty() const { return size_ == 0; }
-
- private:
-  static constexpr std::size_t kInline = 64;
-  EdgeRef inline_[kInline];
-  std::size_t size_ = 0;
-  std::vector<EdgeRef> spill_;
-};
-
-}  // namespace detail
+using LawsonStack = SmallVector<EdgeRef, 64>;
 
 // After flip<layout>(e) with twin f, the four outer edges of the quadrilateral, in the order each
 // layout's callers have always stacked them (the order decides which of two cocircular diagonals
@@ -95,7 +71,7 @@ EdgeRef lawson(Mesh& m, Stack& stack, VertexId v, MayFlip&& may_flip, Flipped&& 
 // flip's new edge (it left v when made), or kNone.
 template <class MayFlip>
 EdgeRef flip_link(Mesh& m, VertexId v, EdgeRef out, MayFlip&& may_flip) {
-  detail::EdgeStack stack;
+  LawsonStack stack;
   EdgeRef e = out;
   do {
     stack.push_back(lnext(e));

@@ -22,6 +22,7 @@
 #include "mesh/operations.h"
 #include "refine/encroached.h"
 #include "util/invariant.h"
+#include "util/small_vector.h"
 
 namespace deltri {
 
@@ -35,28 +36,7 @@ enum class ProbeStatus {
 // The subsegments a candidate encroaches upon: one or two nearly always (a strip's rejected
 // circumcentre, one per side), kept in place; more spill to the heap. A probe runs for every bad
 // triangle, and an allocation for each rejected one cost a tenth as much as the probe itself.
-class EncroachedEdges {
- public:
-  void push_back(EdgeRef e) {
-    if (count_ < kInPlace) in_place_[count_] = e;
-    else {
-      if (count_ == kInPlace) spilled_.assign(in_place_, in_place_ + kInPlace);
-      spilled_.push_back(e);
-    }
-    ++count_;
-  }
-  bool empty() const { return count_ == 0; }
-  std::size_t size() const { return count_; }
-  EdgeRef operator[](std::size_t i) const { return begin()[i]; }
-  const EdgeRef* begin() const { return count_ <= kInPlace ? in_place_ : spilled_.data(); }
-  const EdgeRef* end() const { return begin() + count_; }
-
- private:
-  static constexpr std::size_t kInPlace = 4;
-  EdgeRef in_place_[kInPlace];
-  std::size_t count_ = 0;
-  std::vector<EdgeRef> spilled_;
-};
+using EncroachedEdges = SmallVector<EdgeRef, 4>;
 
 struct Probe {
   ProbeStatus status = ProbeStatus::Unusable;
