@@ -163,7 +163,8 @@ class Terminator {
   // assess_triangle plus the equal-shell exemption (shell_exempt), under t's bound (rules_for);
   // assess_with under the given rules (the closing survey: the -q bound).
   Assessment assess(TriangleId t) const { return assess_with(t, rules_for(t)); }
-  Assessment assess_with(TriangleId t, const Criteria& rules) const;
+  Assessment assess_with(TriangleId t, const Criteria& rules) const { return assess_with(t, rules, side_measures(mesh_, t)); }
+  Assessment assess_with(TriangleId t, const Criteria& rules, const SideMeasures& m) const;  // m: t's
   const Criteria& rules_for(TriangleId t) const;  // Sec. 7.2: the 30 degrees, or -q
   bool below_asked_bound(const Assessment& a) const;   // under -q, not only under Sec. 7.2's bound
   bool only_for_interior_bound(TriangleId t, const Assessment& a) const;  // bad for Sec. 7.2's bound alone
@@ -217,6 +218,9 @@ class Terminator {
   const AlgorithmPolicy policy_;
   Criteria rules_;
   Criteria interior_rules_;  // Sec. 7.2 (policy_.interior_strategy): rules_ with max(-q, 30 degrees)
+  // Both rules let surely_good answer first (has_quick_verdict): enqueue_if_bad and the closing
+  // survey skip the full assessment of a triangle it finds good.
+  bool quick_verdict_ = false;
   CornerLopping lopping_;  // --corner-lopping
   KeptBoundary kept_;      // -Y / -YY
   Mending mending_;        // -Y / -YY, once Q_t is empty

@@ -393,8 +393,8 @@ bool Terminator::stall_check_passed(std::uint64_t used) {
 // for --max-angle as it spares a skinny one: a point for it in the corner makes a new obtuse
 // triangle one shell further in, or splits the shells, without end (docs/refinement.md,
 // "Largest-angle bound"; the quality account forces it by the same rule).
-Assessment Terminator::assess_with(TriangleId t, const Criteria& rules) const {
-  Assessment a = assess_triangle(mesh_, t, rules);
+Assessment Terminator::assess_with(TriangleId t, const Criteria& rules, const SideMeasures& m) const {
+  Assessment a = assess_triangle(mesh_, t, rules, m);
   if (lopping_.spares(mesh_, t)) a.skinny = a.too_large = false;
   if (a.skinny && policy_.shell_exemption && shell_exempt(a.shape.shortest)) {
     a.split_instead = beyond_corner_subsegment(a.shape.shortest);
