@@ -341,6 +341,7 @@ void Terminator::warm_pages() {
 // triangle is a cache miss; its slot and corners are known well before its turn, and fetching
 // them early overlaps the misses with the work on the triangles before it.
 void Terminator::prefetch_queued() const {
+  if (mesh_.triangle_slots() < kPrefetchFromSlots) return;
   const QueuedTriangle* next = bad_triangles_.peek(kPrefetchDistance);
   if (next == nullptr) return;
   const std::size_t e = edge_of(next->triangle, 0);
