@@ -165,7 +165,12 @@ class Terminator {
   Assessment assess(TriangleId t) const { return assess_with(t, rules_for(t)); }
   Assessment assess_with(TriangleId t, const Criteria& rules) const { return assess_with(t, rules, side_measures(mesh_, t)); }
   Assessment assess_with(TriangleId t, const Criteria& rules, const SideMeasures& m) const;  // m: t's
-  const Criteria& rules_for(TriangleId t) const;  // Sec. 7.2: the 30 degrees, or -q
+  // Sec. 7.2: the 30 degrees, or -q. Inline for the common case (no interior bound): it is asked
+  // for every triangle assessed.
+  const Criteria& rules_for(TriangleId t) const {
+    return policy_.interior_strategy == 0 ? rules_ : interior_rules_for(t);
+  }
+  const Criteria& interior_rules_for(TriangleId t) const;  // rules_for under an interior strategy
   bool below_asked_bound(const Assessment& a) const;   // under -q, not only under Sec. 7.2's bound
   bool only_for_interior_bound(TriangleId t, const Assessment& a) const;  // bad for Sec. 7.2's bound alone
   bool shell_exempt(EdgeRef shortest) const;

@@ -245,8 +245,7 @@ bool Terminator::meets_at_small_angle(const PieceEnds& piece, VertexId w) const 
 
 // Sec. 7.2: strategy 1 holds the triangles with no vertex in a segment interior (none of kind
 // Segment: input vertices on a segment are its ends) to 30 degrees, strategy 2 every triangle.
-const Criteria& Terminator::rules_for(TriangleId t) const {
-  if (policy_.interior_strategy == 0) return rules_;
+const Criteria& Terminator::interior_rules_for(TriangleId t) const {
   if (policy_.interior_strategy == 2) return interior_rules_;
   for (const VertexId v : mesh_.corners(t))
     if (mesh_.kind[v] == VertexKind::Segment) return rules_;
