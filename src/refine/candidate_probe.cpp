@@ -54,25 +54,9 @@ bool CavityMarks::mark(TriangleId t) {
   return true;
 }
 
-void CavityMarks::add(TriangleId t) {
-  ++count_;
-  if (!stamped_) {
-    if (listed_ < kListLimit) {
-      list_[listed_++] = t;
-      listed_bits_ |= std::uint64_t{1} << (t % 64);
-      return;
-    }
-    spill();
-  }
+void CavityMarks::add_spilled(TriangleId t) {
+  if (!stamped_) spill();
   insert_spilled(t);
-}
-
-bool CavityMarks::contains(TriangleId t) const {
-  if (stamped_) return marked().contains(t);
-  if ((listed_bits_ >> (t % 64) & 1) == 0) return false;
-  for (std::size_t i = 0; i < listed_; ++i)
-    if (list_[i] == t) return true;
-  return false;
 }
 
 KnownCavity CavityMarks::marked() const {

@@ -58,29 +58,29 @@ bool angle_between_subsegments(const Mesh& mesh, EdgeRef e) {
 
 // Each corner and point is read once: this runs for every triangle around every new vertex.
 TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta) {
+  return measure_triangle(t, side_measures(mesh, t), sin2_theta);
+}
+
+TriangleShape measure_triangle(TriangleId t, const SideMeasures& m, double sin2_theta) {
   TriangleShape shape;
-  const VertexId* corners = mesh.corners_at(t);
-  const Point& a = mesh.point(corners[0]);
-  const Point& b = mesh.point(corners[1]);
-  const Point& c = mesh.point(corners[2]);
-  double* len2 = shape.length2;
-  len2[0] = squared_distance(a, b);
-  len2[1] = squared_distance(b, c);
-  len2[2] = squared_distance(c, a);
-  const unsigned s = shortest_side(len2);
+  std::copy(m.length2, m.length2 + 3, shape.length2);
+  const unsigned s = shortest_side(m.length2);
   shape.shortest = edge_of(t, s);
-  shape.shortest_length2 = len2[s];
-  const double twice_area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  shape.shortest_length2 = m.length2[s];
+  const double twice_area = m.twice_area;
   shape.area = 0.5 * twice_area;
-  const double others = len2[(s + 1) % 3] * len2[(s + 2) % 3];
-  shape.ratio2_over_bound2 = twice_area > 0.0 ? others * sin2_theta / (twice_area * twice_area)
+  shape.ratio2_over_bound2 = twice_area > 0.0 ? ratio_numerator(m, s, sin2_theta) / (twice_area * twice_area)
                                               : HUGE_VAL;
   return shape;
 }
 
 Assessment assess_triangle(const Mesh& mesh, TriangleId t, const Criteria& rules) {
+  return assess_triangle(mesh, t, rules, side_measures(mesh, t));
+}
+
+Assessment assess_triangle(const Mesh& mesh, TriangleId t, const Criteria& rules, const SideMeasures& m) {
   Assessment out;
-  out.shape = measure_triangle(mesh, t, rules.angle.sin2());
+  out.shape = measure_triangle(t, m, rules.angle.sin2());
   const double* len2 = out.shape.length2;
   if (rules.angle.sin2() > 0.0 && out.shape.ratio2_over_bound2 > 1.0) {
     // With ties for the shortest edge, any tied smallest angle between subsegments exempts t.

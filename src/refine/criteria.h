@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "geometry/constructions.h"
 #include "geometry/point.h"
 
 #include "geometry/mesh_bounds.h"
@@ -48,6 +49,31 @@ struct TriangleShape {
 
 TriangleShape measure_triangle(const Mesh& mesh, TriangleId t, double sin2_theta);
 
+// The doubles measure_triangle takes from corners a, b, c: the squared side lengths (side i from
+// corner i to corner i + 1) and twice the signed area. Written once, so that surely_good's
+// verdict is reached from the very doubles measure_triangle's is.
+struct SideMeasures {
+  double length2[3];
+  double twice_area;
+};
+inline SideMeasures side_measures(const Point& a, const Point& b, const Point& c) {
+  return {{squared_distance(a, b), squared_distance(b, c), squared_distance(c, a)},
+          (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)};
+}
+inline SideMeasures side_measures(const Mesh& mesh, TriangleId t) {
+  const VertexId* c = mesh.corners_at(t);
+  return side_measures(mesh.point(c[0]), mesh.point(c[1]), mesh.point(c[2]));
+}
+
+// The numerator of measure_triangle's (r / B)^2: the squared lengths of the two sides other than
+// side s (the shortest), times sin^2 theta.
+inline double ratio_numerator(const SideMeasures& m, unsigned s, double sin2_theta) {
+  return m.length2[(s + 1) % 3] * m.length2[(s + 2) % 3] * sin2_theta;
+}
+
+// measure_triangle from t's side measures m, when the caller has them.
+TriangleShape measure_triangle(TriangleId t, const SideMeasures& m, double sin2_theta);
+
 // The side (0, 1, 2) with the least of the squared lengths len2, the first of tied ones: the edge
 // whose Steiner point a triangle gets (measure_triangle, steiner_point_of).
 inline unsigned shortest_side(const double len2[3]) {
@@ -79,6 +105,31 @@ struct Assessment {
 // Fig. 38 l.8: "delta(t) or t has an angle less than theta (but not separating two subsegments)",
 // or (--max-angle) an angle above A not separating two subsegments.
 Assessment assess_triangle(const Mesh& mesh, TriangleId t, const Criteria& rules);
+// The same from t's side measures m (side_measures), when the caller has them.
+Assessment assess_triangle(const Mesh& mesh, TriangleId t, const Criteria& rules, const SideMeasures& m);
+
+// Whether surely_good can answer for these rules: only the angle bound and -a's one area bound
+// (no --max-angle, no per-triangle or field bounds, no -u edge length, no caller's size test).
+inline bool has_quick_verdict(const Criteria& rules) {
+  return !rules.max_angle.asked() && !rules.size.triangle_bounds && !(rules.size.max_edge_length > 0.0) &&
+         rules.size_test == nullptr;
+}
+
+// A cheap "good" verdict on a triangle with side measures m, for rules with has_quick_verdict: true
+// only where assess_triangle finds it neither skinny nor too large. Most triangles refinement makes are good, and this is a fifth
+// of the full assessment's instructions. It is conservative by construction, with no margin to
+// keep: measure_triangle's ratio is the rounded quotient x / y of the doubles x =
+// ratio_numerator and y = twice_area^2 computed here, and x <= y makes that quotient at most 1
+// (division rounds monotonically and 1 is a double), so not above the bound; area is 0.5
+// twice_area as measure_triangle has it. Anything else (x > y, a flat or clockwise or non-finite
+// triangle) says false and goes to the full assessment. The shell exemption and corner-lopping
+// only ever clear a bad verdict, so they cannot turn this one.
+inline bool surely_good(const SideMeasures& m, const Criteria& rules) {
+  if (!(m.twice_area > 0.0)) return false;
+  const double x = ratio_numerator(m, shortest_side(m.length2), rules.angle.sin2());
+  if (!(x <= m.twice_area * m.twice_area)) return false;
+  return !(rules.size.max_area > 0.0 && 0.5 * m.twice_area > rules.size.max_area);
+}
 
 // How many times its size bounds t exceeds: area over the smallest area bound that applies, or
 // (longest edge over the -u edge length) squared; at most 1 when t meets them.

@@ -182,6 +182,7 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       interior_rules_{policy_.interior_strategy != 0 ? AngleBound(std::max(opt.angle.degrees(), kInteriorBoundDeg))
                                                      : opt.angle,
                       opt.size, opt.max_angle, opt.area_field, opt.size_test},
+      quick_verdict_(has_quick_verdict(rules_) && has_quick_verdict(interior_rules_)),
       lopping_(opt),
       kept_(opt),
       mending_(opt),
@@ -340,6 +341,7 @@ void Terminator::warm_pages() {
 // triangle is a cache miss; its slot and corners are known well before its turn, and fetching
 // them early overlaps the misses with the work on the triangles before it.
 void Terminator::prefetch_queued() const {
+  if (mesh_.triangle_slots() < kPrefetchFromSlots) return;
   const QueuedTriangle* next = bad_triangles_.peek(kPrefetchDistance);
   if (next == nullptr) return;
   const std::size_t e = edge_of(next->triangle, 0);
@@ -374,7 +376,10 @@ void Terminator::prefetch_new_subsegment_homes() const {
 }
 
 void Terminator::enqueue_if_bad(TriangleId t) {
-  const Assessment a = assess(t);
+  const Criteria& rules = rules_for(t);
+  const SideMeasures m = side_measures(mesh_, t);
+  if (quick_verdict_ && surely_good(m, rules)) return;
+  const Assessment a = assess_with(t, rules, m);
   if (!a.bad()) return;
   DELTRI_ASSERT(mesh_.is_live(t));
   const auto [u, v, w] = mesh_.corners(t);

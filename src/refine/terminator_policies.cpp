@@ -245,8 +245,7 @@ bool Terminator::meets_at_small_angle(const PieceEnds& piece, VertexId w) const 
 
 // Sec. 7.2: strategy 1 holds the triangles with no vertex in a segment interior (none of kind
 // Segment: input vertices on a segment are its ends) to 30 degrees, strategy 2 every triangle.
-const Criteria& Terminator::rules_for(TriangleId t) const {
-  if (policy_.interior_strategy == 0) return rules_;
+const Criteria& Terminator::interior_rules_for(TriangleId t) const {
   if (policy_.interior_strategy == 2) return interior_rules_;
   for (const VertexId v : mesh_.corners(t))
     if (mesh_.kind[v] == VertexKind::Segment) return rules_;
@@ -393,8 +392,8 @@ bool Terminator::stall_check_passed(std::uint64_t used) {
 // for --max-angle as it spares a skinny one: a point for it in the corner makes a new obtuse
 // triangle one shell further in, or splits the shells, without end (docs/refinement.md,
 // "Largest-angle bound"; the quality account forces it by the same rule).
-Assessment Terminator::assess_with(TriangleId t, const Criteria& rules) const {
-  Assessment a = assess_triangle(mesh_, t, rules);
+Assessment Terminator::assess_with(TriangleId t, const Criteria& rules, const SideMeasures& m) const {
+  Assessment a = assess_triangle(mesh_, t, rules, m);
   if (lopping_.spares(mesh_, t)) a.skinny = a.too_large = false;
   if (a.skinny && policy_.shell_exemption && shell_exempt(a.shape.shortest)) {
     a.split_instead = beyond_corner_subsegment(a.shape.shortest);

@@ -17,7 +17,9 @@ void Terminator::survey(TriangleId from, TriangleId to, RefineReport& into) cons
     if (const TriangleId ahead{t + kSurveyPrefetch}; ahead < to && mesh_.is_live(ahead))
       for (unsigned i = 0; i < 3; ++i) prefetch(&mesh_.points[mesh_.corner[edge_of(ahead, i)]]);
     if (!mesh_.is_live(t)) continue;
-    const Assessment a = assess_with(t, rules_);  // the -q bound, also with Sec. 7.2's
+    const SideMeasures m = side_measures(mesh_, t);
+    if (quick_verdict_ && surely_good(m, rules_)) continue;
+    const Assessment a = assess_with(t, rules_, m);  // the -q bound, also with Sec. 7.2's
     if (!a.bad()) continue;
     ++into.bad_triangles_left;
     into.obtuse_left += a.too_obtuse;

@@ -149,3 +149,77 @@ TEST(largest_angle_above_90_degrees_near_ties) {
   CHECK_EQ(deltri::corner_above({5, 1}, {0, 0}, {10, 0}, deltri::LargestAngleBound(170.0)), -1);
   CHECK_EQ(deltri::corner_above({5, 1}, {0, 0}, {10, 0}, deltri::LargestAngleBound()), -1);
 }
+
+namespace {
+
+// One triangle a, b, c (counter-clockwise or not) in a mesh of its own.
+deltri::Mesh lone_triangle(const Point& a, const Point& b, const Point& c) {
+  deltri::Mesh m;
+  const deltri::VertexId u = m.add_vertex(a, deltri::VertexKind::Input);
+  const deltri::VertexId v = m.add_vertex(b, deltri::VertexKind::Input);
+  const deltri::VertexId w = m.add_vertex(c, deltri::VertexKind::Input);
+  m.add_triangle(u, v, w);
+  return m;
+}
+
+}  // namespace
+
+// surely_good (the refinement's quick "good" verdict) against the full assessment, the verdict
+// refinement acts on: whatever it calls good must be neither skinny nor too large there. Random
+// triangles, and triangles whose smallest angle lies within a few ulps to 1e-9 (relative) of the
+// bound, so that the quotient the full test rounds sits at 1 and a verdict with any slack above
+// it (comparing x against y (1 + 1e-13), say) calls some of them good that the full test calls
+// skinny. The counts of near ties on either side make sure the test reaches them.
+TEST(surely_good_never_contradicts_the_full_assessment) {
+  using namespace deltri;
+  std::uint64_t state = 11;
+  const auto unit = [&] { return static_cast<double>(next(state) % 1000003) / 1000003.0; };
+  int good = 0, good_near = 0, bad_near = 0, area_near = 0;
+  for (const double theta : {20.0, 28.6, 30.0, 33.0, 34.0}) {
+    const AngleBound bound(theta);
+    const double phi0 = theta * std::numbers::pi / 180.0;
+    for (int i = 0; i < 12000; ++i) {
+      Point a{unit(), unit()}, b{unit(), unit()}, c{unit(), unit()};
+      if (i % 2 == 1) {  // the smallest angle, at a, within about 1e-9 of the bound
+        const double scale = std::ldexp(1.0 + unit(), static_cast<int>(next(state) % 40) - 20);
+        const double turn = 2 * std::numbers::pi * unit();
+        const double phi = phi0 * (1.0 + (unit() - 0.5) * (i % 4 == 1 ? 1e-9 : 1e-14));
+        const double longer = 1.0 + 0.3 * unit();
+        a = {1000 * unit() - 500, 1000 * unit() - 500};
+        b = {a.x + scale * std::cos(turn), a.y + scale * std::sin(turn)};
+        c = {a.x + scale * longer * std::cos(turn + phi), a.y + scale * longer * std::sin(turn + phi)};
+      }
+      const Mesh m = lone_triangle(a, b, c);
+      const SideMeasures measures = side_measures(m, TriangleId{0});
+      // An area bound at the triangle's own area, one ulp either side, or none.
+      const double area = 0.5 * measures.twice_area;
+      const double max_area = i % 3 == 0 ? 0.0 : up(area, i % 3 == 1 ? 1 : -1);
+      const Criteria rules{bound, SizeBounds{max_area, false, 0.0}};
+      REQUIRE(has_quick_verdict(rules));
+      const Assessment full = assess_triangle(m, TriangleId{0}, rules);
+      const double ratio = full.shape.ratio2_over_bound2;
+      const bool near = std::fabs(ratio - 1.0) < 1e-12;
+      if (!surely_good(measures, rules)) {
+        bad_near += near && !full.skinny;  // a near tie left to the full test
+        continue;
+      }
+      CHECK(!full.bad());
+      ++good;
+      good_near += near;
+      area_near += max_area > 0.0 && max_area > area;
+    }
+  }
+  CHECK(good > 10000);
+  CHECK(good_near > 100);
+  CHECK(bad_near > 100);
+  CHECK(area_near > 1000);
+}
+
+// Rules with anything beyond the angle bound and -a's one area bound have no quick verdict.
+TEST(quick_verdict_only_for_the_angle_and_one_area_bound) {
+  using namespace deltri;
+  CHECK(has_quick_verdict(Criteria{AngleBound(30), SizeBounds{0.5, false, 0.0}}));
+  CHECK(!has_quick_verdict(Criteria{AngleBound(30), SizeBounds{0.0, true, 0.0}}));
+  CHECK(!has_quick_verdict(Criteria{AngleBound(30), SizeBounds{0.0, false, 2.0}}));
+  CHECK(!has_quick_verdict(Criteria{AngleBound(30), SizeBounds{}, LargestAngleBound(100)}));
+}
