@@ -73,9 +73,17 @@ class PetalSearch {
       return std::max(a.x, b.x) < x_lo || std::min(a.x, b.x) > x_hi || std::max(a.y, b.y) < y_lo ||
              std::min(a.y, b.y) > y_hi;
     }
-    bool near(const Point& o, double r2) const;  // a circle (centre, squared radius) may meet it
     bool holds(const Point& x) const { return x.x >= x_lo && x.x <= x_hi && x.y >= y_lo && x.y <= y_hi; }  // not a NaN
   };
+  struct Reach {  // pqr's circumcircle, the holder disk (both widened) and the fallback
+    Point circle;
+    double circle_radius;
+    Point holder;
+    double holder_radius;
+    Point fallback;
+    bool near(const Point& o, double r2) const;  // a circle (centre, squared radius) may hold such a point
+  };
+  Reach reach_of(const Petal& petal, const Point& fallback) const;
   static Petal petal_of(const Point& p, const Point& q, const Point& r, double theta_deg);
   void gather(const Mesh& mesh, TriangleId t, const Point& centre, double reach);
   void describe_gathered(const Mesh& mesh, std::size_t explored);
