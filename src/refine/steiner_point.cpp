@@ -120,7 +120,9 @@ bool PetalSearch::star_meets(const Point& x, double bound_sin2, bool in_box) {
       }
     }
   }
-  for (const int i : looked_at) in_cavity_[i] = 0;
+  // Every near triangle's mark is written by each call, and the others' only outside the box.
+  if (!in_box)
+    for (const int i : looked_at) in_cavity_[i] = 0;
   return meets;
 }
 
@@ -177,18 +179,25 @@ PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const 
     for (unsigned side = 0; side < 3; ++side) {
       TriangleId u;
       const int known = look_across(mesh, walls, next, side, u);
-      if (known != -1) {
-        neighbours_[next][side] = std::max(known, -1);
+      if (known < -1) continue;  // a wall: no neighbour
+      const unsigned back = side_of(mesh.link[edge_of(triangles_[next], side)]);
+      if (known >= 0) {
+        neighbours_[next][side] = known;
+        neighbours_[static_cast<std::size_t>(known)][back] = static_cast<int>(next);
         continue;
       }
       const auto i = static_cast<int>(triangles_.size());
       neighbours_[next][side] = i;
       remember(u, mesh.corner_points(u));
+      neighbours_.back()[back] = static_cast<int>(next);
       describe(static_cast<std::size_t>(i));
       expanded_.push_back(0);
-      if (reach.near(centres_.back(), radii2_.back())) near_.push_back(i);
+      if (reach.near(centres_.back(), radii2_.back())) near_.push_back(i), expanded_.back() = kLeftNear;
     }
   }
+  // The rim's sides towards the near ones are known; the Voronoi edges between two rim triangles
+  // miss the admissible points (propose_voronoi), so the rim is not looked around again.
+  for (char& e : expanded_) e = e == kLeftNear ? 0 : 1;
   note_vertices_and_rim(mesh);
   return box;
 }
@@ -200,7 +209,7 @@ inline void PetalSearch::describe(std::size_t i) {
 }
 
 // The gathered triangles' corners, each once, and the neighbours of those not gone through
-// (expanded_ 0: gather_near's rim and near ones left at the limit; gather's last ones).
+// (expanded_ 0: gather_near's near ones left at the limit; gather's last ones).
 void PetalSearch::note_vertices_and_rim(const Mesh& mesh) {
   vertices_.clear();
   if (++search_ == 0) std::fill(seen_.begin(), seen_.end(), 0), search_ = 1;

@@ -125,6 +125,7 @@ class PetalSearch {
   std::vector<char> in_cavity_;  // all 0 between star_meets' calls
   std::vector<int> near_;        // the gathered triangles whose circumcircles or corners may meet the admissible box
   std::vector<char> expanded_;   // per gathered triangle: its sides were looked across while gathering
+  static constexpr char kLeftNear = 2;  // in expanded_ while gathering: a near one not gone through yet
   std::vector<int> all_;         // 0, 1, ... for star_meets outside that box
   std::vector<Point> vertices_;       // the gathered triangles' corners, each once
   std::vector<std::uint32_t> seen_;   // per vertex id: the search that last noted it (note_vertex)
