@@ -74,56 +74,93 @@ Point PetalSearch::choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, 
   propose_corners(petal);
   for (const Point& c : centres_) candidates_.push_back(c);
   propose_voronoi(petal, box);
+  note_reachable_vertices(petal, theta_deg);
   Point best = fallback;
   bool best_good = star_meets(fallback, petal.sin2_min, box.holds(fallback));
-  double best_clearance = clearance2(fallback);
+  double best_clearance = clearance2(fallback, vertices_);
   for (const Point& x : candidates_) {
     if (!box.holds(x)) continue;  // outside pqr's circumcircle for certain: not admissible
     if (best_good) {
       // Behind a good point only a farther good one can win: the distance is the cheap test.
-      const double clearance = clearance2(x);
+      const double clearance = clearance2(x, reachable_);
       if (!(clearance > best_clearance)) continue;
-      if (admissible(pred, petal, x) && in_gathered(x) && star_meets(x, petal.sin2_min, true))
-        best = x, best_clearance = clearance;
+      if (admissible(pred, petal, x) && judge(x, petal.sin2_min) == Verdict::Good) best = x, best_clearance = clearance;
       continue;
     }
-    if (!admissible(pred, petal, x) || !in_gathered(x)) continue;
-    const bool good = star_meets(x, petal.sin2_min, true);
-    const double clearance = clearance2(x);
-    if (good || clearance > best_clearance) best = x, best_good = good, best_clearance = clearance;
+    if (!admissible(pred, petal, x)) continue;
+    const Verdict verdict = judge(x, petal.sin2_min);
+    if (verdict == Verdict::Outside) continue;
+    const double clearance = clearance2(x, reachable_);
+    if (verdict == Verdict::Good || clearance > best_clearance)
+      best = x, best_good = verdict == Verdict::Good, best_clearance = clearance;
   }
   return best;
+}
+
+// The gathered vertices an admissible candidate x can have nearest (reachable_): x sees pq at
+// theta or more, so it lies in the holder disk and the nearer of p and q is within
+// |pq| / (2 sin(theta / 2)) of it (the petal's top is the farthest); a vertex nearer to x than
+// that is within the same of the disk. The others cannot change
+// an admissible candidate's clearance2, and the rest of the candidates are refused anyway.
+void PetalSearch::note_reachable_vertices(const Petal& petal, double theta_deg) {
+  const double half = 0.5 * std::sqrt(squared_distance(petal.p, petal.q)) / std::sin(radians(0.5 * theta_deg));
+  const double reach = (petal.holder_radius + half) * (1.0 + 1e-6);
+  reachable_.clear();
+  for (const Point& v : vertices_)
+    if (!(squared_distance(v, petal.holder) > reach * reach)) reachable_.push_back(v);
+}
+
+// in_gathered and star_meets for a candidate in the admissible box, from one marking of its
+// cavity: the triangle holding x is among the marked ones but where rounding says otherwise.
+PetalSearch::Verdict PetalSearch::judge(const Point& x, double bound_sin2) {
+  mark_cavity(x, near_);
+  bool inside = false;
+  for (const int i : near_)
+    if (in_cavity_[i] && holds(corners_[i], x)) {
+      inside = true;
+      break;
+    }
+  if (!inside && !in_gathered(x)) return Verdict::Outside;
+  return marked_star_meets(x, bound_sin2, near_) ? Verdict::Good : Verdict::Bad;
+}
+
+inline void PetalSearch::mark_cavity(const Point& x, const std::vector<int>& looked_at) {
+  const Point* centres = centres_.data();
+  const double* radii2 = radii2_.data();
+  char* marks = in_cavity_.data();
+  for (const int i : looked_at) marks[i] = squared_distance(x, centres[i]) < radii2[i];
 }
 
 // Whether every triangle a candidate makes with the boundary of its cavity meets the bound: the
 // cavity is the gathered triangles whose circumcircles contain it (the whole cavity, unless it
 // reaches past the gathered ones). Only the first miss matters, so the search stops there. For x
-// in the admissible box only near_ can hold it (find_near); in_cavity_ is left all 0.
+// in the admissible box only near_ can hold it (find_near). Between calls in_cavity_ is 0 but
+// for the near triangles, whose marks each call writes.
 bool PetalSearch::star_meets(const Point& x, double bound_sin2, bool in_box) {
   if (!in_box) {
     all_.resize(triangles_.size());
     for (std::size_t i = 0; i < all_.size(); ++i) all_[i] = static_cast<int>(i);
   }
   const std::vector<int>& looked_at = in_box ? near_ : all_;
-  for (const int i : looked_at) in_cavity_[i] = squared_distance(x, centres_[i]) < radii2_[i];
-  bool meets = true;
-  for (auto i = looked_at.begin(); meets && i != looked_at.end(); ++i) {
-    if (!in_cavity_[*i]) continue;
-    const auto& corners = corners_[*i];
-    for (unsigned side = 0; side < 3; ++side) {
-      const int j = neighbours_[*i][side];
-      if (j >= 0 && in_cavity_[j]) continue;
-      // A NaN measure misses nothing, as the least taken with std::min did before.
-      if (smallest_angle_sine2(corners[side], corners[(side + 1) % 3], x) < bound_sin2) {
-        meets = false;
-        break;
-      }
-    }
-  }
-  // Every near triangle's mark is written by each call, and the others' only outside the box.
+  mark_cavity(x, looked_at);
+  const bool meets = marked_star_meets(x, bound_sin2, looked_at);
   if (!in_box)
     for (const int i : looked_at) in_cavity_[i] = 0;
   return meets;
+}
+
+bool PetalSearch::marked_star_meets(const Point& x, double bound_sin2, const std::vector<int>& looked_at) const {
+  for (const int i : looked_at) {
+    if (!in_cavity_[i]) continue;
+    const auto& corners = corners_[i];
+    for (unsigned side = 0; side < 3; ++side) {
+      const int j = neighbours_[i][side];
+      if (j >= 0 && in_cavity_[j]) continue;
+      // A NaN measure misses nothing, as the least taken with std::min did before.
+      if (smallest_angle_sine2(corners[side], corners[(side + 1) % 3], x) < bound_sin2) return false;
+    }
+  }
+  return true;
 }
 
 // Whether a circumcircle (centre o, squared radius r2) may hold an admissible point or the
@@ -288,9 +325,9 @@ bool PetalSearch::in_gathered(const Point& x) const {
   return container_of(x) >= 0;
 }
 
-double PetalSearch::clearance2(const Point& x) const {
+double PetalSearch::clearance2(const Point& x, const std::vector<Point>& vertices) {
   double nearest = HUGE_VAL;
-  for (const Point& v : vertices_) nearest = std::min(nearest, squared_distance(x, v));
+  for (const Point& v : vertices) nearest = std::min(nearest, squared_distance(x, v));
   return nearest;
 }
 

@@ -104,7 +104,12 @@ class PetalSearch {
     return left_of(t[0], t[1]) && left_of(t[1], t[2]) && left_of(t[2], t[0]);
   }
   bool star_meets(const Point& x, double bound_sin2, bool in_box);
-  double clearance2(const Point& x) const;
+  enum class Verdict { Outside, Bad, Good };
+  Verdict judge(const Point& x, double bound_sin2);
+  void mark_cavity(const Point& x, const std::vector<int>& looked_at);
+  bool marked_star_meets(const Point& x, double bound_sin2, const std::vector<int>& looked_at) const;
+  void note_reachable_vertices(const Petal& petal, double theta_deg);
+  static double clearance2(const Point& x, const std::vector<Point>& vertices);
   std::size_t slot_of(TriangleId t) const;
   int index_of(TriangleId t) const;  // in triangles_, kRefused, or -1 (not looked at yet)
   void remember(TriangleId t, const Mesh::CornerPoints& at);
@@ -128,6 +133,7 @@ class PetalSearch {
   static constexpr char kLeftNear = 2;  // in expanded_ while gathering: a near one not gone through yet
   std::vector<int> all_;         // 0, 1, ... for star_meets outside that box
   std::vector<Point> vertices_;       // the gathered triangles' corners, each once
+  std::vector<Point> reachable_;      // those an admissible candidate can have nearest (note_reachable_vertices)
   std::vector<std::uint32_t> seen_;   // per vertex id: the search that last noted it (note_vertex)
   std::uint32_t search_ = 0;
   std::vector<TriangleId> slots_;     // index_of's table: kSlots triangles or kNone
