@@ -68,7 +68,7 @@ Point PetalSearch::choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, 
   const Point fallback = off_center(p, q, r, off_center_factor);
   const Petal petal = petal_of(p, q, r, theta_deg);
   if (!std::isfinite(fallback.x) || !std::isfinite(fallback.y) || !std::isfinite(petal.holder_radius)) return fallback;
-  const Box box = gather_near(mesh, triangle_of(shortest), petal, fallback);
+  const Box box = gather_near(mesh, triangle_of(shortest), petal, fallback, theta_deg);
   in_cavity_.assign(triangles_.size(), 0);
   candidates_.assign(1, petal.top);
   propose_corners(petal);
@@ -175,16 +175,29 @@ inline bool PetalSearch::Reach::near(const Point& o, double r2) const {
     const double reach = own + widened;
     return squared_distance(o, c) > reach * reach;
   };
-  return !((apart(circle, circle_radius) || apart(holder, holder_radius)) && apart(fallback, 0.0));
+  const auto beyond = [&](const Point& on, const Point& inward) {
+    return inward.x * (o.x - on.x) + inward.y * (o.y - on.y) + own + rounding < 0.0;
+  };
+  const bool out = apart(circle, circle_radius) || apart(holder, holder_radius) || beyond(p, inward_p) ||
+                   beyond(q, inward_q);
+  return !(out && apart(fallback, 0.0));
 }
 
-// The disks of admissible_box, widened alike.
-PetalSearch::Reach PetalSearch::reach_of(const Petal& petal, const Point& fallback) const {
+// The disks of admissible_box, widened alike, and the lines from p and q at theta to pq (an
+// admissible point makes angles of theta or more at p and q: it is on the petal's side of both).
+PetalSearch::Reach PetalSearch::reach_of(const Petal& petal, const Point& fallback, double theta_deg) const {
   const auto widened = [](const Point& c, double radius) {
     return radius * (1.0 + 1e-3) + 1e-9 * (std::fabs(c.x) + std::fabs(c.y));
   };
+  const double l = std::sqrt(squared_distance(petal.p, petal.q));
+  const double ux = (petal.q.x - petal.p.x) / l, uy = (petal.q.y - petal.p.y) / l;
+  const double c = std::cos(radians(theta_deg)), s = std::sin(radians(theta_deg));
+  // The lines' directions are u turned by theta (at p) and -u turned by -theta (at q).
+  const Point inward_p{-(uy * c + ux * s), ux * c - uy * s};
+  const Point inward_q{ux * s - uy * c, ux * c + uy * s};
+  const double rounding = 1e-3 * l + 1e-9 * (std::fabs(petal.p.x) + std::fabs(petal.p.y));
   return {centres_[0], widened(centres_[0], std::sqrt(radii2_[0])), petal.holder,
-          widened(petal.holder, petal.holder_radius), fallback};
+          widened(petal.holder, petal.holder_radius), fallback, petal.p, petal.q, inward_p, inward_q, rounding};
 }
 
 // The triangles that can matter to a candidate in the admissible box (returned): from t (pqr), the
@@ -195,7 +208,8 @@ PetalSearch::Reach PetalSearch::reach_of(const Petal& petal, const Point& fallba
 // pqr (x is in its circumcircle), so x's whole cavity is near, its nearest vertex is one of the
 // cavity's corners, a circumcentre in the box is a near triangle's, and a Voronoi edge reaches into
 // the box only from a near end (a point of it is inside one of its two ends' circumcircles).
-PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback) {
+PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback,
+                                          double theta_deg) {
   triangles_.clear();
   corners_.clear();
   neighbours_.clear();
@@ -207,7 +221,7 @@ PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const 
   describe(0);
   near_.push_back(0);
   const Box box = admissible_box(petal, fallback);
-  const Reach reach = reach_of(petal, fallback);
+  const Reach reach = reach_of(petal, fallback, theta_deg);
   const bool walls = mesh.has_subsegments();
   expanded_.assign(1, 0);
   for (std::size_t k = 0; k < near_.size() && triangles_.size() < kGatherLimit; ++k) {

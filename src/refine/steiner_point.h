@@ -81,9 +81,11 @@ class PetalSearch {
     Point holder;
     double holder_radius;
     Point fallback;
+    Point p, q, inward_p, inward_q;  // the lines through p and q at theta to pq, unit normals into the petal
+    double rounding;                 // an absolute slack for the lines
     bool near(const Point& o, double r2) const;  // a circle (centre, squared radius) may hold such a point
   };
-  Reach reach_of(const Petal& petal, const Point& fallback) const;
+  Reach reach_of(const Petal& petal, const Point& fallback, double theta_deg) const;
   static Petal petal_of(const Point& p, const Point& q, const Point& r, double theta_deg);
   void gather(const Mesh& mesh, TriangleId t, const Point& centre, double reach);
   void describe_gathered(const Mesh& mesh, std::size_t explored);
@@ -91,7 +93,7 @@ class PetalSearch {
   void propose_corners(const Petal& petal);
   void propose_voronoi(const Petal& petal, const Box& near);
   Box admissible_box(const Petal& petal, const Point& fallback) const;
-  Box gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback);
+  Box gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback, double theta_deg);
   void describe(std::size_t i);
   void note_vertices_and_rim(const Mesh& mesh);
   bool admissible(Predicates& pred, const Petal& petal, const Point& x) const;
