@@ -39,24 +39,33 @@ Point steiner_point_of(const Point& a, const Point& b, const Point& c, double of
   return off_center(*p[s], *p[(s + 1) % 3], *p[(s + 2) % 3], off_center_factor);
 }
 
+// The functions of the bound's angles a petal needs: the same for every search of a run, so they
+// are computed when the bound changes only.
+const PetalSearch::Trig& PetalSearch::trig_for(double theta_deg) {
+  if (trig_.theta_deg == theta_deg) return trig_;
+  const double phi = radians(theta_deg + kPetalMarginDeg), theta = radians(theta_deg);
+  const double s_min = std::sin(radians(theta_deg + 0.5 * kPetalMarginDeg));
+  trig_ = {theta_deg,      std::tan(0.5 * phi),       std::tan(phi),       std::sin(phi), std::cos(phi),
+           std::tan(theta), std::sin(theta),          std::cos(theta),     std::sin(0.5 * theta), s_min * s_min};
+  return trig_;
+}
+
 // pq counter-clockwise with r, so the petal is on the left of p -> q.
-PetalSearch::Petal PetalSearch::petal_of(const Point& p, const Point& q, const Point& r, double theta_deg) {
+PetalSearch::Petal PetalSearch::petal_of(const Point& p, const Point& q, const Point& r, const Trig& trig) {
   Petal petal{p, q, r, {}, {}, 0.0, {}, {}, 0.0, {}, 0.0};
-  const double phi = radians(theta_deg + kPetalMarginDeg);
   const double lx = q.x - p.x, ly = q.y - p.y, l = std::sqrt(lx * lx + ly * ly);
   const double ux = lx / l, uy = ly / l, nx = -uy, ny = ux;  // along pq, and its left normal
   const Point mid = midpoint(p, q);
-  petal.top = along(mid, nx, ny, 0.5 * l / std::tan(0.5 * phi));
-  petal.arc_centre = along(mid, nx, ny, 0.5 * l / std::tan(phi));
-  petal.arc_radius = 0.5 * l / std::sin(phi);
+  petal.top = along(mid, nx, ny, 0.5 * l / trig.tan_half_phi);
+  petal.arc_centre = along(mid, nx, ny, 0.5 * l / trig.tan_phi);
+  petal.arc_radius = 0.5 * l / trig.sin_phi;
   // The rays at angle phi to pq, long enough to cross the arc: a chord of it is at most its diameter.
-  const double ray = 2.5 * petal.arc_radius, c = std::cos(phi), s = std::sin(phi);
+  const double ray = 2.5 * petal.arc_radius, c = trig.cos_phi, s = trig.sin_phi;
   petal.ray_p = along(p, ux * c - uy * s, uy * c + ux * s, ray);
   petal.ray_q = along(q, -ux * c - uy * s, -uy * c + ux * s, ray);
-  petal.holder = along(mid, nx, ny, 0.5 * l / std::tan(radians(theta_deg)));
-  petal.holder_radius = 0.5 * l / std::sin(radians(theta_deg));
-  const double s_min = std::sin(radians(theta_deg + 0.5 * kPetalMarginDeg));
-  petal.sin2_min = s_min * s_min;
+  petal.holder = along(mid, nx, ny, 0.5 * l / trig.tan_theta);
+  petal.holder_radius = 0.5 * l / trig.sin_theta;
+  petal.sin2_min = trig.sin2_min;
   return petal;
 }
 
@@ -66,15 +75,16 @@ Point PetalSearch::choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, 
   const Point& q = mesh.point(mesh.dest(shortest));
   const Point& r = mesh.point(mesh.apex(shortest));
   const Point fallback = off_center(p, q, r, off_center_factor);
-  const Petal petal = petal_of(p, q, r, theta_deg);
+  const Trig& trig = trig_for(theta_deg);
+  const Petal petal = petal_of(p, q, r, trig);
   if (!std::isfinite(fallback.x) || !std::isfinite(fallback.y) || !std::isfinite(petal.holder_radius)) return fallback;
-  const Box box = gather_near(mesh, triangle_of(shortest), petal, fallback, theta_deg);
+  const Box box = gather_near(mesh, triangle_of(shortest), petal, fallback, trig);
   in_cavity_.assign(triangles_.size(), 0);
   candidates_.assign(1, petal.top);
   propose_corners(petal);
   for (const Point& c : centres_) candidates_.push_back(c);
   propose_voronoi(petal, box);
-  note_reachable_vertices(petal, theta_deg);
+  note_reachable_vertices(petal, trig);
   Point best = fallback;
   bool best_good = star_meets(fallback, petal.sin2_min, box.holds(fallback));
   double best_clearance = clearance2(fallback, vertices_);
@@ -102,8 +112,8 @@ Point PetalSearch::choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, 
 // |pq| / (2 sin(theta / 2)) of it (the petal's top is the farthest); a vertex nearer to x than
 // that is within the same of the disk. The others cannot change
 // an admissible candidate's clearance2, and the rest of the candidates are refused anyway.
-void PetalSearch::note_reachable_vertices(const Petal& petal, double theta_deg) {
-  const double half = 0.5 * std::sqrt(squared_distance(petal.p, petal.q)) / std::sin(radians(0.5 * theta_deg));
+void PetalSearch::note_reachable_vertices(const Petal& petal, const Trig& trig) {
+  const double half = 0.5 * std::sqrt(squared_distance(petal.p, petal.q)) / trig.sin_half_theta;
   const double reach = (petal.holder_radius + half) * (1.0 + 1e-6);
   reachable_.clear();
   for (const Point& v : vertices_)
@@ -185,13 +195,13 @@ inline bool PetalSearch::Reach::near(const Point& o, double r2) const {
 
 // The disks of admissible_box, widened alike, and the lines from p and q at theta to pq (an
 // admissible point makes angles of theta or more at p and q: it is on the petal's side of both).
-PetalSearch::Reach PetalSearch::reach_of(const Petal& petal, const Point& fallback, double theta_deg) const {
+PetalSearch::Reach PetalSearch::reach_of(const Petal& petal, const Point& fallback, const Trig& trig) const {
   const auto widened = [](const Point& c, double radius) {
     return radius * (1.0 + 1e-3) + 1e-9 * (std::fabs(c.x) + std::fabs(c.y));
   };
   const double l = std::sqrt(squared_distance(petal.p, petal.q));
   const double ux = (petal.q.x - petal.p.x) / l, uy = (petal.q.y - petal.p.y) / l;
-  const double c = std::cos(radians(theta_deg)), s = std::sin(radians(theta_deg));
+  const double c = trig.cos_theta, s = trig.sin_theta;
   // The lines' directions are u turned by theta (at p) and -u turned by -theta (at q).
   const Point inward_p{-(uy * c + ux * s), ux * c - uy * s};
   const Point inward_q{ux * s - uy * c, ux * c + uy * s};
@@ -209,7 +219,7 @@ PetalSearch::Reach PetalSearch::reach_of(const Petal& petal, const Point& fallba
 // cavity's corners, a circumcentre in the box is a near triangle's, and a Voronoi edge reaches into
 // the box only from a near end (a point of it is inside one of its two ends' circumcircles).
 PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback,
-                                          double theta_deg) {
+                                          const Trig& trig) {
   triangles_.clear();
   corners_.clear();
   neighbours_.clear();
@@ -221,7 +231,7 @@ PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const 
   describe(0);
   near_.push_back(0);
   const Box box = admissible_box(petal, fallback);
-  const Reach reach = reach_of(petal, fallback, theta_deg);
+  const Reach reach = reach_of(petal, fallback, trig);
   const bool walls = mesh.has_subsegments();
   expanded_.assign(1, 0);
   for (std::size_t k = 0; k < near_.size() && triangles_.size() < kGatherLimit; ++k) {

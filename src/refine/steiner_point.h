@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -85,15 +86,21 @@ class PetalSearch {
     double rounding;                 // an absolute slack for the lines
     bool near(const Point& o, double r2) const;  // a circle (centre, squared radius) may hold such a point
   };
-  Reach reach_of(const Petal& petal, const Point& fallback, double theta_deg) const;
-  static Petal petal_of(const Point& p, const Point& q, const Point& r, double theta_deg);
+  struct Trig {  // of theta and phi = theta + kPetalMarginDeg
+    double theta_deg = NAN;
+    double tan_half_phi, tan_phi, sin_phi, cos_phi, tan_theta, sin_theta, cos_theta, sin_half_theta;
+    double sin2_min;  // Petal::sin2_min
+  };
+  const Trig& trig_for(double theta_deg);
+  Reach reach_of(const Petal& petal, const Point& fallback, const Trig& trig) const;
+  static Petal petal_of(const Point& p, const Point& q, const Point& r, const Trig& trig);
   void gather(const Mesh& mesh, TriangleId t, const Point& centre, double reach);
   void describe_gathered(const Mesh& mesh, std::size_t explored);
   void note_vertex(const Mesh& mesh, VertexId v);
   void propose_corners(const Petal& petal);
   void propose_voronoi(const Petal& petal, const Box& near);
   Box admissible_box(const Petal& petal, const Point& fallback) const;
-  Box gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback, double theta_deg);
+  Box gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback, const Trig& trig);
   void describe(std::size_t i);
   void note_vertices_and_rim(const Mesh& mesh);
   bool admissible(Predicates& pred, const Petal& petal, const Point& x) const;
@@ -110,7 +117,7 @@ class PetalSearch {
   Verdict judge(const Point& x, double bound_sin2);
   void mark_cavity(const Point& x, const std::vector<int>& looked_at);
   bool marked_star_meets(const Point& x, double bound_sin2, const std::vector<int>& looked_at) const;
-  void note_reachable_vertices(const Petal& petal, double theta_deg);
+  void note_reachable_vertices(const Petal& petal, const Trig& trig);
   static double clearance2(const Point& x, const std::vector<Point>& vertices);
   std::size_t slot_of(TriangleId t) const;
   int index_of(TriangleId t) const;  // in triangles_, kRefused, or -1 (not looked at yet)
@@ -143,6 +150,7 @@ class PetalSearch {
   std::vector<Point> candidates_;
   std::vector<std::array<bool, 3>> walls_;  // per gathered triangle: which sides are subsegments
   std::vector<int> stack_;
+  Trig trig_;
 };
 
 }  // namespace deltri
