@@ -79,7 +79,8 @@ Point PetalSearch::choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, 
   in_cavity_.assign(triangles_.size(), 0);
   candidates_.assign(1, petal.top);
   propose_corners(petal);
-  for (const Point& c : centres_) candidates_.push_back(c);
+  // A circumcentre is inside its own circle, so only a near one can be admissible.
+  for (const int i : near_) candidates_.push_back(centres_[i]);
   propose_voronoi(petal, box);
   note_reachable_vertices(petal, trig);
   Point best = fallback;
