@@ -257,7 +257,7 @@ PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const 
   // The rim's sides towards the near ones are known; the Voronoi edges between two rim triangles
   // miss the admissible points (propose_voronoi), so the rim is not looked around again.
   for (char& e : expanded_) e = e == kLeftNear ? 0 : 1;
-  note_vertices_and_rim(mesh);
+  note_vertices_and_rim(mesh, true);
   return box;
 }
 
@@ -269,12 +269,16 @@ inline void PetalSearch::describe(std::size_t i) {
 
 // The gathered triangles' corners, each once, and the neighbours of those not gone through
 // (expanded_ 0: gather_near's near ones left at the limit; gather's last ones).
-void PetalSearch::note_vertices_and_rim(const Mesh& mesh) {
+// With near_only (gather_near), the near triangles' corners only: an admissible point's or the
+// fallback's cavity is near, and with it its nearest vertex in sight.
+void PetalSearch::note_vertices_and_rim(const Mesh& mesh, bool near_only) {
   vertices_.clear();
   if (++search_ == 0) std::fill(seen_.begin(), seen_.end(), 0), search_ = 1;
   if (seen_.size() < mesh.vertex_count()) seen_.resize(std::max<std::size_t>(mesh.vertex_count(), 2 * seen_.size()), 0);
   const bool walls = mesh.has_subsegments();
-  for (std::size_t i = 0; i < triangles_.size(); ++i) {
+  const std::size_t count = near_only ? near_.size() : triangles_.size();
+  for (std::size_t n = 0; n < count; ++n) {
+    const std::size_t i = near_only ? static_cast<std::size_t>(near_[n]) : n;
     for (unsigned k = 0; k < 3; ++k) note_vertex(mesh, mesh.corner[edge_of(triangles_[i], k)]);
     if (expanded_[i]) continue;
     TriangleId u;
@@ -428,7 +432,7 @@ void PetalSearch::describe_gathered(const Mesh& mesh, std::size_t explored) {
   for (std::size_t i = 0; i < triangles_.size(); ++i) describe(i);
   expanded_.assign(triangles_.size(), 0);
   std::fill_n(expanded_.begin(), explored, 1);
-  note_vertices_and_rim(mesh);
+  note_vertices_and_rim(mesh, false);
 }
 
 // Each corner once (clearance2 takes the least distance, so their order does not matter): a stamp

@@ -101,7 +101,7 @@ class PetalSearch {
   Box admissible_box(const Petal& petal, const Point& fallback) const;
   Box gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback, const Trig& trig);
   void describe(std::size_t i);
-  void note_vertices_and_rim(const Mesh& mesh);
+  void note_vertices_and_rim(const Mesh& mesh, bool near_only);
   bool admissible(Predicates& pred, const Petal& petal, const Point& x) const;
   bool in_gathered(const Point& x) const;
   // Whether triangle t (counter-clockwise, closed) holds x, in floating point.
