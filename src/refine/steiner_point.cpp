@@ -203,7 +203,7 @@ PetalSearch::Reach PetalSearch::reach_of(const Petal& petal, const Point& fallba
   // The lines' directions are u turned by theta (at p) and -u turned by -theta (at q).
   const Point inward_p{-(uy * c + ux * s), ux * c - uy * s};
   const Point inward_q{ux * s - uy * c, ux * c + uy * s};
-  const double rounding = 1e-3 * l + 1e-9 * (std::fabs(petal.p.x) + std::fabs(petal.p.y));
+  const double rounding = l * 1e-3 + 1e-9 * (std::fabs(petal.p.x) + std::fabs(petal.p.y));
   return {centres_[0], widened(centres_[0], std::sqrt(radii2_[0])), petal.holder,
           widened(petal.holder, petal.holder_radius), fallback, petal.p, petal.q, inward_p, inward_q, rounding};
 }
@@ -218,16 +218,7 @@ PetalSearch::Reach PetalSearch::reach_of(const Petal& petal, const Point& fallba
 // the box only from a near end (a point of it is inside one of its two ends' circumcircles).
 PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback,
                                           const Trig& trig) {
-  triangles_.clear();
-  corners_.clear();
-  neighbours_.clear();
-  centres_.clear();
-  radii2_.clear();
-  near_.clear();
-  start_table(mesh);
-  remember(t, mesh.corner_points(t));
-  describe(0);
-  near_.push_back(0);
+  start_gathering(mesh, t);
   const Box box = admissible_box(petal, fallback);
   const Reach reach = reach_of(petal, fallback, trig);
   const bool walls = mesh.has_subsegments();
@@ -259,6 +250,19 @@ PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const 
   for (char& e : expanded_) e = e == kLeftNear ? 0 : 1;
   note_vertices_and_rim(mesh, true);
   return box;
+}
+
+// t (pqr) gathered alone, and near.
+void PetalSearch::start_gathering(const Mesh& mesh, TriangleId t) {
+  triangles_.clear();
+  corners_.clear();
+  neighbours_.clear();
+  centres_.clear();
+  radii2_.clear();
+  start_table(mesh);
+  remember(t, mesh.corner_points(t));
+  describe(0);
+  near_.assign(1, 0);
 }
 
 inline void PetalSearch::describe(std::size_t i) {

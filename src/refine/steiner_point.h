@@ -53,6 +53,8 @@ class PetalSearch {
   // What the last search gathered (for tests): how many triangles, and whether t is among them.
   std::size_t gathered_count() const { return triangles_.size(); }
   bool gathered(TriangleId t) const { return index_of(t) >= 0; }
+  // The squared distance from x to its nearest vertex as the last search took it for its candidates.
+  double nearest2(const Point& x) const { return clearance2(x, reachable_); }
 
  private:
   struct Petal {
@@ -100,6 +102,7 @@ class PetalSearch {
   void propose_voronoi(const Petal& petal, const Box& near);
   Box admissible_box(const Petal& petal, const Point& fallback) const;
   Box gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback, const Trig& trig);
+  void start_gathering(const Mesh& mesh, TriangleId t);
   void describe(std::size_t i);
   void note_vertices_and_rim(const Mesh& mesh, bool near_only);
   bool admissible(Predicates& pred, const Petal& petal, const Point& x) const;
