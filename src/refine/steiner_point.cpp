@@ -191,6 +191,16 @@ inline bool PetalSearch::Reach::near(const Point& o, double r2) const {
   return !(out && apart(fallback, 0.0));
 }
 
+// Whether segment ab is on the far side of the line at p or of the line at q, where an admissible
+// point is not: then its crossings with the arc and the rays are not computed (propose_voronoi).
+inline bool PetalSearch::Reach::misses(const Point& a, const Point& b) const {
+  const auto beyond = [&](const Point& on, const Point& inward) {
+    const auto side = [&](const Point& x) { return inward.x * (x.x - on.x) + inward.y * (x.y - on.y) + rounding < 0.0; };
+    return side(a) && side(b);
+  };
+  return beyond(p, inward_p) || beyond(q, inward_q);
+}
+
 // The disks of admissible_box, widened alike, and the lines from p and q at theta to pq (an
 // admissible point makes angles of theta or more at p and q: it is on the petal's side of both).
 PetalSearch::Reach PetalSearch::reach_of(const Petal& petal, const Point& fallback, const Trig& trig) const {
@@ -220,7 +230,8 @@ PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const 
                                           const Trig& trig) {
   start_gathering(mesh, t);
   const Box box = admissible_box(petal, fallback);
-  const Reach reach = reach_of(petal, fallback, trig);
+  reach_ = reach_of(petal, fallback, trig);
+  const Reach& reach = reach_;
   const bool walls = mesh.has_subsegments();
   expanded_.assign(1, 0);
   for (std::size_t k = 0; k < near_.size() && triangles_.size() < kGatherLimit; ++k) {
@@ -311,7 +322,7 @@ void PetalSearch::propose_voronoi(const Petal& petal, const Box& near) {
       if (j <= static_cast<int>(i)) continue;  // each edge once, both ends gathered
       const Point& a = centres_[i];
       const Point& b = centres_[static_cast<std::size_t>(j)];
-      if (near.misses(a, b)) continue;
+      if (near.misses(a, b) || reach_.misses(a, b)) continue;
       const int n = segment_circle_crossings(a, b, petal.arc_centre, petal.arc_radius, crossings);
       for (int k = 0; k < n; ++k) candidates_.push_back(crossings[k]);
       if (segment_crossing(a, b, petal.p, petal.ray_p, at)) candidates_.push_back(at);

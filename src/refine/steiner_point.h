@@ -86,7 +86,9 @@ class PetalSearch {
     Point p, q, inward_p, inward_q;  // the lines through p and q at theta to pq, unit normals into the petal
     double rounding;                 // an absolute slack for the lines
     bool near(const Point& o, double r2) const;  // a circle (centre, squared radius) may hold such a point
+    bool misses(const Point& a, const Point& b) const;
   };
+  Reach reach_{};  // the last gather_near's
   struct Trig {  // of theta and phi = theta + kPetalMarginDeg
     double theta_deg = NAN;
     double tan_half_phi, tan_phi, sin_phi, cos_phi, tan_theta, sin_theta, cos_theta, sin_half_theta;
