@@ -36,7 +36,7 @@ Point PetalSearch::choose_for_obtuse(const Mesh& mesh, Predicates& pred, EdgeRef
   double best_clearance = -1.0;
   for (const Point& x : candidates_) {
     if (!std::isfinite(x.x) || !std::isfinite(x.y) || !(pred.incircle(p, q, r, x) > 0.0)) continue;
-    const double clearance = clearance2(x);
+    const double clearance = clearance2(x, vertices_);
     if (!(clearance > best_clearance)) continue;  // the cheap test first
     if (star_margin(x, angle, max_angle) >= 0.0) best = x, best_clearance = clearance;
   }

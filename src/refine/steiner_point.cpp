@@ -15,9 +15,6 @@ namespace {
 // bounds the work where the mesh is much finer than pq (next to a short feature), where the
 // off-centre is the candidate that matters anyway.
 constexpr std::size_t kGatherLimit = 96;
-// The table holds the gathered triangles and those refused next to them (at most three neighbours
-// per gathered one), with room to spare for short probes.
-static_assert(PetalSearch::kSlots > 1 + kGatherLimit * 7 / 2);
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
@@ -39,24 +36,33 @@ Point steiner_point_of(const Point& a, const Point& b, const Point& c, double of
   return off_center(*p[s], *p[(s + 1) % 3], *p[(s + 2) % 3], off_center_factor);
 }
 
+// The functions of the bound's angles a petal needs: the same for every search of a run, so they
+// are computed when the bound changes only.
+const PetalSearch::Trig& PetalSearch::trig_for(double theta_deg) {
+  if (trig_.theta_deg == theta_deg) return trig_;
+  const double phi = radians(theta_deg + kPetalMarginDeg), theta = radians(theta_deg);
+  const double s_min = std::sin(radians(theta_deg + 0.5 * kPetalMarginDeg));
+  trig_ = {theta_deg,      std::tan(0.5 * phi),       std::tan(phi),       std::sin(phi), std::cos(phi),
+           std::tan(theta), std::sin(theta),          std::cos(theta),     std::sin(0.5 * theta), s_min * s_min};
+  return trig_;
+}
+
 // pq counter-clockwise with r, so the petal is on the left of p -> q.
-PetalSearch::Petal PetalSearch::petal_of(const Point& p, const Point& q, const Point& r, double theta_deg) {
+PetalSearch::Petal PetalSearch::petal_of(const Point& p, const Point& q, const Point& r, const Trig& trig) {
   Petal petal{p, q, r, {}, {}, 0.0, {}, {}, 0.0, {}, 0.0};
-  const double phi = radians(theta_deg + kPetalMarginDeg);
   const double lx = q.x - p.x, ly = q.y - p.y, l = std::sqrt(lx * lx + ly * ly);
   const double ux = lx / l, uy = ly / l, nx = -uy, ny = ux;  // along pq, and its left normal
   const Point mid = midpoint(p, q);
-  petal.top = along(mid, nx, ny, 0.5 * l / std::tan(0.5 * phi));
-  petal.arc_centre = along(mid, nx, ny, 0.5 * l / std::tan(phi));
-  petal.arc_radius = 0.5 * l / std::sin(phi);
+  petal.top = along(mid, nx, ny, 0.5 * l / trig.tan_half_phi);
+  petal.arc_centre = along(mid, nx, ny, 0.5 * l / trig.tan_phi);
+  petal.arc_radius = 0.5 * l / trig.sin_phi;
   // The rays at angle phi to pq, long enough to cross the arc: a chord of it is at most its diameter.
-  const double ray = 2.5 * petal.arc_radius, c = std::cos(phi), s = std::sin(phi);
+  const double ray = 2.5 * petal.arc_radius, c = trig.cos_phi, s = trig.sin_phi;
   petal.ray_p = along(p, ux * c - uy * s, uy * c + ux * s, ray);
   petal.ray_q = along(q, -ux * c - uy * s, -uy * c + ux * s, ray);
-  petal.holder = along(mid, nx, ny, 0.5 * l / std::tan(radians(theta_deg)));
-  petal.holder_radius = 0.5 * l / std::sin(radians(theta_deg));
-  const double s_min = std::sin(radians(theta_deg + 0.5 * kPetalMarginDeg));
-  petal.sin2_min = s_min * s_min;
+  petal.holder = along(mid, nx, ny, 0.5 * l / trig.tan_theta);
+  petal.holder_radius = 0.5 * l / trig.sin_theta;
+  petal.sin2_min = trig.sin2_min;
   return petal;
 }
 
@@ -66,93 +72,166 @@ Point PetalSearch::choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, 
   const Point& q = mesh.point(mesh.dest(shortest));
   const Point& r = mesh.point(mesh.apex(shortest));
   const Point fallback = off_center(p, q, r, off_center_factor);
-  const Petal petal = petal_of(p, q, r, theta_deg);
+  const Trig& trig = trig_for(theta_deg);
+  const Petal petal = petal_of(p, q, r, trig);
   if (!std::isfinite(fallback.x) || !std::isfinite(fallback.y) || !std::isfinite(petal.holder_radius)) return fallback;
-  const Box box = gather_near(mesh, triangle_of(shortest), petal, fallback);
+  const Box box = gather_near(mesh, triangle_of(shortest), petal, fallback, trig);
   in_cavity_.assign(triangles_.size(), 0);
   candidates_.assign(1, petal.top);
   propose_corners(petal);
-  for (const Point& c : centres_) candidates_.push_back(c);
+  // A circumcentre is inside its own circle, so only a near one can be admissible.
+  for (const int i : near_) candidates_.push_back(centres_[i]);
   propose_voronoi(petal, box);
+  note_reachable_vertices(petal, trig);
   Point best = fallback;
   bool best_good = star_meets(fallback, petal.sin2_min, box.holds(fallback));
-  double best_clearance = clearance2(fallback);
+  double best_clearance = clearance2(fallback, vertices_);
   for (const Point& x : candidates_) {
     if (!box.holds(x)) continue;  // outside pqr's circumcircle for certain: not admissible
     if (best_good) {
       // Behind a good point only a farther good one can win: the distance is the cheap test.
-      const double clearance = clearance2(x);
+      const double clearance = clearance2(x, reachable_);
       if (!(clearance > best_clearance)) continue;
-      if (admissible(pred, petal, x) && in_gathered(x) && star_meets(x, petal.sin2_min, true))
-        best = x, best_clearance = clearance;
+      if (admissible(pred, petal, x) && judge(x, petal.sin2_min) == Verdict::Good) best = x, best_clearance = clearance;
       continue;
     }
-    if (!admissible(pred, petal, x) || !in_gathered(x)) continue;
-    const bool good = star_meets(x, petal.sin2_min, true);
-    const double clearance = clearance2(x);
-    if (good || clearance > best_clearance) best = x, best_good = good, best_clearance = clearance;
+    if (!admissible(pred, petal, x)) continue;
+    const Verdict verdict = judge(x, petal.sin2_min);
+    if (verdict == Verdict::Outside) continue;
+    const double clearance = clearance2(x, reachable_);
+    if (verdict == Verdict::Good || clearance > best_clearance)
+      best = x, best_good = verdict == Verdict::Good, best_clearance = clearance;
   }
   return best;
+}
+
+// The gathered vertices an admissible candidate x can have nearest (reachable_): x sees pq at
+// theta or more, so it lies in the holder disk and the nearer of p and q is within
+// |pq| / (2 sin(theta / 2)) of it (the petal's top is the farthest); a vertex nearer to x than
+// that is within the same of the disk. The others cannot change
+// an admissible candidate's clearance2, and the rest of the candidates are refused anyway.
+void PetalSearch::note_reachable_vertices(const Petal& petal, const Trig& trig) {
+  const double half = 0.5 * std::sqrt(squared_distance(petal.p, petal.q)) / trig.sin_half_theta;
+  const double reach = (petal.holder_radius + half) * (1.0 + 1e-6);
+  reachable_.clear();
+  for (const Point& v : vertices_)
+    if (!(squared_distance(v, petal.holder) > reach * reach)) reachable_.push_back(v);
+}
+
+// in_gathered and star_meets for a candidate in the admissible box, from one marking of its
+// cavity: the triangle holding x is among the marked ones but where rounding says otherwise.
+PetalSearch::Verdict PetalSearch::judge(const Point& x, double bound_sin2) {
+  mark_cavity(x, near_);
+  bool inside = false;
+  for (const int i : near_)
+    if (in_cavity_[i] && holds(corners_[i], x)) {
+      inside = true;
+      break;
+    }
+  if (!inside && !in_gathered(x)) return Verdict::Outside;
+  return marked_star_meets(x, bound_sin2, near_) ? Verdict::Good : Verdict::Bad;
+}
+
+inline void PetalSearch::mark_cavity(const Point& x, const std::vector<int>& looked_at) {
+  const Point* centres = centres_.data();
+  const double* radii2 = radii2_.data();
+  char* marks = in_cavity_.data();
+  for (const int i : looked_at) marks[i] = squared_distance(x, centres[i]) < radii2[i];
 }
 
 // Whether every triangle a candidate makes with the boundary of its cavity meets the bound: the
 // cavity is the gathered triangles whose circumcircles contain it (the whole cavity, unless it
 // reaches past the gathered ones). Only the first miss matters, so the search stops there. For x
-// in the admissible box only near_ can hold it (find_near); in_cavity_ is left all 0.
+// in the admissible box only near_ can hold it (find_near). Between calls in_cavity_ is 0 but
+// for the near triangles, whose marks each call writes.
 bool PetalSearch::star_meets(const Point& x, double bound_sin2, bool in_box) {
   if (!in_box) {
     all_.resize(triangles_.size());
     for (std::size_t i = 0; i < all_.size(); ++i) all_[i] = static_cast<int>(i);
   }
   const std::vector<int>& looked_at = in_box ? near_ : all_;
-  for (const int i : looked_at) in_cavity_[i] = squared_distance(x, centres_[i]) < radii2_[i];
-  bool meets = true;
-  for (auto i = looked_at.begin(); meets && i != looked_at.end(); ++i) {
-    if (!in_cavity_[*i]) continue;
-    const auto& corners = corners_[*i];
-    for (unsigned side = 0; side < 3; ++side) {
-      const int j = neighbours_[*i][side];
-      if (j >= 0 && in_cavity_[j]) continue;
-      // A NaN measure misses nothing, as the least taken with std::min did before.
-      if (smallest_angle_sine2(corners[side], corners[(side + 1) % 3], x) < bound_sin2) {
-        meets = false;
-        break;
-      }
-    }
-  }
-  for (const int i : looked_at) in_cavity_[i] = 0;
+  mark_cavity(x, looked_at);
+  const bool meets = marked_star_meets(x, bound_sin2, looked_at);
+  if (!in_box)
+    for (const int i : looked_at) in_cavity_[i] = 0;
   return meets;
 }
 
-// Whether a circumcircle (centre o, squared radius r2) may hold a point of the box: its bounding
-// box, widened by a millionth of its size and place (far past rounding), meets it. When not, a
-// point of the box is outside the circle in floating point too. A NaN counts as near.
-inline bool PetalSearch::Box::near(const Point& o, double r2) const {
+bool PetalSearch::marked_star_meets(const Point& x, double bound_sin2, const std::vector<int>& looked_at) const {
+  for (const int i : looked_at) {
+    if (!in_cavity_[i]) continue;
+    const auto& corners = corners_[i];
+    for (unsigned side = 0; side < 3; ++side) {
+      const int j = neighbours_[i][side];
+      if (j >= 0 && in_cavity_[j]) continue;
+      // A NaN measure misses nothing, as the least taken with std::min did before.
+      if (smallest_angle_sine2(corners[side], corners[(side + 1) % 3], x) < bound_sin2) return false;
+    }
+  }
+  return true;
+}
+
+// Whether a circumcircle (centre o, squared radius r2) may hold an admissible point or the
+// fallback: it meets both pqr's circumcircle and the holder disk (admissible_box), or holds the
+// fallback, each widened by a millionth of its size and place (far past rounding). When not, such
+// a point is outside the circle in floating point too. A NaN counts as near. Disks rather than
+// their boxes: a third fewer triangles gathered (docs/benchmarks.md).
+inline bool PetalSearch::Reach::near(const Point& o, double r2) const {
   const double radius = std::sqrt(r2);
-  const double reach = radius + 1e-6 * (radius + std::fabs(o.x) + std::fabs(o.y));
-  return !(o.x + reach < x_lo || o.x - reach > x_hi || o.y + reach < y_lo || o.y - reach > y_hi);
+  const double own = radius + 1e-6 * (radius + std::fabs(o.x) + std::fabs(o.y));
+  const auto apart = [&](const Point& c, double widened) {
+    const double reach = own + widened;
+    return squared_distance(o, c) > reach * reach;
+  };
+  const auto beyond = [&](const Point& on, const Point& inward) {
+    return inward.x * (o.x - on.x) + inward.y * (o.y - on.y) + own + rounding < 0.0;
+  };
+  const bool out = apart(circle, circle_radius) || apart(holder, holder_radius) || beyond(p, inward_p) ||
+                   beyond(q, inward_q);
+  return !(out && apart(fallback, 0.0));
+}
+
+// Whether segment ab is on the far side of the line at p or of the line at q, where an admissible
+// point is not: then its crossings with the arc and the rays are not computed (propose_voronoi).
+inline bool PetalSearch::Reach::misses(const Point& a, const Point& b) const {
+  const auto beyond = [&](const Point& on, const Point& inward) {
+    const auto side = [&](const Point& x) { return inward.x * (x.x - on.x) + inward.y * (x.y - on.y) + rounding < 0.0; };
+    return side(a) && side(b);
+  };
+  return beyond(p, inward_p) || beyond(q, inward_q);
+}
+
+// The disks of admissible_box, widened alike, and the lines from p and q at theta to pq (an
+// admissible point makes angles of theta or more at p and q: it is on the petal's side of both).
+PetalSearch::Reach PetalSearch::reach_of(const Petal& petal, const Point& fallback, const Trig& trig) const {
+  const auto widened = [](const Point& c, double radius) {
+    return radius * (1.0 + 1e-3) + 1e-9 * (std::fabs(c.x) + std::fabs(c.y));
+  };
+  const double l = std::sqrt(squared_distance(petal.p, petal.q));
+  const double ux = (petal.q.x - petal.p.x) / l, uy = (petal.q.y - petal.p.y) / l;
+  const double c = trig.cos_theta, s = trig.sin_theta;
+  // The lines' directions are u turned by theta (at p) and -u turned by -theta (at q).
+  const Point inward_p{-(uy * c + ux * s), ux * c - uy * s};
+  const Point inward_q{ux * s - uy * c, ux * c + uy * s};
+  const double rounding = l * 1e-3 + 1e-9 * (std::fabs(petal.p.x) + std::fabs(petal.p.y));
+  return {centres_[0], widened(centres_[0], std::sqrt(radii2_[0])), petal.holder,
+          widened(petal.holder, petal.holder_radius), fallback, petal.p, petal.q, inward_p, inward_q, rounding};
 }
 
 // The triangles that can matter to a candidate in the admissible box (returned): from t (pqr), the
-// triangles whose circumcircles may meet the box, reachable from t through such triangles without
+// triangles whose circumcircles may hold an admissible point or the fallback (Reach), reachable from t through such triangles without
 // crossing a subsegment (near_), and their other neighbours (the rim, not gone through), whose
 // circumcentres end the Voronoi edges that leave the near ones. That is all an admissible x needs:
 // in a constrained Delaunay mesh the triangles whose circumcircles hold x are connected and hold
 // pqr (x is in its circumcircle), so x's whole cavity is near, its nearest vertex is one of the
 // cavity's corners, a circumcentre in the box is a near triangle's, and a Voronoi edge reaches into
 // the box only from a near end (a point of it is inside one of its two ends' circumcircles).
-PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback) {
-  triangles_.clear();
-  corners_.clear();
-  neighbours_.clear();
-  centres_.clear();
-  radii2_.clear();
-  near_.clear();
-  slots_.assign(kSlots, kNone);
-  remember(t, mesh.corner_points(t));
-  describe(0);
-  near_.push_back(0);
+PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback,
+                                          const Trig& trig) {
+  start_gathering(mesh, t);
   const Box box = admissible_box(petal, fallback);
+  reach_ = reach_of(petal, fallback, trig);
+  const Reach& reach = reach_;
   const bool walls = mesh.has_subsegments();
   expanded_.assign(1, 0);
   for (std::size_t k = 0; k < near_.size() && triangles_.size() < kGatherLimit; ++k) {
@@ -161,20 +240,40 @@ PetalSearch::Box PetalSearch::gather_near(const Mesh& mesh, TriangleId t, const 
     for (unsigned side = 0; side < 3; ++side) {
       TriangleId u;
       const int known = look_across(mesh, walls, next, side, u);
-      if (known != -1) {
-        neighbours_[next][side] = std::max(known, -1);
+      if (known < -1) continue;  // a wall: no neighbour
+      const unsigned back = side_of(mesh.link[edge_of(triangles_[next], side)]);
+      if (known >= 0) {
+        neighbours_[next][side] = known;
+        neighbours_[static_cast<std::size_t>(known)][back] = static_cast<int>(next);
         continue;
       }
       const auto i = static_cast<int>(triangles_.size());
       neighbours_[next][side] = i;
       remember(u, mesh.corner_points(u));
+      neighbours_.back()[back] = static_cast<int>(next);
       describe(static_cast<std::size_t>(i));
       expanded_.push_back(0);
-      if (box.near(centres_.back(), radii2_.back())) near_.push_back(i);
+      if (reach.near(centres_.back(), radii2_.back())) near_.push_back(i), expanded_.back() = kLeftNear;
     }
   }
-  note_vertices_and_rim(mesh);
+  // The rim's sides towards the near ones are known; the Voronoi edges between two rim triangles
+  // miss the admissible points (propose_voronoi), so the rim is not looked around again.
+  for (char& e : expanded_) e = e == kLeftNear ? 0 : 1;
+  note_vertices_and_rim(mesh, true);
   return box;
+}
+
+// t (pqr) gathered alone, and near.
+void PetalSearch::start_gathering(const Mesh& mesh, TriangleId t) {
+  triangles_.clear();
+  corners_.clear();
+  neighbours_.clear();
+  centres_.clear();
+  radii2_.clear();
+  start_table(mesh);
+  remember(t, mesh.corner_points(t));
+  describe(0);
+  near_.assign(1, 0);
 }
 
 inline void PetalSearch::describe(std::size_t i) {
@@ -184,13 +283,17 @@ inline void PetalSearch::describe(std::size_t i) {
 }
 
 // The gathered triangles' corners, each once, and the neighbours of those not gone through
-// (expanded_ 0: gather_near's rim and near ones left at the limit; gather's last ones).
-void PetalSearch::note_vertices_and_rim(const Mesh& mesh) {
+// (expanded_ 0: gather_near's near ones left at the limit; gather's last ones).
+// With near_only (gather_near), the near triangles' corners only: an admissible point's or the
+// fallback's cavity is near, and with it its nearest vertex in sight.
+void PetalSearch::note_vertices_and_rim(const Mesh& mesh, bool near_only) {
   vertices_.clear();
   if (++search_ == 0) std::fill(seen_.begin(), seen_.end(), 0), search_ = 1;
   if (seen_.size() < mesh.vertex_count()) seen_.resize(std::max<std::size_t>(mesh.vertex_count(), 2 * seen_.size()), 0);
   const bool walls = mesh.has_subsegments();
-  for (std::size_t i = 0; i < triangles_.size(); ++i) {
+  const std::size_t count = near_only ? near_.size() : triangles_.size();
+  for (std::size_t n = 0; n < count; ++n) {
+    const std::size_t i = near_only ? static_cast<std::size_t>(near_[n]) : n;
     for (unsigned k = 0; k < 3; ++k) note_vertex(mesh, mesh.corner[edge_of(triangles_[i], k)]);
     if (expanded_[i]) continue;
     TriangleId u;
@@ -219,7 +322,7 @@ void PetalSearch::propose_voronoi(const Petal& petal, const Box& near) {
       if (j <= static_cast<int>(i)) continue;  // each edge once, both ends gathered
       const Point& a = centres_[i];
       const Point& b = centres_[static_cast<std::size_t>(j)];
-      if (near.misses(a, b)) continue;
+      if (near.misses(a, b) || reach_.misses(a, b)) continue;
       const int n = segment_circle_crossings(a, b, petal.arc_centre, petal.arc_radius, crossings);
       for (int k = 0; k < n; ++k) candidates_.push_back(crossings[k]);
       if (segment_crossing(a, b, petal.p, petal.ray_p, at)) candidates_.push_back(at);
@@ -263,31 +366,26 @@ bool PetalSearch::in_gathered(const Point& x) const {
   return container_of(x) >= 0;
 }
 
-double PetalSearch::clearance2(const Point& x) const {
+double PetalSearch::clearance2(const Point& x, const std::vector<Point>& vertices) {
   double nearest = HUGE_VAL;
-  for (const Point& v : vertices_) nearest = std::min(nearest, squared_distance(x, v));
+  for (const Point& v : vertices) nearest = std::min(nearest, squared_distance(x, v));
   return nearest;
 }
 
-// A small open-addressed table from triangle to its place in triangles_ or kRefused (kSlots is
-// well above what a gather can enter, so probes are short and it never fills).
-static_assert(PetalSearch::kSlots == std::size_t{1} << (32 - 23));  // slot_of's shift
-std::size_t PetalSearch::slot_of(TriangleId t) const {
-  std::size_t slot = (static_cast<std::uint32_t>(t) * 2654435761u) >> 23;
-  while (slots_[slot] != kNone && slots_[slot] != t) slot = (slot + 1) % kSlots;
-  return slot;
+// Per triangle of the mesh, the gather that last looked at it and its place in triangles_ or
+// kRefused (a stamp, as seen_ for vertices, so nothing is cleared between searches).
+void PetalSearch::start_table(const Mesh& mesh) {
+  if (++gather_ == 0) std::fill(table_.begin(), table_.end(), Entry{}), gather_ = 1;
+  if (table_.size() < mesh.triangle_slots())
+    table_.resize(std::max<std::size_t>(mesh.triangle_slots(), 2 * table_.size()));
 }
 
 int PetalSearch::index_of(TriangleId t) const {
-  const std::size_t slot = slot_of(t);
-  return slots_[slot] == kNone ? -1 : slot_index_[slot];
+  const Entry& e = table_[static_cast<std::uint32_t>(t)];
+  return e.gather == gather_ ? e.index : -1;
 }
 
-void PetalSearch::refuse(TriangleId t) {
-  const std::size_t slot = slot_of(t);
-  slots_[slot] = t;
-  slot_index_[slot] = kRefused;
-}
+void PetalSearch::refuse(TriangleId t) { table_[static_cast<std::uint32_t>(t)] = {gather_, kRefused}; }
 
 // What lies across side `side` of gathered triangle i: kWall (the hull or a subsegment), or a
 // triangle u (set) and its index_of.
@@ -300,9 +398,7 @@ inline int PetalSearch::look_across(const Mesh& mesh, bool walls, std::size_t i,
 }
 
 inline void PetalSearch::remember(TriangleId t, const Mesh::CornerPoints& at) {
-  const std::size_t slot = slot_of(t);
-  slots_[slot] = t;
-  slot_index_[slot] = static_cast<int>(triangles_.size());
+  table_[static_cast<std::uint32_t>(t)] = {gather_, static_cast<int>(triangles_.size())};
   triangles_.push_back(t);
   corners_.push_back({at.a, at.b, at.c});
   neighbours_.push_back({-1, -1, -1});
@@ -316,7 +412,7 @@ void PetalSearch::gather(const Mesh& mesh, TriangleId t, const Point& centre, do
   triangles_.clear();
   corners_.clear();
   neighbours_.clear();
-  slots_.assign(kSlots, kNone);
+  start_table(mesh);
   remember(t, mesh.corner_points(t));
   const bool walls = mesh.has_subsegments();
   std::size_t next = 0;
@@ -351,7 +447,7 @@ void PetalSearch::describe_gathered(const Mesh& mesh, std::size_t explored) {
   for (std::size_t i = 0; i < triangles_.size(); ++i) describe(i);
   expanded_.assign(triangles_.size(), 0);
   std::fill_n(expanded_.begin(), explored, 1);
-  note_vertices_and_rim(mesh);
+  note_vertices_and_rim(mesh, false);
 }
 
 // Each corner once (clearance2 takes the least distance, so their order does not matter): a stamp

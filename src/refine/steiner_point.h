@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -43,7 +44,6 @@ inline constexpr double kPetalMarginDeg = 0.1;
 // must also lie inside pqr's circumcircle (exact incircle), or its insertion would leave pqr.
 class PetalSearch {
  public:
-  static constexpr std::size_t kSlots = 512;  // the gathered and refused triangles' index table (steiner_point.cpp)
   Point choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, double theta_deg, double off_center_factor);
   // For a triangle bad only for an angle above --max-angle, `longest` its edge opposite that
   // angle (obtuse_point.cpp): the candidate whose new triangles all meet both bounds, or else
@@ -53,6 +53,8 @@ class PetalSearch {
   // What the last search gathered (for tests): how many triangles, and whether t is among them.
   std::size_t gathered_count() const { return triangles_.size(); }
   bool gathered(TriangleId t) const { return index_of(t) >= 0; }
+  // The squared distance from x to its nearest vertex as the last search took it for its candidates.
+  double nearest2(const Point& x) const { return clearance2(x, reachable_); }
 
  private:
   struct Petal {
@@ -73,19 +75,38 @@ class PetalSearch {
       return std::max(a.x, b.x) < x_lo || std::min(a.x, b.x) > x_hi || std::max(a.y, b.y) < y_lo ||
              std::min(a.y, b.y) > y_hi;
     }
-    bool near(const Point& o, double r2) const;  // a circle (centre, squared radius) may meet it
     bool holds(const Point& x) const { return x.x >= x_lo && x.x <= x_hi && x.y >= y_lo && x.y <= y_hi; }  // not a NaN
   };
-  static Petal petal_of(const Point& p, const Point& q, const Point& r, double theta_deg);
+  struct Reach {  // pqr's circumcircle, the holder disk (both widened) and the fallback
+    Point circle;
+    double circle_radius;
+    Point holder;
+    double holder_radius;
+    Point fallback;
+    Point p, q, inward_p, inward_q;  // the lines through p and q at theta to pq, unit normals into the petal
+    double rounding;                 // an absolute slack for the lines
+    bool near(const Point& o, double r2) const;  // a circle (centre, squared radius) may hold such a point
+    bool misses(const Point& a, const Point& b) const;
+  };
+  Reach reach_{};  // the last gather_near's
+  struct Trig {  // of theta and phi = theta + kPetalMarginDeg
+    double theta_deg = NAN;
+    double tan_half_phi, tan_phi, sin_phi, cos_phi, tan_theta, sin_theta, cos_theta, sin_half_theta;
+    double sin2_min;  // Petal::sin2_min
+  };
+  const Trig& trig_for(double theta_deg);
+  Reach reach_of(const Petal& petal, const Point& fallback, const Trig& trig) const;
+  static Petal petal_of(const Point& p, const Point& q, const Point& r, const Trig& trig);
   void gather(const Mesh& mesh, TriangleId t, const Point& centre, double reach);
   void describe_gathered(const Mesh& mesh, std::size_t explored);
   void note_vertex(const Mesh& mesh, VertexId v);
   void propose_corners(const Petal& petal);
   void propose_voronoi(const Petal& petal, const Box& near);
   Box admissible_box(const Petal& petal, const Point& fallback) const;
-  Box gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback);
+  Box gather_near(const Mesh& mesh, TriangleId t, const Petal& petal, const Point& fallback, const Trig& trig);
+  void start_gathering(const Mesh& mesh, TriangleId t);
   void describe(std::size_t i);
-  void note_vertices_and_rim(const Mesh& mesh);
+  void note_vertices_and_rim(const Mesh& mesh, bool near_only);
   bool admissible(Predicates& pred, const Petal& petal, const Point& x) const;
   bool in_gathered(const Point& x) const;
   // Whether triangle t (counter-clockwise, closed) holds x, in floating point.
@@ -96,8 +117,13 @@ class PetalSearch {
     return left_of(t[0], t[1]) && left_of(t[1], t[2]) && left_of(t[2], t[0]);
   }
   bool star_meets(const Point& x, double bound_sin2, bool in_box);
-  double clearance2(const Point& x) const;
-  std::size_t slot_of(TriangleId t) const;
+  enum class Verdict { Outside, Bad, Good };
+  Verdict judge(const Point& x, double bound_sin2);
+  void mark_cavity(const Point& x, const std::vector<int>& looked_at);
+  bool marked_star_meets(const Point& x, double bound_sin2, const std::vector<int>& looked_at) const;
+  void note_reachable_vertices(const Petal& petal, const Trig& trig);
+  static double clearance2(const Point& x, const std::vector<Point>& vertices);
+  void start_table(const Mesh& mesh);
   int index_of(TriangleId t) const;  // in triangles_, kRefused, or -1 (not looked at yet)
   void remember(TriangleId t, const Mesh::CornerPoints& at);
   int look_across(const Mesh& mesh, bool walls, std::size_t i, unsigned side, TriangleId& u) const;
@@ -117,15 +143,22 @@ class PetalSearch {
   std::vector<char> in_cavity_;  // all 0 between star_meets' calls
   std::vector<int> near_;        // the gathered triangles whose circumcircles or corners may meet the admissible box
   std::vector<char> expanded_;   // per gathered triangle: its sides were looked across while gathering
+  static constexpr char kLeftNear = 2;  // in expanded_ while gathering: a near one not gone through yet
   std::vector<int> all_;         // 0, 1, ... for star_meets outside that box
   std::vector<Point> vertices_;       // the gathered triangles' corners, each once
+  std::vector<Point> reachable_;      // those an admissible candidate can have nearest (note_reachable_vertices)
   std::vector<std::uint32_t> seen_;   // per vertex id: the search that last noted it (note_vertex)
   std::uint32_t search_ = 0;
-  std::vector<TriangleId> slots_;     // index_of's table: kSlots triangles or kNone
-  std::vector<int> slot_index_ = std::vector<int>(kSlots, -1);
+  struct Entry {
+    std::uint32_t gather = 0;
+    int index = -1;
+  };
+  std::vector<Entry> table_;          // index_of's, per triangle slot of the mesh (start_table)
+  std::uint32_t gather_ = 0;
   std::vector<Point> candidates_;
   std::vector<std::array<bool, 3>> walls_;  // per gathered triangle: which sides are subsegments
   std::vector<int> stack_;
+  Trig trig_;
 };
 
 }  // namespace deltri

@@ -542,7 +542,37 @@ TEST(petal_search_gathers_the_whole_cavity_and_little_else) {
       const auto [ua, ub, uc] = m.corner_points(u);
       if (pred.incircle(ua, ub, uc, x) > 0.0 && !petal.gathered(u)) CHECK(!"a cavity triangle was not gathered");
     }
+    // Its nearest vertex, as the ranking took it from the near corners within reach, is the
+    // nearest of all (no subsegment hides one here).
+    double nearest = HUGE_VAL;
+    for (VertexId v{0}; v < m.vertex_count(); ++v) nearest = std::min(nearest, squared_distance(x, m.point(v)));
+    CHECK_EQ(petal.nearest2(x), nearest);
   }
   CHECK(moved > searches / 4);  // the search's own points, not only the fallback, were checked
-  CHECK(gathered < 40 * searches);
+  CHECK(gathered < 20 * searches);
+}
+
+// The search keeps the bound's trigonometry between calls: one search object moving between
+// bounds chooses what a fresh one chooses for each.
+TEST(petal_search_follows_the_bound_it_is_given) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  std::vector<Point> points;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j) points.push_back({i + jitter(rng), j + jitter(rng)});
+  Mesh m = triangulated(points);
+  mark_boundary(m);
+  Predicates pred;
+  PetalSearch kept;
+  std::size_t differing = 0;
+  for (TriangleId t{0}; t < m.triangle_slots(); ++t)
+    for (const double theta : {33.0, 40.0}) {
+      const AngleBound bound(theta);
+      PetalSearch fresh;
+      const Point a = kept.choose(m, pred, edge_of(t, 0), theta, bound.off_center_factor());
+      const Point b = fresh.choose(m, pred, edge_of(t, 0), theta, bound.off_center_factor());
+      CHECK(a == b);
+      if (!(kept.choose(m, pred, edge_of(t, 0), 73.0 - theta, bound.off_center_factor()) == a)) ++differing;
+    }
+  CHECK(differing > 0);  // the two bounds do choose differently
 }
