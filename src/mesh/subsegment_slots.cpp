@@ -26,14 +26,16 @@ void SubsegmentSlots::set_triangle_slowly(std::size_t e, SubsegmentId s) {
 }
 
 void SubsegmentSlots::insert(std::size_t e, SubsegmentId s) {
-  if (over_full(count_ + 1, table_.size())) {
-    if (dense_worthy(count_ + 1)) {
+  if (!dense_ && over_full(count_ + 1, table_.size())) {
+    if (dense_worthy(count_ + 1))
       make_dense();
-      values_[e] = s;
-      mark(e);
-      return;
-    }
-    rehash(table_.empty() ? kLeastTable : 2 * table_.size());
+    else
+      rehash(table_.empty() ? kLeastTable : 2 * table_.size());
+  }
+  if (dense_) {
+    values_[e] = s;
+    mark(e);
+    return;
   }
   place(static_cast<std::uint32_t>(e), s);
   mark(e);

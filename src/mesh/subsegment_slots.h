@@ -55,8 +55,8 @@ class SubsegmentSlots {
   // Where the table looks first for slot e's value, to prefetch before a write (nullptr while
   // the table is empty).
   const void* home_of(std::size_t e) const {
-    if (dense_) return e < values_.size() ? &values_[e] : nullptr;
-    return table_.empty() ? nullptr : &table_[home(static_cast<std::uint32_t>(e))];
+    if (!table_.empty()) return &table_[home(static_cast<std::uint32_t>(e))];
+    return dense_ && e < values_.size() ? &values_[e] : nullptr;
   }
   // The dense array's storage (empty while the table holds the values), for PageWarmer.
   const BigVector<SubsegmentId>& dense_values() const { return values_; }
@@ -153,11 +153,8 @@ class SubsegmentSlots {
   void set(std::size_t e, SubsegmentId s) {
     if (s == kNone) {
       if (has(e)) erase(e);
-    } else if (dense_) {
-      values_[e] = s;
-      if (!has(e)) mark(e);
     } else if (has(e)) {
-      table_[index_of(e)].id = s;
+      (dense_ ? values_[e] : table_[index_of(e)].id) = s;
     } else {
       insert(e, s);
     }
