@@ -21,7 +21,7 @@
 //              way, or kNone where e is on the boundary of the mesh
 //   subseg[e]  the subsegment lying on edge e, or kNone (empty until segments exist); sparse
 //              (mesh/subsegment_slots.h): a bit per slot, subseg.has(e), and a hash table of the
-//              ids of the few slots that carry one
+//              ids of the few slots that carry one (a dense array where many do)
 //
 // Guibas-Stolfi navigation follows from these two arrays alone:
 //   org(e) = corner[e], dest(e) = corner[lnext(e)], apex(e) = corner[lprev(e)], sym(e) = link[e],

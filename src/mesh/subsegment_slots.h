@@ -5,7 +5,13 @@
 //   * one bit per slot, set where the slot carries a value, so "is edge e constrained?" (asked
 //     in every flip test and cavity step) stays one load: has(e);
 //   * an open-addressing hash table (linear probing, keyed by the slot) holding the values of the
-//     set slots, read only when the bit is set: operator[].
+//     set slots, read only when the bit is set: operator[];
+//   * or, where a quarter of the slots or more carry a value (a thin strip: every triangle has a
+//     side on the boundary), a dense array of values by slot instead of the table: there the
+//     table cost as much memory, a cache miss per insert and lookup, and doublings that rewrote it
+//     whole (a third of the strip's page faults). The array's values are read only where the
+//     bit is set, so growing it writes nothing that matters. The mesh goes back to the table
+//     once fewer than an eighth of its slots carry a value (a small domain refined by area).
 // Readers use it like the array it replaces: subseg[e] (kNone where nothing lies), size(),
 // empty(); writes go through Editor, which only Mesh and mesh/topology_writer.h hand out, so that
 // only src/mesh/ writes topology. A value is any id but kNone: the halves' cuts store a mark above
@@ -19,6 +25,7 @@
 #include <vector>
 
 #include "mesh/ids.h"
+#include "util/big_allocator.h"
 #include "util/prefetch.h"
 
 namespace deltri {
@@ -48,20 +55,33 @@ class SubsegmentSlots {
   // Where the table looks first for slot e's value, to prefetch before a write (nullptr while
   // the table is empty).
   const void* home_of(std::size_t e) const {
-    return table_.empty() ? nullptr : &table_[home(static_cast<std::uint32_t>(e))];
+    if (!table_.empty()) return &table_[home(static_cast<std::uint32_t>(e))];
+    return dense_ && e < values_.size() ? &values_[e] : nullptr;
   }
+  // The dense array's storage (empty while the table holds the values), for PageWarmer.
+  const BigVector<SubsegmentId>& dense_values() const { return values_; }
 
   std::size_t size() const { return size_; }  // slots, 0 while the mesh has no segments
   bool empty() const { return size_ == 0; }
   std::size_t count() const { return count_; }  // slots that carry a value
   // Whether some slot carries the value s: one walk over the table, for a question asked once.
   bool holds(SubsegmentId s) const {
+    if (dense_) {
+      for (SetSlots at(bits_); at.next();)
+        if (values_[at.slot] == s) return true;
+      return false;
+    }
     for (const Entry& x : table_)
       if (x.slot != kNone && x.id == s) return true;
     return false;
   }
-  // Bytes held (bits and table), for the memory accounting in tests and docs.
-  std::size_t bytes() const { return bits_.capacity() * sizeof(std::uint64_t) + table_.capacity() * sizeof(Entry); }
+  // Bytes held (bits, table and dense array), for the memory accounting in tests and docs.
+  std::size_t bytes() const {
+    return bits_.capacity() * sizeof(std::uint64_t) + table_.capacity() * sizeof(Entry) +
+           values_.capacity() * sizeof(SubsegmentId);
+  }
+  // Whether the values sit in the dense array (for tests).
+  bool is_dense() const { return dense_; }
 
   // f(e, id) for every slot e that carries a value, e increasing. The values are scattered over
   // the table: a second walk over the bits runs kFetchAhead slots ahead, fetching their entries.
@@ -128,17 +148,32 @@ class SubsegmentSlots {
     while (table[i].slot != e) i = (i + 1) & mask_;
     return i;
   }
-  SubsegmentId find(std::size_t e) const { return table_[index_of(e)].id; }
+  SubsegmentId find(std::size_t e) const { return dense_ ? values_[e] : table_[index_of(e)].id; }
 
   void set(std::size_t e, SubsegmentId s) {
     if (s == kNone) {
       if (has(e)) erase(e);
     } else if (has(e)) {
-      table_[index_of(e)].id = s;
+      (dense_ ? values_[e] : table_[index_of(e)].id) = s;
     } else {
       insert(e, s);
     }
   }
+  void mark(std::size_t e) {
+    bits_[e >> 6] |= std::uint64_t{1} << (e & 63);
+    ++count_;
+  }
+  void unmark(std::size_t e) {
+    bits_[e >> 6] &= ~(std::uint64_t{1} << (e & 63));
+    --count_;
+  }
+  // The densities where the values move to the dense array (at a rehash) and back to the table
+  // (as slots are added): a quarter and an eighth of the slots, apart so that a mesh near one
+  // does not move back and forth.
+  bool dense_worthy(std::size_t count) const { return 4 * count >= size_; }
+  bool sparse_worthy() const { return 8 * count_ < size_; }
+  void make_dense();
+  void make_sparse();
   // Slots e, e + 1, e + 2 (one triangle's) get s, kNone, kNone: the common case, no value before
   // and none after, costs one test.
   void set_triangle(std::size_t e, SubsegmentId s) {
@@ -174,6 +209,8 @@ class SubsegmentSlots {
   // Room in the table for `more` entries beyond those held, without a rehash on the way.
   void reserve_entries(std::size_t more);
   void insert(std::size_t e, SubsegmentId s);
+  // Puts (e, s) at its first free place from its home, nothing else.
+  void place(std::uint32_t e, SubsegmentId s);
   void erase(std::size_t e);
   void rehash(std::size_t capacity);
   // Slot count n, every slot empty.
@@ -183,9 +220,14 @@ class SubsegmentSlots {
   // Three more empty slots (a triangle appended).
   void grow_triangle() {
     size_ += 3;
-    if (size_ > bits_.size() * 64) bits_.push_back(0);
+    if (size_ > bits_.size() * 64) grow_word();
   }
-  void reserve(std::size_t n) { bits_.reserve((n + 63) / 64); }
+  // Another word of bits, and with it the dense array's room or the move back to the table.
+  void grow_word();
+  void reserve(std::size_t n) {
+    bits_.reserve((n + 63) / 64);
+    if (dense_) values_.reserve(bits_.capacity() * 64);
+  }
   // The table at the least size that holds its entries (after many were cleared).
   void fit();
   // Replaces every value s by f(s); a kNone result clears the slot.
@@ -194,7 +236,9 @@ class SubsegmentSlots {
   void clear() { *this = SubsegmentSlots{}; }
 
   std::vector<std::uint64_t> bits_;
-  std::vector<Entry> table_;  // a power of two in size, or empty
+  std::vector<Entry> table_;  // a power of two in size, or empty (always, while dense_)
+  BigVector<SubsegmentId> values_;  // while dense_: a value per slot, 64 per word of bits
+  bool dense_ = false;
   unsigned shift_ = 32;       // 32 - log2(table_.size())
   std::size_t mask_ = 0;      // table_.size() - 1
   std::size_t size_ = 0;
@@ -234,6 +278,14 @@ class SubsegmentSlots::Editor {
 template <class F>
 void SubsegmentSlots::remap(F&& f) {
   std::vector<std::uint32_t> cleared;
+  if (dense_) {
+    for (SetSlots at(bits_); at.next();) {
+      values_[at.slot] = f(values_[at.slot]);
+      if (values_[at.slot] == kNone) cleared.push_back(static_cast<std::uint32_t>(at.slot));
+    }
+    erase_all(cleared);
+    return;
+  }
   for (Entry& x : table_) {
     if (x.slot == kNone) continue;
     x.id = f(x.id);

@@ -192,6 +192,9 @@ const PieceEnds* SegmentPieces::piece_of(VertexId v) const {
   const std::size_t n = splits.size();
   if (n == 0 || v < splits.front().vertex || v > splits.back().vertex) return nullptr;
   const std::size_t after_first = v - splits.front().vertex, before_last = splits.back().vertex - v;
+  // Where every vertex since the first split is a split (a strip's refinement), v's entry is the
+  // last place it can be: one comparison in place of the search.
+  if (after_first < n && splits[after_first].vertex == v) return &splits[after_first].piece;
   const auto lo = splits.begin() + static_cast<std::ptrdiff_t>(n - 1 - std::min(before_last, n - 1));
   const auto hi = splits.begin() + static_cast<std::ptrdiff_t>(std::min(after_first, n - 1) + 1);
   const auto at = std::lower_bound(lo, hi, v, [](const Split& s, VertexId u) { return s.vertex < u; });

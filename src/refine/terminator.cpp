@@ -335,6 +335,13 @@ void Terminator::warm_pages() {
   note_array(warmer_, 0, mesh_.corner);
   note_array(warmer_, 1, mesh_.link);
   note_array(warmer_, 2, mesh_.points);
+  // Where nearly every triangle carries a subsegment (a thin strip), every split appends to the
+  // subsegment arrays as well, and their first touches were most of the strip's page faults.
+  if (!mesh_.subseg.is_dense()) return;
+  note_array(warmer_, 3, mesh_.subseg.dense_values());
+  note_array(warmer_, 4, mesh_.subsegments);
+  note_array(warmer_, 5, pieces_.of_subsegment);
+  note_array(warmer_, 6, pieces_.splits);
 }
 
 // The queue serves triangles in size order across the whole domain, so nearly every popped

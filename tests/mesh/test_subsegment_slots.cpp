@@ -1,5 +1,5 @@
 // Mesh::subseg is sparse (mesh/subsegment_slots.h): a bit per slot and a hash table of the set
-// slots' ids. These tests drive it through the kernel's writes with a plain dense array kept
+// slots' ids (a dense array of ids where a quarter of the slots carry one). These tests drive it through the kernel's writes with a plain dense array kept
 // alongside as the reference, and check every slot, the count, the walk order and equality after
 // each step: random sets and clears (many collisions in small tables, growth, backward-shift
 // deletion), truncation, renumbering, and the mesh operations that move triangles (compaction).
@@ -232,4 +232,65 @@ TEST(set_subsegment_writes_the_edge_and_its_twin) {
   unconstrain(m, m.link[diagonal]);
   CHECK(!m.subseg.has(diagonal) && !m.subseg.has(m.link[diagonal]));
   CHECK_EQ(m.subseg.count(), 0u);
+}
+
+// A thin strip's mesh: every triangle appended carries a subsegment on its first side (a third of
+// the slots). The hash table would hold 3,100 entries in 8,192 places of 8 bytes (21 bytes per
+// subsegment); a value per slot is 12, plus the bits.
+TEST(a_strip_where_every_triangle_carries_a_subsegment_costs_a_value_per_slot) {
+  const std::uint32_t n = 3100;
+  Mesh m = slots_mesh(1);
+  m.reserve_triangles(n);
+  std::vector<SubsegmentId> ref(m.corner.size(), kNone);
+  for (std::uint32_t t = 1; t < n; ++t) {
+    const TriangleId added = m.append_triangle(0_v, 1_v, 2_v);
+    ref.resize(m.corner.size(), kNone);
+    detail::subseg_slots(m).set(edge_of(added, 0), id_of(t));
+    ref[edge_of(added, 0)] = id_of(t);
+  }
+  CHECK(matches(m, ref));
+  CHECK_EQ(m.subseg.count(), n - 1);
+  CHECK(m.subseg.bytes() < 16 * n);
+}
+
+// The values move to the dense array at a rehash where a quarter of the slots carry one and back
+// to the table once fewer than an eighth do, and every reading agrees with the reference before
+// and after each move and through the writes of a dense array (clears, truncation, renumbering).
+TEST(the_values_move_between_table_and_dense_array_with_the_density) {
+  Mesh m = slots_mesh(1);
+  std::vector<SubsegmentId> ref(m.corner.size(), kNone);
+  const auto append = [&](bool constrained) {
+    const TriangleId t = m.append_triangle(0_v, 1_v, 2_v);
+    ref.resize(m.corner.size(), kNone);
+    if (!constrained) return;
+    detail::subseg_slots(m).set(edge_of(t, 1), id_of(t));
+    ref[edge_of(t, 1)] = id_of(t);
+  };
+  for (int i = 0; i < 2000; ++i) append(true);
+  CHECK(m.subseg.is_dense());
+  CHECK(matches(m, ref));
+  for (int i = 0; i < 20000 && m.subseg.is_dense(); ++i) append(i % 16 == 0);
+  CHECK(!m.subseg.is_dense());
+  CHECK(8 * m.subseg.count() < m.subseg.size());
+  CHECK(matches(m, ref));
+  for (int i = 0; i < 60000 && !m.subseg.is_dense(); ++i) append(true);
+  CHECK(m.subseg.is_dense());
+  CHECK(matches(m, ref));
+  // Writes while dense: every fourth value cleared, the last thousand slots dropped, odd ids gone.
+  std::vector<EdgeRef> cleared;
+  for (std::size_t e = 0; e < ref.size(); e += 4)
+    if (ref[e] != kNone) cleared.push_back(EdgeRef{static_cast<std::uint32_t>(e)}), ref[e] = kNone;
+  detail::subseg_slots(m).erase_all(cleared);
+  CHECK(matches(m, ref));
+  detail::subseg_slots(m).resize(ref.size() - 1000);
+  ref.resize(ref.size() - 1000);
+  CHECK(matches(m, ref));
+  const auto renumber = [](SubsegmentId s) { return s % 2 == 1 ? SubsegmentId{kNone} : SubsegmentId{s / 2}; };
+  detail::subseg_slots(m).remap(renumber);
+  for (SubsegmentId& s : ref)
+    if (s != kNone) s = renumber(s);
+  CHECK(matches(m, ref));
+  CHECK(m.subseg.holds(ref[edge_of(TriangleId{2}, 1)]));
+  Mesh copy = m;
+  CHECK(copy.subseg == m.subseg);
 }
