@@ -15,6 +15,9 @@ namespace {
 // bounds the work where the mesh is much finer than pq (next to a short feature), where the
 // off-centre is the candidate that matters anyway.
 constexpr std::size_t kGatherLimit = 96;
+// The table holds the gathered triangles and those refused next to them (at most three neighbours
+// per gathered one), with room to spare for short probes.
+static_assert(PetalSearch::kSlots > 1 + kGatherLimit * 7 / 2);
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
@@ -270,7 +273,7 @@ void PetalSearch::start_gathering(const Mesh& mesh, TriangleId t) {
   neighbours_.clear();
   centres_.clear();
   radii2_.clear();
-  start_table(mesh);
+  slots_.assign(kSlots, kNone);
   remember(t, mesh.corner_points(t));
   describe(0);
   near_.assign(1, 0);
@@ -372,20 +375,25 @@ double PetalSearch::clearance2(const Point& x, const std::vector<Point>& vertice
   return nearest;
 }
 
-// Per triangle of the mesh, the gather that last looked at it and its place in triangles_ or
-// kRefused (a stamp, as seen_ for vertices, so nothing is cleared between searches).
-void PetalSearch::start_table(const Mesh& mesh) {
-  if (++gather_ == 0) std::fill(table_.begin(), table_.end(), Entry{}), gather_ = 1;
-  if (table_.size() < mesh.triangle_slots())
-    table_.resize(std::max<std::size_t>(mesh.triangle_slots(), 2 * table_.size()));
+// A small open-addressed table from triangle to its place in triangles_ or kRefused (kSlots is
+// well above what a gather can enter, so probes are short and it never fills).
+static_assert(PetalSearch::kSlots == std::size_t{1} << (32 - 23));  // slot_of's shift
+std::size_t PetalSearch::slot_of(TriangleId t) const {
+  std::size_t slot = (static_cast<std::uint32_t>(t) * 2654435761u) >> 23;
+  while (slots_[slot] != kNone && slots_[slot] != t) slot = (slot + 1) % kSlots;
+  return slot;
 }
 
 int PetalSearch::index_of(TriangleId t) const {
-  const Entry& e = table_[static_cast<std::uint32_t>(t)];
-  return e.gather == gather_ ? e.index : -1;
+  const std::size_t slot = slot_of(t);
+  return slots_[slot] == kNone ? -1 : slot_index_[slot];
 }
 
-void PetalSearch::refuse(TriangleId t) { table_[static_cast<std::uint32_t>(t)] = {gather_, kRefused}; }
+void PetalSearch::refuse(TriangleId t) {
+  const std::size_t slot = slot_of(t);
+  slots_[slot] = t;
+  slot_index_[slot] = kRefused;
+}
 
 // What lies across side `side` of gathered triangle i: kWall (the hull or a subsegment), or a
 // triangle u (set) and its index_of.
@@ -398,7 +406,9 @@ inline int PetalSearch::look_across(const Mesh& mesh, bool walls, std::size_t i,
 }
 
 inline void PetalSearch::remember(TriangleId t, const Mesh::CornerPoints& at) {
-  table_[static_cast<std::uint32_t>(t)] = {gather_, static_cast<int>(triangles_.size())};
+  const std::size_t slot = slot_of(t);
+  slots_[slot] = t;
+  slot_index_[slot] = static_cast<int>(triangles_.size());
   triangles_.push_back(t);
   corners_.push_back({at.a, at.b, at.c});
   neighbours_.push_back({-1, -1, -1});
@@ -412,7 +422,7 @@ void PetalSearch::gather(const Mesh& mesh, TriangleId t, const Point& centre, do
   triangles_.clear();
   corners_.clear();
   neighbours_.clear();
-  start_table(mesh);
+  slots_.assign(kSlots, kNone);
   remember(t, mesh.corner_points(t));
   const bool walls = mesh.has_subsegments();
   std::size_t next = 0;

@@ -44,6 +44,7 @@ inline constexpr double kPetalMarginDeg = 0.1;
 // must also lie inside pqr's circumcircle (exact incircle), or its insertion would leave pqr.
 class PetalSearch {
  public:
+  static constexpr std::size_t kSlots = 512;  // the gathered and refused triangles' index table (steiner_point.cpp)
   Point choose(const Mesh& mesh, Predicates& pred, EdgeRef shortest, double theta_deg, double off_center_factor);
   // For a triangle bad only for an angle above --max-angle, `longest` its edge opposite that
   // angle (obtuse_point.cpp): the candidate whose new triangles all meet both bounds, or else
@@ -123,7 +124,7 @@ class PetalSearch {
   bool marked_star_meets(const Point& x, double bound_sin2, const std::vector<int>& looked_at) const;
   void note_reachable_vertices(const Petal& petal, const Trig& trig);
   static double clearance2(const Point& x, const std::vector<Point>& vertices);
-  void start_table(const Mesh& mesh);
+  std::size_t slot_of(TriangleId t) const;
   int index_of(TriangleId t) const;  // in triangles_, kRefused, or -1 (not looked at yet)
   void remember(TriangleId t, const Mesh::CornerPoints& at);
   int look_across(const Mesh& mesh, bool walls, std::size_t i, unsigned side, TriangleId& u) const;
@@ -149,12 +150,8 @@ class PetalSearch {
   std::vector<Point> reachable_;      // those an admissible candidate can have nearest (note_reachable_vertices)
   std::vector<std::uint32_t> seen_;   // per vertex id: the search that last noted it (note_vertex)
   std::uint32_t search_ = 0;
-  struct Entry {
-    std::uint32_t gather = 0;
-    int index = -1;
-  };
-  std::vector<Entry> table_;          // index_of's, per triangle slot of the mesh (start_table)
-  std::uint32_t gather_ = 0;
+  std::vector<TriangleId> slots_;     // index_of's table: kSlots triangles or kNone
+  std::vector<int> slot_index_ = std::vector<int>(kSlots, -1);
   std::vector<Point> candidates_;
   std::vector<std::array<bool, 3>> walls_;  // per gathered triangle: which sides are subsegments
   std::vector<int> stack_;
