@@ -498,6 +498,19 @@ TEST(known_cavity_fan_refuses_a_subsegment_seen_from_outside) {
   CHECK_EQ(m.live_triangles(), 4u);
 }
 
+// The Delaunay triangulation of an n x n grid of points, each moved by up to 0.3 on each axis
+// (a fixed seed), its hull edges marked as boundary.
+static Mesh jittered_grid(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  std::vector<Point> points;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) points.push_back({i + jitter(rng), j + jitter(rng)});
+  Mesh m = triangulated(points);
+  mark_boundary(m);
+  return m;
+}
+
 // The locally optimal point's search on a jittered grid (every triangle's shortest edge, -q33):
 // the point it returns is either the off-centre or one that is admissible (exactly inside the
 // triangle's circumcircle, triangle pqx at 33 degrees or more by trigonometry), and every triangle
@@ -505,13 +518,7 @@ TEST(known_cavity_fan_refuses_a_subsegment_seen_from_outside) {
 // whole. The search gathers only the triangles whose circumcircles may meet the petal: a few
 // dozen, where the disk of the petal's reach held the cap of 96 (docs/benchmarks.md, issue 45).
 TEST(petal_search_gathers_the_whole_cavity_and_little_else) {
-  std::mt19937 rng(45);
-  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
-  std::vector<Point> points;
-  for (int i = 0; i < 24; ++i)
-    for (int j = 0; j < 24; ++j) points.push_back({i + jitter(rng), j + jitter(rng)});
-  Mesh m = triangulated(points);
-  mark_boundary(m);
+  Mesh m = jittered_grid(24, 45);
   Predicates pred;
   PetalSearch petal;
   const AngleBound bound(33);
@@ -555,13 +562,7 @@ TEST(petal_search_gathers_the_whole_cavity_and_little_else) {
 // The search keeps the bound's trigonometry between calls: one search object moving between
 // bounds chooses what a fresh one chooses for each.
 TEST(petal_search_follows_the_bound_it_is_given) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
-  std::vector<Point> points;
-  for (int i = 0; i < 12; ++i)
-    for (int j = 0; j < 12; ++j) points.push_back({i + jitter(rng), j + jitter(rng)});
-  Mesh m = triangulated(points);
-  mark_boundary(m);
+  Mesh m = jittered_grid(12, 7);
   Predicates pred;
   PetalSearch kept;
   std::size_t differing = 0;
