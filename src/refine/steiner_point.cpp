@@ -186,22 +186,15 @@ inline bool PetalSearch::Reach::near(const Point& o, double r2) const {
     const double reach = own + widened;
     return squared_distance(o, c) > reach * reach;
   };
-  const auto beyond = [&](const Point& on, const Point& inward) {
-    return inward.x * (o.x - on.x) + inward.y * (o.y - on.y) + own + rounding < 0.0;
-  };
-  const bool out = apart(circle, circle_radius) || apart(holder, holder_radius) || beyond(p, inward_p) ||
-                   beyond(q, inward_q);
+  const bool out = apart(circle, circle_radius) || apart(holder, holder_radius) || inside_p(o, own) < 0.0 ||
+                   inside_q(o, own) < 0.0;
   return !(out && apart(fallback, 0.0));
 }
 
 // Whether segment ab is on the far side of the line at p or of the line at q, where an admissible
 // point is not: then its crossings with the arc and the rays are not computed (propose_voronoi).
 inline bool PetalSearch::Reach::misses(const Point& a, const Point& b) const {
-  const auto beyond = [&](const Point& on, const Point& inward) {
-    const auto side = [&](const Point& x) { return inward.x * (x.x - on.x) + inward.y * (x.y - on.y) + rounding < 0.0; };
-    return side(a) && side(b);
-  };
-  return beyond(p, inward_p) || beyond(q, inward_q);
+  return (inside_p(a) < 0.0 && inside_p(b) < 0.0) || (inside_q(a) < 0.0 && inside_q(b) < 0.0);
 }
 
 // The disks of admissible_box, widened alike, and the lines from p and q at theta to pq (an

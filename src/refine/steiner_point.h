@@ -88,6 +88,13 @@ class PetalSearch {
     double rounding;                 // an absolute slack for the lines
     bool near(const Point& o, double r2) const;  // a circle (centre, squared radius) may hold such a point
     bool misses(const Point& a, const Point& b) const;
+    // How far x is on the petal's side of the line at p, or at q, plus `pad` and the slack (below
+    // 0: beyond it).
+    double inside_p(const Point& x, double pad = 0.0) const { return inside(p, inward_p, x, pad); }
+    double inside_q(const Point& x, double pad = 0.0) const { return inside(q, inward_q, x, pad); }
+    double inside(const Point& on, const Point& inward, const Point& x, double pad) const {
+      return inward.x * (x.x - on.x) + inward.y * (x.y - on.y) + pad + rounding;
+    }
   };
   Reach reach_{};  // the last gather_near's
   struct Trig {  // of theta and phi = theta + kPetalMarginDeg
