@@ -8,8 +8,6 @@
 #pragma once
 
 #include <array>
-#include <cstddef>
-#include <vector>
 
 #include "mesh/mesh.h"
 #include "mesh/operations.h"
