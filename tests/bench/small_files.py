@@ -7,7 +7,7 @@ that both meet the same host.
 
     small_files.py DELTRI TRIANGLE [--corpus DIR] [--rounds N] [--batch N] [--only PARTS]
 
-PARTS (comma-separated, default all): cpu, batch, corpus, thin.
+PARTS (comma-separated, default all): cpu, batch, corpus-batch, corpus, thin.
   cpu     guitar.poly -pq30Q, 20 runs of each program per round, alternating; CPU time (user +
           system) of each run from wait4(), deltri with --threads=1. The mean per round.
   batch   N copies (default 200) of guitar.poly in one fresh folder, meshed with
@@ -16,6 +16,9 @@ PARTS (comma-separated, default all): cpu, batch, corpus, thin.
           waited for; load distorts it less than the wall time), and whatever the runs wrote on
           standard error. The load average is printed first and after each round. A third column
           runs deltri --each, the names split in two lists over `xargs -P 2` (one process a core).
+  corpus-batch  the same batch of N files taken from the corpus instead: every .poly under DIR
+          with no .node beside it that Triangle meshes at -pq30Q in under 20 ms and both programs
+          mesh with exit 0 and nothing on standard error, in name order, over and over up to N.
   corpus  every .poly under DIR at -pQ and -pq30Q (--switches), each program three times (alternating), the
           median wall time; the deltri/Triangle ratio over the files Triangle needs 20 ms or more
           for: median, worst, and the five worst files, and the same two of the CPU time; a file where a run fails (Triangle 1.6 crashes on
@@ -40,7 +43,7 @@ ap.add_argument("triangle")
 ap.add_argument("--corpus", default=os.path.join(here, "..", "..", "data"))
 ap.add_argument("--rounds", type=int, default=3)
 ap.add_argument("--batch", type=int, default=200)
-ap.add_argument("--only", default="cpu,batch,corpus,thin")
+ap.add_argument("--only", default="cpu,batch,corpus-batch,corpus,thin")
 ap.add_argument("--switches", default="-pQ,-pq30Q", help="the corpus part's switch sets")
 ap.add_argument("--timeout", type=float, default=60, help="a corpus run's limit; a file past it is left out")
 args = ap.parse_args()
@@ -82,40 +85,97 @@ def part_cpu():
     print()
 
 
-def part_batch():
-    load = os.getloadavg()
+def batch_ways():
+    """The batch's command lines: each program once a file, and deltri --each in two lists."""
     half = (args.batch + 1) // 2
     ways = [(name, ["-n", "1", argv[0], "-pq30Q"]) for name, argv in programs]  # default threads, as a batch runs it
     ways.append(("deltri --each", ["-n", str(half), deltri, "-pq30Q", "--each"]))
+    return ways
+
+
+def batch_round(sources, ways):
+    """One round: for each way, the files `sources` copied as f0000-NAME.poly ... into a fresh
+    folder and meshed by `xargs -P 2`; returns the walls, the batches' CPU seconds and, per way,
+    the bytes on standard error (plus 1 for a failed xargs, 1,000,000 for a file left unmeshed)."""
+    walls, cpus, errs = [], [], []
+    for name, xargs_tail in ways:
+        work = tempfile.mkdtemp()
+        names = [f"f{i:04d}-{os.path.basename(src)}" for i, src in enumerate(sources)]
+        for n, src in zip(names, sources):
+            shutil.copy(src, os.path.join(work, n))
+        with tempfile.TemporaryFile() as listing, tempfile.TemporaryFile() as err:
+            listing.write("\n".join(names).encode())
+            listing.seek(0)
+            start = time.perf_counter()
+            p = subprocess.Popen(["xargs", "-P", "2"] + xargs_tail, stdin=listing, cwd=work,
+                                 stdout=subprocess.DEVNULL, stderr=err)
+            # xargs's rusage covers the runs it waited for: the CPU of the whole batch.
+            _, status, usage = os.wait4(p.pid, 0)
+            walls.append(time.perf_counter() - start)
+            cpus.append(usage.ru_utime + usage.ru_stime)
+            err.seek(0)
+            errs.append(len(err.read()) + (0 if os.waitstatus_to_exitcode(status) == 0 else 1))
+        written = sum(1 for f in os.listdir(work) if f.endswith(".1.ele"))
+        if written != len(sources):
+            errs[-1] += 1000000  # a batch that did not mesh every file: shown, not compared
+        shutil.rmtree(work)
+    return walls, cpus, errs
+
+
+def part_batch():
+    load = os.getloadavg()
+    half = (args.batch + 1) // 2
+    ways = batch_ways()
     print(f"### {args.batch} copies of guitar.poly, `xargs -P 2 -n 1 PROGRAM -pq30Q` in one folder (and deltri "
           f"`--each` with `xargs -P 2 -n {half}`): wall s and their CPU s (user + system) "
           f"(load average at the start {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; per round, the 1-minute one at its end)\n")
     print("| round | load | " + " | ".join(f"{name} wall | {name} CPU" for name, _ in ways) +
           " | wall ratio | CPU ratio | --each wall ratio | stderr bytes |")
     print("|---|---|" + "---|" * (2 * len(ways) + 4))
+    sources = [guitar] * args.batch
     for r in range(args.rounds):
-        walls, cpus, errs = [], [], []
-        for name, xargs_tail in ways:
-            work = tempfile.mkdtemp()
-            names = [f"f{i}.poly" for i in range(args.batch)]
-            for n in names:
-                shutil.copy(guitar, os.path.join(work, n))
-            with tempfile.TemporaryFile() as listing, tempfile.TemporaryFile() as err:
-                listing.write("\n".join(names).encode())
-                listing.seek(0)
-                start = time.perf_counter()
-                p = subprocess.Popen(["xargs", "-P", "2"] + xargs_tail, stdin=listing, cwd=work,
-                                     stdout=subprocess.DEVNULL, stderr=err)
-                # xargs's rusage covers the runs it waited for: the CPU of the whole batch.
-                _, status, usage = os.wait4(p.pid, 0)
-                walls.append(time.perf_counter() - start)
-                cpus.append(usage.ru_utime + usage.ru_stime)
-                err.seek(0)
-                errs.append(len(err.read()) + (0 if os.waitstatus_to_exitcode(status) == 0 else 1))
-            written = sum(1 for f in os.listdir(work) if f.endswith(".1.ele"))
-            if written != args.batch:
-                errs[-1] += 1000000  # a batch that did not mesh every file: shown, not compared
-            shutil.rmtree(work)
+        walls, cpus, errs = batch_round(sources, ways)
+        print(f"| {r + 1} | {os.getloadavg()[0]:.1f} | " + " | ".join(f"{w:.2f} | {c:.2f}" for w, c in zip(walls, cpus)) +
+              f" | {walls[1] / walls[0]:.2f} | {cpus[1] / cpus[0]:.2f} | {walls[2] / walls[0]:.2f} | " +
+              ", ".join(map(str, errs)) + " |")
+    print()
+
+
+def small_corpus_files():
+    """The corpus's small files, for the batch: every .poly with no .node beside it that Triangle
+    meshes at -pq30Q in under 20 ms (its median of 3 runs) and both programs mesh with exit 0 and
+    nothing on standard error (an input warning is not the batch's concern), in name order."""
+    files = sorted(os.path.join(d, f) for d, _, fs in os.walk(args.corpus) for f in fs if f.endswith(".poly"))
+    small = []
+    for path in files:
+        if os.path.exists(path[:-len(".poly")] + ".node"):
+            continue
+        work = tempfile.mkdtemp()
+        shutil.copy(path, work)
+        name = os.path.basename(path)
+        t = [run([triangle, "-pq30Q", name], work, timeout=args.timeout) for _ in range(3)]
+        d = run([deltri, "-pq30Q", name], work, timeout=args.timeout)
+        shutil.rmtree(work)
+        if all(x[4] == 0 and x[3] == 0 for x in t + [d]) and statistics.median(x[0] for x in t) < 0.020:
+            small.append(path)
+    return small
+
+
+def part_corpus_batch():
+    small = small_corpus_files()
+    sources = [small[i % len(small)] for i in range(args.batch)]
+    load = os.getloadavg()
+    ways = batch_ways()
+    print(f"### {args.batch} small corpus files, `xargs -P 2 -n 1 PROGRAM -pq30Q` in one folder (and deltri "
+          f"`--each` with `xargs -P 2 -n {(args.batch + 1) // 2}`): wall s and their CPU s (user + system)\n")
+    print(f"The {len(small)} files Triangle meshes in under 20 ms with nothing on standard error, taken in "
+          f"name order over and over up to {args.batch}: {', '.join(os.path.basename(f) for f in small)} "
+          f"(load average at the start {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; per round, the 1-minute one at its end)\n")
+    print("| round | load | " + " | ".join(f"{name} wall | {name} CPU" for name, _ in ways) +
+          " | wall ratio | CPU ratio | --each wall ratio | stderr bytes |")
+    print("|---|---|" + "---|" * (2 * len(ways) + 4))
+    for r in range(args.rounds):
+        walls, cpus, errs = batch_round(sources, ways)
         print(f"| {r + 1} | {os.getloadavg()[0]:.1f} | " + " | ".join(f"{w:.2f} | {c:.2f}" for w, c in zip(walls, cpus)) +
               f" | {walls[1] / walls[0]:.2f} | {cpus[1] / cpus[0]:.2f} | {walls[2] / walls[0]:.2f} | " +
               ", ".join(map(str, errs)) + " |")
@@ -188,6 +248,7 @@ def part_thin():
     print()
 
 
-for part, fn in [("cpu", part_cpu), ("batch", part_batch), ("corpus", part_corpus), ("thin", part_thin)]:
+for part, fn in [("cpu", part_cpu), ("batch", part_batch), ("corpus-batch", part_corpus_batch), ("corpus", part_corpus),
+                 ("thin", part_thin)]:
     if part in parts:
         fn()
