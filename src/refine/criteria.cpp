@@ -69,8 +69,7 @@ TriangleShape measure_triangle(TriangleId t, const SideMeasures& m, double sin2_
   shape.shortest_length2 = m.length2[s];
   const double twice_area = m.twice_area;
   shape.area = 0.5 * twice_area;
-  shape.ratio2_over_bound2 = twice_area > 0.0 ? ratio_numerator(m, s, sin2_theta) / (twice_area * twice_area)
-                                              : HUGE_VAL;
+  shape.ratio2_over_bound2 = ratio2_over_bound2(m, s, sin2_theta);
   return shape;
 }
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "geometry/constructions.h"
@@ -71,6 +72,12 @@ inline double ratio_numerator(const SideMeasures& m, unsigned s, double sin2_the
   return m.length2[(s + 1) % 3] * m.length2[(s + 2) % 3] * sin2_theta;
 }
 
+// measure_triangle's (r / B)^2 from side measures m whose shortest side is s: HUGE_VAL for a flat
+// or clockwise triangle.
+inline double ratio2_over_bound2(const SideMeasures& m, unsigned s, double sin2_theta) {
+  return m.twice_area > 0.0 ? ratio_numerator(m, s, sin2_theta) / (m.twice_area * m.twice_area) : HUGE_VAL;
+}
+
 // measure_triangle from t's side measures m, when the caller has them.
 TriangleShape measure_triangle(TriangleId t, const SideMeasures& m, double sin2_theta);
 
@@ -129,6 +136,20 @@ inline bool surely_good(const SideMeasures& m, const Criteria& rules) {
   const double x = ratio_numerator(m, shortest_side(m.length2), rules.angle.sin2());
   if (!(x <= m.twice_area * m.twice_area)) return false;
   return !(rules.size.max_area > 0.0 && 0.5 * m.twice_area > rules.size.max_area);
+}
+
+// assess_triangle's verdict as the queue of bad triangles needs it (Badness), for rules with
+// has_quick_verdict and a triangle with side measures m no angle of which lies between two
+// subsegments (at most one of its sides is one): true, with why set, where assess_triangle finds
+// it bad. The same doubles in the same order, without an Assessment's other fields: refinement
+// queues most of the triangles surely_good does not clear, and this is a fifth of the full assessment.
+inline bool queue_badness(const SideMeasures& m, const Criteria& rules, Badness& why) {
+  const unsigned s = shortest_side(m.length2);
+  const double ratio = ratio2_over_bound2(m, s, rules.angle.sin2());
+  const bool skinny = rules.angle.sin2() > 0.0 && ratio > 1.0;
+  const bool too_large = rules.size.max_area > 0.0 && 0.5 * m.twice_area > rules.size.max_area;
+  why = {skinny, ratio, m.length2[s]};
+  return skinny || too_large;
 }
 
 // How many times its size bounds t exceeds: area over the smallest area bound that applies, or

@@ -382,10 +382,34 @@ void Terminator::prefetch_new_subsegment_homes() const {
   prefetch(mesh_.subseg.home_of(e + 3));
 }
 
+// assess_with's exemptions need an angle of t between two subsegments, a corner lopped
+// (--corner-lopping), or a shortest edge both of whose ends lie on segments (shell_exempt).
+inline bool Terminator::cannot_be_exempt(TriangleId t, const SideMeasures& m) const {
+  if (lopping_.active()) return false;
+  if (mesh_.has_subsegments() &&
+      mesh_.subseg.has(edge_of(t, 0)) + mesh_.subseg.has(edge_of(t, 1)) + mesh_.subseg.has(edge_of(t, 2)) > 1)
+    return false;
+  const VertexId* c = mesh_.corners_at(t);
+  const unsigned s = shortest_side(m.length2);
+  return !may_lie_on_piece(c[s]) || !may_lie_on_piece(c[(s + 1) % 3]);
+}
+
+// Most triangles around a new vertex are cleared by surely_good or, where no exemption can apply,
+// judged by queue_badness; the full assessment is for the rest (a third of those queued on
+// islands.poly at -q30).
 void Terminator::enqueue_if_bad(TriangleId t) {
   const Criteria& rules = rules_for(t);
   const SideMeasures m = side_measures(mesh_, t);
-  if (quick_verdict_ && surely_good(m, rules)) return;
+  if (quick_verdict_) {
+    if (surely_good(m, rules)) return;
+    if (cannot_be_exempt(t, m)) {
+      if (Badness why; queue_badness(m, rules, why)) {
+        const VertexId* c = mesh_.corners_at(t);
+        bad_triangles_.push({t, c[0], c[1], c[2]}, why);
+      }
+      return;
+    }
+  }
   const Assessment a = assess_with(t, rules, m);
   if (!a.bad()) return;
   DELTRI_ASSERT(mesh_.is_live(t));

@@ -174,6 +174,12 @@ class Terminator {
   bool below_asked_bound(const Assessment& a) const;   // under -q, not only under Sec. 7.2's bound
   bool only_for_interior_bound(TriangleId t, const Assessment& a) const;  // bad for Sec. 7.2's bound alone
   bool shell_exempt(EdgeRef shortest) const;
+  // Only segment splits have pieces, and with -r the straight vertices of the earlier run's
+  // segments (input vertices now, RefineOptions::straight_chains); the kinds, a byte per vertex,
+  // stay in cache where the pieces would be a miss.
+  bool may_lie_on_piece(VertexId v) const {
+    return mesh_.kind[v] == VertexKind::Segment || (opt_.straight_chains && mesh_.kind[v] == VertexKind::Input);
+  }
   bool stall_check_passed(std::uint64_t used);
   // The subsegment to split of a spared triangle beyond a corner whose angle is below the corner's
   // (kNone for any other), and that split, served in place of the triangle's point.
@@ -207,6 +213,7 @@ class Terminator {
   void warm_pages();
   static constexpr unsigned kWarmInterval = 256;
   void enqueue_if_bad(TriangleId t);
+  bool cannot_be_exempt(TriangleId t, const SideMeasures& m) const;  // from any of assess_with's exemptions
   void enqueue_subsegment(EdgeRef e);
   EdgeRef current_edge(const EncroachedSubsegment& entry);
   bool is_splittable(EdgeRef e) const;  // not kept by -Y / -YY, not a spoke, not a seam edge, not locked

@@ -416,13 +416,7 @@ Assessment Terminator::assess_with(TriangleId t, const Criteria& rules, const Si
 // for any other triangle (Fig. 38 l.21). Equal within 0.1%: split points are rounded.
 bool Terminator::shell_exempt(EdgeRef shortest) const {
   const VertexId a = mesh_.org(shortest), b = mesh_.dest(shortest);
-  // Only segment splits have pieces, and with -r the straight vertices of the earlier run's
-  // segments (input vertices now, RefineOptions::straight_chains); the kinds, a byte per vertex,
-  // stay in cache where the pieces would be a miss.
-  const auto on_piece = [&](VertexId v) {
-    return mesh_.kind[v] == VertexKind::Segment || (opt_.straight_chains && mesh_.kind[v] == VertexKind::Input);
-  };
-  if (!on_piece(a) || !on_piece(b)) return false;
+  if (!may_lie_on_piece(a) || !may_lie_on_piece(b)) return false;
   const PieceEnds* piece_a = pieces_.piece_of(a);
   const PieceEnds* piece_b = pieces_.piece_of(b);
   if (piece_a == nullptr || piece_b == nullptr) return false;

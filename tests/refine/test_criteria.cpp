@@ -1,6 +1,7 @@
 // The criteria (refine/criteria.h): the smallest-angle measure, edges no double can give a good
 // triangle, and the exact largest-angle test against independent facts.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <cstdint>
@@ -164,17 +165,15 @@ deltri::Mesh lone_triangle(const Point& a, const Point& b, const Point& c) {
 
 }  // namespace
 
-// surely_good (the refinement's quick "good" verdict) against the full assessment, the verdict
-// refinement acts on: whatever it calls good must be neither skinny nor too large there. Random
-// triangles, and triangles whose smallest angle lies within a few ulps to 1e-9 (relative) of the
-// bound, so that the quotient the full test rounds sits at 1 and a verdict with any slack above
-// it (comparing x against y (1 + 1e-13), say) calls some of them good that the full test calls
-// skinny. The counts of near ties on either side make sure the test reaches them.
-TEST(surely_good_never_contradicts_the_full_assessment) {
+// Calls check(mesh, rules, near) for 60,000 triangles, each alone in a mesh of its own under rules
+// with a quick verdict: random triangles, and triangles whose smallest angle lies within a few ulps
+// to 1e-9 (relative) of the bound, so that the quotient the full test rounds sits at 1 (near: within
+// 1e-12 of it); with an area bound at the triangle's own area, one ulp either side, or none.
+template <class Check>
+void for_quick_verdict_triangles(Check&& check) {
   using namespace deltri;
   std::uint64_t state = 11;
   const auto unit = [&] { return static_cast<double>(next(state) % 1000003) / 1000003.0; };
-  int good = 0, good_near = 0, bad_near = 0, area_near = 0;
   for (const double theta : {20.0, 28.6, 30.0, 33.0, 34.0}) {
     const AngleBound bound(theta);
     const double phi0 = theta * std::numbers::pi / 180.0;
@@ -190,29 +189,69 @@ TEST(surely_good_never_contradicts_the_full_assessment) {
         c = {a.x + scale * longer * std::cos(turn + phi), a.y + scale * longer * std::sin(turn + phi)};
       }
       const Mesh m = lone_triangle(a, b, c);
-      const SideMeasures measures = side_measures(m, TriangleId{0});
-      // An area bound at the triangle's own area, one ulp either side, or none.
-      const double area = 0.5 * measures.twice_area;
+      const double area = 0.5 * side_measures(m, TriangleId{0}).twice_area;
       const double max_area = i % 3 == 0 ? 0.0 : up(area, i % 3 == 1 ? 1 : -1);
       const Criteria rules{bound, SizeBounds{max_area, false, 0.0}};
       REQUIRE(has_quick_verdict(rules));
-      const Assessment full = assess_triangle(m, TriangleId{0}, rules);
-      const double ratio = full.shape.ratio2_over_bound2;
-      const bool near = std::fabs(ratio - 1.0) < 1e-12;
-      if (!surely_good(measures, rules)) {
-        bad_near += near && !full.skinny;  // a near tie left to the full test
-        continue;
-      }
-      CHECK(!full.bad());
-      ++good;
-      good_near += near;
-      area_near += max_area > 0.0 && max_area > area;
+      const double ratio = assess_triangle(m, TriangleId{0}, rules).shape.ratio2_over_bound2;
+      check(m, rules, std::fabs(ratio - 1.0) < 1e-12);
     }
   }
+}
+
+// surely_good (the refinement's quick "good" verdict) against the full assessment, the verdict
+// refinement acts on: whatever it calls good must be neither skinny nor too large there. A verdict
+// with any slack above the rounded quotient (comparing x against y (1 + 1e-13), say) calls some of
+// the near ties good that the full test calls skinny. The counts of near ties on either side make
+// sure the test reaches them.
+TEST(surely_good_never_contradicts_the_full_assessment) {
+  using namespace deltri;
+  int good = 0, good_near = 0, bad_near = 0, area_near = 0;
+  for_quick_verdict_triangles([&](const Mesh& m, const Criteria& rules, bool near) {
+    const Assessment full = assess_triangle(m, TriangleId{0}, rules);
+    if (!surely_good(side_measures(m, TriangleId{0}), rules)) {
+      bad_near += near && !full.skinny;  // a near tie left to the full test
+      return;
+    }
+    CHECK(!full.bad());
+    ++good;
+    good_near += near;
+    area_near += rules.size.max_area > 0.0 && rules.size.max_area > full.shape.area;
+  });
   CHECK(good > 10000);
   CHECK(good_near > 100);
   CHECK(bad_near > 100);
   CHECK(area_near > 1000);
+}
+
+// queue_badness (the queue's verdict on a triangle no angle of which lies between two subsegments)
+// against the full assessment: bad exactly where it is, skinny exactly where it is, and the same
+// doubles for the queue's keys, bit for bit, on the same triangles, flat and clockwise ones included.
+TEST(queue_badness_is_the_full_assessment) {
+  using namespace deltri;
+  int bad = 0, skinny_near = 0, good_near = 0, only_large = 0;
+  const auto agree = [&](const Mesh& m, const Criteria& rules, bool near) {
+    const Assessment full = assess_triangle(m, TriangleId{0}, rules);
+    Badness why;
+    const bool verdict = queue_badness(side_measures(m, TriangleId{0}), rules, why);
+    CHECK_EQ(verdict, full.bad());
+    skinny_near += near && full.skinny;
+    good_near += near && !full.bad();
+    if (!verdict) return;
+    ++bad;
+    only_large += !full.skinny;
+    CHECK_EQ(why.skinny, full.skinny);
+    CHECK(std::bit_cast<std::uint64_t>(why.ratio2_over_bound2) == std::bit_cast<std::uint64_t>(full.shape.ratio2_over_bound2));
+    CHECK(std::bit_cast<std::uint64_t>(why.shortest2) == std::bit_cast<std::uint64_t>(full.shape.shortest_length2));
+  };
+  for_quick_verdict_triangles(agree);
+  const Criteria rules{AngleBound(30), SizeBounds{0.25, false, 0.0}};
+  agree(lone_triangle({0, 0}, {0, 1}, {1, 0}), rules, false);  // clockwise
+  agree(lone_triangle({0, 0}, {1, 1}, {2, 2}), rules, false);  // flat
+  CHECK(bad > 10000);
+  CHECK(skinny_near > 100);
+  CHECK(good_near > 100);
+  CHECK(only_large > 1000);
 }
 
 // Rules with anything beyond the angle bound and -a's one area bound have no quick verdict.
