@@ -24,7 +24,6 @@
 #include "refine/area_field.h"
 #include "improve/smooth.h"
 #include "refine/refine.h"
-#include "util/memory_budget.h"
 
 namespace deltri {
 namespace {
@@ -324,7 +323,7 @@ RefineOptions refine_options(const Options& sw, const Criteria& criteria) {
   opt.interior_bound = sw.interior_bound;
   opt.range_restricted = sw.range_restricted;
   opt.threads = threads_to_use(sw);
-  opt.memory_budget = memory_budget();
+  opt.probe_memory = true;
   return opt;
 }
 

@@ -10,6 +10,7 @@
 #include "refine/kept_boundary.h"
 #include "refine/criteria.h"
 #include "refine/refine_in_parts.h"
+#include "util/memory_budget.h"
 #include "refine/termination_guard.h"
 #include "refine/terminator.h"
 
@@ -20,15 +21,17 @@ namespace {
 // reserve_for_refinement): a job whose bounds need more than the memory budget can hold is refused
 // before it starts, instead of refining until the memory runs out.
 void refuse_impossible_size_bounds(const Mesh& mesh, const RefineOptions& opt) {
-  if (!(opt.memory_budget > 0.0)) return;
+  if (!(opt.memory_budget > 0.0) && !opt.probe_memory) return;
   const double wanted = 2.0 * (triangles_wanted(mesh, opt.size) + opt.size_test_triangles);
   const double bytes = wanted * kBytesPerTriangle;
-  if (!(bytes > opt.memory_budget)) return;
+  if (!(opt.memory_budget > 0.0) && !(bytes > kProbeAfterBytes)) return;  // a small job asks nothing
+  const double budget = memory_budget_of(opt);
+  if (!(budget > 0.0) || !(bytes > budget)) return;
   constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
   char text[240];
   std::snprintf(text, sizeof text,
                 "the size bounds ask for about %.3g triangles, about %.3g GiB of memory; %.3g GiB are available",
-                wanted, bytes / kGiB, opt.memory_budget / kGiB);
+                wanted, bytes / kGiB, budget / kGiB);
   throw MemoryError(text);
 }
 
@@ -111,6 +114,10 @@ void record_field_bounds(Mesh& mesh, const AreaField& field) {
 }
 
 }  // namespace
+
+double memory_budget_of(const RefineOptions& opt) {
+  return opt.memory_budget > 0.0 || !opt.probe_memory ? opt.memory_budget : memory_budget();
+}
 
 RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& asked) {
   refuse_impossible_size_bounds(mesh, asked);

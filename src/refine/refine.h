@@ -93,8 +93,12 @@ struct RefineOptions {
   std::uint32_t part_min_triangles = 20000;
   // The memory refinement may use, in bytes (0: no limit): size bounds that need more are refused
   // before refinement starts (MemoryError), and the Steiner cap never allows more
-  // (termination_guard.h). The command line sets it from the machine (util/memory_budget.h).
+  // (termination_guard.h).
   double memory_budget = 0.0;
+  // With memory_budget 0: ask the machine for it (util/memory_budget.h), but only once the run
+  // may need it (termination_guard.h, kProbeAfterSteiner): a small run asks nothing. The command
+  // line and the library set it.
+  bool probe_memory = false;
   // The field of bounds that vary within a region (refine/area_field.h), built from the mesh as
   // the caller read it (-r: before it was made constrained Delaunay); if null or empty,
   // refine_mesh builds one from the mesh it is given.
@@ -182,6 +186,9 @@ struct RefineReport : RefineWork {
 // Throws MemoryError (util/errors.h) when the size bounds ask for more triangles than
 // opt.memory_budget can hold.
 RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& opt);
+
+// opt.memory_budget, asked of the machine now where opt.probe_memory says so.
+double memory_budget_of(const RefineOptions& opt);
 
 // Adds from's counts of work done (Steiner points, splits, refusals, stops) to to's; the closing
 // survey's counts are not added (they describe one mesh).

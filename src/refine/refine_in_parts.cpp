@@ -125,7 +125,7 @@ std::vector<char> vertices_needed(const Mesh& mesh, const std::vector<std::uint8
 TerminatorStart start_of_part(const TerminatorStart& from, std::size_t count, const std::vector<VertexId>& vertices,
                               const std::vector<SubsegmentId>& records) {
   TerminatorStart start{from.guard_floor, from.proven_range, from.steiner_cap, from.cap_kind, {}, {}, {}, from.hopeless_edges,
-                        from.small_pages, from.extent};
+                        from.small_pages, from.extent, from.memory_probe_slots};
   std::vector<VertexId> local(count, kNone);
   for (VertexId i{0}; i < vertices.size(); ++i) local[vertices[i]] = i;
   const auto local_ends = [&](const PieceEnds& p) {
@@ -425,7 +425,11 @@ bool parts_apply(const Mesh& mesh, const RefineOptions& opt) {
   return count_hopeless_edges(mesh, opt.angle.sin2(), opt.threads) == 0;
 }
 
-RefineReport refine_in_parts(Mesh& mesh, Predicates& pred, const RefineOptions& opt) {
+RefineReport refine_in_parts(Mesh& mesh, Predicates& pred, const RefineOptions& asked) {
+  // The parts share out the whole mesh's cap before any of them refines: the budget is asked now.
+  RefineOptions opt = asked;
+  opt.memory_budget = memory_budget_of(asked);
+  opt.probe_memory = false;
   RefineOptions one_thread = opt;
   one_thread.threads = 1;
   const int depth = part_depth(mesh, opt);

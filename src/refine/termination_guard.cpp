@@ -154,9 +154,9 @@ std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds, const std:
   return to_count(cap);
 }
 
-std::uint64_t memory_cap(const Mesh& mesh, double memory_budget) {
+std::uint64_t memory_cap(std::uint64_t triangle_slots, double memory_budget) {
   if (!(memory_budget > 0.0)) return UINT64_MAX;
-  const double used = kBytesPerTriangle * mesh.triangle_slots();
+  const double used = kBytesPerTriangle * static_cast<double>(triangle_slots);
   return memory_budget > used ? to_count((memory_budget - used) / kBytesPerSteiner) : 0;
 }
 

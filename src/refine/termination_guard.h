@@ -123,9 +123,19 @@ double feature_work(const Mesh& mesh, const std::vector<double>& features);
 
 std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds);
 std::uint64_t steiner_cap(const Mesh& mesh, const SizeBounds& bounds, const std::vector<double>& features);
-// The Steiner points that fit in `memory_budget` bytes beside the mesh (UINT64_MAX for a budget of 0:
-// none).
-std::uint64_t memory_cap(const Mesh& mesh, double memory_budget);
+// The Steiner points that fit in `memory_budget` bytes beside a mesh of `triangle_slots` slots
+// (UINT64_MAX for a budget of 0: none).
+std::uint64_t memory_cap(std::uint64_t triangle_slots, double memory_budget);
+
+// Where the budget is to be asked of the machine (RefineOptions::probe_memory), a run that starts
+// from fewer than kProbeAfterSlots triangle slots asks only once it has placed kProbeAfterSteiner
+// Steiner points, and size bounds are measured against it only when they ask for more than
+// kProbeAfterBytes: a small run makes none of the system calls (issue 45). Its cap is then the one
+// the budget would have set from the start; what a run may place before it asks (16 MiB at
+// kBytesPerSteiner, beside a mesh of at most 8 MiB) is under any machine's budget.
+inline constexpr std::uint64_t kProbeAfterSlots = 65536;
+inline constexpr std::uint64_t kProbeAfterSteiner = 65536;
+inline constexpr double kProbeAfterBytes = kBytesPerSteiner * kProbeAfterSteiner;
 // The number of triangles the size bounds ask for (0 without size bounds), as in steiner_cap.
 double triangles_wanted(const Mesh& mesh, const SizeBounds& bounds);
 

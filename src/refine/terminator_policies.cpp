@@ -357,7 +357,7 @@ double Terminator::floor_for(const Assessment& a, const Point& p) const {
 
 bool Terminator::budget_left() {
   const std::uint64_t used = report_.interior_steiner + report_.segment_steiner;
-  if (used >= steiner_cap_) {
+  if (used >= steiner_limit_ && !under_cap_once_asked(used)) {
     report_.stopped_by_cap = true;
     return false;
   }
@@ -382,9 +382,25 @@ bool Terminator::stall_check_passed(std::uint64_t used) {
   queued_at_last_check_ = queued;
   if (before == 0 || before == SIZE_MAX || queued * 16 < before * 15) return true;
   report_.stopped_by_cap = true;
-  steiner_cap_ = report_.steiner_cap = used;
-  cap_kind_ = report_.cap_kind = CapKind::Stalled;
+  set_cap(used, CapKind::Stalled);
   return false;
+}
+
+// A run that started small asks for the memory budget when it first reaches kProbeAfterSteiner
+// points (TerminatorStart::memory_probe_slots), and its cap becomes the one the budget would have
+// set from the start (TerminatorStart::of).
+bool Terminator::under_cap_once_asked(std::uint64_t used) {
+  if (memory_probe_slots_) {
+    const std::uint64_t memory = memory_cap(*memory_probe_slots_, memory_budget_of(opt_));
+    memory_probe_slots_.reset();
+    set_cap(std::min(steiner_cap_, memory), memory < steiner_cap_ ? CapKind::Memory : cap_kind_);
+  }
+  return used < steiner_cap_;
+}
+
+void Terminator::set_cap(std::uint64_t cap, CapKind kind) {
+  steiner_cap_ = report_.steiner_cap = steiner_limit_ = cap;
+  cap_kind_ = report_.cap_kind = kind;
 }
 
 // The equal-shell exemption is the Terminator's (Ruppert's and Chew's algorithms split every skinny

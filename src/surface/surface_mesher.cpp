@@ -598,8 +598,8 @@ void SurfaceBuilder::run_rounds(SurfaceReport& report, long& budget, bool give_u
     if (report.rounds == 1 && options_.refine) {
       double guard_total = 0.0;
       for (const FacetState& state : facets_) guard_total += static_cast<double>(state.result.refine.steiner_cap);
-      if (options_.refinement.memory_budget > 0.0)
-        guard_total = std::min(guard_total, options_.refinement.memory_budget / kBytesPerSteiner);
+      if (const double memory = memory_budget_of(options_.refinement); memory > 0.0)
+        guard_total = std::min(guard_total, memory / kBytesPerSteiner);
       const long guard = static_cast<long>(std::min(guard_total, 1e18));
       budget = budget < 0 ? guard : std::min(budget, guard);
     }

@@ -1,7 +1,7 @@
 // How much memory this process may use: the machine's physical memory, or less where a limit says
-// so (ulimit -v or -d, a cgroup's memory.max). The command line hands it to refinement
-// (RefineOptions::memory_budget), so that no input and no switch value makes deltri grow until
-// the kernel kills it.
+// so (ulimit -v or -d, a cgroup's memory.max). Refinement asks for it once a run may need it
+// (RefineOptions::probe_memory, which the command line and the library set), so that no input and
+// no switch value makes deltri grow until the kernel kills it.
 #pragma once
 
 namespace deltri {

@@ -403,10 +403,10 @@ TEST(feature_work_follows_the_strip_integral) {
 // Memory: what fits beside the mesh, at kBytesPerSteiner each.
 TEST(memory_cap_fits_the_budget) {
   const Mesh m = refine_test::unit_square();
-  CHECK_EQ(memory_cap(m, 0.0), UINT64_MAX);
+  CHECK_EQ(memory_cap(m.triangle_slots(), 0.0), UINT64_MAX);
   const double used = kBytesPerTriangle * m.triangle_slots();
-  CHECK_EQ(memory_cap(m, used + 1000 * kBytesPerSteiner), std::uint64_t{1000});
-  CHECK_EQ(memory_cap(m, used / 2), std::uint64_t{0});
+  CHECK_EQ(memory_cap(m.triangle_slots(), used + 1000 * kBytesPerSteiner), std::uint64_t{1000});
+  CHECK_EQ(memory_cap(m.triangle_slots(), used / 2), std::uint64_t{0});
 }
 
 namespace {
