@@ -122,6 +122,19 @@ def batch_round(sources, ways):
     return walls, cpus, errs
 
 
+def batch_table(sources, ways):
+    """The batch's rounds as a Markdown table, one row a round."""
+    print("| round | load | " + " | ".join(f"{name} wall | {name} CPU" for name, _ in ways) +
+          " | wall ratio | CPU ratio | --each wall ratio | stderr bytes |")
+    print("|---|---|" + "---|" * (2 * len(ways) + 4))
+    for r in range(args.rounds):
+        walls, cpus, errs = batch_round(sources, ways)
+        print(f"| {r + 1} | {os.getloadavg()[0]:.1f} | " + " | ".join(f"{w:.2f} | {c:.2f}" for w, c in zip(walls, cpus)) +
+              f" | {walls[1] / walls[0]:.2f} | {cpus[1] / cpus[0]:.2f} | {walls[2] / walls[0]:.2f} | " +
+              ", ".join(map(str, errs)) + " |")
+    print()
+
+
 def part_batch():
     load = os.getloadavg()
     half = (args.batch + 1) // 2
@@ -129,16 +142,7 @@ def part_batch():
     print(f"### {args.batch} copies of guitar.poly, `xargs -P 2 -n 1 PROGRAM -pq30Q` in one folder (and deltri "
           f"`--each` with `xargs -P 2 -n {half}`): wall s and their CPU s (user + system) "
           f"(load average at the start {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; per round, the 1-minute one at its end)\n")
-    print("| round | load | " + " | ".join(f"{name} wall | {name} CPU" for name, _ in ways) +
-          " | wall ratio | CPU ratio | --each wall ratio | stderr bytes |")
-    print("|---|---|" + "---|" * (2 * len(ways) + 4))
-    sources = [guitar] * args.batch
-    for r in range(args.rounds):
-        walls, cpus, errs = batch_round(sources, ways)
-        print(f"| {r + 1} | {os.getloadavg()[0]:.1f} | " + " | ".join(f"{w:.2f} | {c:.2f}" for w, c in zip(walls, cpus)) +
-              f" | {walls[1] / walls[0]:.2f} | {cpus[1] / cpus[0]:.2f} | {walls[2] / walls[0]:.2f} | " +
-              ", ".join(map(str, errs)) + " |")
-    print()
+    batch_table([guitar] * args.batch, ways)
 
 
 def small_corpus_files():
@@ -171,15 +175,7 @@ def part_corpus_batch():
     print(f"The {len(small)} files Triangle meshes in under 20 ms with nothing on standard error, taken in "
           f"name order over and over up to {args.batch}: {', '.join(os.path.basename(f) for f in small)} "
           f"(load average at the start {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; per round, the 1-minute one at its end)\n")
-    print("| round | load | " + " | ".join(f"{name} wall | {name} CPU" for name, _ in ways) +
-          " | wall ratio | CPU ratio | --each wall ratio | stderr bytes |")
-    print("|---|---|" + "---|" * (2 * len(ways) + 4))
-    for r in range(args.rounds):
-        walls, cpus, errs = batch_round(sources, ways)
-        print(f"| {r + 1} | {os.getloadavg()[0]:.1f} | " + " | ".join(f"{w:.2f} | {c:.2f}" for w, c in zip(walls, cpus)) +
-              f" | {walls[1] / walls[0]:.2f} | {cpus[1] / cpus[0]:.2f} | {walls[2] / walls[0]:.2f} | " +
-              ", ".join(map(str, errs)) + " |")
-    print()
+    batch_table(sources, ways)
 
 
 def part_corpus():
