@@ -106,7 +106,7 @@ double guard_floor(double feature, double size_floor);
 inline constexpr double kCapPerWork = 32.0;
 inline constexpr std::uint64_t kCapPerVertex = 64;
 inline constexpr double kCascadeAllowance = 2.0;
-// Bytes a Steiner point costs at the peak, with its two triangles (86 bytes a triangle on the
+// Bytes a Steiner point costs at the peak, with its two triangles (at most 86 bytes a triangle on the
 // 45x45 holes, docs/benchmarks.md), its queue entries and the vertex: a generous figure, since the
 // budget only has to keep deltri from growing until the kernel kills it.
 inline constexpr double kBytesPerSteiner = 256.0;
