@@ -81,7 +81,7 @@ Assessment assess_triangle(const Mesh& mesh, TriangleId t, const Criteria& rules
   Assessment out;
   out.shape = measure_triangle(t, m, rules.angle.sin2());
   const double* len2 = out.shape.length2;
-  if (rules.angle.sin2() > 0.0 && out.shape.ratio2_over_bound2 > 1.0) {
+  if (above_ratio_bound(out.shape.ratio2_over_bound2, rules.angle)) {
     // With ties for the shortest edge, any tied smallest angle between subsegments exempts t.
     bool exempt = false;
     for (unsigned i = 0; i < 3 && !exempt; ++i)
@@ -94,7 +94,7 @@ Assessment assess_triangle(const Mesh& mesh, TriangleId t, const Criteria& rules
     out.too_obtuse = k >= 0 && !angle_between_subsegments(mesh, edge_of(t, (static_cast<unsigned>(k) + 1) % 3));
   }
   const double area = out.shape.area;
-  if (rules.size.max_area > 0.0 && area > rules.size.max_area) out.too_large = true;
+  if (above_max_area(area, rules.size)) out.too_large = true;
   if (const double bound = area_bound_of(mesh, t, rules); bound > 0.0 && area > bound) out.too_large = true;
   if (rules.size.max_edge_length > 0.0) {
     const double limit2 = rules.size.max_edge_length * rules.size.max_edge_length;

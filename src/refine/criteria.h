@@ -81,6 +81,13 @@ inline double ratio2_over_bound2(const SideMeasures& m, unsigned s, double sin2_
 // measure_triangle from t's side measures m, when the caller has them.
 TriangleShape measure_triangle(TriangleId t, const SideMeasures& m, double sin2_theta);
 
+// The two tests every verdict below makes: a ratio (r / B)^2 above the angle bound (exemptions
+// aside), and an area above -a's bound.
+inline bool above_ratio_bound(double ratio2_over_bound2, const AngleBound& angle) {
+  return angle.sin2() > 0.0 && ratio2_over_bound2 > 1.0;
+}
+inline bool above_max_area(double area, const SizeBounds& size) { return size.max_area > 0.0 && area > size.max_area; }
+
 // The side (0, 1, 2) with the least of the squared lengths len2, the first of tied ones: the edge
 // whose Steiner point a triangle gets (measure_triangle, steiner_point_of).
 inline unsigned shortest_side(const double len2[3]) {
@@ -135,7 +142,7 @@ inline bool surely_good(const SideMeasures& m, const Criteria& rules) {
   if (!(m.twice_area > 0.0)) return false;
   const double x = ratio_numerator(m, shortest_side(m.length2), rules.angle.sin2());
   if (!(x <= m.twice_area * m.twice_area)) return false;
-  return !(rules.size.max_area > 0.0 && 0.5 * m.twice_area > rules.size.max_area);
+  return !above_max_area(0.5 * m.twice_area, rules.size);
 }
 
 // assess_triangle's verdict as the queue of bad triangles needs it (Badness), for rules with
@@ -146,10 +153,8 @@ inline bool surely_good(const SideMeasures& m, const Criteria& rules) {
 inline bool queue_badness(const SideMeasures& m, const Criteria& rules, Badness& why) {
   const unsigned s = shortest_side(m.length2);
   const double ratio = ratio2_over_bound2(m, s, rules.angle.sin2());
-  const bool skinny = rules.angle.sin2() > 0.0 && ratio > 1.0;
-  const bool too_large = rules.size.max_area > 0.0 && 0.5 * m.twice_area > rules.size.max_area;
-  why = {skinny, ratio, m.length2[s]};
-  return skinny || too_large;
+  why = {above_ratio_bound(ratio, rules.angle), ratio, m.length2[s]};
+  return why.skinny || above_max_area(0.5 * m.twice_area, rules.size);
 }
 
 // How many times its size bounds t exceeds: area over the smallest area bound that applies, or

@@ -24,7 +24,7 @@ void refuse_impossible_size_bounds(const Mesh& mesh, const RefineOptions& opt) {
   if (!(opt.memory_budget > 0.0) && !opt.probe_memory) return;
   const double wanted = 2.0 * (triangles_wanted(mesh, opt.size) + opt.size_test_triangles);
   const double bytes = wanted * kBytesPerTriangle;
-  if (!(opt.memory_budget > 0.0) && !(bytes > kProbeAfterBytes)) return;  // a small job asks nothing
+  if (asks_memory(opt) && !(bytes > kProbeAfterBytes)) return;  // a small job asks nothing
   const double budget = memory_budget_of(opt);
   if (!(budget > 0.0) || !(bytes > budget)) return;
   constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
@@ -116,7 +116,7 @@ void record_field_bounds(Mesh& mesh, const AreaField& field) {
 }  // namespace
 
 double memory_budget_of(const RefineOptions& opt) {
-  return opt.memory_budget > 0.0 || !opt.probe_memory ? opt.memory_budget : memory_budget();
+  return asks_memory(opt) ? memory_budget() : opt.memory_budget;
 }
 
 RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& asked) {

@@ -187,7 +187,9 @@ struct RefineReport : RefineWork {
 // opt.memory_budget can hold.
 RefineReport refine_mesh(Mesh& mesh, Predicates& pred, const RefineOptions& opt);
 
-// opt.memory_budget, asked of the machine now where opt.probe_memory says so.
+// Whether opt's memory budget is still to be asked of the machine (probe_memory, no budget given).
+inline bool asks_memory(const RefineOptions& opt) { return opt.probe_memory && !(opt.memory_budget > 0.0); }
+// opt.memory_budget, asked of the machine now where asks_memory(opt).
 double memory_budget_of(const RefineOptions& opt);
 
 // Adds from's counts of work done (Steiner points, splits, refusals, stops) to to's; the closing

@@ -164,7 +164,7 @@ TerminatorStart TerminatorStart::of(const Mesh& mesh, const RefineOptions& opt) 
   // Within the proven range the theorems bound the work.
   if (start.proven_range || !may_cap) start.steiner_cap = UINT64_MAX;
   else start.steiner_cap = cap ? *cap : deltri::steiner_cap(mesh, opt.size, features);
-  if (opt.memory_budget <= 0.0 && opt.probe_memory && mesh.triangle_slots() < kProbeAfterSlots) {
+  if (asks_memory(opt) && mesh.triangle_slots() < kProbeAfterSlots) {
     start.memory_probe_slots = mesh.triangle_slots();  // asked once the run grows (budget_left)
   } else if (const std::uint64_t memory = memory_cap(mesh.triangle_slots(), memory_budget_of(opt));
              memory < start.steiner_cap) {
@@ -193,8 +193,9 @@ Terminator::Terminator(Mesh& mesh, Predicates& pred, const RefineOptions& opt, T
       guard_floor_(start.guard_floor),
       proven_range_(start.proven_range),
       edge_floor_(start.proven_range && !optimal_points_ ? 0.0 : start.guard_floor),
-      steiner_cap_(start.steiner_cap), cap_kind_(start.cap_kind), memory_probe_slots_(start.memory_probe_slots),
-      steiner_limit_(memory_probe_slots_ ? std::min(steiner_cap_, kProbeAfterSteiner) : steiner_cap_),
+      steiner_cap_(start.steiner_cap),
+      cap_kind_(start.cap_kind),
+      memory_probe_slots_(start.memory_probe_slots),
       pieces_(std::move(start.pieces)),
       apices_(std::move(start.apices)),
       finder_(mesh),

@@ -157,7 +157,7 @@ class Terminator {
   bool parent_is_input_feature(const PieceEnds& piece) const;
   std::array<VertexId, 2> sure_fire_ancestors(EdgeRef shortest) const;
   bool budget_left();                   // the Steiner cap and -S
-  bool under_cap_once_asked(std::uint64_t used);  // the memory budget asked, if still to be
+  void ask_memory_budget();  // the cap clamped to it, as TerminatorStart::of would have
   void set_cap(std::uint64_t cap, CapKind kind);
   bool move_corners(TriangleId t, StarGoal goal);  // relocation.h: true when a corner of t moved
   bool relocate_corners(TriangleId t);  // move_corners in the second stage of locally optimal points
@@ -257,9 +257,6 @@ class Terminator {
   std::uint64_t steiner_cap_ = 0;      // the guard's last line (termination_guard.h)
   CapKind cap_kind_ = CapKind::Work;
   std::optional<std::uint64_t> memory_probe_slots_;  // TerminatorStart::memory_probe_slots
-  // The count of Steiner points at which budget_left looks further: the cap, or earlier the
-  // point at which the memory budget is asked.
-  std::uint64_t steiner_limit_ = 0;
   // --max-angle beyond what -q implies (no theorem ends it): at each doubling of the Steiner points
   // from kStallCheckFrom, the queue of bad triangles must have shrunk since the last (budget_left).
   static constexpr std::uint64_t kStallCheckFrom = 1u << 16;

@@ -357,7 +357,8 @@ double Terminator::floor_for(const Assessment& a, const Point& p) const {
 
 bool Terminator::budget_left() {
   const std::uint64_t used = report_.interior_steiner + report_.segment_steiner;
-  if (used >= steiner_limit_ && !under_cap_once_asked(used)) {
+  if (memory_probe_slots_ && used >= kProbeAfterSteiner) ask_memory_budget();
+  if (used >= steiner_cap_) {
     report_.stopped_by_cap = true;
     return false;
   }
@@ -389,17 +390,14 @@ bool Terminator::stall_check_passed(std::uint64_t used) {
 // A run that started small asks for the memory budget when it first reaches kProbeAfterSteiner
 // points (TerminatorStart::memory_probe_slots), and its cap becomes the one the budget would have
 // set from the start (TerminatorStart::of).
-bool Terminator::under_cap_once_asked(std::uint64_t used) {
-  if (memory_probe_slots_) {
-    const std::uint64_t memory = memory_cap(*memory_probe_slots_, memory_budget_of(opt_));
-    memory_probe_slots_.reset();
-    set_cap(std::min(steiner_cap_, memory), memory < steiner_cap_ ? CapKind::Memory : cap_kind_);
-  }
-  return used < steiner_cap_;
+void Terminator::ask_memory_budget() {
+  const std::uint64_t memory = memory_cap(*memory_probe_slots_, memory_budget_of(opt_));
+  memory_probe_slots_.reset();
+  if (memory < steiner_cap_) set_cap(memory, CapKind::Memory);
 }
 
 void Terminator::set_cap(std::uint64_t cap, CapKind kind) {
-  steiner_cap_ = report_.steiner_cap = steiner_limit_ = cap;
+  steiner_cap_ = report_.steiner_cap = cap;
   cap_kind_ = report_.cap_kind = kind;
 }
 
